@@ -1,0 +1,9 @@
+# skyig_warnings: an interface target every skyig target links, so the warning set is one list.
+add_library(skyig_warnings INTERFACE)
+target_compile_options(skyig_warnings INTERFACE
+  -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion
+  -Wnon-virtual-dtor -Wold-style-cast -Woverloaded-virtual -Wnull-dereference
+  -Wdouble-promotion -Wformat=2 -Wimplicit-fallthrough)
+if(SKYIG_WERROR)
+  target_compile_options(skyig_warnings INTERFACE -Werror)
+endif()

@@ -26,6 +26,7 @@ using std::sqrt;
 #include "sky/analytic_sky.glsl"
 #include "tone/tumblin_rushmeier.glsl"
 #include "tone/scotopic.glsl"
+#include "tone/tone_reproduction.glsl"
 }  // namespace
 }  // namespace skyig::shader
 #pragma GCC diagnostic pop

@@ -1,0 +1,122 @@
+#include "render/image_io.h"
+
+#include <ImfChromaticitiesAttribute.h>
+#include <ImfHeader.h>
+#include <ImfRgbaFile.h>
+#include <ImfStandardAttributes.h>
+#include <ImfStringAttribute.h>
+#include <png.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <unistd.h>
+
+namespace skyig::render {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string temporaryPath(const std::string& path) {
+  return path + ".tmp-" + std::to_string(::getpid());
+}
+
+void commit(const std::string& tmp, const std::string& path) {
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw ImageIoError("cannot write " + path + ": " + ec.message());
+  }
+}
+
+}  // namespace
+
+void checkWritable(const std::string& path) {
+  if (path.empty()) throw ImageIoError("empty output path");
+  const fs::path p(path);
+  if (fs::is_directory(p)) throw ImageIoError("output path " + path + " is a directory");
+  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw ImageIoError("cannot write " + path + ": directory " + dir.string() + " does not exist");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw ImageIoError("cannot write " + path + ": " + std::strerror(errno));
+}
+
+void writeExr(const std::string& path, const HdrImage& image, const ImageAttributes& attributes) {
+  const std::string tmp = temporaryPath(path);
+  try {
+    Imf::Header header(image.width, image.height);
+    Imf::addChromaticities(header, Imf::Chromaticities());  // Rec.709 primaries, D65 white
+    Imf::addWhiteLuminance(header, 1.0f);                  // one unit = 1 cd/m^2
+    for (const auto& [key, value] : attributes) header.insert(key, Imf::StringAttribute(value));
+    std::vector<Imf::Rgba> pixels(static_cast<size_t>(image.width) * static_cast<size_t>(image.height));
+    for (size_t i = 0; i < pixels.size(); ++i)
+      pixels[i] = Imf::Rgba(image.rgba[4 * i], image.rgba[4 * i + 1], image.rgba[4 * i + 2], image.rgba[4 * i + 3]);
+    Imf::RgbaOutputFile file(tmp.c_str(), header, Imf::WRITE_RGBA);
+    file.setFrameBuffer(pixels.data(), 1, static_cast<size_t>(image.width));
+    file.writePixels(image.height);
+  } catch (const std::exception& e) {
+    std::error_code ec;
+    fs::remove(tmp, ec);
+    throw ImageIoError("cannot write " + path + ": " + e.what());
+  }
+  commit(tmp, path);
+}
+
+ExrFile readExr(const std::string& path) {
+  try {
+    Imf::RgbaInputFile file(path.c_str());
+    const Imath::Box2i dw = file.dataWindow();
+    ExrFile out;
+    out.image.width = dw.max.x - dw.min.x + 1;
+    out.image.height = dw.max.y - dw.min.y + 1;
+    std::vector<Imf::Rgba> pixels(static_cast<size_t>(out.image.width) * static_cast<size_t>(out.image.height));
+    file.setFrameBuffer(pixels.data() - dw.min.x - static_cast<ptrdiff_t>(dw.min.y) * out.image.width, 1,
+                        static_cast<size_t>(out.image.width));
+    file.readPixels(dw.min.y, dw.max.y);
+    out.image.rgba.reserve(pixels.size() * 4);
+    for (const Imf::Rgba& p : pixels)
+      for (const half h : {p.r, p.g, p.b, p.a}) out.image.rgba.push_back(static_cast<float>(h));
+    if (Imf::hasWhiteLuminance(file.header())) out.whiteLuminance = Imf::whiteLuminance(file.header());
+    for (auto it = file.header().begin(); it != file.header().end(); ++it)
+      if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
+        out.attributes[it.name()] = s->value();
+    return out;
+  } catch (const std::exception& e) {
+    throw ImageIoError("cannot read " + path + ": " + e.what());
+  }
+}
+
+void writePng(const std::string& path, const DisplayImage& image, double displayGamma) {
+  const std::string tmp = temporaryPath(path);
+  std::FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) throw ImageIoError("cannot write " + path + ": " + std::strerror(errno));
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  volatile bool ok = png && info;  // volatile: read after a longjmp
+  if (ok && setjmp(png_jmpbuf(png))) ok = false;  // libpng reports errors by longjmp
+  if (ok) {
+    png_init_io(png, f);
+    png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
+                 PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_gAMA(png, info, 1.0 / displayGamma);
+    png_write_info(png, info);
+    for (int row = 0; row < image.height; ++row)
+      png_write_row(png, &image.rgba[static_cast<size_t>(row) * static_cast<size_t>(image.width) * 4]);
+    png_write_end(png, nullptr);
+  }
+  png_destroy_write_struct(png ? &png : nullptr, info ? &info : nullptr);
+  const bool closed = std::fclose(f) == 0;
+  if (!ok || !closed) {
+    std::remove(tmp.c_str());
+    throw ImageIoError("cannot write " + path + ": PNG encoding or disk write failed");
+  }
+  commit(tmp, path);
+}
+
+}  // namespace skyig::render

@@ -1,0 +1,27 @@
+#pragma once
+// A colour texture with its framebuffer object, sized for one channel.
+#include <glad/gl.h>
+
+namespace skyig::render {
+
+class RenderTarget {
+ public:
+  RenderTarget(int width, int height, GLenum internalFormat);
+  ~RenderTarget();
+  RenderTarget(const RenderTarget&) = delete;
+  RenderTarget& operator=(const RenderTarget&) = delete;
+
+  void bindForDrawing() const;
+  GLuint texture() const { return texture_; }
+  GLuint framebuffer() const { return framebuffer_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  int width_;
+  int height_;
+  GLuint texture_ = 0;
+  GLuint framebuffer_ = 0;
+};
+
+}  // namespace skyig::render

@@ -1,0 +1,28 @@
+#pragma once
+// Assembles a GLSL program text from the embedded shader files: resolves `#include "..."`
+// (GLSL has none of its own), prepends the version and the GLSL side of the C++/GLSL prelude,
+// and tags every file with a `#line` source number so compiler errors name the real file.
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace skyig::render {
+
+struct AssembledShader {
+  std::string text;
+  std::vector<std::string> files;  // index = GLSL source-string number in #line directives
+};
+
+class ShaderSourceError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws ShaderSourceError for a missing file or an include cycle.
+AssembledShader assembleShader(std::string_view path);
+
+// Rewrites "0:12(5): error ..." style compiler messages as "sky/x.glsl:12(5): error ...".
+std::string annotateCompilerLog(std::string_view log, const std::vector<std::string>& files);
+
+}  // namespace skyig::render

@@ -1,0 +1,114 @@
+#include "render/sky_renderer.h"
+
+#include "shaders/common/uniforms.h"
+
+#include <algorithm>
+
+namespace skyig::render {
+
+namespace {
+
+glm::vec4 v4(const glm::dvec3& v, double w = 0.0) { return glm::vec4(glm::dvec4(v, w)); }
+
+AnalyticSkyBlock toBlock(const AnalyticSkyParams& p) {
+  AnalyticSkyBlock b{};
+  b.perezA = v4(p.a);
+  b.perezB = v4(p.b);
+  b.perezC = v4(p.c);
+  b.perezD = v4(p.d);
+  b.perezE = v4(p.e);
+  b.perezK = v4(p.k);
+  b.zenith = v4(p.zenith);
+  b.skySunDirection = v4(p.skySunDirection, p.luminanceScale);
+  b.sunDirection = v4(p.sunDirection, p.cosSunRadius);
+  b.sunRadiance = v4(p.sunRadiance);
+  b.groundRadiance = v4(p.groundRadiance);
+  return b;
+}
+
+FrameBlock toBlock(const SkyState& state, const ChannelConfig& channel) {
+  FrameBlock b{};
+  const glm::dmat3 m = ndcToWorld(eyeToEnu(state.observer.attitude, channel.offset), channel.frustum);
+  b.ndcToWorld = glm::mat4(glm::mat3(m));
+  b.viewport = glm::vec4(static_cast<float>(channel.width), static_cast<float>(channel.height),
+                         1.0f / static_cast<float>(channel.width), 1.0f / static_cast<float>(channel.height));
+  return b;
+}
+
+ToneBlock toToneBlock(const SkyState& state, const ChannelConfig& channel) {
+  ToneBlock b{};
+  const DisplayParams& d = channel.display;
+  b.display = glm::vec4(glm::dvec4(d.maxLuminance, d.ambientLuminance, d.gamma, d.adaptationLuminance));
+  b.adaptation = glm::vec4(static_cast<float>(state.adaptationLuminance), 1.0f, 0.0f, 0.0f);
+  return b;
+}
+
+}  // namespace
+
+SkyRenderer::SkyRenderer()
+    : skyProgram_("passes/fullscreen.vert", "passes/analytic_sky.frag"),
+      toneProgram_("passes/fullscreen.vert", "passes/tone.frag"),
+      frameBlock_(SKYIG_BINDING_FRAME, sizeof(FrameBlock)),
+      skyBlock_(SKYIG_BINDING_SKY, sizeof(AnalyticSkyBlock)),
+      toneBlock_(SKYIG_BINDING_TONE, sizeof(ToneBlock)) {
+  glCreateVertexArrays(1, &emptyVao_);  // the full-screen triangle needs no vertex data
+}
+
+SkyRenderer::~SkyRenderer() { glDeleteVertexArrays(1, &emptyVao_); }
+
+void SkyRenderer::ensureTargets(int width, int height) {
+  if (hdr_ && hdr_->width() == width && hdr_->height() == height) return;
+  hdr_ = std::make_unique<RenderTarget>(width, height, GL_RGBA32F);
+  display_ = std::make_unique<RenderTarget>(width, height, GL_RGBA8);
+}
+
+void SkyRenderer::drawSkyPass(const SkyState& state, const ChannelConfig& channel) {
+  ensureTargets(channel.width, channel.height);
+  frameBlock_.upload(toBlock(state, channel));
+  skyBlock_.upload(toBlock(state.sky.params));
+  frameBlock_.bind();
+  skyBlock_.bind();
+  glBindVertexArray(emptyVao_);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  hdr_->bindForDrawing();
+  skyProgram_.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void SkyRenderer::draw(const SkyState& state, const ChannelConfig& channel) {
+  drawSkyPass(state, channel);
+  toneBlock_.upload(toToneBlock(state, channel));
+  toneBlock_.bind();
+  display_->bindForDrawing();
+  toneProgram_.use();
+  glBindTextureUnit(SKYIG_UNIT_HDR_IMAGE, hdr_->texture());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+HdrImage SkyRenderer::readHdr() const {
+  HdrImage image{hdr_->width(), hdr_->height(), {}};
+  const size_t row = static_cast<size_t>(image.width) * 4;
+  std::vector<float> bottomUp(row * static_cast<size_t>(image.height));
+  glGetTextureImage(hdr_->texture(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(bottomUp.size() * sizeof(float)),
+                    bottomUp.data());
+  image.rgba.resize(bottomUp.size());
+  for (int y = 0; y < image.height; ++y)  // GL's rows start at the bottom, images' at the top
+    std::copy_n(&bottomUp[static_cast<size_t>(image.height - 1 - y) * row], row, &image.rgba[static_cast<size_t>(y) * row]);
+  return image;
+}
+
+DisplayImage SkyRenderer::readDisplay() const {
+  DisplayImage image{display_->width(), display_->height(), {}};
+  const size_t row = static_cast<size_t>(image.width) * 4;
+  std::vector<std::uint8_t> bottomUp(row * static_cast<size_t>(image.height));
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(display_->texture(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(bottomUp.size()),
+                    bottomUp.data());
+  image.rgba.resize(bottomUp.size());
+  for (int y = 0; y < image.height; ++y)
+    std::copy_n(&bottomUp[static_cast<size_t>(image.height - 1 - y) * row], row, &image.rgba[static_cast<size_t>(y) * row]);
+  return image;
+}
+
+}  // namespace skyig::render

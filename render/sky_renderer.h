@@ -1,0 +1,41 @@
+#pragma once
+// Renders one channel of a SkyState: the sky pass into a float target (absolute radiance),
+// then tone reproduction into an 8-bit target (what the projector shows).
+#include "render/channel.h"
+#include "render/gl_program.h"
+#include "render/image.h"
+#include "render/render_target.h"
+#include "render/sky_state.h"
+
+#include <memory>
+
+namespace skyig::render {
+
+class SkyRenderer {
+ public:
+  // Needs the GL context current on the calling thread, now and for every call.
+  SkyRenderer();
+  ~SkyRenderer();
+
+  // Draws both passes; the targets stay bound to the renderer until the next call.
+  void draw(const SkyState& state, const ChannelConfig& channel);
+  // Draws only the sky pass (for benchmarks of the pass itself).
+  void drawSkyPass(const SkyState& state, const ChannelConfig& channel);
+
+  HdrImage readHdr() const;
+  DisplayImage readDisplay() const;
+
+ private:
+  void ensureTargets(int width, int height);
+
+  GlProgram skyProgram_;
+  GlProgram toneProgram_;
+  UniformBuffer frameBlock_;
+  UniformBuffer skyBlock_;
+  UniformBuffer toneBlock_;
+  GLuint emptyVao_ = 0;
+  std::unique_ptr<RenderTarget> hdr_;
+  std::unique_ptr<RenderTarget> display_;
+};
+
+}  // namespace skyig::render

@@ -1,0 +1,71 @@
+#include "render/sky_state.h"
+
+#include "ephemeris/low_precision_sun.h"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace skyig::render {
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+
+std::string num(double v) { return std::to_string(v); }
+
+void validate(const ObserverState& o, const SkyConditions& c) {
+  require(std::isfinite(o.latitudeDeg) && std::abs(o.latitudeDeg) <= 90.0,
+          "latitude " + num(o.latitudeDeg) + " deg is outside [-90, 90]");
+  require(std::isfinite(o.longitudeDeg) && std::abs(o.longitudeDeg) <= 360.0,
+          "longitude " + num(o.longitudeDeg) + " deg is outside [-360, 360]");
+  require(std::isfinite(o.heightM) && o.heightM > -500.0 && o.heightM < 1e6,
+          "height " + num(o.heightM) + " m is outside (-500, 1e6)");
+  require(std::isfinite(o.attitude.yawDeg) && std::isfinite(o.attitude.pitchDeg) &&
+              std::isfinite(o.attitude.rollDeg),
+          "attitude has a non-finite angle");
+  const std::string dateError = ephemeris::validate(o.utc);
+  require(dateError.empty(), "UTC time: " + dateError);
+  require(o.utc.year >= 1800 && o.utc.year <= 2200,
+          "year " + std::to_string(o.utc.year) + " is outside 1800-2200");
+  require(std::isfinite(c.turbidity) && c.turbidity >= 1.7 && c.turbidity <= 10.0,
+          "turbidity " + num(c.turbidity) + " is outside [1.7, 10]");
+  require(std::isfinite(c.groundAlbedo) && c.groundAlbedo >= 0.0 && c.groundAlbedo <= 1.0,
+          "ground albedo " + num(c.groundAlbedo) + " is outside [0, 1]");
+  require(c.cieType >= 1 && c.cieType <= 15, "CIE sky type " + std::to_string(c.cieType) + " is outside 1..15");
+}
+
+}  // namespace
+
+SkyState buildSkyState(const ObserverState& observer, const SkyConditions& conditions,
+                       const std::optional<SunOverride>& sun) {
+  validate(observer, conditions);
+  SkyState s;
+  s.observer = observer;
+  s.conditions = conditions;
+  if (sun) {
+    require(std::isfinite(sun->azimuthDeg) && std::isfinite(sun->altitudeDeg) &&
+                std::abs(sun->altitudeDeg) <= 90.0,
+            "sun altitude " + num(sun->altitudeDeg) + " deg is outside [-90, 90]");
+    s.sunAzimuth = sun->azimuthDeg * kDeg;
+    s.sunAltitude = sun->altitudeDeg * kDeg;
+  } else {
+    const ephemeris::HorizontalPosition h = ephemeris::lowPrecisionSunHorizontal(
+        observer.utc, observer.latitudeDeg * kDeg, observer.longitudeDeg * kDeg);
+    s.sunAzimuth = h.azimuth;
+    s.sunAltitude = h.altitude;
+    s.conditions.sunDistanceAu =
+        ephemeris::lowPrecisionSunEquatorial(ephemeris::julianDateUtc(observer.utc)).distanceAu;
+  }
+  s.sky = makeAnalyticSky(s.conditions, s.sunAzimuth, s.sunAltitude);
+  // The eye adapts to the sky it sees: the solid-angle mean luminance of the upper hemisphere.
+  s.adaptationLuminance = s.sky.lighting.meanSkyLuminance;
+  return s;
+}
+
+}  // namespace skyig::render

@@ -1,0 +1,42 @@
+#pragma once
+// SkyState: everything the renderer needs for a frame, computed once per host state on the
+// worker thread (../shared/DESIGN.md) and shared, immutable, by every channel. Adaptation
+// comes from the sky model, never from a channel's pixels, so a dome shows no exposure seam.
+#include "ephemeris/time.h"
+#include "render/analytic_sky.h"
+#include "render/camera.h"
+#include "render/sky_conditions.h"
+
+#include <optional>
+
+namespace skyig::render {
+
+// Where the ownship is, how it is oriented, and when: the host's state, as used for a frame.
+struct ObserverState {
+  double latitudeDeg = 47.2603;   // Innsbruck airport (LOWI), a valley the sky is framed by
+  double longitudeDeg = 11.3439;
+  double heightM = 581.0;         // above the WGS84 ellipsoid
+  Attitude attitude{180.0, 5.0, 0.0};
+  ephemeris::UtcTime utc{2026, 6, 21, 17 * 3600.0};  // 19:00 CEST on midsummer's day
+};
+
+// Overrides the ephemeris (degrees), for tests and for rendering a given sun.
+struct SunOverride {
+  double azimuthDeg = 180.0;
+  double altitudeDeg = 45.0;
+};
+
+struct SkyState {
+  ObserverState observer;
+  SkyConditions conditions;
+  double sunAzimuth = 0.0;   // radians, from north through east
+  double sunAltitude = 0.0;  // radians, airless
+  AnalyticSkyState sky;
+  double adaptationLuminance = 1.0;  // the eye's world adaptation, cd/m^2
+};
+
+// Throws std::invalid_argument naming the bad value (latitude out of range, NaN, bad date).
+SkyState buildSkyState(const ObserverState& observer, const SkyConditions& conditions,
+                       const std::optional<SunOverride>& sun = std::nullopt);
+
+}  // namespace skyig::render

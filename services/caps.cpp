@@ -1,0 +1,51 @@
+#include "services/caps.h"
+
+#include "render/gl_context.h"
+#include "services/version.h"
+
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <sstream>
+
+namespace skyig::services {
+
+namespace {
+
+// Whether the kernel offers a socket family (AF_CAN is missing on kernels without CAN).
+std::string socketFamilySupport(int family, int type, int protocol) {
+  const int fd = ::socket(family, type, protocol);
+  if (fd < 0) return std::string("unavailable (") + std::strerror(errno) + ")";
+  ::close(fd);
+  return "available";
+}
+
+}  // namespace
+
+std::string versionText() {
+  std::ostringstream out;
+  out << "skyig " << kVersion << " (" << SKYIG_BUILD_TYPE << ", " << SKYIG_COMPILER << ")";
+  return out.str();
+}
+
+std::string capsText() {
+  std::ostringstream out;
+  try {
+    const auto context = render::createHeadlessContext();
+    const render::GlInfo& i = context->info();
+    out << "GL renderer:   " << i.renderer << " (" << i.vendor << ")\n"
+        << "GL version:    " << i.version << ", GLSL " << i.glslVersion << ", via " << i.platform << "\n"
+        << "GL limits:     max texture " << i.maxTextureSize << ", max 3D texture " << i.max3dTextureSize << "\n"
+        << "GPU timing:    " << (i.softwareRenderer ? "software renderer: wall clock after glFinish" : "GL timer queries")
+        << "\n";
+  } catch (const std::exception& e) {
+    out << "GL:            unavailable headless: " << e.what() << "\n";
+  }
+  out << "UDP sockets:   " << socketFamilySupport(AF_INET, SOCK_DGRAM, 0) << "\n"
+      << "SocketCAN:     " << socketFamilySupport(29 /* PF_CAN */, SOCK_RAW, 1 /* CAN_RAW */) << "\n";
+  return out.str();
+}
+
+}  // namespace skyig::services

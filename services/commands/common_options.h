@@ -1,0 +1,26 @@
+#pragma once
+// Options shared by the commands that set up a sky: configuration file, place, attitude,
+// time, sky model and sun override. Values left unset keep the configuration's.
+#include "services/node_config.h"
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+
+namespace skyig::services {
+
+struct SkyOptions {
+  std::string configPath;
+  std::optional<double> lat, lon, alt, yaw, pitch, roll, turbidity, groundAlbedo;
+  std::optional<double> sunAzimuth, sunElevation;
+  std::optional<std::string> utc, skyModel;
+  std::optional<int> cieType;
+
+  void add(CLI::App& command);
+  // The configuration with the options applied; throws ConfigError on a bad value.
+  NodeConfig resolve() const;
+  std::optional<render::SunOverride> sunOverride() const;
+};
+
+}  // namespace skyig::services

@@ -1,0 +1,141 @@
+#include "services/commands/render_command.h"
+
+#include "ephemeris/time.h"
+#include "render/gl_context.h"
+#include "render/image_io.h"
+#include "render/sky_renderer.h"
+#include "services/commands/common_options.h"
+#include "services/version.h"
+
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <numbers>
+
+namespace skyig::services {
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+struct RenderOptions {
+  SkyOptions sky;
+  std::string channel;
+  bool allChannels = false;
+  std::string size;
+  std::string exrPath;
+  std::string pngPath;
+};
+
+// "out/sky.exr" + "left" -> "out/sky_left.exr", for one file per channel.
+std::string perChannelPath(const std::string& path, const std::string& channel) {
+  const std::filesystem::path p(path);
+  return (p.parent_path() / (p.stem().string() + "_" + channel + p.extension().string())).string();
+}
+
+void parseSize(const std::string& text, render::ChannelConfig& channel) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 16 ||
+      h < 16 || w > 16384 || h > 16384)
+    throw ConfigError("--size: expected WIDTHxHEIGHT with each in 16..16384, got \"" + text + "\"");
+  channel.width = w;
+  channel.height = h;
+}
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+render::ImageAttributes attributesOf(const render::SkyState& s, const render::ChannelConfig& c) {
+  const auto& o = s.observer;
+  return {
+      {"skyig:version", std::string(kVersion)},
+      {"skyig:utc", ephemeris::formatIso8601Utc(o.utc)},
+      {"skyig:latitude_deg", fixed(o.latitudeDeg, 6)},
+      {"skyig:longitude_deg", fixed(o.longitudeDeg, 6)},
+      {"skyig:altitude_m", fixed(o.heightM, 2)},
+      {"skyig:yaw_deg", fixed(o.attitude.yawDeg, 3)},
+      {"skyig:pitch_deg", fixed(o.attitude.pitchDeg, 3)},
+      {"skyig:roll_deg", fixed(o.attitude.rollDeg, 3)},
+      {"skyig:channel", c.name},
+      {"skyig:sky_model", std::string(render::toString(s.conditions.model))},
+      {"skyig:cie_type", std::to_string(s.conditions.cieType)},
+      {"skyig:turbidity", fixed(s.conditions.turbidity, 3)},
+      {"skyig:sun_azimuth_deg", fixed(s.sunAzimuth / kDeg, 4)},
+      {"skyig:sun_altitude_deg", fixed(s.sunAltitude / kDeg, 4)},
+      {"skyig:adaptation_cd_m2", fixed(s.adaptationLuminance, 6)},
+      {"skyig:units", "linear Rec.709, Y in cd/m^2"},
+  };
+}
+
+int run(const RenderOptions& opt) {
+  if (opt.exrPath.empty() && opt.pngPath.empty()) throw ConfigError("render: give --exr PATH and/or --png PATH");
+  NodeConfig config = opt.sky.resolve();
+  std::vector<render::ChannelConfig> channels;
+  if (opt.allChannels) {
+    channels = config.channels;
+  } else if (!opt.channel.empty()) {
+    for (const auto& c : config.channels)
+      if (c.name == opt.channel) channels.push_back(c);
+    if (channels.empty()) {
+      std::string names;
+      for (const auto& c : config.channels) names += (names.empty() ? "" : ", ") + c.name;
+      throw ConfigError("--channel: no channel named \"" + opt.channel + "\" (the configuration has: " + names + ")");
+    }
+  } else {
+    channels.push_back(config.channels.front());
+  }
+  if (!opt.size.empty())
+    for (auto& c : channels) parseSize(opt.size, c);
+
+  // Every output is checked before any work, so a bad path fails fast and writes nothing.
+  const bool perChannel = opt.allChannels && channels.size() > 1;
+  auto outPath = [&](const std::string& p, const render::ChannelConfig& c) {
+    return perChannel ? perChannelPath(p, c.name) : p;
+  };
+  for (const auto& c : channels) {
+    if (!opt.exrPath.empty()) render::checkWritable(outPath(opt.exrPath, c));
+    if (!opt.pngPath.empty()) render::checkWritable(outPath(opt.pngPath, c));
+  }
+
+  const render::SkyState state = render::buildSkyState(config.observer, config.sky, opt.sky.sunOverride());
+  const auto context = render::createHeadlessContext();
+  spdlog::info("GL: {} ({}, {})", context->info().renderer, context->info().version, context->info().platform);
+  render::SkyRenderer renderer;
+  std::printf("sky: %s, sun azimuth %.2f deg, altitude %.2f deg, adaptation %.4g cd/m^2\n",
+              std::string(render::toString(state.conditions.model)).c_str(), state.sunAzimuth / kDeg,
+              state.sunAltitude / kDeg, state.adaptationLuminance);
+  for (const auto& c : channels) {
+    const auto start = std::chrono::steady_clock::now();
+    renderer.draw(state, c);
+    if (!opt.exrPath.empty()) render::writeExr(outPath(opt.exrPath, c), renderer.readHdr(), attributesOf(state, c));
+    if (!opt.pngPath.empty()) render::writePng(outPath(opt.pngPath, c), renderer.readDisplay(), c.display.gamma);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::printf("channel %s: %dx%d in %.1f ms ->%s%s\n", c.name.c_str(), c.width, c.height, ms,
+                opt.exrPath.empty() ? "" : (" " + outPath(opt.exrPath, c)).c_str(),
+                opt.pngPath.empty() ? "" : (" " + outPath(opt.pngPath, c)).c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+void registerRenderCommand(CLI::App& app, int& exitCode) {
+  auto opt = std::make_shared<RenderOptions>();
+  CLI::App* c = app.add_subcommand("render", "Render one frame of one or all channels to OpenEXR and/or PNG, headless");
+  opt->sky.add(*c);
+  c->add_option("--channel", opt->channel, "Channel to render (default: the first)");
+  c->add_flag("--all-channels", opt->allChannels, "Render every channel, one file each (NAME_CHANNEL.ext)");
+  c->add_option("--size", opt->size, "Override the channel resolution, WIDTHxHEIGHT");
+  c->add_option("--exr", opt->exrPath, "OpenEXR output: half RGBA, linear Rec.709, values in cd/m^2");
+  c->add_option("--png", opt->pngPath, "PNG output: 8-bit, tone reproduced for the channel's display");
+  c->callback([opt, &exitCode] { exitCode = run(*opt); });
+}
+
+}  // namespace skyig::services

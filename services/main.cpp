@@ -1,0 +1,71 @@
+// skyig: the sky image generator of a helicopter flight simulator. One executable, one
+// subcommand per use (../shared/DESIGN.md, "Interfaces people and tests rely on").
+#include "render/gl_context.h"
+#include "render/gl_program.h"
+#include "render/image_io.h"
+#include "services/caps.h"
+#include "services/commands/bench_command.h"
+#include "services/commands/render_command.h"
+#include "services/node_config.h"
+
+#include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+#include <stdexcept>
+
+int main(int argc, char** argv) {
+  using namespace skyig::services;
+  CLI::App app{"skyig — physically based sky image generator for flight simulation"};
+  app.require_subcommand(0, 1);
+  bool version = false, caps = false;
+  app.add_flag("--version", version, "Print the build and exit");
+  app.add_flag("--caps", caps, "With --version: also the GL renderer, its limits and the transports");
+  std::string logLevel = "warn";
+  app.add_option("--log-level", logLevel, "trace, debug, info, warn, error")
+      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}));
+
+  int exitCode = 0;
+  registerRenderCommand(app, exitCode);
+  registerBenchCommand(app, exitCode);
+
+  // Exit codes: 0 done; 2 bad flags, configuration, input value or output path; 3 the GPU
+  // context or a shader failed; 1 anything else.
+  try {
+    app.parse_complete_callback([&] { spdlog::set_level(spdlog::level::from_str(logLevel)); });
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  } catch (const ConfigError& e) {
+    std::fprintf(stderr, "skyig: error: %s\n", e.what());
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "skyig: error: %s\n", e.what());
+    return 2;
+  } catch (const skyig::render::ImageIoError& e) {
+    std::fprintf(stderr, "skyig: error: %s\n", e.what());
+    return 2;
+  } catch (const skyig::render::GlContextError& e) {
+    std::fprintf(stderr, "skyig: GPU error: %s\n", e.what());
+    return 3;
+  } catch (const skyig::render::ShaderCompileError& e) {
+    std::fprintf(stderr, "skyig: shader error: %s\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "skyig: error: %s\n", e.what());
+    return 1;
+  }
+  if (version || caps) {
+    std::printf("%s\n", versionText().c_str());
+    if (caps) std::printf("%s", capsText().c_str());
+    return 0;
+  }
+  if (app.get_subcommands().empty()) {
+    std::printf("%s", app.help().c_str());
+    return 0;
+  }
+  return exitCode;
+}

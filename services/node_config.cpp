@@ -1,0 +1,200 @@
+#include "services/node_config.h"
+
+#include "ephemeris/time.h"
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace skyig::services {
+
+namespace {
+
+// Reads typed values out of a TOML table, remembering which keys were used so that a
+// misspelt key is reported instead of silently ignored.
+class TableReader {
+ public:
+  TableReader(const toml::table& table, std::string prefix, const std::string& source)
+      : table_(table), prefix_(std::move(prefix)), source_(source) {}
+
+  [[noreturn]] void fail(const toml::node* node, const std::string& key, const std::string& message) const {
+    std::ostringstream out;
+    const auto& region = node ? node->source() : table_.source();
+    out << source_ << ":" << region.begin.line << ": " << prefix_ << key << ": " << message;
+    throw ConfigError(out.str());
+  }
+
+  double number(const std::string& key, double value, double lo, double hi) {
+    const toml::node* n = find(key);
+    if (!n) return value;
+    std::optional<double> v = n->value<double>();  // integers convert too
+    if (!v || !std::isfinite(*v) || *v < lo || *v > hi)
+      fail(n, key, "expected a number in [" + fmt(lo) + ", " + fmt(hi) + "], got " + show(*n));
+    return *v;
+  }
+
+  int integer(const std::string& key, int value, int lo, int hi) {
+    const toml::node* n = find(key);
+    if (!n) return value;
+    const std::optional<int64_t> v = n->is_integer() ? n->value<int64_t>() : std::nullopt;
+    if (!v || *v < lo || *v > hi)
+      fail(n, key, "expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + show(*n));
+    return static_cast<int>(*v);
+  }
+
+  std::string string(const std::string& key, std::string value, const std::string& expected = "a string") {
+    const toml::node* n = find(key);
+    if (!n) return value;
+    if (!n->is_string()) fail(n, key, "expected " + expected + ", got " + show(*n));
+    return *n->value<std::string>();
+  }
+
+  const toml::node* find(const std::string& key) {
+    used_.insert(key);
+    return table_.get(key);
+  }
+
+  // Every key of the table must have been read.
+  void rejectUnknownKeys() const {
+    for (const auto& [key, node] : table_)
+      if (!used_.count(std::string(key.str())))
+        fail(&node, std::string(key.str()), "unknown key (misspelt? see config/skyig.toml for every key)");
+  }
+
+  const std::string& source() const { return source_; }
+  const std::string& prefix() const { return prefix_; }
+
+ private:
+  static std::string fmt(double v) {
+    std::ostringstream o;
+    o << v;
+    return o.str();
+  }
+  static std::string show(const toml::node& n) {
+    std::ostringstream o;
+    n.visit([&o](const auto& x) { o << x; });
+    return o.str();
+  }
+
+  const toml::table& table_;
+  std::string prefix_;
+  const std::string& source_;
+  std::set<std::string> used_;
+};
+
+const toml::table* subTable(TableReader& parent, const std::string& key) {
+  const toml::node* n = parent.find(key);
+  if (!n) return nullptr;
+  if (!n->is_table()) parent.fail(n, key, "expected a table [" + key + "]");
+  return n->as_table();
+}
+
+void readSky(TableReader& r, render::SkyConditions& sky) {
+  const std::string model = r.string("model", std::string(render::toString(sky.model)), "\"preetham\" or \"cie\"");
+  if (!render::parseSkyModel(model, sky.model))
+    r.fail(r.find("model"), "model", "expected \"preetham\" or \"cie\", got \"" + model + "\"");
+  sky.cieType = r.integer("cie_type", sky.cieType, 1, 15);
+  sky.turbidity = r.number("turbidity", sky.turbidity, 1.7, 10.0);
+  sky.groundAlbedo = r.number("ground_albedo", sky.groundAlbedo, 0.0, 1.0);
+  r.rejectUnknownKeys();
+}
+
+void readObserver(TableReader& r, render::ObserverState& o) {
+  o.latitudeDeg = r.number("latitude", o.latitudeDeg, -90.0, 90.0);
+  o.longitudeDeg = r.number("longitude", o.longitudeDeg, -180.0, 360.0);
+  o.heightM = r.number("altitude", o.heightM, -400.0, 1e6);
+  o.attitude.yawDeg = r.number("yaw", o.attitude.yawDeg, -360.0, 360.0);
+  o.attitude.pitchDeg = r.number("pitch", o.attitude.pitchDeg, -90.0, 90.0);
+  o.attitude.rollDeg = r.number("roll", o.attitude.rollDeg, -180.0, 180.0);
+  if (const toml::node* n = r.find("utc")) {
+    const std::optional<std::string> text = n->value<std::string>();
+    const auto utc = text ? ephemeris::parseIso8601Utc(*text) : std::nullopt;
+    if (!utc) r.fail(n, "utc", "expected a UTC time like \"2026-06-21T19:30:00Z\"");
+    o.utc = *utc;
+  }
+  r.rejectUnknownKeys();
+}
+
+render::ChannelConfig readChannel(TableReader& r, size_t index) {
+  render::ChannelConfig c;
+  c.name = r.string("name", "channel" + std::to_string(index));
+  if (c.name.empty() || c.name.find_first_of("/\\ \t") != std::string::npos)
+    r.fail(r.find("name"), "name", "expected a non-empty name without spaces or slashes");
+  c.offset.yawDeg = r.number("yaw", 0.0, -360.0, 360.0);
+  c.offset.pitchDeg = r.number("pitch", 0.0, -90.0, 90.0);
+  c.offset.rollDeg = r.number("roll", 0.0, -180.0, 180.0);
+  c.frustum.leftDeg = r.number("left", c.frustum.leftDeg, 0.1, 89.0);
+  c.frustum.rightDeg = r.number("right", c.frustum.rightDeg, 0.1, 89.0);
+  c.frustum.downDeg = r.number("down", c.frustum.downDeg, 0.1, 89.0);
+  c.frustum.upDeg = r.number("up", c.frustum.upDeg, 0.1, 89.0);
+  c.width = r.integer("width", c.width, 16, 16384);
+  c.height = r.integer("height", c.height, 16, 16384);
+  if (const toml::table* t = subTable(r, "display")) {
+    TableReader d(*t, r.prefix() + "display.", r.source());
+    c.display.maxLuminance = d.number("max_luminance", c.display.maxLuminance, 1.0, 1e5);
+    c.display.ambientLuminance = d.number("ambient_luminance", c.display.ambientLuminance, 0.0, 1e3);
+    c.display.gamma = d.number("gamma", c.display.gamma, 1.0, 3.0);
+    c.display.adaptationLuminance =
+        d.number("adaptation_luminance", c.display.maxLuminance / 10.0, 0.01, 1e5);
+    d.rejectUnknownKeys();
+  }
+  r.rejectUnknownKeys();
+  return c;
+}
+
+}  // namespace
+
+NodeConfig parseNodeConfig(const std::string& text, const std::string& sourceName) {
+  toml::table root;
+  try {
+    root = toml::parse(text, sourceName);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream out;
+    out << sourceName << ":" << e.source().begin.line << ": " << e.description();
+    throw ConfigError(out.str());
+  }
+  NodeConfig config;
+  TableReader r(root, "", sourceName);
+  if (const toml::table* t = subTable(r, "node")) {
+    TableReader n(*t, "node.", sourceName);
+    config.nodeName = n.string("name", config.nodeName);
+    n.rejectUnknownKeys();
+  }
+  if (const toml::table* t = subTable(r, "sky")) {
+    TableReader s(*t, "sky.", sourceName);
+    readSky(s, config.sky);
+  }
+  if (const toml::table* t = subTable(r, "observer")) {
+    TableReader o(*t, "observer.", sourceName);
+    readObserver(o, config.observer);
+  }
+  if (const toml::node* n = r.find("channel")) {
+    const toml::array* channels = n->as_array();
+    if (!channels || channels->empty() || !channels->is_array_of_tables())
+      r.fail(n, "channel", "expected one or more [[channel]] tables");
+    config.channels.clear();
+    std::set<std::string> names;
+    for (size_t i = 0; i < channels->size(); ++i) {
+      const toml::table& t = *channels->get(i)->as_table();
+      TableReader c(t, "channel[" + std::to_string(i) + "].", sourceName);
+      config.channels.push_back(readChannel(c, i));
+      if (!names.insert(config.channels.back().name).second)
+        c.fail(c.find("name"), "name", "duplicate channel name \"" + config.channels.back().name + "\"");
+    }
+  }
+  r.rejectUnknownKeys();
+  return config;
+}
+
+NodeConfig loadNodeConfig(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError(path + ": cannot open the configuration file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseNodeConfig(text.str(), path);
+}
+
+}  // namespace skyig::services

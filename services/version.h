@@ -1,0 +1,6 @@
+#pragma once
+#include <string_view>
+
+namespace skyig::services {
+inline constexpr std::string_view kVersion = SKYIG_VERSION;
+}

@@ -1,0 +1,15 @@
+// Sky pass of the analytic models (CIE general sky, Preetham): absolute linear Rec.709
+// radiance in cd/m^2 into a float target.
+#include "common/uniforms.h"
+#include "sky/analytic_sky.glsl"
+
+in vec3 vViewRay;
+layout(location = 0) out vec4 outRadiance;
+
+void main() {
+  AnalyticSky sky = AnalyticSky(perezA.xyz, perezB.xyz, perezC.xyz, perezD.xyz, perezE.xyz,
+                                perezK.xyz, zenith.xyz, skySunDirection.xyz, skySunDirection.w,
+                                sunDirection.xyz, sunDirection.w, sunRadiance.rgb,
+                                groundRadiance.rgb);
+  outRadiance = vec4(analyticSkyRadiance(sky, normalize(vViewRay)), 1.0);
+}

@@ -1,0 +1,210 @@
+// Headless renders on the real GL path (llvmpipe where there is no GPU), checked for physics
+// and against the same shader code evaluated in double precision on the CPU.
+#include "render/analytic_sky.h"
+#include "render/gl_context.h"
+#include "render/image_io.h"
+#include "render/sky_renderer.h"
+#include "shaders/physics.h"
+
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <numbers>
+
+using namespace skyig;
+using namespace skyig::render;
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr int kW = 160, kH = 120;
+
+class GlRender : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    context_ = createHeadlessContext().release();
+    renderer_ = new SkyRenderer();
+  }
+  static void TearDownTestSuite() {
+    delete renderer_;
+    delete context_;
+  }
+
+  static ChannelConfig channel(double pitchUp = 0.0, Frustum f = Frustum{40, 40, 30, 30}) {
+    ChannelConfig c;
+    c.width = kW;
+    c.height = kH;
+    c.frustum = f;
+    c.offset.pitchDeg = pitchUp;
+    return c;
+  }
+
+  static SkyState state(double yaw, double sunAz, double sunAlt, SkyConditions c = {}) {
+    ObserverState o;
+    o.attitude = {yaw, 0.0, 0.0};
+    return buildSkyState(o, c, SunOverride{sunAz, sunAlt});
+  }
+
+  static glm::dvec3 ray(const SkyState& s, const ChannelConfig& c, int x, int y) {
+    return pixelRay(ndcToWorld(eyeToEnu(s.observer.attitude, c.offset), c.frustum), x, y, c.width, c.height);
+  }
+
+  static glm::dvec3 rgb(const HdrImage& im, int x, int y) {
+    const float* p = im.pixel(x, y);
+    return {p[0], p[1], p[2]};
+  }
+
+  static inline GlContext* context_ = nullptr;
+  static inline SkyRenderer* renderer_ = nullptr;
+};
+
+double blueness(const glm::dvec3& c) { return c.b / (c.r + c.g + c.b); }
+
+}  // namespace
+
+// Noon, looking up across the sky: the zenith is bluer than the horizon.
+TEST_F(GlRender, ZenithBluerThanHorizonAtNoon) {
+  const ChannelConfig c = channel(45.0, Frustum{50, 50, 50, 50});
+  const SkyState s = state(0.0, 180.0, 60.0);  // looking north, sun high in the south
+  renderer_->draw(s, c);
+  const HdrImage im = renderer_->readHdr();
+  int zx = 0, zy = 0, hx = 0, hy = 0;
+  double best = -1.0, lowest = 1.0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const glm::dvec3 r = ray(s, c, x, y);
+      if (r.z > best) best = r.z, zx = x, zy = y;
+      if (r.z > 0.0 && r.z < lowest) lowest = r.z, hx = x, hy = y;
+    }
+  ASSERT_GT(best, 0.99);
+  ASSERT_LT(lowest, 0.05);
+  EXPECT_GT(blueness(rgb(im, zx, zy)), blueness(rgb(im, hx, hy)) + 0.02);
+}
+
+// The pixels nearest the sun are the brightest of the frame.
+TEST_F(GlRender, BrightestPixelsAreNearestTheSun) {
+  const ChannelConfig c = channel();
+  const SkyState s = state(100.0, 110.0, 12.0);
+  renderer_->draw(s, c);
+  const HdrImage im = renderer_->readHdr();
+  double brightest = 0.0, angleOfBrightest = 180.0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const double l = shader::rec709Luminance(rgb(im, x, y));
+      if (l > brightest)
+        brightest = l, angleOfBrightest = std::acos(glm::dot(ray(s, c, x, y), s.sky.params.sunDirection)) / kDeg;
+    }
+  const double pixelDeg = 80.0 / kW;
+  EXPECT_LT(angleOfBrightest, 1.5 * pixelDeg);
+}
+
+// An overcast sky is grey: no pixel of it has more than 1% chroma.
+TEST_F(GlRender, OvercastSkyIsGrey) {
+  SkyConditions overcast;
+  overcast.model = SkyModel::Cie;
+  overcast.cieType = 1;
+  const ChannelConfig c = channel(20.0);
+  const SkyState s = state(0.0, 200.0, 35.0, overcast);
+  renderer_->draw(s, c);
+  const HdrImage im = renderer_->readHdr();
+  for (int y = 0; y < kH; y += 7)
+    for (int x = 0; x < kW; x += 7) {
+      const glm::dvec3 p = rgb(im, x, y);
+      EXPECT_LT((std::max({p.r, p.g, p.b}) - std::min({p.r, p.g, p.b})) / std::max({p.r, p.g, p.b}), 0.01);
+    }
+}
+
+// The EXR holds the model's radiance in cd/m^2: every sky and ground pixel read back equals
+// the CPU evaluation of the same shader code within half-float precision (plus float
+// rounding on the GPU). Pixels on the sun's disc edge and the horizon row are skipped.
+TEST_F(GlRender, ExrValuesEqualTheModelInCandelaPerSquareMetre) {
+  const ChannelConfig c = channel(10.0);
+  const SkyState s = state(30.0, 40.0, 25.0);
+  renderer_->draw(s, c);
+  const std::string path = (std::filesystem::temp_directory_path() / "skyig_test_exr_values.exr").string();
+  writeExr(path, renderer_->readHdr(), {{"skyig:channel", c.name}});
+  const ExrFile file = readExr(path);
+  std::filesystem::remove(path);
+  EXPECT_EQ(file.whiteLuminance, 1.0f);
+  EXPECT_EQ(file.attributes.at("skyig:channel"), c.name);
+  ASSERT_EQ(file.image.width, kW);
+  int compared = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const glm::dvec3 r = ray(s, c, x, y);
+      if (std::abs(r.z) < 2e-3 || glm::dot(r, s.sky.params.sunDirection) > std::cos(1.0 * kDeg)) continue;
+      const glm::dvec3 expected = analyticSkyRadiance(s.sky.params, r);
+      const glm::dvec3 got = rgb(file.image, x, y);
+      for (int k = 0; k < 3; ++k)
+        ASSERT_NEAR(got[k], expected[k], 2e-3 * std::abs(expected[k]) + 1e-3) << x << "," << y << " channel " << k;
+      ++compared;
+    }
+  EXPECT_GT(compared, kW * kH * 9 / 10);
+}
+
+// The 8-bit frame equals the CPU's tone reproduction of the CPU's radiance within the
+// +-1 LSB dither and rounding.
+TEST_F(GlRender, DisplayFrameEqualsCpuToneReproduction) {
+  const ChannelConfig c = channel(5.0);
+  const SkyState s = state(200.0, 230.0, 8.0);
+  renderer_->draw(s, c);
+  const DisplayImage im = renderer_->readDisplay();
+  const shader::DisplayModel d{c.display.maxLuminance, c.display.ambientLuminance, c.display.gamma,
+                               c.display.adaptationLuminance};
+  for (int y = 1; y < kH; y += 5)
+    for (int x = 1; x < kW; x += 5) {
+      const glm::dvec3 r = ray(s, c, x, y);
+      if (std::abs(r.z) < 2e-3) continue;
+      const glm::dvec3 n = shader::toneReproduce(analyticSkyRadiance(s.sky.params, r), s.adaptationLuminance, d);
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(im.rgba[(static_cast<size_t>(y) * kW + x) * 4 + k], n[k] * 255.0, 2.0) << x << "," << y;
+    }
+}
+
+// Looking along the horizon at sunset: no NaN or Inf anywhere, in either target.
+TEST_F(GlRender, HorizonFrameIsFinite) {
+  for (double sunAlt : {0.0, -0.2, 0.3, -10.0}) {
+    const ChannelConfig c = channel(0.0, Frustum{60, 60, 2, 2});
+    const SkyState s = state(270.0, 270.0, sunAlt);
+    renderer_->draw(s, c);
+    const HdrImage im = renderer_->readHdr();
+    for (float v : im.rgba) ASSERT_TRUE(std::isfinite(v)) << "sun altitude " << sunAlt;
+  }
+}
+
+// The PNG is written, readable, the channel's size, and not flat.
+TEST_F(GlRender, PngIsWrittenAndNotFlat) {
+  const ChannelConfig c = channel(15.0);
+  const SkyState s = state(250.0, 260.0, 20.0);
+  renderer_->draw(s, c);
+  const std::string path = (std::filesystem::temp_directory_path() / "skyig_test_not_flat.png").string();
+  writePng(path, renderer_->readDisplay(), c.display.gamma);
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  ASSERT_TRUE(png_image_begin_read_from_file(&image, path.c_str())) << image.message;
+  image.format = PNG_FORMAT_GRAY;
+  std::vector<unsigned char> grey(PNG_IMAGE_SIZE(image));
+  ASSERT_TRUE(png_image_finish_read(&image, nullptr, grey.data(), 0, nullptr));
+  std::filesystem::remove(path);
+  EXPECT_EQ(image.width, static_cast<unsigned>(kW));
+  EXPECT_EQ(image.height, static_cast<unsigned>(kH));
+  double mean = 0.0, sq = 0.0;
+  for (unsigned char g : grey) mean += g, sq += double(g) * g;
+  const double count = static_cast<double>(grey.size());
+  mean /= count;
+  EXPECT_GT(std::sqrt(sq / count - mean * mean), 10.0);  // levels of standard deviation
+}
+
+// Rendering the same state twice gives the same pixels (determinism on one driver).
+TEST_F(GlRender, SameStateSameFrame) {
+  const ChannelConfig c = channel();
+  const SkyState s = state(10.0, 20.0, 30.0);
+  renderer_->draw(s, c);
+  const HdrImage a = renderer_->readHdr();
+  renderer_->draw(state(200.0, 20.0, 5.0), c);
+  renderer_->draw(s, c);
+  EXPECT_EQ(a.rgba, renderer_->readHdr().rgba);
+}

@@ -1,0 +1,139 @@
+// The skyig executable as a user meets it: defaults, outputs, and exit code 2 with a clear
+// message for bad flags, bad configuration and unwritable outputs — writing nothing then.
+#include "render/image_io.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("skyig_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  Result run(const std::string& args) const {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command = std::string(SKYIG_EXECUTABLE) + " " + args + " >" + out.string() + " 2>" + err.string();
+    const int status = std::system(command.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+  }
+
+  fs::path write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir_ / name) << text;
+    return dir_ / name;
+  }
+
+  size_t imageFiles() const {
+    size_t n = 0;
+    for (const auto& e : fs::directory_iterator(dir_))
+      if (e.path().extension() != ".txt" && e.path().extension() != ".toml") ++n;
+    return n;
+  }
+
+  fs::path dir_;
+};
+
+}  // namespace
+
+TEST_F(Cli, RendersDefaultSkyWithOnlyAnOutput) {
+  const Result r = run("render --size 64x48 --exr " + (dir_ / "sky.exr").string() + " --png " + (dir_ / "sky.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto exr = skyig::render::readExr((dir_ / "sky.exr").string());
+  EXPECT_EQ(exr.image.width, 64);
+  EXPECT_EQ(exr.whiteLuminance, 1.0f);
+  EXPECT_EQ(exr.attributes.at("skyig:utc"), "2026-06-21T17:00:00.000Z");
+  EXPECT_EQ(exr.attributes.at("skyig:channel"), "front");
+  EXPECT_EQ(exr.attributes.at("skyig:sky_model"), "preetham");
+  EXPECT_TRUE(fs::file_size(dir_ / "sky.png") > 100);
+}
+
+TEST_F(Cli, AllChannelsWritesOneFilePerChannel) {
+  const Result r = run("render --config " + std::string(SKYIG_SOURCE_DIR) +
+                       "/config/dome5.toml --all-channels --size 32x32 --png " + (dir_ / "dome.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* name : {"left", "centre", "right", "chin-left", "chin-right"})
+    EXPECT_TRUE(fs::exists(dir_ / ("dome_" + std::string(name) + ".png"))) << name;
+}
+
+TEST_F(Cli, BadFlagValueExitsTwo) {
+  const Result r = run("render --lat 100 --png " + (dir_ / "x.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("--lat"), std::string::npos) << r.err;
+  EXPECT_EQ(imageFiles(), 0u);
+}
+
+TEST_F(Cli, UnknownFlagAndMissingOutputExitTwo) {
+  EXPECT_EQ(run("render --latitude 10 --png x.png").exitCode, 2);
+  const Result r = run("render --lat 10");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("--exr PATH and/or --png PATH"), std::string::npos) << r.err;
+  const Result size = run("render --size 12x-4 --png " + (dir_ / "x.png").string());
+  EXPECT_EQ(size.exitCode, 2);
+  EXPECT_NE(size.err.find("--size"), std::string::npos) << size.err;
+}
+
+TEST_F(Cli, BadConfigNamesFileLineAndKey) {
+  const fs::path cfg = write("bad.toml", "[sky]\nturbidity = 2.0\ncie_type = 22\n");
+  const Result r = run("render --config " + cfg.string() + " --png " + (dir_ / "x.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find(cfg.string() + ":3: sky.cie_type: expected an integer in [1, 15], got 22"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(imageFiles(), 0u);
+}
+
+TEST_F(Cli, UnwritableOutputExitsTwoAndWritesNothing) {
+  const std::string good = (dir_ / "good.exr").string();
+  const Result r = run("render --exr " + good + " --png /nonexistent-dir/sky.png");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("/nonexistent-dir"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(good));  // checked before rendering: not even the good output
+  EXPECT_EQ(imageFiles(), 0u);
+}
+
+TEST_F(Cli, UnknownChannelListsTheChannels) {
+  const Result r = run("render --config " + std::string(SKYIG_SOURCE_DIR) + "/config/dome5.toml --channel nose --png " +
+                       (dir_ / "x.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("left, centre, right, chin-left, chin-right"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, SunOverrideNeedsBothAngles) {
+  const Result r = run("render --sun-azimuth 10 --png " + (dir_ / "x.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("--sun-elevation"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, VersionAndCaps) {
+  const Result r = run("--version --caps");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("skyig 0."), std::string::npos);
+  EXPECT_NE(r.out.find("GL renderer:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("SocketCAN:"), std::string::npos) << r.out;
+}

@@ -1,0 +1,91 @@
+// Configuration files: the documented defaults, the example dome, and clear errors that name
+// the file, the line, the key and what was expected.
+#include "services/node_config.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace skyig::services;
+
+namespace {
+std::string source(const std::string& rel) { return std::string(SKYIG_SOURCE_DIR) + "/" + rel; }
+
+std::string errorOf(const std::string& text) {
+  try {
+    parseNodeConfig(text, "bad.toml");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+}  // namespace
+
+// config/skyig.toml documents every key with its default: parsing it must give the built-in
+// defaults, so the documentation cannot drift from the code.
+TEST(NodeConfig, DocumentedDefaultsEqualBuiltInDefaults) {
+  const NodeConfig file = loadNodeConfig(source("config/skyig.toml"));
+  const NodeConfig builtIn = parseNodeConfig("", "empty");
+  EXPECT_EQ(file.nodeName, builtIn.nodeName);
+  EXPECT_EQ(file.sky.model, builtIn.sky.model);
+  EXPECT_EQ(file.sky.cieType, builtIn.sky.cieType);
+  EXPECT_EQ(file.sky.turbidity, builtIn.sky.turbidity);
+  EXPECT_EQ(file.sky.groundAlbedo, builtIn.sky.groundAlbedo);
+  EXPECT_EQ(file.observer.latitudeDeg, builtIn.observer.latitudeDeg);
+  EXPECT_EQ(file.observer.longitudeDeg, builtIn.observer.longitudeDeg);
+  EXPECT_EQ(file.observer.heightM, builtIn.observer.heightM);
+  EXPECT_EQ(file.observer.attitude.yawDeg, builtIn.observer.attitude.yawDeg);
+  EXPECT_EQ(file.observer.attitude.pitchDeg, builtIn.observer.attitude.pitchDeg);
+  EXPECT_EQ(file.observer.utc.secondsOfDay, builtIn.observer.utc.secondsOfDay);
+  EXPECT_EQ(file.observer.utc.day, builtIn.observer.utc.day);
+  ASSERT_EQ(file.channels.size(), 1u);
+  const auto& a = file.channels[0];
+  const auto& b = builtIn.channels[0];
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.frustum.leftDeg, b.frustum.leftDeg);
+  EXPECT_EQ(a.frustum.upDeg, b.frustum.upDeg);
+  EXPECT_EQ(a.width, b.width);
+  EXPECT_EQ(a.height, b.height);
+  EXPECT_EQ(a.display.maxLuminance, b.display.maxLuminance);
+  EXPECT_EQ(a.display.ambientLuminance, b.display.ambientLuminance);
+  EXPECT_EQ(a.display.gamma, b.display.gamma);
+  EXPECT_EQ(a.display.adaptationLuminance, b.display.adaptationLuminance);
+}
+
+TEST(NodeConfig, DomeHasFiveChannelsWithChinWindows) {
+  const NodeConfig c = loadNodeConfig(source("config/dome5.toml"));
+  ASSERT_EQ(c.channels.size(), 5u);
+  EXPECT_EQ(c.channels[3].name, "chin-left");
+  EXPECT_EQ(c.channels[3].offset.pitchDeg, -45.0);
+  EXPECT_EQ(c.channels[3].frustum.leftDeg, 25.0);
+  EXPECT_EQ(c.channels[3].frustum.rightDeg, 15.0);
+  EXPECT_EQ(c.channels[0].display.adaptationLuminance, 5.0);  // defaults to max_luminance / 10
+}
+
+TEST(NodeConfig, OutOfRangeValueNamesFileLineKeyAndRange) {
+  EXPECT_EQ(errorOf("[[channel]]\nname = \"a\"\nwidth = -5\n"),
+            "bad.toml:3: channel[0].width: expected an integer in [16, 16384], got -5");
+  EXPECT_EQ(errorOf("[sky]\nturbidity = 40\n"), "bad.toml:2: sky.turbidity: expected a number in [1.7, 10], got 40");
+}
+
+TEST(NodeConfig, WrongTypeAndUnknownKeys) {
+  EXPECT_EQ(errorOf("[sky]\nmodel = 3\n"), "bad.toml:2: sky.model: expected \"preetham\" or \"cie\", got 3");
+  EXPECT_EQ(errorOf("[sky]\nmodel = \"nishita\"\n"),
+            "bad.toml:2: sky.model: expected \"preetham\" or \"cie\", got \"nishita\"");
+  EXPECT_NE(errorOf("[sky]\nturbidty = 3\n").find("bad.toml:2: sky.turbidty: unknown key"), std::string::npos);
+  EXPECT_NE(errorOf("[[channel]]\n[channel.display]\ngama = 2\n").find("bad.toml:3: channel[0].display.gama: unknown key"),
+            std::string::npos);
+  EXPECT_EQ(errorOf("[observer]\nutc = \"tomorrow\"\n"),
+            "bad.toml:2: observer.utc: expected a UTC time like \"2026-06-21T19:30:00Z\"");
+}
+
+TEST(NodeConfig, SyntaxErrorsAndDuplicates) {
+  EXPECT_NE(errorOf("[sky\nmodel = 1\n").find("bad.toml:1:"), std::string::npos);
+  EXPECT_EQ(errorOf("[[channel]]\nname = \"a\"\n[[channel]]\nname = \"a\"\n"),
+            "bad.toml:4: channel[1].name: duplicate channel name \"a\"");
+  EXPECT_EQ(errorOf("[sky]\nturbidity = nan\n"), "bad.toml:2: sky.turbidity: expected a number in [1.7, 10], got nan");
+}
+
+TEST(NodeConfig, MissingFile) {
+  EXPECT_THROW(loadNodeConfig("/nonexistent/skyig.toml"), ConfigError);
+}

@@ -12,8 +12,8 @@ packages=(
   # images, geodesy, plumbing
   libopenexr-dev python3-imath libpng-dev libgeographiclib-dev
   libtomlplusplus-dev libcli11-dev libspdlog-dev nlohmann-json3-dev libpcap-dev
-  # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev
+  # tests and benchmarks (Xvfb: the windowed GLFW path is tested on a virtual X display)
+  libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth
 )
 
 missing=()

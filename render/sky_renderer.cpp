@@ -86,6 +86,11 @@ void SkyRenderer::draw(const SkyState& state, const ChannelConfig& channel) {
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+void SkyRenderer::presentToDefaultFramebuffer(int windowWidth, int windowHeight) const {
+  glBlitNamedFramebuffer(display_->framebuffer(), 0, 0, 0, display_->width(), display_->height(), 0, 0,
+                         windowWidth, windowHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
 HdrImage SkyRenderer::readHdr() const {
   HdrImage image{hdr_->width(), hdr_->height(), {}};
   const size_t row = static_cast<size_t>(image.width) * 4;

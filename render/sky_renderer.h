@@ -22,6 +22,9 @@ class SkyRenderer {
   // Draws only the sky pass (for benchmarks of the pass itself).
   void drawSkyPass(const SkyState& state, const ChannelConfig& channel);
 
+  // Copies the last tone-reproduced frame to the window's back buffer (windowed channels).
+  void presentToDefaultFramebuffer(int windowWidth, int windowHeight) const;
+
   HdrImage readHdr() const;
   DisplayImage readDisplay() const;
 

@@ -14,6 +14,8 @@ packages=(
   libtomlplusplus-dev libcli11-dev libspdlog-dev nlohmann-json3-dev libpcap-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # protocol tests: files skyig writes checked by Wireshark, tcpdump and can-utils
+  tshark tcpdump can-utils
 )
 
 missing=()

@@ -57,7 +57,7 @@ FeedResult StateDecoder::feed(const CanFrame& frame) {
 FeedResult StateDecoder::angleOrLength(const Message& m, double& target, std::uint32_t field, double lo, double hi) {
   if (m.dataType != static_cast<std::uint8_t>(DataType::floatType))
     return fail(FeedStatus::wrongDataType, idText(m) + ": expected FLOAT");
-  const double v = m.asFloat();
+  const double v = static_cast<double>(m.asFloat());
   if (!std::isfinite(v) || v < lo || v > hi)
     return fail(FeedStatus::badValue, idText(m) + ": value " + std::to_string(v) + " outside [" +
                                           std::to_string(lo) + ", " + std::to_string(hi) + "]");
@@ -70,7 +70,7 @@ FeedResult StateDecoder::latLon(const Message& m, PendingHalf& pending, double& 
                                 double limit) {
   double v = 0.0;
   switch (static_cast<DataType>(m.dataType)) {
-    case DataType::floatType: v = m.asFloat(); pending.valid = false; break;
+    case DataType::floatType: v = static_cast<double>(m.asFloat()); pending.valid = false; break;
     case DataType::doubleH:
       // The spec does not say how halves pair; skyig reads them as two messages on the same
       // id, DOUBLEH then DOUBLEL, with consecutive message codes (docs/protocol.md).

@@ -8,7 +8,7 @@
 namespace skyig::protocol::io {
 
 std::size_t MemorySource::readAt(std::uint64_t offset, std::span<std::uint8_t> dst) {
-  if (offset >= bytes_.size()) return 0;
+  if (offset >= bytes_.size() || dst.empty()) return 0;  // memcpy must not see a null dst
   const std::size_t n = std::min<std::uint64_t>(dst.size(), bytes_.size() - offset);
   std::memcpy(dst.data(), bytes_.data() + offset, n);
   return n;
@@ -41,7 +41,7 @@ bool FileSource::open(const std::string& path) {
 }
 
 std::size_t FileSource::readAt(std::uint64_t offset, std::span<std::uint8_t> dst) {
-  if (file_ == nullptr || offset >= size_) return 0;
+  if (file_ == nullptr || offset >= size_ || dst.empty()) return 0;
   if (offset != position_) {
     if (std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0) {
       error_ = path_ + ": seek to byte " + std::to_string(offset) + ": " + std::strerror(errno);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -65,7 +66,7 @@ double num(const std::map<std::string, std::string>& row, const std::string& fie
   const auto it = row.find(field);
   if (it == row.end() || it->second.empty()) {
     ADD_FAILURE() << "tshark gave no value for " << field;
-    return NAN;
+    return std::numeric_limits<double>::quiet_NaN();
   }
   return std::stod(it->second);
 }

@@ -14,6 +14,8 @@ packages=(
   libtomlplusplus-dev libcli11-dev libspdlog-dev nlohmann-json3-dev libpcap-dev
   # tests and benchmarks (Xvfb: the windowed GLFW path is tested on a virtual X display)
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth
+  # protocol tests: files skyig writes checked by Wireshark, tcpdump and can-utils
+  tshark tcpdump can-utils
 )
 
 missing=()

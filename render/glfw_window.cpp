@@ -76,4 +76,6 @@ void GlfwWindowContext::releaseCurrent() { glfwMakeContextCurrent(nullptr); }
 void GlfwWindowContext::swapBuffers() { glfwSwapBuffers(window_); }
 bool GlfwWindowContext::closeRequested() const { return glfwWindowShouldClose(window_) != 0; }
 
+void pollWindowEvents() { glfwPollEvents(); }
+
 }  // namespace skyig::render

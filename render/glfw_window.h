@@ -35,4 +35,7 @@ class GlfwWindowContext final : public GlContext {
   GLFWwindow* window_ = nullptr;
 };
 
+// Processes window-system events of every window (close buttons, resizes); call once a frame.
+void pollWindowEvents();
+
 }  // namespace skyig::render

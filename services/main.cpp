@@ -5,7 +5,10 @@
 #include "render/image_io.h"
 #include "services/caps.h"
 #include "services/commands/bench_command.h"
+#include "services/commands/host_command.h"
 #include "services/commands/render_command.h"
+#include "services/commands/serve_command.h"
+#include "services/udp_socket.h"
 #include "services/node_config.h"
 
 #include <CLI/CLI.hpp>
@@ -28,9 +31,12 @@ int main(int argc, char** argv) {
   int exitCode = 0;
   registerRenderCommand(app, exitCode);
   registerBenchCommand(app, exitCode);
+  registerServeCommand(app, exitCode);
+  registerHostCommand(app, exitCode);
 
   // Exit codes: 0 done; 2 bad flags, configuration, input value or output path; 3 the GPU
-  // context or a shader failed; 1 anything else.
+  // context or a shader failed; 4 a socket could not be opened (port in use, no SocketCAN);
+  // 1 anything else.
   try {
     app.parse_complete_callback([&] { spdlog::set_level(spdlog::level::from_str(logLevel)); });
     app.parse(argc, argv);
@@ -48,6 +54,9 @@ int main(int argc, char** argv) {
   } catch (const skyig::render::ImageIoError& e) {
     std::fprintf(stderr, "skyig: error: %s\n", e.what());
     return 2;
+  } catch (const NetworkError& e) {
+    std::fprintf(stderr, "skyig: network error: %s\n", e.what());
+    return 4;
   } catch (const skyig::render::GlContextError& e) {
     std::fprintf(stderr, "skyig: GPU error: %s\n", e.what());
     return 3;

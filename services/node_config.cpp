@@ -45,6 +45,13 @@ class TableReader {
     return static_cast<int>(*v);
   }
 
+  bool boolean(const std::string& key, bool value) {
+    const toml::node* n = find(key);
+    if (!n) return value;
+    if (!n->is_boolean()) fail(n, key, "expected true or false, got " + show(*n));
+    return *n->value<bool>();
+  }
+
   std::string string(const std::string& key, std::string value, const std::string& expected = "a string") {
     const toml::node* n = find(key);
     if (!n) return value;
@@ -118,8 +125,36 @@ void readObserver(TableReader& r, render::ObserverState& o) {
   r.rejectUnknownKeys();
 }
 
-render::ChannelConfig readChannel(TableReader& r, size_t index) {
+void readHost(TableReader& r, HostLink& h) {
+  h.listen = r.string("listen", h.listen, "\"ADDRESS:PORT\"");
+  h.multicastGroup = r.string("multicast_group", h.multicastGroup, "an IPv4 multicast address");
+  h.replyPort = r.integer("reply_port", h.replyPort, 1, 65535);
+  h.synchronous = r.boolean("synchronous", h.synchronous);
+  h.syncTimeoutS = r.number("sync_timeout", h.syncTimeoutS, 0.001, 10.0);
+  h.frameRateHz = r.number("frame_rate", h.frameRateHz, 1.0, 1000.0);
+  h.canInterface = r.string("can_interface", h.canInterface);
+  r.rejectUnknownKeys();
+}
+
+void readCanIdentifiers(TableReader& r, protocol::canaerospace::IdentifierMap& m) {
+  auto id = [&](const char* key, std::uint32_t& v) {
+    v = static_cast<std::uint32_t>(r.integer(key, static_cast<int>(v), 0, 2047));  // 11-bit identifiers
+  };
+  id("body_pitch", m.bodyPitch);
+  id("body_roll", m.bodyRoll);
+  id("heading", m.heading);
+  id("latitude", m.latitude);
+  id("longitude", m.longitude);
+  id("altitude", m.altitude);
+  id("utc", m.utc);
+  id("date", m.date);
+  m.acceptLongLatLon1e7 = r.boolean("accept_long_lat_lon_1e7", m.acceptLongLatLon1e7);
+  r.rejectUnknownKeys();
+}
+
+render::ChannelConfig readChannel(TableReader& r, size_t index, std::string& node) {
   render::ChannelConfig c;
+  node = r.string("node", "");
   c.name = r.string("name", "channel" + std::to_string(index));
   if (c.name.empty() || c.name.find_first_of("/\\ \t") != std::string::npos)
     r.fail(r.find("name"), "name", "expected a non-empty name without spaces or slashes");
@@ -171,22 +206,40 @@ NodeConfig parseNodeConfig(const std::string& text, const std::string& sourceNam
     TableReader o(*t, "observer.", sourceName);
     readObserver(o, config.observer);
   }
+  if (const toml::table* t = subTable(r, "host")) {
+    TableReader h(*t, "host.", sourceName);
+    readHost(h, config.host);
+  }
+  if (const toml::table* t = subTable(r, "can_identifiers")) {
+    TableReader c(*t, "can_identifiers.", sourceName);
+    readCanIdentifiers(c, config.canIdentifiers);
+  }
   if (const toml::node* n = r.find("channel")) {
     const toml::array* channels = n->as_array();
     if (!channels || channels->empty() || !channels->is_array_of_tables())
       r.fail(n, "channel", "expected one or more [[channel]] tables");
     config.channels.clear();
+    config.channelNodes.clear();
     std::set<std::string> names;
     for (size_t i = 0; i < channels->size(); ++i) {
       const toml::table& t = *channels->get(i)->as_table();
       TableReader c(t, "channel[" + std::to_string(i) + "].", sourceName);
-      config.channels.push_back(readChannel(c, i));
+      std::string node;
+      config.channels.push_back(readChannel(c, i, node));
+      config.channelNodes.push_back(node);
       if (!names.insert(config.channels.back().name).second)
         c.fail(c.find("name"), "name", "duplicate channel name \"" + config.channels.back().name + "\"");
     }
   }
   r.rejectUnknownKeys();
   return config;
+}
+
+std::vector<render::ChannelConfig> NodeConfig::channelsOf(const std::string& name) const {
+  std::vector<render::ChannelConfig> mine;
+  for (size_t i = 0; i < channels.size(); ++i)
+    if (channelNodes[i].empty() || channelNodes[i] == name) mine.push_back(channels[i]);
+  return mine;
 }
 
 NodeConfig loadNodeConfig(const std::string& path) {

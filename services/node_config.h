@@ -2,6 +2,7 @@
 // A node's configuration (TOML, see config/*.toml): the sky, the default observer for
 // `skyig render`, and the display channels. Every value has a default, so an empty file (or
 // none) is a valid configuration.
+#include "protocol/canaerospace/identifiers.h"
 #include "render/channel.h"
 #include "render/sky_conditions.h"
 #include "render/sky_state.h"
@@ -12,11 +13,28 @@
 
 namespace skyig::services {
 
+// How this node hears the host and answers it (`skyig serve`).
+struct HostLink {
+  std::string listen = "0.0.0.0:8004";  // CIGI host -> IG
+  std::string multicastGroup;           // empty: unicast
+  int replyPort = 8005;                 // Start of Frame goes back to the sender on this port
+  bool synchronous = false;             // render frame N after the host's frame N
+  double syncTimeoutS = 0.1;
+  double frameRateHz = 60.0;            // headless pacing
+  std::string canInterface;             // SocketCAN interface for a CANaerospace host; empty: none
+};
+
 struct NodeConfig {
   std::string nodeName = "ig";
   render::SkyConditions sky;
   render::ObserverState observer;
   std::vector<render::ChannelConfig> channels{render::ChannelConfig{}};
+  std::vector<std::string> channelNodes{""};  // per channel: the node that renders it ("" any)
+  HostLink host;
+  protocol::canaerospace::IdentifierMap canIdentifiers;
+
+  // The channels node `name` renders: those assigned to it, and those assigned to none.
+  std::vector<render::ChannelConfig> channelsOf(const std::string& name) const;
 };
 
 // A bad file: what() reads "FILE:LINE: KEY: expected ..., got ..." (the CLI exits with 2).

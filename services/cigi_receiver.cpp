@@ -1,0 +1,59 @@
+#include "services/cigi_receiver.h"
+
+#include <spdlog/spdlog.h>
+
+#include <array>
+
+namespace skyig::services {
+
+CigiReceiver::CigiReceiver(UdpSocket& socket, NodeStats& stats, Latest<HostSnapshot>& out)
+    : socket_(socket), stats_(stats), out_(out) {}
+
+void CigiReceiver::run(const std::atomic<bool>& stop) {
+  std::array<std::uint8_t, 65536> buffer{};
+  sockaddr_in from{};
+  while (!stop.load(std::memory_order_relaxed)) {
+    const std::size_t n = socket_.receive(buffer, from, std::chrono::milliseconds(50));
+    if (n == 0) continue;
+    handle(std::span(buffer.data(), n), from, Clock::now());
+  }
+}
+
+std::optional<sockaddr_in> CigiReceiver::lastSender() const {
+  std::lock_guard lock(senderMutex_);
+  return lastSender_;
+}
+
+void CigiReceiver::handle(std::span<const std::uint8_t> datagram, const sockaddr_in& from, Clock::time_point arrival) {
+  stats_.datagrams.fetch_add(1, std::memory_order_relaxed);
+  stats_.bytes.fetch_add(datagram.size(), std::memory_order_relaxed);
+  protocol::cigi::decodeMessage(datagram, decoded_);
+  for (const auto& p : decoded_.packets) stats_.packets[p.index()].fetch_add(1, std::memory_order_relaxed);
+  stats_.skippedPackets.fetch_add(decoded_.skippedPackets, std::memory_order_relaxed);
+  if (decoded_.error) {
+    stats_.malformedDatagrams.fetch_add(1, std::memory_order_relaxed);
+    stats_.errors[static_cast<std::size_t>(decoded_.error->kind)].fetch_add(1, std::memory_order_relaxed);
+    // At most one warning a second, saying how many were held back.
+    if (arrival - lastWarning_ > std::chrono::seconds(1)) {
+      spdlog::warn("malformed CIGI datagram from {}: {}{}", fromSockaddr(from).toString(), decoded_.error->describe(),
+                   suppressedWarnings_ ? fmt::format(" ({} more since the last warning)", suppressedWarnings_) : "");
+      lastWarning_ = arrival;
+      suppressedWarnings_ = 0;
+    } else {
+      ++suppressedWarnings_;
+    }
+  }
+  if (decoded_.packets.empty()) return;
+  const int rejected = tracker_.apply(decoded_, arrival);
+  stats_.rejectedValues.fetch_add(static_cast<std::uint64_t>(rejected), std::memory_order_relaxed);
+  const HostState& s = tracker_.state();
+  if (s.ownshipValid && s.ownshipTime == arrival) predictor_.addSample(s.ownship, arrival, s.rates);
+  {
+    std::lock_guard lock(senderMutex_);
+    lastSender_ = from;
+  }
+  out_.publish(HostSnapshot{s, predictor_, tracker_, Clock::now()});
+  stats_.arrivalToVisible.add(std::chrono::duration<double, std::micro>(Clock::now() - arrival).count());
+}
+
+}  // namespace skyig::services

@@ -1,0 +1,171 @@
+#include "services/cigi_state.h"
+
+#include "protocol/cigi/date.h"
+
+#include <cmath>
+#include <type_traits>
+#include <variant>
+
+namespace skyig::services {
+
+namespace cigi = protocol::cigi;
+
+namespace {
+
+bool finite(double v) { return std::isfinite(v); }
+
+bool validOwnship(const cigi::EntityControl& e) {
+  return finite(e.latitudeDeg) && std::abs(e.latitudeDeg) <= 90.0 && finite(e.longitudeDeg) &&
+         std::abs(e.longitudeDeg) <= 360.0 && finite(e.altitudeM) && std::abs(e.altitudeM) < 1e7 &&
+         finite(e.yawDeg) && finite(e.pitchDeg) && finite(e.rollDeg) && std::abs(e.pitchDeg) <= 90.0f;
+}
+
+double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+}  // namespace
+
+ViewOverride& HostState::view(std::uint16_t id) {
+  for (ViewOverride& v : views)
+    if (v.viewId == id) return v;
+  views.push_back(ViewOverride{id, {}, {}, {}, {}, {}, {}, {}});
+  return views.back();
+}
+
+double CigiStateTracker::continuousTime(Clock::time_point arrival) const {
+  // With host timestamps, the host's own clock (smooth, immune to network jitter); without,
+  // the arrival time.
+  if (haveTimestamp_) return timestampBaseS_ + seconds(arrival - lastTimestampArrival_);
+  return seconds(arrival.time_since_epoch());
+}
+
+std::optional<ephemeris::UtcTime> CigiStateTracker::utcAt(Clock::time_point t) const {
+  return clock_.at(continuousTime(t));
+}
+
+int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_point arrival) {
+  int rejected = 0;
+  bool changed = false;
+  if (!message.packets.empty()) {
+    if (const auto* ig = std::get_if<cigi::IgControl>(&message.packets.front())) {
+      // Serial-number order (wraps at 2^32): a frame behind the last one is stale.
+      if (haveHostFrame_ && static_cast<std::int32_t>(ig->hostFrameNumber - state_.hostFrame) < 0) {
+        ++stale_;
+        return 0;
+      }
+      haveHostFrame_ = true;
+    }
+  }
+  for (const cigi::Packet& packet : message.packets) {
+    std::visit(
+        [&](const auto& p) {
+          using T = std::decay_t<decltype(p)>;
+          if constexpr (std::is_same_v<T, cigi::IgControl>) {
+            state_.hostFrame = p.hostFrameNumber;
+            if (p.timestampValid) {
+              // 32-bit 10 us ticks wrap every 11.9 hours: unwrap by the difference.
+              const double step = haveTimestamp_ ? static_cast<std::uint32_t>(p.timestamp - lastTimestamp_) * 1e-5 : 0.0;
+              timestampBaseS_ = haveTimestamp_ ? timestampBaseS_ + step : p.timestamp * 1e-5;
+              lastTimestamp_ = p.timestamp;
+              lastTimestampArrival_ = arrival;
+              haveTimestamp_ = true;
+            }
+            changed = true;
+          } else if constexpr (std::is_same_v<T, cigi::EntityControl>) {
+            if (p.entityId != 0) return;  // entity 0 is the ownship; others are not skyig's
+            if (!validOwnship(p)) {
+              ++rejected;
+              return;
+            }
+            state_.ownship = {p.latitudeDeg, p.longitudeDeg, p.altitudeM, p.yawDeg, p.pitchDeg, p.rollDeg};
+            state_.ownshipValid = true;
+            state_.ownshipTime = arrival;
+            changed = true;
+          } else if constexpr (std::is_same_v<T, cigi::RateControl>) {
+            if (p.entityId != 0 || p.applyToArticulatedPart) return;
+            const float v[6] = {p.xRateMps, p.yRateMps, p.zRateMps, p.rollRateDegps, p.pitchRateDegps, p.yawRateDegps};
+            for (float x : v)
+              if (!std::isfinite(x) || std::abs(x) > 1e4f) {
+                ++rejected;
+                return;
+              }
+            state_.rates = {true, p.localCoordinates, p.xRateMps, p.yRateMps, p.zRateMps,
+                            p.rollRateDegps, p.pitchRateDegps, p.yawRateDegps};
+            changed = true;
+          } else if constexpr (std::is_same_v<T, cigi::CelestialSphereControl>) {
+            if (!p.dateTimeValid) return;
+            const auto date = cigi::splitDate(p.date);
+            if (!date || p.hour > 23 || p.minute > 59) {
+              ++rejected;
+              return;
+            }
+            state_.timeValid = true;
+            // The continuous time is taken after any IG Control of this message was applied.
+            clock_.observe({date->year, date->month, date->day, p.hour * 3600.0 + p.minute * 60.0},
+                           continuousTime(arrival));
+            changed = true;
+          } else if constexpr (std::is_same_v<T, cigi::AtmosphereControl>) {
+            if (!std::isfinite(p.visibilityRangeM) || p.visibilityRangeM < 0.0f || !std::isfinite(p.airTemperatureC) ||
+                !std::isfinite(p.barometricPressureHpa) || p.globalHumidityPct > 100) {
+              ++rejected;
+              return;
+            }
+            state_.visibilityM = p.visibilityRangeM;
+            state_.humidityPct = p.globalHumidityPct;
+            state_.temperatureC = p.airTemperatureC;
+            state_.pressureHpa = p.barometricPressureHpa;
+            changed = true;
+          } else if constexpr (std::is_same_v<T, cigi::WeatherControl>) {
+            // Global weather's visibility and humidity (skyig renders no cloud layers).
+            if (!p.weatherEnable || p.scope != cigi::WeatherScope::global) return;
+            if (!std::isfinite(p.visibilityRangeM) || p.visibilityRangeM < 0.0f || p.humidityPct > 100) {
+              ++rejected;
+              return;
+            }
+            state_.visibilityM = p.visibilityRangeM;
+            state_.humidityPct = p.humidityPct;
+            changed = true;
+          } else if constexpr (std::is_same_v<T, cigi::ViewControl>) {
+            if (p.entityId != 0) return;
+            if (!std::isfinite(p.yawDeg) || !std::isfinite(p.pitchDeg) || !std::isfinite(p.rollDeg) ||
+                std::abs(p.pitchDeg) > 90.0f) {
+              ++rejected;
+              return;
+            }
+            ViewOverride& v = state_.view(p.viewId);
+            if (p.yawEnable) v.yawDeg = p.yawDeg;
+            if (p.pitchEnable) v.pitchDeg = p.pitchDeg;
+            if (p.rollEnable) v.rollDeg = p.rollDeg;
+            changed = true;
+          } else if constexpr (std::is_same_v<T, cigi::ViewDefinition>) {
+            // CIGI's half-angles are signed (left and bottom negative for a centred view);
+            // skyig's are positive towards their own side. The frustum must stay non-empty.
+            const double left = -p.leftDeg, right = p.rightDeg, up = p.topDeg, down = -p.bottomDeg;
+            auto ok = [](double a) { return std::isfinite(a) && std::abs(a) < 89.5; };
+            if (p.orthographic || !ok(left) || !ok(right) || !ok(up) || !ok(down) ||
+                (p.leftEnable && p.rightEnable && left + right <= 0.1) || (p.topEnable && p.bottomEnable && up + down <= 0.1)) {
+              ++rejected;
+              return;
+            }
+            ViewOverride& v = state_.view(p.viewId);
+            if (p.leftEnable) v.leftDeg = left;
+            if (p.rightEnable) v.rightDeg = right;
+            if (p.topEnable) v.upDeg = up;
+            if (p.bottomEnable) v.downDeg = down;
+            changed = true;
+          }
+          // Environmental Region Control has nothing for a sky without regions yet.
+        },
+        packet);
+  }
+  if (changed) {
+    ++state_.updates;
+    state_.received = arrival;
+    if (const auto utc = utcAt(arrival)) {
+      state_.utc = *utc;
+      state_.utcTime = arrival;
+    }
+  }
+  return rejected;
+}
+
+}  // namespace skyig::services

@@ -1,0 +1,155 @@
+#include "services/commands/host_command.h"
+
+#include "protocol/cigi/date.h"
+#include "protocol/cigi/encoder.h"
+#include "services/host_path.h"
+#include "services/node_config.h"
+#include "services/udp_socket.h"
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <thread>
+
+namespace skyig::services {
+
+namespace {
+
+namespace cigi = protocol::cigi;
+
+struct HostOptions {
+  std::string pathFile;
+  std::string to = "127.0.0.1:8004";
+  std::string bind = "0.0.0.0:0";
+  double rateHz = 30.0;
+  std::string startUtc = "2026-06-21T19:00:00Z";
+  double speed = 1.0;
+  double durationS = 0.0;
+  double visibilityM = 40000.0;
+  int dropEvery = 0;
+  bool swapPairs = false;
+  bool loop = false;
+  bool littleEndian = false;
+};
+
+// Adds seconds to a UTC instant across days (time-lapse runs may pass midnight).
+ephemeris::UtcTime advance(const ephemeris::UtcTime& t, double seconds) {
+  ephemeris::UtcTime u = t;
+  u.secondsOfDay += seconds;
+  while (u.secondsOfDay >= 86400.0) {
+    u.secondsOfDay -= 86400.0;
+    static constexpr int kDays[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    const bool leap = (u.year % 4 == 0 && u.year % 100 != 0) || u.year % 400 == 0;
+    if (++u.day > kDays[u.month - 1] + (u.month == 2 && leap ? 1 : 0)) {
+      u.day = 1;
+      if (++u.month > 12) u.month = 1, ++u.year;
+    }
+  }
+  return u;
+}
+
+std::vector<std::uint8_t> message(std::uint32_t frame, double pathTime, const HostPath& path, const ephemeris::UtcTime& utc,
+                                  double simElapsed, const HostOptions& o) {
+  cigi::IgControl ig;
+  ig.hostFrameNumber = frame;
+  ig.timestamp = static_cast<std::uint32_t>(std::llround(simElapsed * 1e5));  // the sim clock, 10 us ticks
+  ig.timestampValid = true;
+  const Ownship p = path.at(pathTime);
+  cigi::EntityControl e;
+  e.entityId = 0;
+  e.latitudeDeg = p.latitudeDeg;
+  e.longitudeDeg = p.longitudeDeg;
+  e.altitudeM = p.altitudeM;
+  e.yawDeg = static_cast<float>(p.yawDeg);
+  e.pitchDeg = static_cast<float>(p.pitchDeg);
+  e.rollDeg = static_cast<float>(p.rollDeg);
+  const OwnshipRates r = path.ratesAt(pathTime);
+  cigi::RateControl rc;
+  rc.xRateMps = static_cast<float>(r.x);
+  rc.yRateMps = static_cast<float>(r.y);
+  rc.zRateMps = static_cast<float>(r.z);
+  rc.rollRateDegps = static_cast<float>(r.rollRate);
+  rc.pitchRateDegps = static_cast<float>(r.pitchRate);
+  rc.yawRateDegps = static_cast<float>(r.yawRate);
+  cigi::CelestialSphereControl cs;
+  cs.date = *cigi::composeDate({utc.year, utc.month, utc.day});
+  cs.hour = static_cast<std::uint8_t>(utc.secondsOfDay / 3600.0);
+  cs.minute = static_cast<std::uint8_t>(std::fmod(utc.secondsOfDay, 3600.0) / 60.0);
+  cigi::AtmosphereControl a;
+  a.visibilityRangeM = static_cast<float>(o.visibilityM);
+  const cigi::Packet packets[] = {ig, e, rc, cs, a};
+  std::vector<std::uint8_t> bytes;
+  const std::string error =
+      cigi::encodeMessage(packets, o.littleEndian ? protocol::ByteOrder::little : protocol::ByteOrder::big, bytes);
+  if (!error.empty()) throw std::runtime_error("encoding host message: " + error);
+  return bytes;
+}
+
+int run(const HostOptions& o) {
+  const HostPath path = HostPath::load(o.pathFile);
+  const auto start = ephemeris::parseIso8601Utc(o.startUtc);
+  if (!start) throw ConfigError("--start-utc: expected a UTC time like 2026-06-21T19:00:00Z, got \"" + o.startUtc + "\"");
+  Endpoint to, local;
+  try {
+    to = parseEndpoint(o.to);
+    local = parseEndpoint(o.bind);
+  } catch (const NetworkError& e) {
+    throw ConfigError(std::string("--to/--bind: ") + e.what());
+  }
+  UdpSocket socket(local);
+  const sockaddr_in destination = toSockaddr(to);
+  const double duration = o.durationS > 0.0 ? o.durationS : path.durationS();
+  const auto frames = static_cast<std::uint32_t>(std::floor(duration * o.rateHz)) + 1;
+  const auto period = std::chrono::duration<double>(1.0 / o.rateHz);
+  const auto t0 = std::chrono::steady_clock::now();
+  std::uint64_t sent = 0, dropped = 0;
+  std::vector<std::uint8_t> held;  // --swap-pairs: the even frame waits for the odd one
+  for (std::uint32_t k = 0; k < frames; ++k) {
+    std::this_thread::sleep_until(t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(period * k));
+    // Path time from the frame number, not the wall clock: the flight is reproducible.
+    const double t = k / o.rateHz;
+    const double pathTime = o.loop ? std::fmod(t, path.durationS()) : t;
+    const std::vector<std::uint8_t> bytes = message(k, pathTime, path, advance(*start, t * o.speed), t * o.speed, o);
+    if (o.dropEvery > 0 && (k + 1) % static_cast<std::uint32_t>(o.dropEvery) == 0) {
+      ++dropped;
+      continue;
+    }
+    if (o.swapPairs && held.empty() && k + 1 < frames) {
+      held = bytes;
+      continue;
+    }
+    sent += socket.sendTo(bytes, destination);
+    if (!held.empty()) {
+      sent += socket.sendTo(held, destination);
+      held.clear();
+    }
+  }
+  std::printf("host: %u frames over %.1f s to %s: %llu sent, %llu dropped%s\n", frames, duration, to.toString().c_str(),
+              static_cast<unsigned long long>(sent), static_cast<unsigned long long>(dropped),
+              o.swapPairs ? ", pairs swapped" : "");
+  return 0;
+}
+
+}  // namespace
+
+void registerHostCommand(CLI::App& app, int& exitCode) {
+  auto o = std::make_shared<HostOptions>();
+  CLI::App* c = app.add_subcommand("host", "Host emulator: fly a scripted path and send CIGI over UDP");
+  c->add_option("--path", o->pathFile, "Waypoints CSV: time_s, lat, lon, alt_m, yaw, pitch, roll (e.g. config/circuit.csv)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  c->add_option("--to", o->to, "IG address ADDR:PORT (127.0.0.1:8004)");
+  c->add_option("--bind", o->bind, "Local address ADDR:PORT to send from (0.0.0.0:0)");
+  c->add_option("--rate", o->rateHz, "Host frame rate, Hz (30)")->check(CLI::Range(1.0, 1000.0));
+  c->add_option("--start-utc", o->startUtc, "UTC date and time at the start of the path (2026-06-21T19:00:00Z)");
+  c->add_option("--speed", o->speed, "Time-lapse: sim seconds of the clock per second flown (1)")->check(CLI::Range(0.0, 1e5));
+  c->add_option("--duration", o->durationS, "Seconds to fly (default: the path's length)")->check(CLI::Range(0.0, 1e7));
+  c->add_option("--visibility", o->visibilityM, "Atmosphere Control visibility, m (40000)")->check(CLI::Range(0.0, 1e6));
+  c->add_option("--drop-every", o->dropEvery, "Drop every Nth datagram (loss test)")->check(CLI::Range(0, 1000000));
+  c->add_flag("--swap-pairs", o->swapPairs, "Send datagrams in swapped pairs (reordering test)");
+  c->add_flag("--loop", o->loop, "Fly the path round and round for --duration");
+  c->add_flag("--little-endian", o->littleEndian, "Send in little-endian byte order (the magic number says so)");
+  c->callback([o, &exitCode] { exitCode = run(*o); });
+}
+
+}  // namespace skyig::services

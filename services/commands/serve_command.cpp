@@ -1,0 +1,79 @@
+#include "services/commands/serve_command.h"
+
+#include "services/node.h"
+
+#include <spdlog/spdlog.h>
+
+#include <csignal>
+#include <memory>
+
+namespace skyig::services {
+
+namespace {
+
+std::atomic<bool> gStop{false};
+extern "C" void onSignal(int) { gStop.store(true); }
+
+struct ServeOptions {
+  std::string configPath;
+  std::string node;
+  bool headless = false;
+  std::string listen, replyTo, dumpState, statsJson, canInterface;
+  std::uint64_t frames = 0;
+  bool synchronous = false;
+  double frameRate = 0.0;
+};
+
+int run(const ServeOptions& o) {
+  NodeOptions opt;
+  opt.config = o.configPath.empty() ? NodeConfig{} : loadNodeConfig(o.configPath);
+  if (!o.node.empty()) opt.config.nodeName = o.node;
+  const HostLink& h = opt.config.host;
+  try {
+    opt.listen = parseEndpoint(o.listen.empty() ? h.listen : o.listen);
+    if (!o.replyTo.empty()) opt.replyTo = parseEndpoint(o.replyTo);
+  } catch (const NetworkError& e) {
+    throw ConfigError(std::string(o.listen.empty() && o.replyTo.empty() ? "host.listen: " : "--listen/--reply-to: ") + e.what());
+  }
+  if (!h.multicastGroup.empty()) opt.multicastGroup = h.multicastGroup;
+  opt.replyPort = static_cast<std::uint16_t>(h.replyPort);
+  opt.synchronous = o.synchronous || h.synchronous;
+  opt.syncTimeoutS = h.syncTimeoutS;
+  opt.frameRateHz = o.frameRate > 0.0 ? o.frameRate : h.frameRateHz;
+  opt.headless = o.headless;
+  opt.frames = o.frames;
+  opt.dumpStatePath = o.dumpState;
+  opt.statsPath = o.statsJson;
+  const std::string can = o.canInterface.empty() ? h.canInterface : o.canInterface;
+  if (!can.empty()) opt.canInterface = can;
+
+  gStop = false;
+  std::signal(SIGINT, onSignal);
+  std::signal(SIGTERM, onSignal);
+  NodeStats stats;
+  const int code = runNode(opt, stats, gStop);
+  spdlog::info("stopped after {} frames; {} datagrams, {} malformed", stats.frames.load(), stats.datagrams.load(),
+               stats.malformedDatagrams.load());
+  return code;
+}
+
+}  // namespace
+
+void registerServeCommand(CLI::App& app, int& exitCode) {
+  auto o = std::make_shared<ServeOptions>();
+  CLI::App* c = app.add_subcommand("serve", "Run the IG node: the host's state in, every channel of this node out");
+  c->add_option("--config", o->configPath, "Node configuration (TOML)")->check(CLI::ExistingFile);
+  c->add_option("--node", o->node, "This node's name: renders the channels assigned to it (default: [node] name)");
+  c->add_flag("--headless", o->headless, "Render offscreen through EGL instead of windows");
+  c->add_option("--listen", o->listen, "Host-to-IG address ADDR:PORT (default: host.listen, 0.0.0.0:8004)");
+  c->add_option("--reply-to", o->replyTo, "Where Start of Frame goes, ADDR:PORT (default: the sender, port host.reply_port)");
+  c->add_option("--can", o->canInterface, "Also read CANaerospace from this SocketCAN interface, e.g. can0");
+  c->add_option("--frames", o->frames, "Stop after N frames (default: run until SIGINT/SIGTERM)");
+  c->add_flag("--sync", o->synchronous, "Synchronous mode: render frame N after the host's frame N (with a timeout)");
+  c->add_option("--frame-rate", o->frameRate, "Headless frame rate, Hz (default: host.frame_rate, 60)")->check(CLI::Range(1.0, 1000.0));
+  c->add_option("--dump-state", o->dumpState, "Write one JSON line per frame: host values, values used, sun");
+  c->add_option("--stats-json", o->statsJson, "Write counters and latency percentiles every few seconds and on exit");
+  c->callback([o, &exitCode] { exitCode = run(*o); });
+}
+
+}  // namespace skyig::services

@@ -1,0 +1,95 @@
+#include "services/host_path.h"
+
+#include "services/node_config.h"
+#include "services/ownship_predictor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+namespace skyig::services {
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kEarthRadius = 6371008.8;  // mean radius: rates are for dead reckoning only
+}  // namespace
+
+HostPath HostPath::parse(const std::string& text, const std::string& sourceName) {
+  HostPath path;
+  std::istringstream in(text);
+  std::string line;
+  int lineNumber = 0;
+  while (std::getline(in, line)) {
+    ++lineNumber;
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    if (line.find_first_not_of(" \t\r,") == std::string::npos) continue;
+    if (line.find_first_of("abcdfghijklmnopqrstuvwxyzABCDFGHIJKLMNOPQRSTUVWXYZ_") != std::string::npos &&
+        path.waypoints_.empty())
+      continue;  // a header line
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream fields(line);
+    Waypoint w;
+    Ownship& p = w.pose;
+    std::string extra;
+    auto fail = [&](const std::string& why) {
+      throw ConfigError(sourceName + ":" + std::to_string(lineNumber) + ": " + why);
+    };
+    if (!(fields >> w.timeS >> p.latitudeDeg >> p.longitudeDeg >> p.altitudeM >> p.yawDeg >> p.pitchDeg >> p.rollDeg) ||
+        (fields >> extra))
+      fail("expected 7 numbers: time_s, latitude, longitude, altitude_m, yaw, pitch, roll");
+    const double all[7] = {w.timeS, p.latitudeDeg, p.longitudeDeg, p.altitudeM, p.yawDeg, p.pitchDeg, p.rollDeg};
+    for (double v : all)
+      if (!std::isfinite(v)) fail("a value is not a finite number");
+    if (std::abs(p.latitudeDeg) > 90.0 || std::abs(p.pitchDeg) > 90.0) fail("latitude or pitch outside [-90, 90]");
+    if (!path.waypoints_.empty() && w.timeS <= path.waypoints_.back().timeS) fail("times must increase");
+    path.waypoints_.push_back(w);
+  }
+  if (path.waypoints_.size() < 2) throw ConfigError(sourceName + ": a path needs at least two waypoints");
+  return path;
+}
+
+HostPath HostPath::load(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw ConfigError(file + ": cannot open the path file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse(text.str(), file);
+}
+
+Ownship HostPath::at(double t) const {
+  t = std::clamp(t, waypoints_.front().timeS, waypoints_.back().timeS);
+  auto next = std::upper_bound(waypoints_.begin(), waypoints_.end(), t, [](double v, const Waypoint& w) { return v < w.timeS; });
+  if (next == waypoints_.end()) return waypoints_.back().pose;
+  const Waypoint& b = *next;
+  const Waypoint& a = *(next - 1);
+  const double k = (t - a.timeS) / (b.timeS - a.timeS);
+  auto lerp = [k](double x, double y) { return x + (y - x) * k; };
+  Ownship o;
+  o.latitudeDeg = lerp(a.pose.latitudeDeg, b.pose.latitudeDeg);
+  o.longitudeDeg = a.pose.longitudeDeg + wrap180(b.pose.longitudeDeg - a.pose.longitudeDeg) * k;
+  o.altitudeM = lerp(a.pose.altitudeM, b.pose.altitudeM);
+  o.yawDeg = std::fmod(a.pose.yawDeg + wrap180(b.pose.yawDeg - a.pose.yawDeg) * k + 360.0, 360.0);
+  o.pitchDeg = lerp(a.pose.pitchDeg, b.pose.pitchDeg);
+  o.rollDeg = wrap180(a.pose.rollDeg + wrap180(b.pose.rollDeg - a.pose.rollDeg) * k);
+  return o;
+}
+
+OwnshipRates HostPath::ratesAt(double t) const {
+  const double dt = 0.01;
+  const double t0 = std::clamp(t, waypoints_.front().timeS, waypoints_.back().timeS - dt);
+  const Ownship a = at(t0), b = at(t0 + dt);
+  OwnshipRates r;
+  r.valid = true;
+  r.x = (b.latitudeDeg - a.latitudeDeg) * kDeg * kEarthRadius / dt;
+  r.y = wrap180(b.longitudeDeg - a.longitudeDeg) * kDeg * kEarthRadius * std::cos(a.latitudeDeg * kDeg) / dt;
+  r.z = -(b.altitudeM - a.altitudeM) / dt;
+  r.yawRate = wrap180(b.yawDeg - a.yawDeg) / dt;
+  r.pitchRate = (b.pitchDeg - a.pitchDeg) / dt;
+  r.rollRate = wrap180(b.rollDeg - a.rollDeg) / dt;
+  return r;
+}
+
+}  // namespace skyig::services

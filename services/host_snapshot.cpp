@@ -1,0 +1,16 @@
+#include "services/host_snapshot.h"
+
+#include <algorithm>
+
+namespace skyig::services {
+
+std::optional<ephemeris::UtcTime> HostSnapshot::utcAt(Clock::time_point t) const {
+  if (cigi) return cigi->utcAt(t);
+  if (!state.timeValid) return std::nullopt;
+  ephemeris::UtcTime u = state.utc;
+  // Within a day of the last statement; a day rollover is left to the host's next message.
+  u.secondsOfDay = std::clamp(u.secondsOfDay + std::chrono::duration<double>(t - state.utcTime).count(), 0.0, 86399.999);
+  return u;
+}
+
+}  // namespace skyig::services

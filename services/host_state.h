@@ -1,0 +1,59 @@
+#pragma once
+// HostState: what the host last told this IG, as one immutable snapshot handed from the
+// receiver thread to the worker and render threads (latest value wins).
+#include "ephemeris/time.h"
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace skyig::services {
+
+using Clock = std::chrono::steady_clock;
+
+struct Ownship {
+  double latitudeDeg = 47.2603;
+  double longitudeDeg = 11.3439;
+  double altitudeM = 581.0;
+  double yawDeg = 0.0;
+  double pitchDeg = 0.0;
+  double rollDeg = 0.0;
+};
+
+// CIGI Rate Control of the ownship: linear rates (m/s) and angular rates (deg/s).
+struct OwnshipRates {
+  bool valid = false;
+  bool bodyAxes = false;  // false: x north, y east, z down; true: body x forward, y right, z down
+  double x = 0.0, y = 0.0, z = 0.0;
+  double rollRate = 0.0, pitchRate = 0.0, yawRate = 0.0;
+};
+
+// A channel's eyepoint rotation and frustum as the host set them (CIGI View Control and View
+// Definition); view ID n is the node's n-th channel. Unset parts keep the configuration's.
+struct ViewOverride {
+  std::uint16_t viewId = 0;
+  std::optional<double> yawDeg, pitchDeg, rollDeg;
+  std::optional<double> leftDeg, rightDeg, upDeg, downDeg;  // skyig's half-angles
+};
+
+struct HostState {
+  std::uint64_t updates = 0;          // host messages applied so far (0: nothing yet)
+  std::uint32_t hostFrame = 0;        // IG Control host frame number of the last message
+  bool ownshipValid = false;
+  Ownship ownship;
+  Clock::time_point ownshipTime{};    // arrival of the message that last set the ownship
+  OwnshipRates rates;
+  bool timeValid = false;             // a date and time has been received
+  ephemeris::UtcTime utc;             // the host's time, refined below the minute (see SimClock)
+  Clock::time_point utcTime{};        // the local instant utc refers to
+  double visibilityM = 50000.0;
+  double humidityPct = 0.0;
+  double temperatureC = 15.0;
+  double pressureHpa = 1013.25;
+  Clock::time_point received{};       // arrival of the last applied message
+  std::vector<ViewOverride> views;
+  ViewOverride& view(std::uint16_t id);
+};
+
+}  // namespace skyig::services

@@ -1,0 +1,244 @@
+#include "services/node.h"
+
+#include "protocol/cigi/encoder.h"
+#include "render/gl_context.h"
+#include "render/glfw_window.h"
+#include "render/sky_renderer.h"
+#include "services/can_receiver.h"
+#include "services/cigi_receiver.h"
+#include "services/state_dump.h"
+
+#include <glad/gl.h>
+#include <spdlog/spdlog.h>
+
+#include <fstream>
+#include <memory>
+#include <thread>
+#include <unistd.h>
+
+namespace skyig::services {
+
+namespace {
+
+using namespace std::chrono_literals;
+
+// The observer a frame shows: the host's state evaluated at `t`, or the configuration's
+// observer until the host has said anything.
+render::ObserverState observerAt(const NodeConfig& config, const HostSnapshot* host, Clock::time_point t) {
+  render::ObserverState o = config.observer;
+  if (!host) return o;
+  if (host->state.ownshipValid) {
+    const Ownship s = host->predictor.at(t);
+    o.latitudeDeg = s.latitudeDeg;
+    o.longitudeDeg = s.longitudeDeg;
+    o.heightM = s.altitudeM;
+    o.attitude = {s.yawDeg, s.pitchDeg, s.rollDeg};
+  }
+  if (const auto utc = host->utcAt(t)) o.utc = *utc;
+  return o;
+}
+
+// The node's channels with the host's view overrides applied.
+std::vector<render::ChannelConfig> channelsFor(const std::vector<render::ChannelConfig>& base, const HostSnapshot* host) {
+  std::vector<render::ChannelConfig> channels = base;
+  if (!host) return channels;
+  for (const ViewOverride& v : host->state.views) {
+    if (v.viewId >= channels.size()) continue;
+    render::ChannelConfig& c = channels[v.viewId];
+    if (v.yawDeg) c.offset.yawDeg = *v.yawDeg;
+    if (v.pitchDeg) c.offset.pitchDeg = *v.pitchDeg;
+    if (v.rollDeg) c.offset.rollDeg = *v.rollDeg;
+    if (v.leftDeg) c.frustum.leftDeg = *v.leftDeg;
+    if (v.rightDeg) c.frustum.rightDeg = *v.rightDeg;
+    if (v.upDeg) c.frustum.upDeg = *v.upDeg;
+    if (v.downDeg) c.frustum.downDeg = *v.downDeg;
+  }
+  return channels;
+}
+
+// The worker: ephemeris, sky conditions and adaptation for the latest host state, published
+// as an immutable SkyState. It never waits for the renderer, and a state it cannot use (a
+// bad value that passed the decoder) is counted and the last good sky kept.
+void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& host,
+                Latest<render::SkyState>& sky, const std::atomic<bool>& stop) {
+  std::uint64_t seen = ~0ull;
+  auto lastSky = Clock::now() - 1h;
+  auto lastStats = Clock::now();
+  while (!stop.load(std::memory_order_relaxed)) {
+    const auto now = Clock::now();
+    // A new host state, or at least every 100 ms so the sun follows the clock.
+    if (host.version() != seen || now - lastSky > 100ms) {
+      seen = host.version();
+      const auto snapshot = host.get();
+      try {
+        sky.publish(render::buildSkyState(observerAt(opt.config, snapshot.get(), now), opt.config.sky));
+        stats.skyStates.fetch_add(1, std::memory_order_relaxed);
+      } catch (const std::exception& e) {
+        stats.rejectedValues.fetch_add(1, std::memory_order_relaxed);
+        spdlog::warn("host state not usable, keeping the last sky: {}", e.what());
+      }
+      lastSky = now;
+    }
+    if (!opt.statsPath.empty() && now - lastStats > std::chrono::duration<double>(opt.statsIntervalS)) {
+      writeStatsFile(opt.statsPath, stats);
+      lastStats = now;
+    }
+    std::this_thread::sleep_for(1ms);
+  }
+}
+
+// What renders: one headless context for every channel, or one window per channel.
+class Display {
+ public:
+  Display(const NodeOptions& opt, const std::vector<render::ChannelConfig>& channels) : headless_(opt.headless) {
+    if (headless_) {
+      context_ = render::createHeadlessContext();
+      renderers_.push_back(std::make_unique<render::SkyRenderer>());
+      return;
+    }
+    for (const auto& c : channels) {
+      render::WindowOptions w;
+      w.title = "skyig " + opt.config.nodeName + " / " + c.name;
+      w.width = c.width;
+      w.height = c.height;
+      w.shareWith = windows_.empty() ? nullptr : windows_.front().get();
+      windows_.push_back(std::make_unique<render::GlfwWindowContext>(w));
+      renderers_.push_back(std::make_unique<render::SkyRenderer>());  // VAOs and FBOs are per context
+    }
+  }
+
+  const render::GlInfo& info() const { return headless_ ? context_->info() : windows_.front()->info(); }
+  bool closeRequested() const {
+    for (const auto& w : windows_)
+      if (w->closeRequested()) return true;
+    return false;
+  }
+
+  void draw(const render::SkyState& state, const std::vector<render::ChannelConfig>& channels) {
+    for (std::size_t i = 0; i < channels.size(); ++i) {
+      if (headless_) {
+        renderers_.front()->draw(state, channels[i]);
+        continue;
+      }
+      windows_[i]->makeCurrent();
+      renderers_[i]->draw(state, channels[i]);
+      renderers_[i]->presentToDefaultFramebuffer(channels[i].width, channels[i].height);
+      windows_[i]->swapBuffers();
+    }
+    if (headless_) glFinish();  // the frame ends when its pixels exist
+    else render::pollWindowEvents();
+  }
+
+ private:
+  bool headless_;
+  std::unique_ptr<render::GlContext> context_;
+  std::vector<std::unique_ptr<render::GlfwWindowContext>> windows_;
+  std::vector<std::unique_ptr<render::SkyRenderer>> renderers_;
+};
+
+std::uint32_t ticks10us(Clock::duration d) {
+  return static_cast<std::uint32_t>(std::chrono::duration_cast<std::chrono::microseconds>(d).count() / 10);
+}
+
+}  // namespace
+
+int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& externalStop) {
+  std::atomic<bool> stop{false};
+  Latest<HostSnapshot> host;
+  Latest<render::SkyState> sky;
+  const auto start = Clock::now();
+
+  // Transports. The UDP socket always exists: Start of Frame goes out through it.
+  UdpSocket udp(opt.listen, opt.multicastGroup);
+  spdlog::info("listening for CIGI on {}", udp.localEndpoint().toString());
+  CigiReceiver cigi(udp, stats, host);
+  std::vector<std::thread> threads;
+  threads.emplace_back([&] { cigi.run(stop); });
+  int canFd = opt.canFd;
+  bool ownCanFd = false;
+  if (opt.canInterface) {
+    canFd = openSocketCan(*opt.canInterface);
+    ownCanFd = true;
+  }
+  std::unique_ptr<CanReceiver> can;
+  if (canFd >= 0) {
+    can = std::make_unique<CanReceiver>(canFd, opt.config.canIdentifiers, stats, host);
+    threads.emplace_back([&] { can->run(stop); });
+  }
+
+  // The first sky is computed before the first frame, so frame 0 already shows it.
+  sky.publish(render::buildSkyState(opt.config.observer, opt.config.sky));
+  threads.emplace_back([&] { workerLoop(opt, stats, host, sky, stop); });
+
+  int exitCode = 0;
+  try {
+    const auto baseChannels = opt.config.channelsOf(opt.config.nodeName);
+    if (baseChannels.empty()) throw ConfigError("node \"" + opt.config.nodeName + "\" has no channels in the configuration");
+    Display display(opt, baseChannels);
+    spdlog::info("rendering {} channel(s) on {}", baseChannels.size(), display.info().renderer);
+    std::unique_ptr<StateDump> dump = opt.dumpStatePath.empty() ? nullptr : std::make_unique<StateDump>(opt.dumpStatePath);
+    const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / opt.frameRateHz));
+    auto next = Clock::now();
+    std::uint64_t hostVersionShown = 0;
+    Clock::time_point lastArrivalShown{};
+    std::vector<std::uint8_t> sof;
+    for (std::uint64_t frame = 0; !externalStop && (opt.frames == 0 || frame < opt.frames); ++frame) {
+      if (opt.synchronous) {
+        // Frame N follows the host's frame N; a silent host does not freeze the IG.
+        const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(opt.syncTimeoutS));
+        while (host.version() == hostVersionShown && Clock::now() < deadline && !externalStop)
+          std::this_thread::sleep_for(50us);
+        if (host.version() == hostVersionShown) stats.syncTimeouts.fetch_add(1, std::memory_order_relaxed);
+      } else if (opt.headless) {
+        std::this_thread::sleep_until(next);
+        next = std::max(next + period, Clock::now() - period);
+      }
+      hostVersionShown = host.version();
+      const auto snapshot = host.get();
+      const auto frameStart = Clock::now();
+      render::SkyState state = *sky.get();
+      state.observer = observerAt(opt.config, snapshot.get(), frameStart);  // attitude of this frame
+      const auto channels = channelsFor(baseChannels, snapshot.get());
+      display.draw(state, channels);
+      const auto frameEnd = Clock::now();
+      stats.frames.fetch_add(1, std::memory_order_relaxed);
+      stats.frameTime.add(std::chrono::duration<double, std::micro>(frameEnd - frameStart).count());
+      if (snapshot && snapshot->state.received != lastArrivalShown) {
+        stats.arrivalToFrameEnd.add(std::chrono::duration<double, std::micro>(frameEnd - snapshot->state.received).count());
+        lastArrivalShown = snapshot->state.received;
+      }
+
+      // Start of Frame: to --reply-to, else back to the host's address on the reply port.
+      std::optional<sockaddr_in> to;
+      if (opt.replyTo) to = toSockaddr(*opt.replyTo);
+      else if (const auto sender = cigi.lastSender()) {
+        to = *sender;
+        to->sin_port = htons(opt.replyPort);
+      }
+      if (to) {
+        protocol::cigi::StartOfFrame s;
+        s.igFrameNumber = static_cast<std::uint32_t>(frame);
+        s.lastHostFrameNumber = snapshot ? snapshot->state.hostFrame : 0;
+        s.timestamp = ticks10us(frameEnd - start);
+        s.timestampValid = true;
+        const protocol::cigi::Packet packets[] = {s};
+        if (protocol::cigi::encodeMessage(packets, protocol::ByteOrder::big, sof).empty() && udp.sendTo(sof, *to))
+          stats.startOfFrameSent.fetch_add(1, std::memory_order_relaxed);
+      }
+      if (dump) dump->write(frame, snapshot.get(), state);
+      if (!opt.headless && display.closeRequested()) break;
+    }
+  } catch (...) {
+    stop = true;
+    for (auto& t : threads) t.join();
+    if (ownCanFd) ::close(canFd);
+    throw;
+  }
+  stop = true;
+  for (auto& t : threads) t.join();
+  if (ownCanFd) ::close(canFd);
+  if (!opt.statsPath.empty()) writeStatsFile(opt.statsPath, stats);
+  return exitCode;
+}
+
+}  // namespace skyig::services

@@ -1,0 +1,37 @@
+#pragma once
+// The IG node (`skyig serve`): receiver thread -> HostSnapshot -> worker thread (ephemeris,
+// sky conditions, adaptation) -> SkyState -> render loop on the calling thread, every channel
+// of this node per frame, then Start of Frame to the host (../shared/DESIGN.md).
+#include "services/node_config.h"
+#include "services/node_stats.h"
+#include "services/udp_socket.h"
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace skyig::services {
+
+struct NodeOptions {
+  NodeConfig config;
+  Endpoint listen{"0.0.0.0", 8004};                 // host -> IG
+  std::optional<std::string> multicastGroup;
+  std::optional<Endpoint> replyTo;                  // Start of Frame; default: the sender's address
+  std::uint16_t replyPort = 8005;                   //   ... on this port
+  bool headless = true;
+  std::uint64_t frames = 0;                         // stop after this many (0: until signalled)
+  double frameRateHz = 60.0;                        // headless pacing (windows follow vsync)
+  bool synchronous = false;                         // render frame N after the host's frame N
+  double syncTimeoutS = 0.1;
+  std::string dumpStatePath;                        // JSON lines, one per frame
+  std::string statsPath;                            // JSON, every statsIntervalS and on exit
+  double statsIntervalS = 2.0;
+  std::optional<std::string> canInterface;          // SocketCAN interface (CANaerospace host)
+  int canFd = -1;                                   // an already open CAN frame stream (tests)
+};
+
+// Runs until `stop` is set or options.frames frames were rendered; returns the exit code.
+int runNode(const NodeOptions& options, NodeStats& stats, const std::atomic<bool>& stop);
+
+}  // namespace skyig::services

@@ -1,0 +1,51 @@
+#include "services/sim_clock.h"
+
+#include <cmath>
+
+namespace skyig::services {
+
+void SimClock::observe(const ephemeris::UtcTime& stated, double continuousS) {
+  const double statedDay = ephemeris::julianDayAt0h(stated.year, stated.month, stated.day);
+  const double minute = std::floor(stated.secondsOfDay / 60.0) * 60.0;
+  if (!valid_) {
+    // First statement: assume the start of the minute; the first rollover will correct it.
+    valid_ = true;
+    dayStartJd_ = statedDay;
+    anchorS_ = continuousS;
+    offsetS_ = minute;
+    return;
+  }
+  // The window the host allows, in seconds since our day start, and what the clock shows.
+  const double lo = (statedDay - dayStartJd_) * 86400.0 + minute, hi = lo + 60.0;
+  const double shown = (continuousS - anchorS_) * speed_ + offsetS_;
+  if (shown < lo - 90.0 || shown > hi + 90.0) {  // a new scenario time: start again from it
+    anchorS_ = continuousS;
+    offsetS_ = lo;
+  } else if (shown < lo) {
+    offsetS_ += lo - shown;  // the host's minute began later than we thought
+  } else if (shown >= hi) {
+    offsetS_ -= shown - (hi - 1e-3);  // we ran ahead of the host's minute
+  }
+}
+
+std::optional<ephemeris::UtcTime> SimClock::at(double continuousS) const {
+  if (!valid_) return std::nullopt;
+  const double jd = dayStartJd_ + ((continuousS - anchorS_) * speed_ + offsetS_) / 86400.0;
+  // Back to a calendar date: Meeus ch. 7 inverse, for the Gregorian calendar.
+  const double z = std::floor(jd + 0.5);
+  const double f = jd + 0.5 - z;
+  const double alpha = std::floor((z - 1867216.25) / 36524.25);
+  const double a = z + 1 + alpha - std::floor(alpha / 4);
+  const double b = a + 1524;
+  const double c = std::floor((b - 122.1) / 365.25);
+  const double d = std::floor(365.25 * c);
+  const double e = std::floor((b - d) / 30.6001);
+  ephemeris::UtcTime t;
+  t.day = static_cast<int>(b - d - std::floor(30.6001 * e));
+  t.month = static_cast<int>(e < 14 ? e - 1 : e - 13);
+  t.year = static_cast<int>(t.month > 2 ? c - 4716 : c - 4715);
+  t.secondsOfDay = f * 86400.0;
+  return t;
+}
+
+}  // namespace skyig::services

@@ -1,0 +1,30 @@
+#pragma once
+// The host's time of day to the millisecond. CIGI's Celestial Sphere Control carries only the
+// hour and minute; taken alone the sun would jump once a minute. SimClock runs a continuous
+// clock from the IG Control timestamp (10 us ticks; the arrival time when the host sends none)
+// plus an offset, and moves the offset only as far as needed to keep the clock inside the
+// minute the host last stated. The first minute rollover the host reports pins the offset to
+// within one host frame; from then on the clock is smooth and exact.
+#include "ephemeris/time.h"
+
+#include <optional>
+
+namespace skyig::services {
+
+class SimClock {
+ public:
+  // Host's stated date and minute of day, and the continuous time (s) it was stated at.
+  void observe(const ephemeris::UtcTime& dateAndMinute, double continuousS);
+  // UTC at a continuous time; nullopt before the first observation.
+  std::optional<ephemeris::UtcTime> at(double continuousS) const;
+  void setSpeed(double simSecondsPerSecond) { speed_ = simSecondsPerSecond; }
+
+ private:
+  bool valid_ = false;
+  double dayStartJd_ = 0.0;     // Julian date (UTC) of 0h of the stated date
+  double offsetS_ = 0.0;        // seconds of day = (continuous - anchor) * speed + offset
+  double anchorS_ = 0.0;
+  double speed_ = 1.0;
+};
+
+}  // namespace skyig::services

@@ -1,0 +1,30 @@
+#pragma once
+// `--dump-state FILE.jsonl`: one JSON line per rendered frame — the IG frame, the last host
+// frame, the host's values as last received, the values the frame used after extrapolation,
+// and the sun — for debugging, support and tests.
+#include "render/sky_state.h"
+#include "services/host_snapshot.h"
+#include "services/node_stats.h"
+
+#include <cstdio>
+#include <string>
+
+namespace skyig::services {
+
+class StateDump {
+ public:
+  explicit StateDump(const std::string& path);  // throws std::runtime_error naming the path
+  ~StateDump();
+  StateDump(const StateDump&) = delete;
+  StateDump& operator=(const StateDump&) = delete;
+  void write(std::uint64_t igFrame, const HostSnapshot* host, const render::SkyState& used);
+
+ private:
+  std::FILE* file_ = nullptr;
+  std::string path_;
+};
+
+// Writes the counters as JSON through a temporary file, so a reader never sees half of it.
+void writeStatsFile(const std::string& path, const NodeStats& stats);
+
+}  // namespace skyig::services

@@ -1,0 +1,97 @@
+#include "services/udp_socket.h"
+
+#include <arpa/inet.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+namespace skyig::services {
+
+namespace {
+[[noreturn]] void fail(const std::string& what) { throw NetworkError(what + ": " + std::strerror(errno)); }
+}  // namespace
+
+Endpoint parseEndpoint(const std::string& text) {
+  const size_t colon = text.rfind(':');
+  in_addr a{};
+  if (colon == std::string::npos || inet_pton(AF_INET, text.substr(0, colon).c_str(), &a) != 1)
+    throw NetworkError("\"" + text + "\" is not an IPv4 ADDRESS:PORT");
+  char* end = nullptr;
+  const long port = std::strtol(text.c_str() + colon + 1, &end, 10);
+  if (*end != '\0' || colon + 1 == text.size() || port < 0 || port > 65535)
+    throw NetworkError("\"" + text + "\": port must be 0..65535");
+  return {text.substr(0, colon), static_cast<std::uint16_t>(port)};
+}
+
+sockaddr_in toSockaddr(const Endpoint& e) {
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_port = htons(e.port);
+  if (inet_pton(AF_INET, e.address.c_str(), &a.sin_addr) != 1)
+    throw NetworkError("\"" + e.address + "\" is not an IPv4 address");
+  return a;
+}
+
+Endpoint fromSockaddr(const sockaddr_in& a) {
+  char text[INET_ADDRSTRLEN] = {};
+  inet_ntop(AF_INET, &a.sin_addr, text, sizeof text);
+  return {text, ntohs(a.sin_port)};
+}
+
+UdpSocket::UdpSocket(const Endpoint& local, const std::optional<std::string>& multicastGroup) {
+  fd_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  if (fd_ < 0) fail("socket(AF_INET, SOCK_DGRAM)");
+  const int one = 1;
+  ::setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);  // several nodes on one host
+  const int buffer = 4 << 20;  // absorb bursts while a frame renders
+  ::setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &buffer, sizeof buffer);
+  const sockaddr_in a = toSockaddr(local);
+  if (::bind(fd_, reinterpret_cast<const sockaddr*>(&a), sizeof a) != 0) {
+    const std::string what = "bind " + local.toString();
+    ::close(fd_);
+    fail(what);
+  }
+  if (multicastGroup) {
+    ip_mreq m{};
+    if (inet_pton(AF_INET, multicastGroup->c_str(), &m.imr_multiaddr) != 1) {
+      ::close(fd_);
+      throw NetworkError("\"" + *multicastGroup + "\" is not an IPv4 multicast group");
+    }
+    m.imr_interface = a.sin_addr;
+    if (::setsockopt(fd_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &m, sizeof m) != 0) {
+      ::close(fd_);
+      fail("join multicast group " + *multicastGroup);
+    }
+  }
+}
+
+UdpSocket::~UdpSocket() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+std::size_t UdpSocket::receive(std::span<std::uint8_t> buffer, sockaddr_in& from, std::chrono::milliseconds timeout) {
+  pollfd p{fd_, POLLIN, 0};
+  const int ready = ::poll(&p, 1, static_cast<int>(timeout.count()));
+  if (ready <= 0) return 0;
+  socklen_t length = sizeof from;
+  const ssize_t n = ::recvfrom(fd_, buffer.data(), buffer.size(), MSG_TRUNC, reinterpret_cast<sockaddr*>(&from), &length);
+  if (n < 0) return 0;
+  return std::min(static_cast<std::size_t>(n), buffer.size());
+}
+
+bool UdpSocket::sendTo(std::span<const std::uint8_t> bytes, const sockaddr_in& to) {
+  return ::sendto(fd_, bytes.data(), bytes.size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) ==
+         static_cast<ssize_t>(bytes.size());
+}
+
+Endpoint UdpSocket::localEndpoint() const {
+  sockaddr_in a{};
+  socklen_t length = sizeof a;
+  ::getsockname(fd_, reinterpret_cast<sockaddr*>(&a), &length);
+  return fromSockaddr(a);
+}
+
+}  // namespace skyig::services

@@ -1,0 +1,49 @@
+#pragma once
+// A UDP socket for CIGI: bound to an address and port, optionally joined to a multicast group.
+#include <netinet/in.h>
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+namespace skyig::services {
+
+class NetworkError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Endpoint {
+  std::string address = "0.0.0.0";
+  std::uint16_t port = 0;
+  std::string toString() const { return address + ":" + std::to_string(port); }
+};
+
+// "ADDR:PORT" (IPv4); throws NetworkError naming the text when it is not one.
+Endpoint parseEndpoint(const std::string& text);
+sockaddr_in toSockaddr(const Endpoint& e);
+Endpoint fromSockaddr(const sockaddr_in& a);
+
+class UdpSocket {
+ public:
+  // Binds to `local` (port 0: any free port); joins `multicastGroup` when given.
+  explicit UdpSocket(const Endpoint& local, const std::optional<std::string>& multicastGroup = std::nullopt);
+  ~UdpSocket();
+  UdpSocket(const UdpSocket&) = delete;
+  UdpSocket& operator=(const UdpSocket&) = delete;
+
+  // Waits up to `timeout` for a datagram; returns its size (0 after a timeout or an
+  // interruption) and the sender. Datagrams larger than the buffer are truncated (and
+  // then reported by the decoder as malformed).
+  std::size_t receive(std::span<std::uint8_t> buffer, sockaddr_in& from, std::chrono::milliseconds timeout);
+  bool sendTo(std::span<const std::uint8_t> bytes, const sockaddr_in& to);
+  Endpoint localEndpoint() const;
+
+ private:
+  int fd_ = -1;
+};
+
+}  // namespace skyig::services

@@ -64,9 +64,13 @@ double earthRotationAngle(double jdUt1) {
 }
 
 EarthOrientation earthOrientation(double jdTt, double jdUt1) {
+  return earthOrientation(jdTt, jdUt1, nutation2000B(jdTt));
+}
+
+EarthOrientation earthOrientation(double jdTt, double jdUt1, const Nutation& nutation) {
   EarthOrientation eo;
   const double t = centuries(jdTt);
-  eo.nutation = nutation2000B(jdTt);
+  eo.nutation = nutation;
   eo.epsA = meanObliquity2006(jdTt);
   double gamb = 0.0, phib = 0.0, psib = 0.0;
   precessionAngles2006(jdTt, gamb, phib, psib);

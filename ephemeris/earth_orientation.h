@@ -33,6 +33,8 @@ struct EarthOrientation {
 
 // Everything at once (the nutation series is evaluated once).
 EarthOrientation earthOrientation(double jdTt, double jdUt1);
+// The same with a nutation computed elsewhere (interpolated by EphemerisCache).
+EarthOrientation earthOrientation(double jdTt, double jdUt1, const Nutation& nutation);
 
 // Fukushima-Williams bias-precession angles (IAU 2006), radians: gamma-bar, phi-bar, psi-bar.
 void precessionAngles2006(double jdTt, double& gamb, double& phib, double& psib);

@@ -9,10 +9,10 @@
 #include <string>
 
 #include "ephemeris/earth_orientation.h"
-#include "ephemeris/elp82b.h"
 #include "ephemeris/night_irradiance.h"
 #include "ephemeris/planet_magnitude.h"
 #include "ephemeris/refraction.h"
+#include "ephemeris/series_state.h"
 #include "ephemeris/vsop87.h"
 
 namespace skyig::ephemeris {
@@ -20,7 +20,8 @@ namespace skyig::ephemeris {
 namespace {
 constexpr double kEarthRotationRadPerS = 7.292115e-5;  // IERS, nominal
 constexpr double kKmPerAuPerDayToKmS = kAuKm / 86400.0;
-constexpr double kMoonLightTimeDays = 384400.0 / kLightKmPerS / 86400.0;
+
+}  // namespace
 
 void checkObserver(const Observer& o) {
   const double latDeg = o.latitudeRad / kDegToRad, lonDeg = o.longitudeRad / kDegToRad;
@@ -35,6 +36,8 @@ void checkObserver(const Observer& o) {
   if (!(std::isfinite(o.temperatureC) && o.temperatureC > -100.0 && o.temperatureC < 100.0))
     throw std::invalid_argument("temperature " + std::to_string(o.temperatureC) + " C is outside (-100, 100)");
 }
+
+namespace {
 
 // Everything that turns a geocentric geometric J2000 vector into an apparent topocentric one.
 struct Frame {
@@ -73,13 +76,11 @@ BodyPosition apparent(const Frame& f, Vec3 geocentricJ2000Km) {
   return apparent(f, geocentricJ2000Km, f.observer.pressureHpa, f.observer.temperatureC);
 }
 
-// Position angle (from north through east) of the bright limb (Meeus eq. 48.5) minus the
-// parallactic angle (Meeus eq. 14.1): measured from the zenith direction.
+// Bright limb measured from the zenith: position angle (Meeus eq. 48.5) minus the parallactic
+// angle (Meeus eq. 14.1).
 double brightLimbFromZenith(const BodyPosition& moon, const BodyPosition& sun, const Frame& f) {
-  const double da = sun.rightAscensionRad - moon.rightAscensionRad;
-  const double chi = std::atan2(std::cos(sun.declinationRad) * std::sin(da),
-                                std::sin(sun.declinationRad) * std::cos(moon.declinationRad) -
-                                    std::cos(sun.declinationRad) * std::sin(moon.declinationRad) * std::cos(da));
+  const double chi = brightLimbPositionAngle(moon.rightAscensionRad, moon.declinationRad, sun.rightAscensionRad,
+                                             sun.declinationRad);
   const double h = f.lastRad - moon.rightAscensionRad;
   const double q = std::atan2(std::sin(h), std::tan(f.latitude) * std::cos(moon.declinationRad) -
                                                std::sin(moon.declinationRad) * std::cos(h));
@@ -100,18 +101,17 @@ double saturnRingTilt(Vec3 geocentricJ2000, double jdTt) {
 }
 
 constexpr const char* kPlanetNames[5] = {"Mercury", "Venus", "Mars", "Jupiter", "Saturn"};
-constexpr VsopBody kPlanetBodies[5] = {VsopBody::Mercury, VsopBody::Venus, VsopBody::Mars, VsopBody::Jupiter,
-                                       VsopBody::Saturn};
 constexpr Planet kPlanets[5] = {Planet::Mercury, Planet::Venus, Planet::Mars, Planet::Jupiter, Planet::Saturn};
 }  // namespace
 
-SkyEphemeris computeEphemeris(const UtcTime& utc, const Observer& observer, const EphemerisOptions& options) {
-  checkObserver(observer);
+namespace {
+// geocentric: the observer sits at the earth's centre (no parallax, no diurnal aberration).
+SkyEphemeris assemble(const TimeScales& time, const Observer& observer, const SeriesState& series, bool geocentric) {
   SkyEphemeris sky;
   sky.observer = observer;
-  sky.time = timeScales(utc, options.ttMinusUtcS, options.dut1S);
+  sky.time = time;
   const double jd = sky.time.jdTt;  // TDB - TT < 2 ms is neglected
-  const EarthOrientation eo = earthOrientation(jd, sky.time.jdUt1);
+  const EarthOrientation eo = earthOrientation(jd, sky.time.jdUt1, series.nutation);
   sky.gmstRad = eo.gmst;
   sky.gastRad = eo.gast;
 
@@ -127,7 +127,7 @@ SkyEphemeris computeEphemeris(const UtcTime& utc, const Observer& observer, cons
                                              observer.heightM, x, y, z);
   const Vec3 ecefKm{x / 1000.0, y / 1000.0, z / 1000.0};
   const Mat3 todToEcef = rotZ(eo.gast);
-  const Vec3 observerTod = transposed(todToEcef) * ecefKm;
+  const Vec3 observerTod = geocentric ? Vec3{} : transposed(todToEcef) * ecefKm;
   const Vec3 observerVelTod{-kEarthRotationRadPerS * observerTod.y, kEarthRotationRadPerS * observerTod.x, 0.0};
   const Mat3 j2000ToTod = eo.npb;
   const Mat3 todToJ2000 = transposed(j2000ToTod);
@@ -137,7 +137,7 @@ SkyEphemeris computeEphemeris(const UtcTime& utc, const Observer& observer, cons
   const Mat3 ecefToEnu{{-so, co, 0.0, -sl * co, -sl * so, cl, cl * co, cl * so, sl}};
   f.todToEnu = ecefToEnu * todToEcef;
 
-  const StateVector earth = vsop87Heliocentric(VsopBody::Earth, jd);
+  const StateVector& earth = series.earth;
   f.beta = (1.0 / kLightKmPerS) * (kKmPerAuPerDayToKmS * earth.velocity + todToJ2000 * observerVelTod);
   sky.aberrationJ2000 = f.beta;
   sky.j2000ToEnu = f.todToEnu * f.npb;
@@ -153,7 +153,7 @@ SkyEphemeris computeEphemeris(const UtcTime& utc, const Observer& observer, cons
   // astrometric vector is barycentric moon(t - tau) - earth(t) = geocentric moon(t - tau) -
   // tau * earth velocity; that term cancels most of the annual aberration, as it should for a
   // body that travels with the earth.
-  const Vec3 moonGeo = elp82bGeocentric(jd - kMoonLightTimeDays);
+  const Vec3 moonGeo = series.moonGeocentricKm;
   const Vec3 moonAstrometric = moonGeo - (kMoonLightTimeDays * kAuKm) * earth.velocity;
   static_cast<BodyPosition&>(sky.moon) = apparent(f, moonAstrometric);
   const Vec3 moonToSun = sunGeo - moonGeo, moonToObserver = f.observerJ2000 - moonGeo;
@@ -164,7 +164,7 @@ SkyEphemeris computeEphemeris(const UtcTime& utc, const Observer& observer, cons
   sky.moon.irradianceWm2 = moonIrradiance(sky.moon.phaseAngleRad, sky.moon.distanceKm, norm(moonToSun));
 
   for (int i = 0; i < 5; ++i) {
-    const StateVector p = vsop87Heliocentric(kPlanetBodies[i], jd);
+    const StateVector& p = series.planets[static_cast<std::size_t>(i)];
     // Light time by linear extrapolation of the heliocentric motion (two iterations; the
     // neglected acceleration moves Mercury by < 0.05 arcsec).
     Vec3 helio = p.position;
@@ -184,6 +184,50 @@ SkyEphemeris computeEphemeris(const UtcTime& utc, const Observer& observer, cons
   }
   return sky;
 }
+}  // namespace
+
+SkyEphemeris assembleEphemeris(const TimeScales& time, const Observer& observer, const SeriesState& series) {
+  return assemble(time, observer, series, false);
+}
+
+SkyEphemeris computeEphemeris(const UtcTime& utc, const Observer& observer, const EphemerisOptions& options) {
+  checkObserver(observer);
+  const TimeScales time = timeScales(utc, options.ttMinusUtcS, options.dut1S);
+  return assemble(time, observer, evaluateSeries(time.jdTt), false);
+}
+
+ApparentPlace apparentGeocentricPlace(Body body, double jdTt) {
+  TimeScales time;
+  time.jdTt = jdTt;
+  time.jdUt1 = jdTt;
+  const SkyEphemeris sky = assemble(time, Observer{}, evaluateSeries(jdTt), true);
+  const BodyPosition* p = &sky.sun;
+  switch (body) {
+    case Body::Sun: p = &sky.sun; break;
+    case Body::Moon: p = &sky.moon; break;
+    case Body::Mercury: p = &sky.planets[0]; break;
+    case Body::Venus: p = &sky.planets[1]; break;
+    case Body::Mars: p = &sky.planets[2]; break;
+    case Body::Jupiter: p = &sky.planets[3]; break;
+    case Body::Saturn: p = &sky.planets[4]; break;
+  }
+  ApparentPlace place{p->rightAscensionRad, p->declinationRad, p->distanceKm, 0.0, 0.0};
+  if (body == Body::Moon) {
+    place.phaseAngleRad = sky.moon.phaseAngleRad;
+    place.brightLimbPositionAngleRad =
+        brightLimbPositionAngle(sky.moon.rightAscensionRad, sky.moon.declinationRad, sky.sun.rightAscensionRad,
+                                sky.sun.declinationRad);
+  }
+  return place;
+}
+
+double brightLimbPositionAngle(double moonRa, double moonDec, double sunRa, double sunDec) {
+  // Meeus eq. 48.5
+  const double da = sunRa - moonRa;
+  return wrapTwoPi(std::atan2(std::cos(sunDec) * std::sin(da),
+                              std::sin(sunDec) * std::cos(moonDec) - std::cos(sunDec) * std::sin(moonDec) * std::cos(da)));
+}
+
 
 Vec3 j2000DirectionToEnu(Vec3 directionJ2000, const SkyEphemeris& sky) {
   return sky.j2000ToEnu * aberrate(directionJ2000, sky.aberrationJ2000);

@@ -80,11 +80,36 @@ struct SkyEphemeris {
   Observer observer;
 };
 
+// Throws std::invalid_argument naming the bad value (latitude outside +-90 degrees, non-finite
+// coordinates, height outside [-1000 m, 100 km], pressure or temperature out of range).
+void checkObserver(const Observer& observer);
+
 // Throws std::invalid_argument with a message naming the value for a bad date (invalid or outside
 // 1900-2100), a latitude outside +-90 degrees, a non-finite coordinate, a height outside
 // [-1000 m, 100 km], or a pressure/temperature out of range.
 SkyEphemeris computeEphemeris(const UtcTime& utc, const Observer& observer,
                               const EphemerisOptions& options = {});
+
+struct SeriesState;
+// The cheap half of computeEphemeris: everything from the series state (see series_state.h).
+SkyEphemeris assembleEphemeris(const TimeScales& time, const Observer& observer, const SeriesState& series);
+
+enum class Body { Sun, Moon, Mercury, Venus, Mars, Jupiter, Saturn };
+
+struct ApparentPlace {
+  double rightAscensionRad = 0.0;  // true equator and equinox of date
+  double declinationRad = 0.0;
+  double distanceKm = 0.0;
+  double phaseAngleRad = 0.0;               // moon only
+  double brightLimbPositionAngleRad = 0.0;  // moon only, from north through east
+};
+
+// Apparent geocentric place at TT Julian date jdTt, as the Astronomical Almanac and Meeus'
+// examples tabulate it (light time, aberration, precession-nutation; no parallax).
+ApparentPlace apparentGeocentricPlace(Body body, double jdTt);
+
+// Position angle of the moon's bright limb from north through east (Meeus eq. 48.5), radians.
+double brightLimbPositionAngle(double moonRa, double moonDec, double sunRa, double sunDec);
 
 // A star seen from the observer: airless and refracted altitude, azimuth (the CPU path of what
 // the renderer does with j2000ToEnu and aberrationJ2000).

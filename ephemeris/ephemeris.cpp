@@ -156,6 +156,7 @@ SkyEphemeris assemble(const TimeScales& time, const Observer& observer, const Se
   const Vec3 moonGeo = series.moonGeocentricKm;
   const Vec3 moonAstrometric = moonGeo - (kMoonLightTimeDays * kAuKm) * earth.velocity;
   static_cast<BodyPosition&>(sky.moon) = apparent(f, moonAstrometric);
+  sky.moon.distanceKm = norm(moonGeo - f.observerJ2000);  // geometric, not the aberration proxy
   const Vec3 moonToSun = sunGeo - moonGeo, moonToObserver = f.observerJ2000 - moonGeo;
   sky.moon.phaseAngleRad = angleBetween(moonToSun, moonToObserver);
   sky.moon.illuminatedFraction = 0.5 * (1.0 + std::cos(sky.moon.phaseAngleRad));

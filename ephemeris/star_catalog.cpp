@@ -76,7 +76,7 @@ std::vector<Star> loadStarCatalog(const std::string& path) {
     s.pmRaCosDecRadPerYear = parseNumber(path, lineNo, "pmRA_arcsec_per_yr", f[3], -15.0, 15.0) * kArcsec;
     s.pmDecRadPerYear = parseNumber(path, lineNo, "pmDec_arcsec_per_yr", f[4], -15.0, 15.0) * kArcsec;
     s.vmag = parseNumber(path, lineNo, "Vmag", f[5], -2.0, 9.0);
-    if (!f[6].empty()) s.bMinusV = parseNumber(path, lineNo, "B_V", f[6], -0.5, 3.0);
+    if (!f[6].empty()) s.bMinusV = parseNumber(path, lineNo, "B_V", f[6], -0.5, 6.0);
     s.name = f[7];
     s.directionJ2000 = {std::cos(s.decRad) * std::cos(s.raRad), std::cos(s.decRad) * std::sin(s.raRad),
                         std::sin(s.decRad)};

@@ -14,6 +14,8 @@ packages=(
   libtomlplusplus-dev libcli11-dev libspdlog-dev nlohmann-json3-dev libpcap-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # independent ephemerides for the ephemeris comparison test and benchmark (validation only)
+  libswe-dev swe-basic-data liberfa-dev
 )
 
 missing=()

@@ -140,6 +140,7 @@ SkyEphemeris assemble(const TimeScales& time, const Observer& observer, const Se
   const StateVector& earth = series.earth;
   f.beta = (1.0 / kLightKmPerS) * (kKmPerAuPerDayToKmS * earth.velocity + todToJ2000 * observerVelTod);
   sky.aberrationJ2000 = f.beta;
+  sky.earthHeliocentricAu = earth.position;
   sky.j2000ToEnu = f.todToEnu * f.npb;
   sky.j2000ToTrueOfDate = f.npb;
 
@@ -236,8 +237,16 @@ Vec3 j2000DirectionToEnu(Vec3 directionJ2000, const SkyEphemeris& sky) {
 
 BodyPosition starPosition(const Star& star, const SkyEphemeris& sky) {
   BodyPosition p;
-  const Vec3 u = starDirectionAt(star, sky.time.jdTt);
-  p.enu = j2000DirectionToEnu(u, sky);
+  Vec3 u = starDirectionAt(star, sky.time.jdTt);
+  // Light deflection by the sun (SOFA eraLd with the star at infinity): p + (2GM/c^2 r)
+  // (e - (p.e) p) / (1 + p.e), e the unit vector from the sun to the observer.
+  constexpr double kSunSchwarzschildRadiusAu = 1.97412574336e-8;
+  const double r = norm(sky.earthHeliocentricAu);
+  const Vec3 e = (1.0 / r) * sky.earthHeliocentricAu;
+  const double pe = dot(u, e);
+  if (pe > -0.99999)  // not behind the sun's centre
+    u = normalized(u + (kSunSchwarzschildRadiusAu / r / (1.0 + pe)) * (e - pe * u));
+  p.enu = j2000DirectionToEnu(u, sky);  // aberration, then precession-nutation and rotation
   p.azimuthRad = wrapTwoPi(std::atan2(p.enu.x, p.enu.y));
   p.altitudeRad = std::atan2(p.enu.z, std::hypot(p.enu.x, p.enu.y));
   p.altitudeRefractedRad = p.altitudeRad + refractionSaemundsson(p.altitudeRad, sky.observer.pressureHpa,

@@ -77,6 +77,9 @@ struct SkyEphemeris {
   Mat3 j2000ToEnu;
   Mat3 j2000ToTrueOfDate;  // bias-precession-nutation (IAU 2006/2000B)
   Vec3 aberrationJ2000;  // observer's barycentric velocity / c (annual + diurnal)
+  // The recipe above neglects the sun's light deflection: 0.05" at 10 degrees from the sun,
+  // 0.5" at 1 degree; starPosition includes it.
+  Vec3 earthHeliocentricAu;  // J2000, for the light deflection
   Observer observer;
 };
 
@@ -111,8 +114,8 @@ ApparentPlace apparentGeocentricPlace(Body body, double jdTt);
 // Position angle of the moon's bright limb from north through east (Meeus eq. 48.5), radians.
 double brightLimbPositionAngle(double moonRa, double moonDec, double sunRa, double sunDec);
 
-// A star seen from the observer: airless and refracted altitude, azimuth (the CPU path of what
-// the renderer does with j2000ToEnu and aberrationJ2000).
+// A star seen from the observer: airless and refracted altitude, azimuth: the renderer's recipe
+// plus the gravitational deflection of light by the sun (SOFA eraLd, as in eraAtci13).
 BodyPosition starPosition(const Star& star, const SkyEphemeris& sky);
 
 // Apparent direction (ENU) of a J2000 unit vector, with aberration.

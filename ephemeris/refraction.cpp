@@ -21,7 +21,10 @@ double refractionSaemundsson(double altitudeRad, double pressureHpa, double temp
   if (h >= 90.0) return 0.0;
   const double arcmin = 1.02 / std::tan((h + 10.3 / (h + 5.11)) / kDeg) + 0.0019279;
   const double scale = (pressureHpa / 1010.0) * (283.0 / (273.0 + temperatureC));
-  return std::max(arcmin, 0.0) * scale / 60.0 / kDeg;
+  const double fade = altitudeRad >= kRefractionFloorRad
+                          ? 1.0
+                          : std::max(0.0, (altitudeRad - kRefractionZeroRad) / (kRefractionFloorRad - kRefractionZeroRad));
+  return std::max(arcmin, 0.0) * scale * fade / 60.0 / kDeg;
 }
 
 }  // namespace skyig::ephemeris

@@ -6,9 +6,11 @@
 
 namespace skyig::ephemeris {
 
-// Lowest true altitude the formula is used at; below it the refraction of -2 degrees is kept,
-// so apparent altitude stays monotonic (and the body stays below the apparent horizon).
+// Lowest true altitude the formula is used at. Below it the refraction at -2 degrees fades
+// linearly to zero at -5 degrees: apparent altitude stays continuous and monotonic, and a body
+// far below the horizon is not lifted by 44 arcmin.
 inline constexpr double kRefractionFloorRad = -2.0 * 3.14159265358979323846 / 180.0;
+inline constexpr double kRefractionZeroRad = -5.0 * 3.14159265358979323846 / 180.0;
 
 // Refraction in radians (apparent minus true altitude) for true altitude altitudeRad, pressure
 // in hPa and temperature in Celsius. Throws std::invalid_argument for NaN, a negative pressure

@@ -46,7 +46,10 @@ TEST(Refraction, ScalesWithPressureAndTemperatureAndIsMonotonic) {
     ASSERT_GT(apparent, lastApparent) << h;
     lastApparent = apparent;
   }
-  EXPECT_DOUBLE_EQ(refrArcmin(-5.0), refrArcmin(-2.0));  // held below the -2 degree floor
+  // Below -2 degrees it fades linearly to nothing at -5 degrees.
+  EXPECT_NEAR(refrArcmin(-3.5), 0.5 * refrArcmin(-2.0), 1e-9);
+  EXPECT_DOUBLE_EQ(refrArcmin(-5.0), 0.0);
+  EXPECT_DOUBLE_EQ(refrArcmin(-30.0), 0.0);
 }
 
 TEST(Refraction, RejectsBadInput) {

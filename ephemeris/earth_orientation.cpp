@@ -1,6 +1,9 @@
 #include "ephemeris/earth_orientation.h"
 
 #include <cmath>
+#include <iterator>
+
+#include "ephemeris/fast_sincos.h"
 
 namespace skyig::ephemeris {
 
@@ -31,7 +34,8 @@ Nutation nutation2000B(double jdTt) {
   double dp = 0.0, de = 0.0;
   for (auto it = std::rbegin(kNutation2000B); it != std::rend(kNutation2000B); ++it) {  // small first
     const double arg = it->nl * el + it->nlp * elp + it->nf * f + it->nd * d + it->nom * om;
-    const double s = std::sin(arg), c = std::cos(arg);
+    double s = 0.0, c = 0.0;
+    fastSinCos(arg, s, c);
     dp += (it->ps + it->pst * t) * s + it->pc * c;
     de += (it->ec + it->ect * t) * c + it->es * s;
   }

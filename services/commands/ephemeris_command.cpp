@@ -4,6 +4,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "ephemeris/night_irradiance.h"
+
 namespace skyig::commands {
 
 namespace {
@@ -58,7 +60,11 @@ nlohmann::json ephemerisToJson(const SkyEphemeris& sky, const std::vector<Star>&
                            {"azimuth_deg", p.azimuthRad * kRadToDeg},
                            {"altitude_deg", p.altitudeRad * kRadToDeg},
                            {"altitude_refracted_deg", p.altitudeRefractedRad * kRadToDeg}};
-      if (s.bMinusV) sj["b_minus_v"] = *s.bMinusV;
+      if (s.bMinusV) {
+        sj["b_minus_v"] = *s.bMinusV;
+        sj["colour_temperature_k"] = colourTemperatureFromBv(*s.bMinusV);  // paper 000 eq. 12
+      }
+      sj["irradiance_w_m2"] = irradianceFromMagnitude(s.vmag);  // paper 000 eq. 11
       j["stars"].push_back(sj);
     }
   }

@@ -48,6 +48,7 @@ TEST(EphemerisCommand, PrintsTheDocumentedFields) {
   ASSERT_EQ(j["stars"].size(), 5u);
   EXPECT_EQ(j["stars"][0]["hr"], 2491);  // Sirius, below the horizon in a Zurich August night
   EXPECT_LT(j["stars"][0]["altitude_deg"].get<double>(), 0.0);
+  EXPECT_NEAR(j["stars"][0]["colour_temperature_k"].get<double>(), 7000.0 / (0.0 + 0.56), 7000.0 / 0.56 * 0.05);
   // The values are those of computeEphemeris, in degrees and hours.
   Observer o;
   o.latitudeRad = 47.3769 * kDegToRad;

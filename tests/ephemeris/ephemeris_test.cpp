@@ -107,6 +107,21 @@ TEST(Ephemeris, StarMatrixIsARotationAndMatchesTheCpuPath) {
   EXPECT_LT(angleBetween(gpu, pp.enu), 1.5e-8);  // 3 mas: they differ in the (v/c)^2 terms
 }
 
+TEST(Ephemeris, BrightLimbPointsTowardsTheSunInTheObserversView) {
+  // Independent check by vector geometry: the bright limb's midpoint lies on the great circle
+  // from the moon towards the sun. In the view towards the moon (up = towards the zenith, left =
+  // up x forward) that direction's angle from "up", counterclockwise, is the bright-limb angle.
+  for (int day = 0; day < 28; day += 3) {
+    const SkyEphemeris s = computeEphemeris(UtcTime{2027, 3, 1 + day, 64800.0}, place(40.0, -3.7));
+    const Vec3 m = s.moon.enu, sun = s.sun.enu, zenith{0.0, 0.0, 1.0};
+    const Vec3 up = normalized(zenith - dot(zenith, m) * m);
+    const Vec3 left = cross(up, m);
+    const Vec3 toSun = sun - dot(sun, m) * m;
+    const double expected = wrapTwoPi(std::atan2(dot(toSun, left), dot(toSun, up)));
+    EXPECT_NEAR(std::remainder(s.moon.brightLimbAngleRad - expected, kTwoPi), 0.0, 0.1 * kDegToRad) << day;
+  }
+}
+
 TEST(Ephemeris, LowPrecisionSunAgreesWithThePreciseOne) {
   for (int month = 1; month <= 12; ++month) {
     const UtcTime t{2010 + month, month, 15, 3600.0 * month};

@@ -20,7 +20,6 @@ namespace skyig::ephemeris {
 namespace {
 constexpr double kEarthRotationRadPerS = 7.292115e-5;  // IERS, nominal
 constexpr double kKmPerAuPerDayToKmS = kAuKm / 86400.0;
-
 }  // namespace
 
 void checkObserver(const Observer& o) {
@@ -45,19 +44,18 @@ struct Frame {
   Mat3 todToEnu;       // true of date -> ENU
   Vec3 observerJ2000;  // km, geocentric
   Vec3 beta;           // observer velocity / c
-  double gast = 0.0;
   double latitude = 0.0;
   double lastRad = 0.0;  // local apparent sidereal time
   Observer observer;
 };
 
 Vec3 aberrate(Vec3 u, Vec3 beta) {
-  // First-order stellar aberration (Meeus ch. 23 in vector form); the neglected second order is
-  // below 0.001 arcsec.
+  // First-order aberration (Meeus ch. 23 in vector form); the neglected (v/c)^2 terms are below
+  // 0.002 arcsec.
   return normalized(u + beta - dot(u, beta) * u);
 }
 
-BodyPosition apparent(const Frame& f, Vec3 geocentricJ2000Km, double refrPressure, double refrTemperature) {
+BodyPosition apparent(const Frame& f, Vec3 geocentricJ2000Km) {
   const Vec3 topo = geocentricJ2000Km - f.observerJ2000;
   const double distance = norm(topo);
   const Vec3 u = f.npb * aberrate((1.0 / distance) * topo, f.beta);  // true equator of date
@@ -68,12 +66,9 @@ BodyPosition apparent(const Frame& f, Vec3 geocentricJ2000Km, double refrPressur
   p.enu = f.todToEnu * u;
   p.azimuthRad = wrapTwoPi(std::atan2(p.enu.x, p.enu.y));
   p.altitudeRad = std::atan2(p.enu.z, std::hypot(p.enu.x, p.enu.y));
-  p.altitudeRefractedRad = p.altitudeRad + refractionSaemundsson(p.altitudeRad, refrPressure, refrTemperature);
+  p.altitudeRefractedRad =
+      p.altitudeRad + refractionSaemundsson(p.altitudeRad, f.observer.pressureHpa, f.observer.temperatureC);
   return p;
-}
-
-BodyPosition apparent(const Frame& f, Vec3 geocentricJ2000Km) {
-  return apparent(f, geocentricJ2000Km, f.observer.pressureHpa, f.observer.temperatureC);
 }
 
 // Bright limb measured from the zenith: position angle (Meeus eq. 48.5) minus the parallactic
@@ -119,7 +114,6 @@ SkyEphemeris assemble(const TimeScales& time, const Observer& observer, const Se
   Frame f;
   f.observer = observer;
   f.npb = eo.npb;
-  f.gast = eo.gast;
   f.latitude = observer.latitudeRad;
   f.lastRad = wrapTwoPi(eo.gast + observer.longitudeRad);
   double x = 0.0, y = 0.0, z = 0.0;

@@ -16,6 +16,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth
   # protocol tests: files skyig writes checked by Wireshark, tcpdump and can-utils
   tshark tcpdump can-utils
+  # independent ephemerides for the ephemeris comparison test and benchmark (validation only)
+  libswe-dev swe-basic-data liberfa-dev
 )
 
 missing=()

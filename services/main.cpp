@@ -5,6 +5,7 @@
 #include "render/image_io.h"
 #include "services/caps.h"
 #include "services/commands/bench_command.h"
+#include "services/commands/ephemeris_command.h"
 #include "services/commands/host_command.h"
 #include "services/commands/render_command.h"
 #include "services/commands/serve_command.h"
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
   int exitCode = 0;
   registerRenderCommand(app, exitCode);
   registerBenchCommand(app, exitCode);
+  registerEphemerisCommand(app, exitCode);
   registerServeCommand(app, exitCode);
   registerHostCommand(app, exitCode);
 

@@ -1,0 +1,20 @@
+#pragma once
+// Atmospheric refraction from the airless (true) altitude: Saemundsson (1986, Sky & Telescope 72,
+// 70), as given by Meeus, Astronomical Algorithms 2nd ed., eq. 16.4 with the +0.0019279 arcmin
+// term that makes it vanish at the zenith, scaled by (P / 1010 hPa) (283 K / T) (Meeus p. 107).
+// Accurate to about 0.1 arcmin above 5 degrees at standard conditions.
+
+namespace skyig::ephemeris {
+
+// Lowest true altitude the formula is used at. Below it the refraction at -2 degrees fades
+// linearly to zero at -5 degrees: apparent altitude stays continuous and monotonic, and a body
+// far below the horizon is not lifted by 44 arcmin.
+inline constexpr double kRefractionFloorRad = -2.0 * 3.14159265358979323846 / 180.0;
+inline constexpr double kRefractionZeroRad = -5.0 * 3.14159265358979323846 / 180.0;
+
+// Refraction in radians (apparent minus true altitude) for true altitude altitudeRad, pressure
+// in hPa and temperature in Celsius. Throws std::invalid_argument for NaN, a negative pressure
+// or a temperature at or below -273.15 C.
+double refractionSaemundsson(double altitudeRad, double pressureHpa, double temperatureC);
+
+}  // namespace skyig::ephemeris

@@ -124,7 +124,8 @@ glm::dvec3 enuDirection(double azimuth, double altitude) {
   return {std::cos(altitude) * std::sin(azimuth), std::cos(altitude) * std::cos(azimuth), std::sin(altitude)};
 }
 
-AnalyticSkyState makeAnalyticSky(const SkyConditions& c, double sunAzimuth, double sunAltitude) {
+AnalyticSkyState makeAnalyticSky(const SkyConditions& c, double sunAzimuth, double sunAltitude,
+                                 std::optional<double> sunApparentAltitude) {
   AnalyticSkyState state;
   AnalyticSkyParams& p = state.params;
   const double skyAltitude = std::max(sunAltitude, 0.0);
@@ -132,7 +133,7 @@ AnalyticSkyState makeAnalyticSky(const SkyConditions& c, double sunAzimuth, doub
   p.luminanceScale = sunAltitude < 0.0 ? std::pow(10.0, kTwilightDecadesPerDegree * sunAltitude / kDeg) : 1.0;
   setLuminanceDistribution(c, kPi * 0.5 - skyAltitude, sunAltitude, p);
 
-  p.sunDirection = enuDirection(sunAzimuth, sunAltitude);
+  p.sunDirection = enuDirection(sunAzimuth, sunApparentAltitude.value_or(sunAltitude));
   p.cosSunRadius = std::cos(shader::SUN_ANGULAR_RADIUS);
   const bool sunVisible = c.model != SkyModel::Cie || cieSkyType(c.cieType).sunVisible;
   const double solidAngle = 2.0 * kPi * (1.0 - p.cosSunRadius);

@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include <optional>
+
 namespace skyig::render {
 
 // Mirrors the GLSL struct AnalyticSky (shaders/sky/analytic_sky.glsl) field by field; the
@@ -33,8 +35,10 @@ struct AnalyticSkyState {
 };
 
 // Builds the sky of the conditions for a sun at the given azimuth (from north through east)
-// and altitude (radians), including the ground it lights.
-AnalyticSkyState makeAnalyticSky(const SkyConditions& conditions, double sunAzimuth, double sunAltitude);
+// and airless altitude (radians), including the ground it lights; the disc is drawn at the
+// apparent (refracted) altitude when given.
+AnalyticSkyState makeAnalyticSky(const SkyConditions& conditions, double sunAzimuth, double sunAltitude,
+                                 std::optional<double> sunApparentAltitude = std::nullopt);
 
 // Evaluations of the shader code in double precision (shaders/physics.h): linear Rec.709
 // radiance in cd/m^2 towards an ENU unit direction.

@@ -1,7 +1,8 @@
 #include "render/sky_state.h"
 
-#include "ephemeris/low_precision_sun.h"
+#include "ephemeris/ephemeris.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -31,8 +32,8 @@ void validate(const ObserverState& o, const SkyConditions& c) {
           "attitude has a non-finite angle");
   const std::string dateError = ephemeris::validate(o.utc);
   require(dateError.empty(), "UTC time: " + dateError);
-  require(o.utc.year >= 1800 && o.utc.year <= 2200,
-          "year " + std::to_string(o.utc.year) + " is outside 1800-2200");
+  require(o.utc.year >= 1900 && o.utc.year <= 2100,
+          "year " + std::to_string(o.utc.year) + " is outside the ephemeris' 1900-2100");
   require(std::isfinite(c.turbidity) && c.turbidity >= 1.7 && c.turbidity <= 10.0,
           "turbidity " + num(c.turbidity) + " is outside [1.7, 10]");
   require(std::isfinite(c.groundAlbedo) && c.groundAlbedo >= 0.0 && c.groundAlbedo <= 1.0,
@@ -54,15 +55,19 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
             "sun altitude " + num(sun->altitudeDeg) + " deg is outside [-90, 90]");
     s.sunAzimuth = sun->azimuthDeg * kDeg;
     s.sunAltitude = sun->altitudeDeg * kDeg;
+    s.sunApparentAltitude = s.sunAltitude;
   } else {
-    const ephemeris::HorizontalPosition h = ephemeris::lowPrecisionSunHorizontal(
-        observer.utc, observer.latitudeDeg * kDeg, observer.longitudeDeg * kDeg);
-    s.sunAzimuth = h.azimuth;
-    s.sunAltitude = h.altitude;
-    s.conditions.sunDistanceAu =
-        ephemeris::lowPrecisionSunEquatorial(ephemeris::julianDateUtc(observer.utc)).distanceAu;
+    ephemeris::Observer where;
+    where.latitudeRad = observer.latitudeDeg * kDeg;
+    where.longitudeRad = observer.longitudeDeg * kDeg;
+    where.heightM = std::min(observer.heightM, 1e5);  // parallax beyond 100 km changes nothing seen
+    s.ephemeris = ephemeris::computeEphemeris(observer.utc, where);
+    s.sunAzimuth = s.ephemeris->sun.azimuthRad;
+    s.sunAltitude = s.ephemeris->sun.altitudeRad;
+    s.sunApparentAltitude = s.ephemeris->sun.altitudeRefractedRad;
+    s.conditions.sunDistanceAu = s.ephemeris->sun.distanceKm / 149597870.7;
   }
-  s.sky = makeAnalyticSky(s.conditions, s.sunAzimuth, s.sunAltitude);
+  s.sky = makeAnalyticSky(s.conditions, s.sunAzimuth, s.sunAltitude, s.sunApparentAltitude);
   // The eye adapts to the sky it sees: the solid-angle mean luminance of the upper hemisphere.
   s.adaptationLuminance = s.sky.lighting.meanSkyLuminance;
   return s;

@@ -2,6 +2,7 @@
 // SkyState: everything the renderer needs for a frame, computed once per host state on the
 // worker thread (../shared/DESIGN.md) and shared, immutable, by every channel. Adaptation
 // comes from the sky model, never from a channel's pixels, so a dome shows no exposure seam.
+#include "ephemeris/ephemeris.h"
 #include "ephemeris/time.h"
 #include "render/analytic_sky.h"
 #include "render/camera.h"
@@ -29,13 +30,16 @@ struct SunOverride {
 struct SkyState {
   ObserverState observer;
   SkyConditions conditions;
-  double sunAzimuth = 0.0;   // radians, from north through east
-  double sunAltitude = 0.0;  // radians, airless
+  double sunAzimuth = 0.0;           // radians, from north through east
+  double sunAltitude = 0.0;          // radians, airless: lights the sky
+  double sunApparentAltitude = 0.0;  // radians, refracted: where the disc is seen
+  std::optional<ephemeris::SkyEphemeris> ephemeris;  // absent when the sun was overridden
   AnalyticSkyState sky;
   double adaptationLuminance = 1.0;  // the eye's world adaptation, cd/m^2
 };
 
-// Throws std::invalid_argument naming the bad value (latitude out of range, NaN, bad date).
+// Throws std::invalid_argument naming the bad value (latitude out of range, NaN, a date
+// outside the ephemeris' 1900-2100). The ephemeris is the precise one (ephemeris/ephemeris.h).
 SkyState buildSkyState(const ObserverState& observer, const SkyConditions& conditions,
                        const std::optional<SunOverride>& sun = std::nullopt);
 

@@ -45,8 +45,14 @@ void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const ren
        {{"lat", o.latitudeDeg}, {"lon", o.longitudeDeg}, {"alt", o.heightM}, {"yaw", o.attitude.yawDeg},
         {"pitch", o.attitude.pitchDeg}, {"roll", o.attitude.rollDeg}, {"utc", ephemeris::formatIso8601Utc(o.utc)},
         {"visibility_m", host ? host->state.visibilityM : 50000.0}}},
-      {"sun", {{"azimuth_deg", used.sunAzimuth / kDeg}, {"altitude_deg", used.sunAltitude / kDeg}}},
+      {"sun", {{"azimuth_deg", used.sunAzimuth / kDeg}, {"altitude_deg", used.sunAltitude / kDeg},
+               {"altitude_refracted_deg", used.sunApparentAltitude / kDeg}}},
   };
+  if (used.ephemeris) {
+    const auto& m = used.ephemeris->moon;
+    line["moon"] = {{"azimuth_deg", m.azimuthRad / kDeg}, {"altitude_deg", m.altitudeRad / kDeg},
+                    {"altitude_refracted_deg", m.altitudeRefractedRad / kDeg}};
+  }
   const std::string text = line.dump() + "\n";
   // One line per frame, flushed: a crash loses at most the frame being written.
   std::fwrite(text.data(), 1, text.size(), file_);

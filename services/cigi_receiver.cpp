@@ -44,8 +44,13 @@ void CigiReceiver::handle(std::span<const std::uint8_t> datagram, const sockaddr
     }
   }
   if (decoded_.packets.empty()) return;
+  const std::uint64_t staleBefore = tracker_.staleMessages();
   const int rejected = tracker_.apply(decoded_, arrival);
   stats_.rejectedValues.fetch_add(static_cast<std::uint64_t>(rejected), std::memory_order_relaxed);
+  if (tracker_.staleMessages() != staleBefore) {
+    stats_.staleMessages.fetch_add(1, std::memory_order_relaxed);
+    return;  // nothing newer to publish
+  }
   const HostState& s = tracker_.state();
   if (s.ownshipValid && s.ownshipTime == arrival) predictor_.addSample(s.ownship, arrival, s.rates);
   {

@@ -41,6 +41,7 @@ nlohmann::json NodeStats::toJson() const {
       {"malformed_datagrams", malformedDatagrams.load()},
       {"skipped_packets", skippedPackets.load()},
       {"rejected_values", rejectedValues.load()},
+      {"stale_messages", staleMessages.load()},
       {"packets", packetsByType},
       {"errors", errorsByKind},
       {"can_frames", canFrames.load()},

@@ -36,6 +36,7 @@ struct NodeStats {
   std::atomic<std::uint64_t> malformedDatagrams{0};
   std::atomic<std::uint64_t> skippedPackets{0};
   std::atomic<std::uint64_t> rejectedValues{0};
+  std::atomic<std::uint64_t> staleMessages{0};  // reordered: older than a host frame applied
   std::array<std::atomic<std::uint64_t>, protocol::cigi::kPacketTypeCount> packets{};
   std::array<std::atomic<std::uint64_t>, protocol::cigi::kErrorKindCount> errors{};
   std::atomic<std::uint64_t> canFrames{0};

@@ -30,10 +30,11 @@ void SimClock::observe(const ephemeris::UtcTime& stated, double continuousS) {
 
 std::optional<ephemeris::UtcTime> SimClock::at(double continuousS) const {
   if (!valid_) return std::nullopt;
-  const double jd = dayStartJd_ + ((continuousS - anchorS_) * speed_ + offsetS_) / 86400.0;
-  // Back to a calendar date: Meeus ch. 7 inverse, for the Gregorian calendar.
-  const double z = std::floor(jd + 0.5);
-  const double f = jd + 0.5 - z;
+  // Whole days and seconds kept apart: a Julian date in one double would cost ~50 us.
+  const double seconds = (continuousS - anchorS_) * speed_ + offsetS_;
+  const double days = std::floor(seconds / 86400.0);
+  // Back to a calendar date: Meeus ch. 7 inverse, Gregorian calendar (dayStartJd_ is at 0h).
+  const double z = dayStartJd_ + 0.5 + days;
   const double alpha = std::floor((z - 1867216.25) / 36524.25);
   const double a = z + 1 + alpha - std::floor(alpha / 4);
   const double b = a + 1524;
@@ -44,7 +45,7 @@ std::optional<ephemeris::UtcTime> SimClock::at(double continuousS) const {
   t.day = static_cast<int>(b - d - std::floor(30.6001 * e));
   t.month = static_cast<int>(e < 14 ? e - 1 : e - 13);
   t.year = static_cast<int>(t.month > 2 ? c - 4716 : c - 4715);
-  t.secondsOfDay = f * 86400.0;
+  t.secondsOfDay = seconds - days * 86400.0;
   return t;
 }
 

@@ -1,0 +1,194 @@
+// The node's pure parts: the sim clock, ownship prediction, applying CIGI to the host state,
+// scripted paths.
+#include "protocol/cigi/date.h"
+#include "services/cigi_state.h"
+#include "services/host_path.h"
+#include "services/node_config.h"
+#include "services/ownship_predictor.h"
+#include "services/sim_clock.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace skyig::services;
+namespace cigi = skyig::protocol::cigi;
+using namespace std::chrono_literals;
+
+namespace {
+double secondsOf(const std::optional<skyig::ephemeris::UtcTime>& t) { return t ? t->secondsOfDay : -1.0; }
+}  // namespace
+
+// Hour and minute only: the clock starts at the stated minute, runs smoothly, never leaves
+// the stated minute, and a rollover pins it to the host's clock.
+TEST(SimClock, MinuteOnlyTimeRunsSmoothlyAndLocksAtTheRollover) {
+  SimClock c;
+  // The host's true time is 19:00:42.0 at continuous time 100 s; it says 19:00.
+  const double trueOffset = 19 * 3600.0 + 42.0 - 100.0;
+  for (double t = 100.0; t < 200.0; t += 1.0 / 30.0) {
+    const double truth = t + trueOffset;
+    c.observe({2026, 6, 21, std::floor(truth / 60.0) * 60.0}, t);
+    const double shown = secondsOf(c.at(t));
+    // Always inside the minute the host stated (the sun never runs ahead or behind).
+    EXPECT_GE(shown, std::floor(truth / 60.0) * 60.0 - 1e-6);
+    EXPECT_LT(shown, std::floor(truth / 60.0) * 60.0 + 60.0);
+  }
+  // After the 19:01 rollover (at t = 118 s) the clock agrees with the host to one host frame.
+  EXPECT_NEAR(secondsOf(c.at(150.0)), 150.0 + trueOffset, 1.0 / 30.0 + 1e-6);
+  // Between observations it keeps running: 0.5 s later it shows 0.5 s more.
+  EXPECT_NEAR(secondsOf(c.at(150.5)) - secondsOf(c.at(150.0)), 0.5, 1e-6);
+}
+
+TEST(SimClock, NewScenarioTimeRestartsTheClock) {
+  SimClock c;
+  c.observe({2026, 6, 21, 19 * 3600.0}, 10.0);
+  c.observe({2026, 12, 24, 6 * 3600.0 + 30 * 60.0}, 11.0);
+  const auto t = c.at(11.5);
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->month, 12);
+  EXPECT_EQ(t->day, 24);
+  EXPECT_NEAR(t->secondsOfDay, 6 * 3600.0 + 30 * 60.0 + 0.5, 1e-3);
+}
+
+TEST(SimClock, CrossesMidnight) {
+  SimClock c;
+  c.observe({2026, 12, 31, 23 * 3600.0 + 59 * 60.0}, 0.0);
+  c.observe({2026, 12, 31, 23 * 3600.0 + 59 * 60.0}, 30.0);
+  const auto t = c.at(90.0);
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->year, 2027);
+  EXPECT_EQ(t->month, 1);
+  EXPECT_EQ(t->day, 1);
+  EXPECT_NEAR(t->secondsOfDay, 30.0, 1e-3);
+}
+
+// With Rate Control, a 30 Hz host sampled by a 60 Hz IG moves smoothly: half a host frame
+// after a sample the ownship has moved half a frame's worth.
+TEST(OwnshipPredictor, DeadReckonsWithHostRates) {
+  OwnshipPredictor p;
+  const auto t0 = Clock::now();
+  OwnshipRates r;
+  r.valid = true;
+  r.x = 50.0;        // 50 m/s north
+  r.yawRate = 6.0;   // deg/s
+  p.addSample({45.0, 7.0, 1000.0, 350.0, 0.0, 0.0}, t0, r);
+  const Ownship o = p.at(t0 + std::chrono::microseconds(16667));
+  EXPECT_NEAR((o.latitudeDeg - 45.0) * 111132.0, 50.0 * 0.016667, 0.01);  // metres of latitude at 45 deg
+  EXPECT_NEAR(o.yawDeg, 350.1, 1e-3);
+  // Across north the heading wraps.
+  EXPECT_NEAR(p.at(t0 + 200ms).yawDeg, 351.2, 1e-3);
+  // A silent host: prediction stops after 0.25 s.
+  EXPECT_NEAR(p.at(t0 + 10s).latitudeDeg, p.at(t0 + 250ms).latitudeDeg, 1e-12);
+}
+
+TEST(OwnshipPredictor, ExtrapolatesFromTwoSamplesWithoutRates) {
+  OwnshipPredictor p;
+  const auto t0 = Clock::now();
+  p.addSample({45.0, 7.0, 1000.0, 359.0, 0.0, 10.0}, t0, {});
+  p.addSample({45.0, 7.0, 1003.0, 1.0, 0.0, 12.0}, t0 + 100ms, {});
+  const Ownship o = p.at(t0 + 150ms);
+  EXPECT_NEAR(o.altitudeM, 1004.5, 1e-9);
+  EXPECT_NEAR(o.yawDeg, 2.0, 1e-9);  // 359 -> 1 is +2 deg, not -358
+  EXPECT_NEAR(o.rollDeg, 13.0, 1e-9);
+  // An older sample is ignored.
+  p.addSample({0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, t0 + 50ms, {});
+  EXPECT_NEAR(p.at(t0 + 100ms).altitudeM, 1003.0, 1e-9);
+}
+
+namespace {
+cigi::DecodedMessage messageOf(std::uint32_t frame, const cigi::EntityControl& e) {
+  cigi::DecodedMessage m;
+  cigi::IgControl ig;
+  ig.hostFrameNumber = frame;
+  m.packets = {ig, e};
+  return m;
+}
+}  // namespace
+
+TEST(CigiState, OwnshipIsEntityZeroAndBadValuesKeepTheLastGood) {
+  CigiStateTracker t;
+  cigi::EntityControl e;
+  e.latitudeDeg = 47.0;
+  e.longitudeDeg = 11.0;
+  e.yawDeg = 90.0f;
+  t.apply(messageOf(1, e), Clock::now());
+  EXPECT_EQ(t.state().ownship.latitudeDeg, 47.0);
+  cigi::EntityControl other = e;
+  other.entityId = 3;
+  other.latitudeDeg = 10.0;
+  t.apply(messageOf(2, other), Clock::now());
+  EXPECT_EQ(t.state().ownship.latitudeDeg, 47.0);  // another entity is not the ownship
+  cigi::EntityControl bad = e;
+  bad.latitudeDeg = std::nan("");
+  EXPECT_EQ(t.apply(messageOf(3, bad), Clock::now()), 1);
+  bad.latitudeDeg = 91.0;
+  EXPECT_EQ(t.apply(messageOf(4, bad), Clock::now()), 1);
+  EXPECT_EQ(t.state().ownship.latitudeDeg, 47.0);
+  EXPECT_EQ(t.state().ownship.yawDeg, 90.0);
+}
+
+TEST(CigiState, ReorderedOlderFramesAreDropped) {
+  CigiStateTracker t;
+  cigi::EntityControl e;
+  e.latitudeDeg = 2.0;
+  t.apply(messageOf(11, e), Clock::now());
+  e.latitudeDeg = 1.0;
+  t.apply(messageOf(10, e), Clock::now());  // arrives late
+  EXPECT_EQ(t.state().ownship.latitudeDeg, 2.0);
+  EXPECT_EQ(t.staleMessages(), 1u);
+  e.latitudeDeg = 3.0;
+  t.apply(messageOf(0x7fffff00u + 11, e), Clock::now());  // far ahead (less than 2^31) is newer
+  EXPECT_EQ(t.state().ownship.latitudeDeg, 3.0);
+}
+
+TEST(CigiState, CelestialDateAndViewsApply) {
+  CigiStateTracker t;
+  cigi::DecodedMessage m;
+  cigi::IgControl ig;
+  ig.hostFrameNumber = 5;
+  ig.timestamp = 100000;  // 1 s
+  ig.timestampValid = true;
+  cigi::CelestialSphereControl cs;
+  cs.date = *cigi::composeDate({2026, 6, 21});
+  cs.hour = 19;
+  cs.minute = 30;
+  cigi::ViewDefinition vd;
+  vd.viewId = 1;
+  vd.leftEnable = vd.rightEnable = true;
+  vd.leftDeg = -20.0f;
+  vd.rightDeg = 35.0f;
+  cigi::ViewControl vc;
+  vc.viewId = 1;
+  vc.yawEnable = true;
+  vc.yawDeg = -60.0f;
+  m.packets = {ig, cs, vd, vc};
+  const auto now = Clock::now();
+  EXPECT_EQ(t.apply(m, now), 0);
+  ASSERT_TRUE(t.state().timeValid);
+  EXPECT_EQ(t.state().utc.day, 21);
+  EXPECT_NEAR(t.state().utc.secondsOfDay, 19 * 3600.0 + 30 * 60.0, 1e-3);
+  EXPECT_NEAR(secondsOf(t.utcAt(now + 2s)), 19 * 3600.0 + 30 * 60.0 + 2.0, 1e-3);
+  ASSERT_EQ(t.state().views.size(), 1u);
+  EXPECT_EQ(*t.state().views[0].leftDeg, 20.0);
+  EXPECT_EQ(*t.state().views[0].rightDeg, 35.0);
+  EXPECT_EQ(*t.state().views[0].yawDeg, -60.0);
+  EXPECT_FALSE(t.state().views[0].upDeg.has_value());
+  cs.date = 2302026;  // 30 February
+  m.packets = {ig, cs};
+  EXPECT_EQ(t.apply(m, now), 1);
+}
+
+TEST(HostPath, InterpolatesHeadingTheShortWayAndNamesBadLines) {
+  const HostPath p = HostPath::parse("time,lat,lon,alt,yaw,pitch,roll\n0,47,11,600,350,0,0\n10,47.1,11,700,10,0,0\n", "p.csv");
+  EXPECT_NEAR(p.at(5.0).yawDeg, 0.0, 1e-9);
+  EXPECT_NEAR(p.at(5.0).altitudeM, 650.0, 1e-9);
+  EXPECT_NEAR(p.ratesAt(5.0).yawRate, 2.0, 1e-6);
+  EXPECT_NEAR(p.ratesAt(5.0).x, 0.1 * 3.14159265 / 180.0 * 6371008.8 / 10.0, 0.01);
+  try {
+    HostPath::parse("0,47,11,600,350,0,0\n5,47,11,600\n", "p.csv");
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()), "p.csv:2: expected 7 numbers: time_s, latitude, longitude, altitude_m, yaw, pitch, roll");
+  }
+  EXPECT_THROW(HostPath::parse("0,47,11,600,350,0,0\n0,47,11,600,350,0,0\n", "p.csv"), ConfigError);
+}

@@ -38,7 +38,20 @@ TEST(NodeConfig, DocumentedDefaultsEqualBuiltInDefaults) {
   EXPECT_EQ(file.observer.attitude.pitchDeg, builtIn.observer.attitude.pitchDeg);
   EXPECT_EQ(file.observer.utc.secondsOfDay, builtIn.observer.utc.secondsOfDay);
   EXPECT_EQ(file.observer.utc.day, builtIn.observer.utc.day);
+  EXPECT_EQ(file.host.listen, builtIn.host.listen);
+  EXPECT_EQ(file.host.multicastGroup, builtIn.host.multicastGroup);
+  EXPECT_EQ(file.host.replyPort, builtIn.host.replyPort);
+  EXPECT_EQ(file.host.synchronous, builtIn.host.synchronous);
+  EXPECT_EQ(file.host.syncTimeoutS, builtIn.host.syncTimeoutS);
+  EXPECT_EQ(file.host.frameRateHz, builtIn.host.frameRateHz);
+  EXPECT_EQ(file.host.canInterface, builtIn.host.canInterface);
+  EXPECT_EQ(file.canIdentifiers.bodyPitch, builtIn.canIdentifiers.bodyPitch);
+  EXPECT_EQ(file.canIdentifiers.heading, builtIn.canIdentifiers.heading);
+  EXPECT_EQ(file.canIdentifiers.latitude, builtIn.canIdentifiers.latitude);
+  EXPECT_EQ(file.canIdentifiers.date, builtIn.canIdentifiers.date);
+  EXPECT_EQ(file.canIdentifiers.acceptLongLatLon1e7, builtIn.canIdentifiers.acceptLongLatLon1e7);
   ASSERT_EQ(file.channels.size(), 1u);
+  EXPECT_EQ(file.channelNodes, builtIn.channelNodes);
   const auto& a = file.channels[0];
   const auto& b = builtIn.channels[0];
   EXPECT_EQ(a.name, b.name);
@@ -84,6 +97,26 @@ TEST(NodeConfig, SyntaxErrorsAndDuplicates) {
   EXPECT_EQ(errorOf("[[channel]]\nname = \"a\"\n[[channel]]\nname = \"a\"\n"),
             "bad.toml:4: channel[1].name: duplicate channel name \"a\"");
   EXPECT_EQ(errorOf("[sky]\nturbidity = nan\n"), "bad.toml:2: sky.turbidity: expected a number in [1.7, 10], got nan");
+}
+
+// A shared dome configuration: each node renders the channels assigned to it.
+TEST(NodeConfig, NodesSelectTheirChannels) {
+  const NodeConfig c = parseNodeConfig(
+      "[[channel]]\nname = \"a\"\nnode = \"ig1\"\n[[channel]]\nname = \"b\"\nnode = \"ig2\"\n"
+      "[[channel]]\nname = \"c\"\n",
+      "dome.toml");
+  const auto ig1 = c.channelsOf("ig1");
+  ASSERT_EQ(ig1.size(), 2u);
+  EXPECT_EQ(ig1[0].name, "a");
+  EXPECT_EQ(ig1[1].name, "c");  // unassigned: every node
+  EXPECT_EQ(c.channelsOf("ig2")[0].name, "b");
+}
+
+TEST(NodeConfig, HostSectionErrors) {
+  EXPECT_EQ(errorOf("[host]\nreply_port = 70000\n"), "bad.toml:2: host.reply_port: expected an integer in [1, 65535], got 70000");
+  EXPECT_EQ(errorOf("[host]\nsynchronous = \"yes\"\n"), "bad.toml:2: host.synchronous: expected true or false, got 'yes'");
+  EXPECT_EQ(errorOf("[can_identifiers]\nheading = 4000\n"),
+            "bad.toml:2: can_identifiers.heading: expected an integer in [0, 2047], got 4000");
 }
 
 TEST(NodeConfig, MissingFile) {

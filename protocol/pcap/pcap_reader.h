@@ -49,9 +49,10 @@ class Reader {
   const std::vector<RecordError>& skippedErrors() const { return skippedErrors_; }
 
  private:
-  // Checks the record header at `offset`; nullopt when it is a plausible header.
+  // Checks the record header at `offset`; nullopt when it is a plausible header. Without
+  // `withMessage` the error carries only its kind (cheap, for resynchronisation scans).
   std::optional<RecordError> checkRecordHeader(std::uint64_t offset, std::uint64_t number, std::uint32_t* captured,
-                                               std::int64_t* timestampNs);
+                                               std::int64_t* timestampNs, bool withMessage = true);
   bool plausibleAt(std::uint64_t offset);
   std::optional<std::uint64_t> resynchronise(std::uint64_t from);
   Status fail(RecordError e);

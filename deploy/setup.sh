@@ -16,6 +16,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # protocol tests: files skyig writes checked by Wireshark, tcpdump and can-utils
   tshark tcpdump can-utils
+  # libFuzzer targets (tests/fuzz), built with clang even when the rest uses gcc
+  clang-14 libclang-rt-14-dev
 )
 
 missing=()

@@ -13,5 +13,6 @@ set(SKYIG_PROTOCOL_SOURCES
   pcap/udp_frame.cpp
   pcap/pcap_writer.cpp
   pcap/pcap_reader.cpp
+  pcap/pcapng_reader.cpp
   candump/candump.cpp
 )

@@ -45,7 +45,7 @@ bool Reader::open() {
       std::snprintf(buf, sizeof buf, "not a pcap file: magic %02X %02X %02X %02X at byte 0", h[0], h[1], h[2], h[3]);
       std::string m = buf;
       if (be == kPcapngMagic)
-        m += " is pcapng: convert it with `editcap -F pcap IN OUT`";
+        m += " is pcapng: read it with pcap::openCapture or PcapngReader";
       else if (be == 0xA1B2CD34u || le == 0xA1B2CD34u)
         m += " is the modified (Kuznetzov) pcap format: convert it with `editcap -F pcap IN OUT`";
       else if (h[0] == '(')
@@ -184,6 +184,7 @@ Reader::Status Reader::next(Record& out) {
     out.offset = offset_;
     out.timestampNs = ts;
     out.originalLength = loadU32(&h[12], header_.byteOrder);
+    out.linkType = header_.linkType;
     number_ = number;
     lastTimestampNs_ = ts;
     offset_ += kRecordHeaderSize + incl;

@@ -15,4 +15,5 @@ set(SKYIG_PROTOCOL_SOURCES
   pcap/pcap_reader.cpp
   pcap/pcapng_reader.cpp
   candump/candump.cpp
+  recording_format.cpp
 )

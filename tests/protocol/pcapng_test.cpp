@@ -189,3 +189,29 @@ TEST(Pcapng, EditcapConversionOfSkyigPcapReadsTheSame) {
 
 }  // namespace
 }  // namespace skyig::protocol::pcap
+
+#include "protocol/recording_format.h"
+
+namespace skyig::protocol {
+namespace {
+
+RecordingFormat detect(const std::vector<std::uint8_t>& bytes, std::string* why = nullptr) {
+  io::MemorySource src(bytes);
+  return detectRecordingFormat(src, why);
+}
+
+TEST(RecordingFormat, DetectsEachFormatByItsFirstBytes) {
+  EXPECT_EQ(detect(test::hexBytes("D4 C3 B2 A1 02 00 04 00")), RecordingFormat::pcap);
+  EXPECT_EQ(detect(test::hexBytes("A1 B2 3C 4D 00 02 00 04")), RecordingFormat::pcap);
+  EXPECT_EQ(detect(test::hexBytes("0A 0D 0D 0A 1C 00 00 00")), RecordingFormat::pcapng);
+  const std::string log = "\n(1700000000.000000) can0 137#0A02000040800000\n";
+  EXPECT_EQ(detect({log.begin(), log.end()}), RecordingFormat::candump);
+  std::string why;
+  EXPECT_EQ(detect(test::hexBytes("7F 45 4C 46 02 01"), &why), RecordingFormat::unknown);
+  EXPECT_EQ(why, "first bytes 7F 45 4C 46");
+  EXPECT_EQ(detect({}, &why), RecordingFormat::unknown);
+  EXPECT_EQ(why, "empty file");
+}
+
+}  // namespace
+}  // namespace skyig::protocol

@@ -12,6 +12,7 @@
 #include "protocol/pcap/pcap_writer.h"
 #include "protocol/pcap/pcapng_reader.h"
 #include "tests/protocol/hex.h"
+#include "tests/protocol/temp_path.h"
 
 namespace skyig::protocol::pcap {
 namespace {
@@ -152,8 +153,7 @@ TEST(Pcapng, OpenCaptureRejectsWhatIsNeither) {
 TEST(Pcapng, EditcapConversionOfSkyigPcapReadsTheSame) {
   if (std::system("command -v editcap >/dev/null 2>&1") != 0)
     GTEST_SKIP() << "editcap (Debian package tshark/wireshark-common) not installed: check skipped";
-  const std::string dir = ::testing::TempDir();
-  const std::string classic = dir + "skyig_pcapng_in.pcap", ng = dir + "skyig_pcapng_out.pcapng";
+  const std::string classic = test::tempPath("pcapng_in.pcap"), ng = test::tempPath("pcapng_out.pcapng");
   std::vector<std::vector<std::uint8_t>> payloads;
   {
     io::FileSink sink;

@@ -87,6 +87,8 @@ void unpack4(std::size_t index, const std::uint8_t* p, ByteOrder order, std::vec
     case 1: unpackInto4<EntityControl>(packets, p, order); break;
     case 3: unpackInto4<CelestialSphereControl>(packets, p, order); break;
     case 4: unpackInto4<AtmosphereControl>(packets, p, order); break;
+    case 7: unpackInto4<ViewControl>(packets, p, order); break;
+    case 8: unpackInto4<ViewDefinition>(packets, p, order); break;
     case 9: unpackInto4<StartOfFrame>(packets, p, order); break;
     default: break;  // variantIndexOf4 returns only the indices above
   }

@@ -4,7 +4,8 @@
 // written by the framework); there is no byte-swap magic: the receiver tells the order from
 // how the first packet's size reads. Source: the CIGI 4.0 ICD as implemented by the CIGI
 // Class Library 4.0 port (captainflasmr/cigi-ccl_4_0: CigiIGCtrlV4, CigiSOFV4,
-// CigiEntityPositionCtrlV4, CigiCelestialCtrlV4, CigiAtmosCtrlV4 Pack functions); the
+// CigiEntityPositionCtrlV4, CigiCelestialCtrlV4, CigiAtmosCtrlV4, CigiViewCtrlV4,
+// CigiViewDefV4 Pack functions); the
 // SISO text itself was not available (../shared/docs/cigi-canaerospace-facts.md 1.6, 5).
 #include <type_traits>
 
@@ -69,6 +70,50 @@ void layout4(IO& io, P& m) {
   io.f32(20, m.verticalWindSpeedMps);
   io.f32(24, m.windDirectionDeg);
   io.f32(28, m.barometricPressureHpa);
+}
+
+template <class IO, class P> requires std::is_same_v<std::remove_const_t<P>, ViewControl>
+void layout4(IO& io, P& m) {
+  io.u8(4, m.groupId);
+  io.bits(5, 0, 1, m.xOffsetEnable, "X Offset Enable");
+  io.bits(5, 1, 1, m.yOffsetEnable, "Y Offset Enable");
+  io.bits(5, 2, 1, m.zOffsetEnable, "Z Offset Enable");
+  io.bits(5, 3, 1, m.rollEnable, "Roll Enable");
+  io.bits(5, 4, 1, m.pitchEnable, "Pitch Enable");
+  io.bits(5, 5, 1, m.yawEnable, "Yaw Enable");
+  io.u16(6, m.viewId);
+  io.u16(8, m.entityId);
+  io.f32(12, m.xOffsetM);
+  io.f32(16, m.yOffsetM);
+  io.f32(20, m.zOffsetM);
+  io.f32(24, m.rollDeg);
+  io.f32(28, m.pitchDeg);
+  io.f32(32, m.yawDeg);
+}
+
+// The floats start at offset 12 in the CCL 4.0 Pack function (the facts page's "from 8" is
+// a slip: bytes 9-11 are reserved after the two flag bytes).
+template <class IO, class P> requires std::is_same_v<std::remove_const_t<P>, ViewDefinition>
+void layout4(IO& io, P& m) {
+  io.u16(4, m.viewId);
+  io.u8(6, m.groupId);
+  io.bits(7, 0, 1, m.nearEnable, "Near Enable");
+  io.bits(7, 1, 1, m.farEnable, "Far Enable");
+  io.bits(7, 2, 1, m.leftEnable, "Left Enable");
+  io.bits(7, 3, 1, m.rightEnable, "Right Enable");
+  io.bits(7, 4, 1, m.topEnable, "Top Enable");
+  io.bits(7, 5, 1, m.bottomEnable, "Bottom Enable");
+  io.bits(7, 6, 2, m.mirrorMode, "Mirror Mode");
+  io.bits(8, 0, 3, m.pixelReplicationMode, "Pixel Replication Mode");
+  io.bits(8, 3, 1, m.orthographic, "Projection Type");
+  io.bits(8, 4, 1, m.reorder, "Reorder");
+  io.bits(8, 5, 3, m.viewType, "View Type");
+  io.f32(12, m.nearM);
+  io.f32(16, m.farM);
+  io.f32(20, m.leftDeg);
+  io.f32(24, m.rightDeg);
+  io.f32(28, m.topDeg);
+  io.f32(32, m.bottomDeg);
 }
 
 template <class IO, class P> requires std::is_same_v<std::remove_const_t<P>, StartOfFrame>

@@ -69,8 +69,8 @@ constexpr std::array<Packet4Info, kPacketTypeCount> kInfo4{{
     {kCigi4AtmosphereControl, 32, "Atmosphere Control"},
     {0, 0, "Environmental Region Control"},
     {0, 0, "Weather Control"},
-    {0, 0, "View Control"},
-    {0, 0, "View Definition"},
+    {kCigi4ViewControl, 40, "View Control"},
+    {kCigi4ViewDefinition, 40, "View Definition"},
     {kCigi4StartOfFrame, 24, "Start of Frame"},
 }};
 

@@ -247,6 +247,8 @@ inline constexpr std::uint16_t kCigi4IgControl = 0x0000;
 inline constexpr std::uint16_t kCigi4EntityPositionControl = 0x0001;
 inline constexpr std::uint16_t kCigi4CelestialSphereControl = 0x0008;
 inline constexpr std::uint16_t kCigi4AtmosphereControl = 0x0009;
+inline constexpr std::uint16_t kCigi4ViewControl = 0x000F;
+inline constexpr std::uint16_t kCigi4ViewDefinition = 0x0014;
 inline constexpr std::uint16_t kCigi4StartOfFrame = 0xFFFF;
 // The CIGI 4 id and size of a packet type (size 0: no CIGI 4 mapping in skyig), and the
 // variant index a CIGI 4 id decodes to (kPacketTypeCount: none).

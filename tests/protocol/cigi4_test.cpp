@@ -100,6 +100,50 @@ TEST(Cigi4, PosePacketsAndCelestialSeconds) {
   }
 }
 
+TEST(Cigi4, ViewControlAndViewDefinition) {
+  ViewControl v;
+  v.viewId = 2;
+  v.groupId = 1;
+  v.xOffsetEnable = v.yOffsetEnable = v.zOffsetEnable = v.rollEnable = v.pitchEnable = v.yawEnable = true;
+  v.entityId = 0x0102;
+  v.xOffsetM = 1.0f;
+  v.yOffsetM = -1.0f;
+  v.zOffsetM = 0.5f;
+  v.pitchDeg = 2.0f;
+  v.yawDeg = 45.0f;
+  // size 40, id 0x0F, group, enables, view id, entity id, reserved, six floats, reserved.
+  EXPECT_EQ(toHex(encode4(v, ByteOrder::big)),
+            toHex(hexBytes("00 28 00 0F 01 3F 00 02 | 01 02 00 00 3F 80 00 00 | BF 80 00 00 3F 00 00 00 |"
+                           "00 00 00 00 40 00 00 00 | 42 34 00 00 00 00 00 00")));
+  ViewDefinition d;
+  d.viewId = 2;
+  d.groupId = 1;
+  d.nearEnable = d.farEnable = d.leftEnable = d.rightEnable = d.topEnable = d.bottomEnable = true;
+  d.mirrorMode = MirrorMode::horizontal;
+  d.pixelReplicationMode = 2;
+  d.reorder = true;
+  d.viewType = 5;
+  d.nearM = 0.5f;
+  d.farM = 100000.0f;
+  d.leftDeg = -45.0f;
+  d.rightDeg = 45.0f;
+  d.topDeg = 30.0f;
+  d.bottomDeg = -20.0f;
+  // size 40, id 0x14, view id, group, enables | mirror, replication | reorder | type,
+  // 3 reserved bytes, six floats from offset 12, reserved.
+  EXPECT_EQ(toHex(encode4(d, ByteOrder::big)),
+            toHex(hexBytes("00 28 00 14 00 02 01 7F | B2 00 00 00 3F 00 00 00 | 47 C3 50 00 C2 34 00 00 |"
+                           "42 34 00 00 41 F0 00 00 | C1 A0 00 00 00 00 00 00")));
+  const std::vector<Packet> packets{ig4(), v, d};
+  std::vector<std::uint8_t> b;
+  ASSERT_EQ(encodeMessage4(packets, ByteOrder::little, b), "");
+  const DecodedMessage m = decodeMessage(b);
+  ASSERT_TRUE(m.ok()) << m.error->describe();
+  ASSERT_EQ(m.packets.size(), 3u);
+  EXPECT_EQ(std::get<ViewControl>(m.packets[1]), v);
+  EXPECT_EQ(std::get<ViewDefinition>(m.packets[2]), d);
+}
+
 TEST(Cigi4, StartOfFrame) {
   StartOfFrame s;
   s.databaseNumber = -2;
@@ -148,7 +192,7 @@ TEST(Cigi4, UnknownPacketsSkippedAndErrorsNamed) {
 
 TEST(Cigi4, EncoderRefusesPacketsOutsideTheSubset) {
   std::vector<std::uint8_t> b;
-  EXPECT_NE(appendPacket4(b, ViewDefinition{}, ByteOrder::big).find("View Definition: not in skyig's CIGI 4.0 subset"),
+  EXPECT_NE(appendPacket4(b, WeatherControl{}, ByteOrder::big).find("Weather Control: not in skyig's CIGI 4.0 subset"),
             std::string::npos);
   EXPECT_TRUE(b.empty());
   AtmosphereControl a;

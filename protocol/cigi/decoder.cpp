@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <type_traits>
+#include <utility>
 
 #include "protocol/cigi/layouts.h"
 #include "protocol/cigi/layouts4.h"
@@ -74,24 +75,25 @@ DecodeError makeError(ErrorKind kind, std::size_t offset, std::uint16_t id, std:
 
 template <class T>
 void unpackInto4(std::vector<Packet>& packets, const std::uint8_t* p, ByteOrder order) {
-  T m{};
-  Unpacker u(p, order);
-  detail::layout4(u, m);
-  packets.emplace_back(m);
+  if constexpr (requires(Unpacker u, T m) { detail::layout4(u, m); }) {
+    T m{};
+    Unpacker u(p, order);
+    detail::layout4(u, m);
+    packets.emplace_back(m);
+  }
 }
 
-// Unpacks a CIGI 4 packet of a known variant index whose size has been checked.
+// Unpacks a CIGI 4 packet of a known variant index whose size has been checked: the
+// alternative with that index, through its layout4 (every index variantIndexOf4 returns
+// has one).
+template <std::size_t... I>
+void unpack4(std::size_t index, const std::uint8_t* p, ByteOrder order, std::vector<Packet>& packets,
+             std::index_sequence<I...>) {
+  ((index == I ? unpackInto4<std::variant_alternative_t<I, Packet>>(packets, p, order) : void()), ...);
+}
+
 void unpack4(std::size_t index, const std::uint8_t* p, ByteOrder order, std::vector<Packet>& packets) {
-  switch (index) {
-    case 0: unpackInto4<IgControl>(packets, p, order); break;
-    case 1: unpackInto4<EntityControl>(packets, p, order); break;
-    case 3: unpackInto4<CelestialSphereControl>(packets, p, order); break;
-    case 4: unpackInto4<AtmosphereControl>(packets, p, order); break;
-    case 7: unpackInto4<ViewControl>(packets, p, order); break;
-    case 8: unpackInto4<ViewDefinition>(packets, p, order); break;
-    case 9: unpackInto4<StartOfFrame>(packets, p, order); break;
-    default: break;  // variantIndexOf4 returns only the indices above
-  }
+  unpack4(index, p, order, packets, std::make_index_sequence<kPacketTypeCount>{});
 }
 
 // DecodeError::value of unsupportedVersion: the major version, or these for CIGI 3 minors.

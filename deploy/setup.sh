@@ -18,6 +18,8 @@ packages=(
   tshark tcpdump can-utils
   # independent ephemerides for the ephemeris comparison test and benchmark (validation only)
   libswe-dev swe-basic-data liberfa-dev
+  # libFuzzer targets (tests/fuzz), built with clang even when the rest uses gcc
+  clang-14 libclang-rt-14-dev
 )
 
 missing=()

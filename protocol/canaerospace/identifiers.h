@@ -21,6 +21,9 @@ struct IdentifierMap {
   // Some devices send latitude/longitude as LONG in units of 1e-7 deg (e.g. XCSoar's driver);
   // accepted only when enabled.
   bool acceptLongLatLon1e7 = false;
+  // Accept messages from this transmitting node only (0..255), e.g. when a redundant host
+  // sends the same identifiers; -1 accepts every node.
+  int nodeId = -1;
 };
 
 }  // namespace skyig::protocol::canaerospace

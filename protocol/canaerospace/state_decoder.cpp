@@ -106,6 +106,7 @@ FeedResult StateDecoder::latLon(const Message& m, PendingHalf& pending, double& 
 }
 
 FeedResult StateDecoder::feedMessage(const Message& m) {
+  if (map_.nodeId >= 0 && m.nodeId != map_.nodeId) return FeedResult{FeedStatus::ignored, {}};
   if (m.id == map_.latitude) return latLon(m, latPending_, state_.latitudeDeg, kLatitude, 90.0);
   if (m.id == map_.longitude) return latLon(m, lonPending_, state_.longitudeDeg, kLongitude, 180.0);
   if (m.id == map_.altitude) return angleOrLength(m, state_.altitudeM, kAltitude, -1.0e5, 1.0e6);

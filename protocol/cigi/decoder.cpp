@@ -2,8 +2,10 @@
 
 #include <cstdio>
 #include <type_traits>
+#include <utility>
 
 #include "protocol/cigi/layouts.h"
+#include "protocol/cigi/layouts4.h"
 
 namespace skyig::protocol::cigi {
 
@@ -66,9 +68,37 @@ bool unpack(PacketId id, const std::uint8_t* p, ByteOrder order, std::vector<Pac
   return false;
 }
 
-DecodeError makeError(ErrorKind kind, std::size_t offset, std::uint8_t id, std::size_t size, std::uint32_t value = 0) {
-  return DecodeError{kind, offset, id, size, value};
+DecodeError makeError(ErrorKind kind, std::size_t offset, std::uint16_t id, std::size_t size, std::uint32_t value = 0,
+                      bool cigi4 = false) {
+  return DecodeError{kind, offset, id, cigi4, size, value};
 }
+
+template <class T>
+void unpackInto4(std::vector<Packet>& packets, const std::uint8_t* p, ByteOrder order) {
+  if constexpr (requires(Unpacker u, T m) { detail::layout4(u, m); }) {
+    T m{};
+    Unpacker u(p, order);
+    detail::layout4(u, m);
+    packets.emplace_back(m);
+  }
+}
+
+// Unpacks a CIGI 4 packet of a known variant index whose size has been checked: the
+// alternative with that index, through its layout4 (every index variantIndexOf4 returns
+// has one).
+template <std::size_t... I>
+void unpack4(std::size_t index, const std::uint8_t* p, ByteOrder order, std::vector<Packet>& packets,
+             std::index_sequence<I...>) {
+  ((index == I ? unpackInto4<std::variant_alternative_t<I, Packet>>(packets, p, order) : void()), ...);
+}
+
+void unpack4(std::size_t index, const std::uint8_t* p, ByteOrder order, std::vector<Packet>& packets) {
+  unpack4(index, p, order, packets, std::make_index_sequence<kPacketTypeCount>{});
+}
+
+// DecodeError::value of unsupportedVersion: the major version, or these for CIGI 3 minors.
+constexpr std::uint32_t kVersion3Minor = 0x300;    // + minor version
+constexpr std::uint32_t kVersion30or31 = 0x3FF;    // the 16-byte first packet of 3.0/3.1
 
 // A CIGI 4 message starts with a 16-bit size (24) and a 16-bit id (0 IG Control, 0xFFFF
 // Start of Frame) in either byte order (CIGI 4.0 ICD; CCL 4 CigiIncomingMsg).
@@ -86,14 +116,13 @@ std::optional<DecodeError> readFirstPacket(std::span<const std::uint8_t> b, Deco
   if (b.size() < 2) return makeError(ErrorKind::truncatedHeader, 0, b[0], b.size());
   const std::uint8_t id = b[0];
   const std::uint8_t size = b[1];
-  if (looksLikeCigi4(b)) return makeError(ErrorKind::unsupportedVersion, 0, id, size, 4);
   if (id != static_cast<std::uint8_t>(PacketId::igControl) && id != static_cast<std::uint8_t>(PacketId::startOfFrame))
     return makeError(ErrorKind::missingFirstPacket, 0, id, size);
   if (b.size() < 3) return makeError(ErrorKind::packetPastEnd, 0, id, size);
   const std::uint8_t major = b[2];
   if (major != kMajorVersion) return makeError(ErrorKind::unsupportedVersion, 2, id, size, major);
   // CIGI 3.0 and 3.1 used a 16-byte IG Control / Start of Frame with other field offsets.
-  if (size == 16) return makeError(ErrorKind::unsupportedVersion, 0, id, size, 30);
+  if (size == 16) return makeError(ErrorKind::unsupportedVersion, 0, id, size, kVersion30or31);
   if (size < 2) return makeError(ErrorKind::packetSizeTooSmall, 0, id, size);
   if (size != 24) return makeError(ErrorKind::wrongPacketSize, 0, id, size, 24);
   if (b.size() < size) return makeError(ErrorKind::packetPastEnd, 0, id, size);
@@ -106,12 +135,59 @@ std::optional<DecodeError> readFirstPacket(std::span<const std::uint8_t> b, Deco
     return makeError(ErrorKind::badByteSwapMagic, 6, id, size, magic);
   const std::size_t minorByte = id == static_cast<std::uint8_t>(PacketId::igControl) ? 4 : 5;
   const std::uint8_t minor = static_cast<std::uint8_t>(b[minorByte] >> 4);
-  if (minor != 2 && minor != 3) return makeError(ErrorKind::unsupportedVersion, minorByte, id, size, 30u + minor);
+  if (minor != 2 && minor != 3)
+    return makeError(ErrorKind::unsupportedVersion, minorByte, id, size, kVersion3Minor + minor);
   out.minorVersion = minor;
   return std::nullopt;
 }
 
+// CIGI 4: every packet starts with u16 size, u16 id in the sender's order; the first is IG
+// Control (id 0) or Start of Frame (0xFFFF), 24 bytes, so its size bytes tell the order.
+void decodeMessage4(std::span<const std::uint8_t> b, DecodedMessage& out) {
+  out.majorVersion = 4;
+  out.byteOrder = (b[0] == 0 && b[1] == 24) ? ByteOrder::big : ByteOrder::little;
+  const std::uint16_t firstId = loadU16(&b[2], out.byteOrder);
+  if (b.size() < 24) {
+    out.error = makeError(ErrorKind::packetPastEnd, 0, firstId, 24, 0, true);
+    return;
+  }
+  if (b[4] != 4) {
+    out.error = makeError(ErrorKind::unsupportedVersion, 4, firstId, 24, b[4], true);
+    return;
+  }
+  out.minorVersion = static_cast<std::uint8_t>(b[7] >> 4);
+  const std::size_t n = b.size();
+  std::size_t off = 0;
+  while (off < n) {
+    if (n - off < 4) {
+      out.error = makeError(ErrorKind::truncatedHeader, off, 0, n - off, 0, true);
+      return;
+    }
+    const std::uint16_t size = loadU16(&b[off], out.byteOrder);
+    const std::uint16_t id = loadU16(&b[off + 2], out.byteOrder);
+    if (size < 4) {
+      out.error = makeError(ErrorKind::packetSizeTooSmall, off, id, size, 0, true);
+      return;
+    }
+    if (size > n - off) {
+      out.error = makeError(ErrorKind::packetPastEnd, off, id, size, 0, true);
+      return;
+    }
+    const std::size_t index = variantIndexOf4(id);
+    if (index == kPacketTypeCount) {
+      ++out.skippedPackets;
+    } else if (size != packetSize4(index)) {
+      out.error = makeError(ErrorKind::wrongPacketSize, off, id, size, packetSize4(index), true);
+      return;
+    } else {
+      unpack4(index, b.data() + off, out.byteOrder, out.packets);
+    }
+    off += size;
+  }
+}
+
 }  // namespace
+
 
 const char* toString(ErrorKind k) {
   switch (k) {
@@ -129,16 +205,18 @@ const char* toString(ErrorKind k) {
 
 std::string DecodeError::describe() const {
   std::string s = std::string(toString(kind)) + " at byte " + std::to_string(offset);
-  s += " (packet id " + std::to_string(packetId) + " " + packetName(static_cast<PacketId>(packetId)) + ", size " +
-       std::to_string(packetSize) + ")";
+  const char* name = cigi4 ? packetName4(packetId) : packetName(static_cast<PacketId>(packetId & 0xFFu));
+  s += std::string(cigi4 ? " (CIGI 4 packet id " : " (packet id ") + std::to_string(packetId) + " " + name +
+       ", size " + std::to_string(packetSize) + ")";
   switch (kind) {
     case ErrorKind::unsupportedVersion:
-      if (value == 4)
-        s += ": CIGI 4 message; skyig speaks CIGI 3.2/3.3";
-      else if (value >= 30)
-        s += ": CIGI 3." + std::to_string(value - 30) + "; skyig speaks CIGI 3.2/3.3";
+      if (value == kVersion30or31)
+        s += ": CIGI 3.0 or 3.1 (16-byte first packet)";
+      else if (value >= kVersion3Minor && value < kVersion3Minor + 16)
+        s += ": CIGI 3." + std::to_string(value - kVersion3Minor);
       else
-        s += ": major version " + std::to_string(value) + "; skyig speaks CIGI 3.2/3.3";
+        s += ": major version " + std::to_string(value);
+      s += "; skyig speaks CIGI 3.2, 3.3 and 4.0";
       break;
     case ErrorKind::badByteSwapMagic: {
       char buf[48];
@@ -157,7 +235,13 @@ void decodeMessage(std::span<const std::uint8_t> bytes, DecodedMessage& out) {
   out.skippedPackets = 0;
   out.error.reset();
   out.byteOrder = ByteOrder::big;
+  out.majorVersion = 0;
   out.minorVersion = 0;
+  if (looksLikeCigi4(bytes)) {
+    decodeMessage4(bytes, out);
+    return;
+  }
+  out.majorVersion = 3;
   if (auto err = readFirstPacket(bytes, out)) {
     out.error = err;
     return;

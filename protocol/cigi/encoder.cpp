@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "protocol/cigi/layouts.h"
+#include "protocol/cigi/layouts4.h"
 
 namespace skyig::protocol::cigi {
 
@@ -69,14 +70,17 @@ std::string appendPacket(std::vector<std::uint8_t>& out, const Packet& packet, B
   return {};
 }
 
-std::string encodeMessage(std::span<const Packet> packets, ByteOrder order, std::vector<std::uint8_t>& out) {
+namespace {
+
+template <class Append>
+std::string encodeWith(Append append, std::span<const Packet> packets, ByteOrder order, std::vector<std::uint8_t>& out) {
   out.clear();
   if (packets.empty()) return "a CIGI message needs at least an IG Control or Start of Frame packet";
   const PacketId first = packetId(packets.front());
   if (first != PacketId::igControl && first != PacketId::startOfFrame)
     return std::string("a CIGI message must begin with IG Control or Start of Frame, not ") + packetName(first);
   for (std::size_t i = 0; i < packets.size(); ++i) {
-    std::string err = appendPacket(out, packets[i], order);
+    std::string err = append(out, packets[i], order);
     if (!err.empty()) {
       out.clear();
       return "packet " + std::to_string(i) + ": " + err;
@@ -89,6 +93,40 @@ std::string encodeMessage(std::span<const Packet> packets, ByteOrder order, std:
     }
   }
   return {};
+}
+
+}  // namespace
+
+std::string encodeMessage(std::span<const Packet> packets, ByteOrder order, std::vector<std::uint8_t>& out) {
+  return encodeWith([](auto& o, const Packet& p, ByteOrder b) { return appendPacket(o, p, b); }, packets, order, out);
+}
+
+std::string appendPacket4(std::vector<std::uint8_t>& out, const Packet& packet, ByteOrder order) {
+  const std::size_t index = packet.index();
+  const std::uint16_t size = packetSize4(index);
+  if (size == 0)
+    return std::string(packetName(index)) + ": not in skyig's CIGI 4.0 subset (IG Control, Entity Position "
+           "Control, Celestial Sphere Control, Atmosphere Control, View Control, View Definition, Start of Frame)";
+  const std::size_t start = out.size();
+  out.resize(start + size, 0);
+  std::uint8_t* p = out.data() + start;
+  storeU16(p, size, order);
+  storeU16(p + 2, packetId4(index), order);
+  Packer packer(p, order, packetName4(packetId4(index)));
+  std::visit(
+      [&](const auto& m) {
+        if constexpr (requires { detail::layout4(packer, m); }) detail::layout4(packer, m);
+      },
+      packet);
+  if (!packer.error().empty()) {
+    out.resize(start);
+    return packer.error();
+  }
+  return {};
+}
+
+std::string encodeMessage4(std::span<const Packet> packets, ByteOrder order, std::vector<std::uint8_t>& out) {
+  return encodeWith([](auto& o, const Packet& p, ByteOrder b) { return appendPacket4(o, p, b); }, packets, order, out);
 }
 
 }  // namespace skyig::protocol::cigi

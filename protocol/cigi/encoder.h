@@ -25,4 +25,11 @@ std::string appendPacket(std::vector<std::uint8_t>& out, const Packet& packet, B
 // empty string on success, or what is wrong.
 std::string encodeMessage(std::span<const Packet> packets, ByteOrder order, std::vector<std::uint8_t>& out);
 
+// CIGI 4.0 (the subset in protocol/cigi/layouts4.h): IG Control, Entity Control (sent as
+// Entity Position Control: the pose only), Celestial Sphere Control (with seconds),
+// Atmosphere Control, View Control, View Definition and Start of Frame. Other types are
+// refused by name.
+std::string appendPacket4(std::vector<std::uint8_t>& out, const Packet& packet, ByteOrder order);
+std::string encodeMessage4(std::span<const Packet> packets, ByteOrder order, std::vector<std::uint8_t>& out);
+
 }  // namespace skyig::protocol::cigi

@@ -51,4 +51,46 @@ const char* packetName(std::size_t variantIndex) {
   return variantIndex < kInfo.size() ? kInfo[variantIndex].name : "unknown packet";
 }
 
+namespace {
+
+struct Packet4Info {
+  std::uint16_t id;
+  std::uint16_t size;  // 0: no CIGI 4 mapping
+  const char* name;
+};
+
+// CIGI 4.0 ids and sizes (CIGI 4.0 ICD, as implemented by the CCL 4.0 port; see
+// ../shared/docs/cigi-canaerospace-facts.md section 1.6), in the Packet variant's order.
+constexpr std::array<Packet4Info, kPacketTypeCount> kInfo4{{
+    {kCigi4IgControl, 24, "IG Control"},
+    {kCigi4EntityPositionControl, 48, "Entity Position Control"},
+    {0, 0, "Rate Control"},
+    {kCigi4CelestialSphereControl, 24, "Celestial Sphere Control"},
+    {kCigi4AtmosphereControl, 32, "Atmosphere Control"},
+    {0, 0, "Environmental Region Control"},
+    {0, 0, "Weather Control"},
+    {kCigi4ViewControl, 40, "View Control"},
+    {kCigi4ViewDefinition, 40, "View Definition"},
+    {kCigi4StartOfFrame, 24, "Start of Frame"},
+}};
+
+}  // namespace
+
+std::uint16_t packetId4(std::size_t variantIndex) { return variantIndex < kInfo4.size() ? kInfo4[variantIndex].id : 0; }
+
+std::uint16_t packetSize4(std::size_t variantIndex) {
+  return variantIndex < kInfo4.size() ? kInfo4[variantIndex].size : 0;
+}
+
+std::size_t variantIndexOf4(std::uint16_t id4) {
+  for (std::size_t i = 0; i < kInfo4.size(); ++i)
+    if (kInfo4[i].size != 0 && kInfo4[i].id == id4) return i;
+  return kPacketTypeCount;
+}
+
+const char* packetName4(std::uint16_t id4) {
+  const std::size_t i = variantIndexOf4(id4);
+  return i < kInfo4.size() ? kInfo4[i].name : "unknown packet";
+}
+
 }  // namespace skyig::protocol::cigi

@@ -99,6 +99,9 @@ struct CelestialSphereControl {
   bool dateTimeValid = true;
   std::uint32_t date = 1012000;  // MMDDYYYY as a decimal number (see cigi/date.h)
   float starFieldIntensityPct = 100.0f;
+  // CIGI 4.0 only (0 <= seconds < 60): 3.3 carries no seconds, so a 3.3 message decodes
+  // with 0 here and the 3.3 encoder does not send it.
+  float seconds = 0.0f;
   bool operator==(const CelestialSphereControl&) const = default;
 };
 
@@ -237,5 +240,21 @@ PacketId packetId(const Packet& p);
 std::uint8_t packetSize(PacketId id);  // 0 when the id is not one skyig decodes
 const char* packetName(PacketId id);
 const char* packetName(std::size_t variantIndex);
+
+// CIGI 4.0 (subset, see protocol/cigi/layouts4.h): 16-bit packet ids and sizes. The
+// host-to-IG pose travels in Entity Position Control, decoded into EntityControl.
+inline constexpr std::uint16_t kCigi4IgControl = 0x0000;
+inline constexpr std::uint16_t kCigi4EntityPositionControl = 0x0001;
+inline constexpr std::uint16_t kCigi4CelestialSphereControl = 0x0008;
+inline constexpr std::uint16_t kCigi4AtmosphereControl = 0x0009;
+inline constexpr std::uint16_t kCigi4ViewControl = 0x000F;
+inline constexpr std::uint16_t kCigi4ViewDefinition = 0x0014;
+inline constexpr std::uint16_t kCigi4StartOfFrame = 0xFFFF;
+// The CIGI 4 id and size of a packet type (size 0: no CIGI 4 mapping in skyig), and the
+// variant index a CIGI 4 id decodes to (kPacketTypeCount: none).
+std::uint16_t packetId4(std::size_t variantIndex);
+std::uint16_t packetSize4(std::size_t variantIndex);
+std::size_t variantIndexOf4(std::uint16_t id4);
+const char* packetName4(std::uint16_t id4);
 
 }  // namespace skyig::protocol::cigi

@@ -45,7 +45,7 @@ bool Reader::open() {
       std::snprintf(buf, sizeof buf, "not a pcap file: magic %02X %02X %02X %02X at byte 0", h[0], h[1], h[2], h[3]);
       std::string m = buf;
       if (be == kPcapngMagic)
-        m += " is pcapng: convert it with `editcap -F pcap IN OUT`";
+        m += " is pcapng: read it with pcap::openCapture or PcapngReader";
       else if (be == 0xA1B2CD34u || le == 0xA1B2CD34u)
         m += " is the modified (Kuznetzov) pcap format: convert it with `editcap -F pcap IN OUT`";
       else if (h[0] == '(')
@@ -83,15 +83,20 @@ bool Reader::open() {
 }
 
 std::optional<RecordError> Reader::checkRecordHeader(std::uint64_t offset, std::uint64_t number,
-                                                     std::uint32_t* captured, std::int64_t* timestampNs) {
+                                                     std::uint32_t* captured, std::int64_t* timestampNs,
+                                                     bool withMessage) {
   const std::uint64_t size = source_.size();
+  // Messages are only formatted when wanted: resynchronisation checks every byte offset.
+  const auto fault = [&](RecordError::Kind kind, auto&& message) {
+    return withMessage ? RecordError{kind, number, offset, message()} : RecordError{kind, number, offset, {}};
+  };
   std::array<std::uint8_t, kRecordHeaderSize> h{};
   const std::size_t n = offset < size ? source_.readAt(offset, h) : 0;
-  if (!source_.error().empty()) return makeError(RecordError::Kind::io, number, offset, source_.error());
+  if (!source_.error().empty()) return fault(RecordError::Kind::io, [&] { return source_.error(); });
   if (n < kRecordHeaderSize)
-    return makeError(RecordError::Kind::truncatedRecordHeader, number, offset,
-                     "truncated pcap file: " + where(number, offset) + " has " + std::to_string(n) +
-                         " of 16 header bytes");
+    return fault(RecordError::Kind::truncatedRecordHeader, [&] {
+      return "truncated pcap file: " + where(number, offset) + " has " + std::to_string(n) + " of 16 header bytes";
+    });
   const ByteOrder o = header_.byteOrder;
   const std::uint32_t seconds = loadU32(&h[0], o);
   const std::uint32_t fraction = loadU32(&h[4], o);
@@ -99,22 +104,26 @@ std::optional<RecordError> Reader::checkRecordHeader(std::uint64_t offset, std::
   const std::uint32_t orig = loadU32(&h[12], o);
   const std::uint32_t fractionLimit = header_.precision == Precision::nano ? 1000000000u : 1000000u;
   if (fraction >= fractionLimit)
-    return makeError(RecordError::Kind::badRecordHeader, number, offset,
-                     "corrupt pcap " + where(number, offset) + ": sub-second field " + std::to_string(fraction) +
-                         " is not below " + std::to_string(fractionLimit));
+    return fault(RecordError::Kind::badRecordHeader, [&] {
+      return "corrupt pcap " + where(number, offset) + ": sub-second field " + std::to_string(fraction) +
+             " is not below " + std::to_string(fractionLimit);
+    });
   if (incl > kMaxRecordLength)
-    return makeError(RecordError::Kind::recordTooLong, number, offset,
-                     "corrupt pcap " + where(number, offset) + ": captured length " + std::to_string(incl) +
-                         " exceeds " + std::to_string(kMaxRecordLength) + " bytes");
+    return fault(RecordError::Kind::recordTooLong, [&] {
+      return "corrupt pcap " + where(number, offset) + ": captured length " + std::to_string(incl) + " exceeds " +
+             std::to_string(kMaxRecordLength) + " bytes";
+    });
   if (incl > orig)
-    return makeError(RecordError::Kind::badRecordHeader, number, offset,
-                     "corrupt pcap " + where(number, offset) + ": captured length " + std::to_string(incl) +
-                         " exceeds the original length " + std::to_string(orig));
+    return fault(RecordError::Kind::badRecordHeader, [&] {
+      return "corrupt pcap " + where(number, offset) + ": captured length " + std::to_string(incl) +
+             " exceeds the original length " + std::to_string(orig);
+    });
   if (incl > size - offset - kRecordHeaderSize)
-    return makeError(RecordError::Kind::truncatedRecord, number, offset,
-                     "truncated pcap file: " + where(number, offset) + " claims " + std::to_string(incl) +
-                         " bytes but the file ends " + std::to_string(size - offset - kRecordHeaderSize) +
-                         " bytes after its header");
+    return fault(RecordError::Kind::truncatedRecord, [&] {
+      return "truncated pcap file: " + where(number, offset) + " claims " + std::to_string(incl) +
+             " bytes but the file ends " + std::to_string(size - offset - kRecordHeaderSize) +
+             " bytes after its header";
+    });
   *captured = incl;
   *timestampNs = static_cast<std::int64_t>(seconds) * 1000000000LL +
                  static_cast<std::int64_t>(fraction) * (header_.precision == Precision::nano ? 1 : 1000);
@@ -124,7 +133,7 @@ std::optional<RecordError> Reader::checkRecordHeader(std::uint64_t offset, std::
 bool Reader::plausibleAt(std::uint64_t offset) {
   std::uint32_t incl = 0;
   std::int64_t ts = 0;
-  if (checkRecordHeader(offset, 0, &incl, &ts)) return false;
+  if (checkRecordHeader(offset, 0, &incl, &ts, false)) return false;
   if (lastTimestampNs_ && (ts < *lastTimestampNs_ - kResyncWindowNs || ts > *lastTimestampNs_ + kResyncWindowNs))
     return false;
   // The record after it must fit too (or the file ends right there).
@@ -132,7 +141,7 @@ bool Reader::plausibleAt(std::uint64_t offset) {
   if (next == source_.size()) return true;
   std::uint32_t incl2 = 0;
   std::int64_t ts2 = 0;
-  return !checkRecordHeader(next, 0, &incl2, &ts2).has_value();
+  return !checkRecordHeader(next, 0, &incl2, &ts2, false).has_value();
 }
 
 std::optional<std::uint64_t> Reader::resynchronise(std::uint64_t from) {
@@ -175,6 +184,7 @@ Reader::Status Reader::next(Record& out) {
     out.offset = offset_;
     out.timestampNs = ts;
     out.originalLength = loadU32(&h[12], header_.byteOrder);
+    out.linkType = header_.linkType;
     number_ = number;
     lastTimestampNs_ = ts;
     offset_ += kRecordHeaderSize + incl;

@@ -1,11 +1,12 @@
-// libFuzzer target: any bytes as a pcap file, read with and without skip-bad, each record's
-// UDP datagram extracted. Must terminate, never crash, and keep records inside the file.
+// libFuzzer target: any bytes as a capture file (classic pcap or pcapng, chosen by magic),
+// read with and without skip-bad, each record's UDP datagram extracted. Must terminate,
+// never crash, and keep records inside the file.
 #include <cstdint>
 #include <cstdlib>
 #include <span>
 
 #include "protocol/io/byte_source.h"
-#include "protocol/pcap/pcap_reader.h"
+#include "protocol/pcap/pcapng_reader.h"
 #include "protocol/pcap/udp_frame.h"
 
 using namespace skyig::protocol;
@@ -13,15 +14,17 @@ using namespace skyig::protocol;
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   for (bool skipBad : {false, true}) {
     io::MemorySource src(std::span(data, size));
-    pcap::Reader reader(src, skipBad);
-    if (!reader.open()) continue;
+    pcap::RecordError err;
+    auto reader = pcap::openCapture(src, skipBad, err);
+    if (!reader) continue;
     pcap::Record rec;
     std::uint64_t lastEnd = 0;
-    while (reader.next(rec) == pcap::Reader::Status::record) {
+    while (reader->next(rec) == pcap::CaptureReader::Status::record) {
+      // Both formats put at least 16 header bytes before a record's data.
       if (rec.offset < lastEnd || rec.offset + 16 + rec.data.size() > size) std::abort();
       lastEnd = rec.offset + 16 + rec.data.size();
       pcap::UdpDatagram d;
-      if (pcap::parseUdpFrame(reader.header().linkType, rec.data, d) == pcap::FrameError::none) {
+      if (pcap::parseUdpFrame(rec.linkType, rec.data, d) == pcap::FrameError::none) {
         if (d.payload.data() < rec.data.data() || d.payload.data() + d.payload.size() > rec.data.data() + rec.data.size())
           std::abort();
       }

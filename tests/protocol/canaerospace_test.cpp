@@ -179,6 +179,15 @@ TEST(CanasState, IdentifierMapCanBeOverridden) {
   EXPECT_EQ(strict.feed(toFrame(makeLong(1036, 1, 474502399, 0))).status, FeedStatus::wrongDataType);
 }
 
+TEST(CanasState, NodeFilterIgnoresOtherTransmitters) {
+  IdentifierMap map;
+  map.nodeId = 10;
+  StateDecoder d(map);
+  EXPECT_EQ(d.feed(frame(0x137, "0B 02 00 00 41 20 00 00")).status, FeedStatus::ignored);  // node 11: 10 deg
+  EXPECT_EQ(d.feed(frame(0x137, "0A 02 00 00 40 80 00 00")).status, FeedStatus::applied);  // node 10: 4 deg
+  EXPECT_EQ(d.state().pitchDeg, 4.0);
+}
+
 TEST(CanasState, EncoderRoundTripsAStateAndCountsMessageCodes) {
   HostState in;
   in.latitudeDeg = -33.856784;

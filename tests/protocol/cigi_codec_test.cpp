@@ -149,11 +149,17 @@ TEST(CigiCodec, WrongVersionsAreRejected) {
   d = decodeMessage(b);
   EXPECT_EQ(d.error->kind, ErrorKind::unsupportedVersion);
 
-  // A CIGI 4 IG Control: u16 size 24, u16 id 0, little-endian.
-  const auto v4 = protocol::test::hexBytes("18 00 00 00 04 00 00 31 | 01 00 00 00 00 00 00 00 | 00 00 00 00 00 00 00 00");
-  d = decodeMessage(v4);
+  // A CIGI 4-style header (u16 size 24, u16 id 0, little-endian) announcing major version 5.
+  const auto v5 = protocol::test::hexBytes("18 00 00 00 05 00 00 00 | 01 00 00 00 00 00 00 00 | 00 00 00 00 00 00 00 00");
+  d = decodeMessage(v5);
   EXPECT_EQ(d.error->kind, ErrorKind::unsupportedVersion);
-  EXPECT_NE(d.error->describe().find("CIGI 4"), std::string::npos);
+  EXPECT_EQ(d.error->offset, 4u);
+  EXPECT_NE(d.error->describe().find("major version 5"), std::string::npos) << d.error->describe();
+
+  b = hostMessage(ByteOrder::big);
+  b[2] = 200;  // garbage major version: not mistaken for a CIGI 3 minor version
+  d = decodeMessage(b);
+  EXPECT_NE(d.error->describe().find("major version 200"), std::string::npos) << d.error->describe();
 }
 
 TEST(CigiCodec, BadByteSwapMagicIsRejected) {

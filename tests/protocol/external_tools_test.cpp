@@ -17,6 +17,7 @@
 #include "protocol/io/byte_sink.h"
 #include "protocol/pcap/pcap_writer.h"
 #include "tests/protocol/cigi_samples.h"
+#include "tests/protocol/temp_path.h"
 
 namespace skyig::protocol {
 namespace {
@@ -72,7 +73,7 @@ double num(const std::map<std::string, std::string>& row, const std::string& fie
 }
 
 std::string writeCigiPcap(ByteOrder order) {
-  const std::string path = ::testing::TempDir() + "skyig_cigi_" + toString(order)[0] + ".pcap";
+  const std::string path = test::tempPath(std::string("cigi_") + toString(order)[0] + ".pcap");
   io::FileSink sink;
   EXPECT_TRUE(sink.open(path)) << sink.error();
   pcap::Writer w(sink);
@@ -208,7 +209,7 @@ TEST(ExternalTools, TcpdumpReadsSkyigPcap) {
 
 TEST(ExternalTools, CanUtilsReadsSkyigCandumpLog) {
   if (!haveTool("log2long")) GTEST_SKIP() << "can-utils not installed (apt-get install can-utils): check skipped";
-  const std::string path = ::testing::TempDir() + "skyig_candump_test.log";
+  const std::string path = test::tempPath("candump_test.log");
   {
     io::FileSink sink;
     ASSERT_TRUE(sink.open(path)) << sink.error();

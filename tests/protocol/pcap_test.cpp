@@ -11,6 +11,7 @@
 #include "protocol/pcap/pcap_reader.h"
 #include "protocol/pcap/pcap_writer.h"
 #include "tests/protocol/hex.h"
+#include "tests/protocol/temp_path.h"
 
 namespace skyig::protocol::pcap {
 namespace {
@@ -274,7 +275,7 @@ TEST(Pcap, CorruptRecordInTheMiddleIsSkippedAndReadingResumes) {
 }
 
 TEST(Pcap, FilesOnDiskAndAFullDisk) {
-  const std::string path = ::testing::TempDir() + "skyig_pcap_test.pcap";
+  const std::string path = test::tempPath("pcap_test.pcap");
   {
     io::FileSink sink;
     ASSERT_TRUE(sink.open(path)) << sink.error();

@@ -6,16 +6,28 @@
 
 namespace skyig::services {
 
-CigiReceiver::CigiReceiver(UdpSocket& socket, NodeStats& stats, Latest<HostSnapshot>& out)
-    : socket_(socket), stats_(stats), out_(out) {}
+CigiReceiver::CigiReceiver(NodeStats& stats, Latest<HostSnapshot>& out) : stats_(stats), out_(out) {}
 
-void CigiReceiver::run(const std::atomic<bool>& stop) {
+void CigiReceiver::run(UdpSocket& socket, const std::atomic<bool>& stop) {
   std::array<std::uint8_t, 65536> buffer{};
   sockaddr_in from{};
   while (!stop.load(std::memory_order_relaxed)) {
-    const std::size_t n = socket_.receive(buffer, from, std::chrono::milliseconds(50));
+    const std::size_t n = socket.receive(buffer, from, std::chrono::milliseconds(50));
     if (n == 0) continue;
-    handle(std::span(buffer.data(), n), from, Clock::now());
+    const auto arrival = Clock::now();
+    if (recorder_) {
+      const auto unixNs = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                              std::chrono::system_clock::now().time_since_epoch()).count();
+      if (!recorder_->record(std::span(buffer.data(), n), from, unixNs)) {
+        // A full disk stops the recording, never the node.
+        spdlog::error("recording stopped: {}", recorder_->error());
+        stats_.recordErrors.fetch_add(1, std::memory_order_relaxed);
+        recorder_ = nullptr;
+      } else {
+        stats_.recorded.fetch_add(1, std::memory_order_relaxed);
+      }
+    }
+    handle(std::span(buffer.data(), n), from, arrival);
   }
 }
 

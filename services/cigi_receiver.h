@@ -13,17 +13,28 @@
 
 namespace skyig::services {
 
+// Something that keeps every datagram as it arrived (serve --record); record() returns false
+// once it can no longer write, and is not called again.
+class DatagramRecorder {
+ public:
+  virtual ~DatagramRecorder() = default;
+  virtual bool record(std::span<const std::uint8_t> datagram, const sockaddr_in& from, std::int64_t unixTimeNs) = 0;
+  virtual std::string error() const = 0;
+};
+
 class CigiReceiver {
  public:
-  CigiReceiver(UdpSocket& socket, NodeStats& stats, Latest<HostSnapshot>& out);
-  // Runs until stop is set (checks it at least every 50 ms).
-  void run(const std::atomic<bool>& stop);
-  // Handles one datagram (the loop's body; public for tests and benchmarks).
+  CigiReceiver(NodeStats& stats, Latest<HostSnapshot>& out);
+  // Receives from `socket` until stop is set (checks it at least every 50 ms).
+  void run(UdpSocket& socket, const std::atomic<bool>& stop);
+  // Handles one datagram: the loop's body, and what replay feeds with recorded datagrams
+  // and recorded arrival times.
   void handle(std::span<const std::uint8_t> datagram, const sockaddr_in& from, Clock::time_point arrival);
   std::optional<sockaddr_in> lastSender() const;
+  void setRecorder(DatagramRecorder* recorder) { recorder_ = recorder; }
 
  private:
-  UdpSocket& socket_;
+  DatagramRecorder* recorder_ = nullptr;
   NodeStats& stats_;
   Latest<HostSnapshot>& out_;
   CigiStateTracker tracker_;

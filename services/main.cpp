@@ -8,6 +8,8 @@
 #include "services/commands/ephemeris_command.h"
 #include "services/commands/host_command.h"
 #include "services/commands/render_command.h"
+#include "services/commands/replay_command.h"
+#include "services/recording_source.h"
 #include "services/commands/serve_command.h"
 #include "services/udp_socket.h"
 #include "services/node_config.h"
@@ -35,6 +37,8 @@ int main(int argc, char** argv) {
   skyig::commands::registerEphemerisCommand(app, exitCode);
   registerServeCommand(app, exitCode);
   registerHostCommand(app, exitCode);
+  registerRecordCommand(app, exitCode);
+  registerReplayCommand(app, exitCode);
 
   // Exit codes: 0 done; 2 bad flags, configuration, input value or output path; 3 the GPU
   // context or a shader failed; 4 a socket could not be opened (port in use, no SocketCAN);
@@ -51,6 +55,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "skyig: error: %s\n", e.what());
     return 2;
   } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "skyig: error: %s\n", e.what());
+    return 2;
+  } catch (const RecordingError& e) {
     std::fprintf(stderr, "skyig: error: %s\n", e.what());
     return 2;
   } catch (const skyig::render::ImageIoError& e) {

@@ -6,6 +6,7 @@
 #include "render/sky_renderer.h"
 #include "services/can_receiver.h"
 #include "services/cigi_receiver.h"
+#include "services/recorder.h"
 #include "services/state_dump.h"
 
 #include <glad/gl.h>
@@ -151,9 +152,19 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   // Transports. The UDP socket always exists: Start of Frame goes out through it.
   UdpSocket udp(opt.listen, opt.multicastGroup);
   spdlog::info("listening for CIGI on {}", udp.localEndpoint().toString());
-  CigiReceiver cigi(udp, stats, host);
+  CigiReceiver cigi(stats, host);
+  std::unique_ptr<PcapRecorder> recorder;
+  if (!opt.recordPath.empty()) {
+    try {
+      recorder = std::make_unique<PcapRecorder>(opt.recordPath, udp.localEndpoint());
+    } catch (const std::runtime_error& e) {
+      throw ConfigError(std::string("--record: ") + e.what());  // a bad path: say so before serving
+    }
+    cigi.setRecorder(recorder.get());
+    spdlog::info("recording the host's datagrams to {}", opt.recordPath);
+  }
   std::vector<std::thread> threads;
-  threads.emplace_back([&] { cigi.run(stop); });
+  threads.emplace_back([&] { cigi.run(udp, stop); });
   int canFd = opt.canFd;
   bool ownCanFd = false;
   if (opt.canInterface) {

@@ -26,6 +26,7 @@ struct NodeOptions {
   double syncTimeoutS = 0.1;
   std::string dumpStatePath;                        // JSON lines, one per frame
   std::string statsPath;                            // JSON, every statsIntervalS and on exit
+  std::string recordPath;                           // pcap of every datagram received
   double statsIntervalS = 2.0;
   std::optional<std::string> canInterface;          // SocketCAN interface (CANaerospace host)
   int canFd = -1;                                   // an already open CAN frame stream (tests)

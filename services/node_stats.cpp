@@ -42,6 +42,8 @@ nlohmann::json NodeStats::toJson() const {
       {"skipped_packets", skippedPackets.load()},
       {"rejected_values", rejectedValues.load()},
       {"stale_messages", staleMessages.load()},
+      {"recorded", recorded.load()},
+      {"record_errors", recordErrors.load()},
       {"packets", packetsByType},
       {"errors", errorsByKind},
       {"can_frames", canFrames.load()},

@@ -18,7 +18,7 @@ struct ServeOptions {
   std::string configPath;
   std::string node;
   bool headless = false;
-  std::string listen, replyTo, dumpState, statsJson, canInterface;
+  std::string listen, replyTo, dumpState, statsJson, canInterface, record;
   std::uint64_t frames = 0;
   bool synchronous = false;
   double frameRate = 0.0;
@@ -44,6 +44,7 @@ int run(const ServeOptions& o) {
   opt.frames = o.frames;
   opt.dumpStatePath = o.dumpState;
   opt.statsPath = o.statsJson;
+  opt.recordPath = o.record;
   const std::string can = o.canInterface.empty() ? h.canInterface : o.canInterface;
   if (!can.empty()) opt.canInterface = can;
 
@@ -72,6 +73,7 @@ void registerServeCommand(CLI::App& app, int& exitCode) {
   c->add_flag("--sync", o->synchronous, "Synchronous mode: render frame N after the host's frame N (with a timeout)");
   c->add_option("--frame-rate", o->frameRate, "Headless frame rate, Hz (default: host.frame_rate, 60)")->check(CLI::Range(1.0, 1000.0));
   c->add_option("--dump-state", o->dumpState, "Write one JSON line per frame: host values, values used, sun");
+  c->add_option("--record", o->record, "Record every datagram received to this pcap file while serving");
   c->add_option("--stats-json", o->statsJson, "Write counters and latency percentiles every few seconds and on exit");
   c->callback([o, &exitCode] { exitCode = run(*o); });
 }

@@ -11,10 +11,9 @@ using namespace skyig::services;
 namespace cigi = skyig::protocol::cigi;
 
 static void BM_DatagramToVisible(benchmark::State& state) {
-  UdpSocket socket({"127.0.0.1", 0});
   NodeStats stats;
   Latest<HostSnapshot> latest;
-  CigiReceiver receiver(socket, stats, latest);
+  CigiReceiver receiver(stats, latest);
   cigi::IgControl ig;
   cigi::EntityControl e;
   e.latitudeDeg = 47.26;

@@ -1,0 +1,76 @@
+#include "services/recording_source.h"
+
+#include "protocol/pcap/pcapng_reader.h"
+#include "protocol/pcap/udp_frame.h"
+
+#include <cstring>
+
+namespace skyig::services {
+
+namespace pcap = protocol::pcap;
+
+RecordingSource::RecordingSource(const std::string& path, bool skipBad) : path_(path) {
+  if (!file_.open(path)) throw RecordingError(path + ": " + file_.error());
+  std::string seen;
+  format_ = protocol::detectRecordingFormat(file_, &seen);
+  switch (format_) {
+    case protocol::RecordingFormat::pcap:
+    case protocol::RecordingFormat::pcapng: {
+      pcap::RecordError error;
+      capture_ = pcap::openCapture(file_, skipBad, error);
+      if (!capture_) throw RecordingError(path + ": " + error.message);
+      break;
+    }
+    case protocol::RecordingFormat::candump:
+      candump_ = std::make_unique<protocol::candump::Reader>(file_, skipBad);
+      break;
+    default:
+      throw RecordingError(path + ": not a recording (pcap, pcapng or candump log expected; " + seen + ")");
+  }
+}
+
+bool RecordingSource::next(HostEvent& out) {
+  if (candump_) {
+    const auto status = candump_->next(line_);
+    if (status == protocol::candump::Reader::Status::end) return false;
+    if (status == protocol::candump::Reader::Status::error) throw RecordingError(path_ + ": " + candump_->error().message);
+    out.kind = HostEvent::Kind::canFrame;
+    out.timeNs = line_.timestampUs * 1000;
+    out.record = line_.line;
+    out.frame = line_.frame;
+    return true;
+  }
+  for (;;) {
+    const auto status = capture_->next(record_);
+    if (status == pcap::CaptureReader::Status::end) return false;
+    if (status == pcap::CaptureReader::Status::error) throw RecordingError(path_ + ": " + capture_->error().message);
+    pcap::UdpDatagram d;
+    if (pcap::parseUdpFrame(record_.linkType, record_.data, d) != pcap::FrameError::none) {
+      ++nonUdp_;  // ARP, TCP and the like in a Wireshark capture: not the host's
+      continue;
+    }
+    out.kind = HostEvent::Kind::datagram;
+    out.timeNs = record_.timestampNs;
+    out.record = record_.number;
+    out.payload.assign(d.payload.begin(), d.payload.end());
+    out.from = sockaddr_in{};
+    out.from.sin_family = AF_INET;
+    std::memcpy(&out.from.sin_addr.s_addr, d.source.ip.data(), 4);
+    out.from.sin_port = htons(d.source.port);
+    out.destinationPort = d.destination.port;
+    return true;
+  }
+}
+
+std::uint64_t RecordingSource::skipped() const { return candump_ ? candump_->skipped() : capture_->skipped(); }
+
+std::vector<std::string> RecordingSource::skippedMessages() const {
+  std::vector<std::string> m;
+  if (candump_)
+    for (const auto& e : candump_->skippedErrors()) m.push_back(e.message);
+  else
+    for (const auto& e : capture_->skippedErrors()) m.push_back(e.message);
+  return m;
+}
+
+}  // namespace skyig::services

@@ -1,0 +1,268 @@
+#include "services/replay.h"
+
+#include "render/gl_context.h"
+#include "render/image_io.h"
+#include "render/sky_renderer.h"
+#include "services/can_receiver.h"
+#include "services/cigi_receiver.h"
+#include "services/recording_source.h"
+#include "services/state_dump.h"
+
+#include <glad/gl.h>
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <future>
+#include <thread>
+
+namespace skyig::services {
+
+namespace {
+
+using Ns = std::chrono::nanoseconds;
+
+// Recording time as the node's clock: arrival instants are synthetic, so everything
+// downstream (extrapolation, the sim clock) sees the recording's timing, not this machine's.
+Clock::time_point at(std::int64_t ns) { return Clock::time_point(std::chrono::duration_cast<Clock::duration>(Ns(ns))); }
+
+struct Bound {
+  std::optional<std::uint64_t> frame;
+  std::optional<ephemeris::UtcTime> utc;
+};
+
+Bound parseBound(const std::optional<std::string>& text, const char* flag) {
+  Bound b;
+  if (!text) return b;
+  if (text->find('T') != std::string::npos) {
+    b.utc = ephemeris::parseIso8601Utc(*text);
+    if (!b.utc) throw ConfigError(std::string(flag) + ": expected a frame number or a UTC time like 2026-06-21T19:30:00Z, got \"" + *text + "\"");
+  } else {
+    char* end = nullptr;
+    const unsigned long long f = std::strtoull(text->c_str(), &end, 10);
+    if (text->empty() || *end != '\0') throw ConfigError(std::string(flag) + ": expected a frame number or a UTC time, got \"" + *text + "\"");
+    b.frame = f;
+  }
+  return b;
+}
+
+double julian(const ephemeris::UtcTime& t) { return ephemeris::julianDateUtc(t); }
+
+bool before(const ephemeris::UtcTime& a, const ephemeris::UtcTime& b) { return julian(a) < julian(b); }
+
+// DIR/frame_000123_2026-06-21T19-00-04.123Z[_channel]: frame number and sim time, no colons.
+std::string frameStem(const std::string& dir, std::uint64_t frame, const ephemeris::UtcTime& t,
+                      const std::string& channel) {
+  std::string time = ephemeris::formatIso8601Utc(t);
+  for (char& c : time)
+    if (c == ':') c = '-';
+  char number[24];
+  std::snprintf(number, sizeof number, "%06llu", static_cast<unsigned long long>(frame));
+  return (std::filesystem::path(dir) / ("frame_" + std::string(number) + "_" + time + (channel.empty() ? "" : "_" + channel)))
+      .string();
+}
+
+// Decodes every event up to `untilNs` and evaluates the host state at that instant: the work
+// of one frame that does not need the GPU.
+struct Frame {
+  std::uint64_t number = 0;
+  std::int64_t timeNs = 0;
+  std::shared_ptr<const HostSnapshot> host;
+  std::optional<render::SkyState> sky;
+  std::string error;  // a host state the sky could not use (kept: the previous sky is shown)
+};
+
+class Feeder {
+ public:
+  Feeder(const ReplayOptions& o, RecordingSource& source)
+      : options_(o), source_(source), cigi_(stats_, latest_), can_(-1, o.config.canIdentifiers, stats_, latest_) {
+    haveEvent_ = source_.next(event_);
+    firstNs_ = haveEvent_ ? event_.timeNs : 0;
+  }
+  bool exhausted() const { return !haveEvent_; }
+  std::int64_t firstNs() const { return firstNs_; }
+  std::uint64_t events() const { return events_; }
+
+  Frame prepare(std::uint64_t number) {
+    Frame f;
+    f.number = number;
+    f.timeNs = firstNs_ + static_cast<std::int64_t>(std::llround(static_cast<double>(number) * 1e9 / options_.frameRateHz));
+    while (haveEvent_ && event_.timeNs <= f.timeNs) {
+      if (event_.kind == HostEvent::Kind::canFrame) {
+        can_.handle(event_.frame, at(event_.timeNs));
+      } else if (options_.port == 0 || event_.destinationPort == options_.port) {
+        cigi_.handle(event_.payload, event_.from, at(event_.timeNs));
+      }
+      ++events_;
+      haveEvent_ = source_.next(event_);
+    }
+    f.host = latest_.get();
+    render::ObserverState o = options_.config.observer;
+    if (f.host) {
+      if (f.host->state.ownshipValid) {
+        const Ownship s = f.host->predictor.at(at(f.timeNs));
+        o.latitudeDeg = s.latitudeDeg;
+        o.longitudeDeg = s.longitudeDeg;
+        o.heightM = s.altitudeM;
+        o.attitude = {s.yawDeg, s.pitchDeg, s.rollDeg};
+      }
+      if (const auto utc = f.host->utcAt(at(f.timeNs))) o.utc = *utc;
+    }
+    try {
+      f.sky = render::buildSkyState(o, options_.config.sky);
+    } catch (const std::exception& e) {
+      f.error = e.what();
+    }
+    return f;
+  }
+
+ private:
+  const ReplayOptions& options_;
+  RecordingSource& source_;
+  NodeStats stats_;
+  Latest<HostSnapshot> latest_;
+  CigiReceiver cigi_;
+  CanReceiver can_;
+  HostEvent event_;
+  bool haveEvent_ = false;
+  std::int64_t firstNs_ = 0;
+  std::uint64_t events_ = 0;
+};
+
+class Progress {
+ public:
+  explicit Progress(bool enabled) : enabled_(enabled), tty_(::isatty(2) != 0), start_(std::chrono::steady_clock::now()) {}
+  // fraction: of the recording's duration replayed so far.
+  void update(double fraction, std::uint64_t frame, bool force = false) {
+    if (!enabled_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (!force && now - last_ < std::chrono::milliseconds(tty_ ? 200 : 5000)) return;
+    last_ = now;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const double left = fraction > 1e-6 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+    const int width = 30, filled = static_cast<int>(fraction * width);
+    std::fprintf(stderr, "%s[%.*s%*s] %5.1f%%  frame %llu  %.0f s elapsed, ~%.0f s left%s", tty_ ? "\r" : "",
+                 filled, "==============================", width - filled, "", 100.0 * fraction,
+                 static_cast<unsigned long long>(frame), elapsed, left, tty_ ? "" : "\n");
+    if (force && tty_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  bool enabled_, tty_;
+  std::chrono::steady_clock::time_point start_, last_{};
+};
+
+ReplayResult sendRecording(const ReplayOptions& o) {
+  RecordingSource source(o.recording, o.skipBad);
+  if (source.format() == protocol::RecordingFormat::candump)
+    throw ConfigError("--send re-transmits UDP recordings; replay a candump log onto a CAN bus with canplayer");
+  UdpSocket socket({"0.0.0.0", 0});
+  const sockaddr_in to = toSockaddr(*o.sendTo);
+  ReplayResult r;
+  HostEvent e;
+  std::optional<std::int64_t> first;
+  const auto start = std::chrono::steady_clock::now();
+  while (source.next(e)) {
+    if (o.port != 0 && e.destinationPort != o.port) continue;
+    if (!first) first = e.timeNs;
+    if (o.realtime) std::this_thread::sleep_until(start + Ns(e.timeNs - *first));
+    socket.sendTo(e.payload, to);
+    ++r.events;
+  }
+  r.skippedRecords = source.skipped();
+  r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace
+
+ReplayResult replay(const ReplayOptions& o) {
+  if (o.sendTo) return sendRecording(o);
+  const Bound from = parseBound(o.from, "--from"), to = parseBound(o.to, "--to");
+  std::vector<render::ChannelConfig> channels = o.config.channelsOf(o.config.nodeName);
+  if (!o.channel.empty()) {
+    std::erase_if(channels, [&](const render::ChannelConfig& c) { return c.name != o.channel; });
+    if (channels.empty()) throw ConfigError("--channel: no channel named \"" + o.channel + "\"");
+  } else if (!o.allChannels) {
+    channels.resize(1);
+  }
+  if (!o.outDir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.outDir, ec);
+    if (ec) throw render::ImageIoError("cannot create " + o.outDir + ": " + ec.message());
+    render::checkWritable((std::filesystem::path(o.outDir) / "probe").string());
+  }
+
+  RecordingSource source(o.recording, o.skipBad);
+  // The last record's time, for the progress bar: a first pass over the file (cheap).
+  std::int64_t lastNs = 0, firstNs = 0;
+  {
+    RecordingSource scan(o.recording, true);
+    HostEvent e;
+    bool first = true;
+    while (scan.next(e)) {
+      if (first) firstNs = e.timeNs, first = false;
+      lastNs = std::max(lastNs, e.timeNs);
+    }
+  }
+  Feeder feeder(o, source);
+  const auto context = render::createHeadlessContext();
+  render::SkyRenderer renderer;
+  std::unique_ptr<StateDump> dump = o.dumpStatePath.empty() ? nullptr : std::make_unique<StateDump>(o.dumpStatePath);
+  Progress progress(o.progress);
+  ReplayResult result;
+  const auto wallStart = std::chrono::steady_clock::now();
+  std::optional<render::SkyState> lastSky;
+
+  std::future<Frame> next = std::async(std::launch::async, [&] { return feeder.prepare(0); });
+  for (std::uint64_t k = 0;; ++k) {
+    Frame frame = next.get();
+    const bool last = feeder.exhausted() && frame.timeNs >= lastNs;
+    // The next frame's decoding and ephemeris run while this one renders.
+    if (!last) next = std::async(std::launch::async, [&feeder, k] { return feeder.prepare(k + 1); });
+    if (frame.sky) lastSky = frame.sky;
+    else spdlog::warn("frame {}: host state not usable, keeping the last sky: {}", k, frame.error);
+    ++result.frames;
+    const bool afterFrom = (!from.frame || k >= *from.frame) && (!from.utc || !lastSky || !before(lastSky->observer.utc, *from.utc));
+    const bool pastTo = (to.frame && k > *to.frame) || (to.utc && lastSky && before(*to.utc, lastSky->observer.utc));
+    if (pastTo) {
+      if (!last) next.wait();
+      break;
+    }
+    if (afterFrom && lastSky) {
+      if (o.realtime) std::this_thread::sleep_until(wallStart + Ns(frame.timeNs - feeder.firstNs()));
+      const bool write = !o.outDir.empty() && k % static_cast<std::uint64_t>(o.every) == 0;
+      for (const auto& c : channels) {
+        renderer.draw(*lastSky, c);
+        if (!write) continue;
+        const std::string stem = frameStem(o.outDir, k, lastSky->observer.utc, channels.size() > 1 ? c.name : "");
+        if (o.writeExr) {
+          render::writeExr(stem + ".exr", renderer.readHdr(),
+                           {{"skyig:utc", ephemeris::formatIso8601Utc(lastSky->observer.utc)},
+                            {"skyig:channel", c.name},
+                            {"skyig:frame", std::to_string(k)},
+                            {"skyig:recording", std::filesystem::path(o.recording).filename().string()}});
+          ++result.imagesWritten;
+        }
+        if (o.writePng) {
+          render::writePng(stem + ".png", renderer.readDisplay(), c.display.gamma);
+          ++result.imagesWritten;
+        }
+      }
+      glFinish();  // the frame is done when its pixels are, written or not
+      if (dump) dump->write(k, frame.host.get(), *lastSky);
+    }
+    progress.update(lastNs > firstNs ? static_cast<double>(frame.timeNs - firstNs) / static_cast<double>(lastNs - firstNs) : 1.0, k);
+    if (last) break;
+  }
+  progress.update(1.0, result.frames, true);
+  result.events = feeder.events();
+  result.skippedRecords = source.skipped();
+  for (const auto& m : source.skippedMessages()) spdlog::warn("skipped: {}", m);
+  result.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
+  return result;
+}
+
+}  // namespace skyig::services

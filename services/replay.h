@@ -1,0 +1,45 @@
+#pragma once
+// `skyig replay`: a recording drives the same decoders, host state, sky state and renderer as
+// the live node, on the recording's clock. Frame k shows the host state at
+// t_first_record + k / frame_rate; nothing depends on how fast the machine renders, so two
+// replays of one file write byte-identical EXR files.
+#include "services/node_config.h"
+#include "services/udp_socket.h"
+
+#include <optional>
+#include <string>
+
+namespace skyig::services {
+
+struct ReplayOptions {
+  NodeConfig config;
+  std::string recording;
+  double frameRateHz = 30.0;
+  bool realtime = false;            // pace frames (or --send) as recorded; else as fast as possible
+  std::string outDir;               // images; empty: none
+  int every = 1;                    // write every Nth frame
+  bool writeExr = true;
+  bool writePng = true;
+  std::string channel;              // one channel by name; empty: the first, or all with allChannels
+  bool allChannels = false;
+  std::optional<std::string> from;  // a frame number, or a sim time (UTC, ISO 8601)
+  std::optional<std::string> to;
+  std::string dumpStatePath;
+  std::optional<Endpoint> sendTo;   // re-transmit to a live IG instead of rendering
+  bool skipBad = false;
+  int port = 0;                     // only datagrams to this UDP port (0: all)
+  bool progress = true;
+};
+
+struct ReplayResult {
+  std::uint64_t events = 0;
+  std::uint64_t frames = 0;           // frames computed
+  std::uint64_t imagesWritten = 0;
+  std::uint64_t skippedRecords = 0;   // bad records passed over (--skip-bad)
+  double wallSeconds = 0.0;
+};
+
+// Throws RecordingError (a bad recording), ConfigError (bad options) or the render errors.
+ReplayResult replay(const ReplayOptions& options);
+
+}  // namespace skyig::services

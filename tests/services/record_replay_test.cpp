@@ -1,0 +1,264 @@
+// Record and replay (issue 7): a live session recorded and replayed gives the same host
+// states; replays are byte-identical; CAN logs replay through the CANaerospace decoder; bad
+// files give clear errors naming the record and offset, and --skip-bad counts what it skips.
+#include "protocol/canaerospace/state_encoder.h"
+#include "protocol/candump/candump.h"
+#include "protocol/io/byte_sink.h"
+#include "services/node.h"
+#include "services/recorder.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <functional>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <thread>
+
+using namespace skyig::services;
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+namespace {
+
+struct CommandResult {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<nlohmann::json> readDump(const fs::path& p) {
+  std::vector<nlohmann::json> lines;
+  std::ifstream in(p);
+  std::string line;
+  while (std::getline(in, line)) lines.push_back(nlohmann::json::parse(line));
+  return lines;
+}
+
+const std::string kRecording = std::string(SKYIG_SOURCE_DIR) + "/tests/data/circuit_timelapse.pcap";
+
+class RecordReplay : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("skyig_rr_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  CommandResult skyig(const std::string& args) const {
+    const std::string cmd = std::string(SKYIG_EXECUTABLE) + " " + args + " >" + (dir_ / "o.txt").string() + " 2>" + (dir_ / "e.txt").string();
+    const int status = std::system(cmd.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "o.txt"), slurp(dir_ / "e.txt")};
+  }
+
+  // A copy of the fixture with `edit` applied to its bytes.
+  fs::path corrupted(const std::string& name, const std::function<void(std::string&)>& edit) const {
+    std::string bytes = slurp(kRecording);
+    edit(bytes);
+    std::ofstream(dir_ / name, std::ios::binary) << bytes;
+    return dir_ / name;
+  }
+
+  fs::path dir_;
+};
+
+std::uint16_t freePort() {
+  UdpSocket s({"127.0.0.1", 0});
+  return s.localEndpoint().port;
+}
+
+}  // namespace
+
+// serve --record during a live session, then replay the recording: every host frame both
+// dumps show carries the same host values.
+TEST_F(RecordReplay, ReplayGivesTheLiveRunsHostStates) {
+  const std::uint16_t port = freePort();
+  NodeOptions o;
+  o.config.channels.front().width = 32;
+  o.config.channels.front().height = 24;
+  o.listen = {"127.0.0.1", port};
+  o.dumpStatePath = (dir_ / "live.jsonl").string();
+  o.recordPath = (dir_ / "live.pcap").string();
+  NodeStats stats;
+  std::atomic<bool> stop{false};
+  std::thread node([&] { runNode(o, stats, stop); });
+  std::this_thread::sleep_for(300ms);
+  const std::string host = std::string(SKYIG_EXECUTABLE) + " host --path " + SKYIG_SOURCE_DIR +
+                           "/config/circuit.csv --rate 30 --duration 1.5 --speed 30 --to 127.0.0.1:" + std::to_string(port) + " >/dev/null";
+  ASSERT_EQ(std::system(host.c_str()), 0);
+  std::this_thread::sleep_for(150ms);
+  stop = true;
+  node.join();
+  EXPECT_EQ(stats.recorded.load(), stats.datagrams.load());
+
+  const CommandResult r = skyig("replay " + (dir_ / "live.pcap").string() + " --quiet --size 32x24 --dump-state " + (dir_ / "replay.jsonl").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::map<long, nlohmann::json> live, replayed;
+  for (const auto& l : readDump(dir_ / "live.jsonl"))
+    if (!l["host_frame"].is_null()) live[l["host_frame"].get<long>()] = l["host"];
+  for (const auto& l : readDump(dir_ / "replay.jsonl"))
+    if (!l["host_frame"].is_null()) replayed[l["host_frame"].get<long>()] = l["host"];
+  int compared = 0;
+  for (const auto& [frame, hostValues] : replayed) {
+    const auto it = live.find(frame);
+    if (it == live.end()) continue;
+    for (const char* key : {"lat", "lon", "alt", "yaw", "pitch", "roll", "visibility_m"})
+      EXPECT_EQ(hostValues[key], it->second[key]) << "host frame " << frame << " " << key;
+    // The sim clock is refined from the recorded timestamps, not this machine's timing.
+    EXPECT_EQ(hostValues["utc"].get<std::string>().substr(0, 16), it->second["utc"].get<std::string>().substr(0, 16));
+    ++compared;
+  }
+  EXPECT_GT(compared, 30);
+}
+
+TEST_F(RecordReplay, TwoReplaysWriteByteIdenticalFrames) {
+  for (const char* out : {"a", "b"}) {
+    const CommandResult r = skyig("replay " + kRecording + " --quiet --size 48x32 --to 60 --every 20 --exr --out " + (dir_ / out).string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+  }
+  int compared = 0;
+  for (const auto& e : fs::directory_iterator(dir_ / "a")) {
+    EXPECT_EQ(slurp(e.path()), slurp(dir_ / "b" / e.path().filename())) << e.path().filename();
+    ++compared;
+  }
+  EXPECT_EQ(compared, 4);  // frames 0, 20, 40, 60
+  // Named by frame number and sim time. Frame 20 is 0.667 s into the recording: the host's
+  // frame 13 (0.65 s, timestamp 58.5 s of a 90x time-lapse from 18:30) plus 16.7 ms since it
+  // arrived, on the IG's own clock.
+  EXPECT_TRUE(fs::exists(dir_ / "a" / "frame_000020_2026-06-21T18-30-58.516Z.exr"));
+}
+
+TEST_F(RecordReplay, FromAndToSelectAPart) {
+  const CommandResult r = skyig("replay " + kRecording + " --quiet --size 32x24 --from 2026-06-21T18:45:00Z --to 2026-06-21T18:46:00Z --png --out " +
+                      (dir_ / "part").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  int frames = 0;
+  for (const auto& e : fs::directory_iterator(dir_ / "part")) {
+    const std::string name = e.path().filename().string();
+    EXPECT_TRUE(name.find("T18-45-") != std::string::npos || name.find("T18-46-00.000") != std::string::npos) << name;
+    ++frames;
+  }
+  EXPECT_NEAR(frames, 20, 2);  // one sim minute = 2/3 s of recording at 30 frames/s
+}
+
+TEST_F(RecordReplay, CandumpLogReplaysThroughTheCanAerospaceDecoder) {
+  skyig::protocol::canaerospace::HostState s;
+  s.latitudeDeg = -33.9461;
+  s.longitudeDeg = 151.1772;
+  s.altitudeM = 21.0;
+  s.headingDeg = 160.0;
+  s.pitchDeg = 3.0;
+  s.rollDeg = 1.5;
+  s.hour = 9;
+  s.minute = 41;
+  s.second = 5;
+  s.year = 2026;
+  s.month = 11;
+  s.day = 22;
+  skyig::protocol::canaerospace::StateEncoder encoder;
+  skyig::protocol::io::MemorySink sink;
+  skyig::protocol::candump::Writer writer(sink);
+  std::int64_t t = 1790000000000000;
+  for (int repeat = 0; repeat < 3; ++repeat)
+    for (const auto& f : encoder.encode(s)) writer.write(t += 2000, "can0", f);
+  std::ofstream(dir_ / "flight.log", std::ios::binary).write(reinterpret_cast<const char*>(sink.data.data()),
+                                                             static_cast<std::streamsize>(sink.data.size()));
+  const CommandResult r = skyig("replay " + (dir_ / "flight.log").string() + " --quiet --size 32x24 --dump-state " + (dir_ / "can.jsonl").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto last = readDump(dir_ / "can.jsonl").back();
+  EXPECT_NEAR(last["used"]["lat"].get<double>(), -33.9461, 1e-9);
+  EXPECT_NEAR(last["used"]["lon"].get<double>(), 151.1772, 1e-9);
+  EXPECT_NEAR(last["used"]["yaw"].get<double>(), 160.0, 1e-4);
+  EXPECT_EQ(last["used"]["utc"].get<std::string>().substr(0, 19), "2026-11-22T09:41:05");
+}
+
+TEST_F(RecordReplay, TruncatedPcapNamesTheRecordAndOffset) {
+  const fs::path cut = corrupted("cut.pcap", [](std::string& b) { b.resize(b.size() - 70); });
+  const CommandResult r = skyig("replay " + cut.string() + " --quiet --size 16x16 --frame-rate 2");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("record 801"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("at byte 168024"), std::string::npos) << r.err;
+  const CommandResult skipping = skyig("replay " + cut.string() + " --quiet --size 16x16 --frame-rate 2 --skip-bad");
+  EXPECT_EQ(skipping.exitCode, 0) << skipping.err;
+  EXPECT_NE(skipping.out.find("skipped 1 bad records"), std::string::npos) << skipping.out;
+}
+
+TEST_F(RecordReplay, CorruptRecordInTheMiddle) {
+  // Record 400's captured length (4 bytes at its header + 8) set absurd.
+  const fs::path bad = corrupted("bad.pcap", [](std::string& b) {
+    const std::size_t recordSize = (b.size() - 24) / 801;  // every record has the same size here
+    const std::size_t header = 24 + 399 * recordSize;
+    b[header + 8] = '\xff';
+    b[header + 9] = '\xff';
+    b[header + 10] = '\xff';
+    b[header + 11] = '\x7f';
+  });
+  const CommandResult r = skyig("replay " + bad.string() + " --quiet --size 16x16 --frame-rate 2");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("record 400"), std::string::npos) << r.err;
+  const CommandResult skipping = skyig("replay " + bad.string() + " --quiet --size 16x16 --frame-rate 2 --skip-bad");
+  EXPECT_EQ(skipping.exitCode, 0) << skipping.err;
+  EXPECT_NE(skipping.out.find("replayed 800 host messages"), std::string::npos) << skipping.out;
+  EXPECT_NE(skipping.out.find("skipped 1 bad records"), std::string::npos) << skipping.out;
+}
+
+TEST_F(RecordReplay, UnparseableCandumpLineAndNotARecording) {
+  std::ofstream(dir_ / "bad.log") << "(1790000000.000000) can0 137#0000000000000000\n(1790000000.1) can0 nonsense\n";
+  const CommandResult r = skyig("replay " + (dir_ / "bad.log").string() + " --quiet --size 32x24");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("line 2"), std::string::npos) << r.err;
+  std::ofstream(dir_ / "picture.png") << "\x89PNG\r\n\x1a\n0000000000000000";
+  const CommandResult n = skyig("replay " + (dir_ / "picture.png").string() + " --quiet");
+  EXPECT_EQ(n.exitCode, 2);
+  EXPECT_NE(n.err.find("not a recording"), std::string::npos) << n.err;
+}
+
+// A full disk stops the recording with an error; the node keeps rendering.
+TEST_F(RecordReplay, FullDiskStopsRecordingNotTheNode) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
+  const std::uint16_t port = freePort();
+  NodeOptions o;
+  o.config.channels.front().width = 16;
+  o.config.channels.front().height = 16;
+  o.listen = {"127.0.0.1", port};
+  o.recordPath = "/dev/full";
+  NodeStats stats;
+  std::atomic<bool> stop{false};
+  std::thread node([&] {
+    try {
+      runNode(o, stats, stop);
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << e.what();
+    }
+  });
+  std::this_thread::sleep_for(300ms);
+  const std::string host = std::string(SKYIG_EXECUTABLE) + " host --path " + SKYIG_SOURCE_DIR +
+                           "/config/circuit.csv --rate 30 --duration 0.5 --to 127.0.0.1:" + std::to_string(port) + " >/dev/null";
+  ASSERT_EQ(std::system(host.c_str()), 0);
+  const std::uint64_t frames = stats.frames.load();
+  std::this_thread::sleep_for(200ms);
+  stop = true;
+  node.join();
+  EXPECT_EQ(stats.recordErrors.load(), 1u);
+  EXPECT_GT(stats.datagrams.load(), 10u);
+  EXPECT_GT(stats.frames.load(), frames + 5);  // still rendering after the recording died
+}
+
+TEST_F(RecordReplay, TcpdumpReadsWhatSkyigRecorded) {
+  if (std::system("command -v tcpdump >/dev/null 2>&1") != 0) GTEST_SKIP() << "tcpdump is not installed";
+  const std::string cmd = "tcpdump -nr " + kRecording + " 2>/dev/null | grep -c 'UDP, length 152' > " + (dir_ / "n.txt").string();
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  EXPECT_EQ(std::stoi(slurp(dir_ / "n.txt")), 801);
+}

@@ -24,6 +24,7 @@ struct ChannelConfig {
   Frustum frustum;
   int width = 1280;
   int height = 1024;
+  std::string monitor;  // `serve` in windows: fullscreen on this monitor (GLFW's name); "" windowed
   DisplayParams display;
 };
 

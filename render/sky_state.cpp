@@ -44,7 +44,7 @@ void validate(const ObserverState& o, const SkyConditions& c) {
 }  // namespace
 
 SkyState buildSkyState(const ObserverState& observer, const SkyConditions& conditions,
-                       const std::optional<SunOverride>& sun) {
+                       const std::optional<SunOverride>& sun, ephemeris::EphemerisCache* cache) {
   validate(observer, conditions);
   SkyState s;
   s.observer = observer;
@@ -61,7 +61,7 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
     where.latitudeRad = observer.latitudeDeg * kDeg;
     where.longitudeRad = observer.longitudeDeg * kDeg;
     where.heightM = std::min(observer.heightM, 1e5);  // parallax beyond 100 km changes nothing seen
-    s.ephemeris = ephemeris::computeEphemeris(observer.utc, where);
+    s.ephemeris = cache ? cache->compute(observer.utc, where) : ephemeris::computeEphemeris(observer.utc, where);
     s.sunAzimuth = s.ephemeris->sun.azimuthRad;
     s.sunAltitude = s.ephemeris->sun.altitudeRad;
     s.sunApparentAltitude = s.ephemeris->sun.altitudeRefractedRad;

@@ -63,6 +63,7 @@ std::vector<render::ChannelConfig> channelsFor(const std::vector<render::Channel
 void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& host,
                 Latest<render::SkyState>& sky, const std::atomic<bool>& stop) {
   std::uint64_t seen = ~0ull;
+  ephemeris::EphemerisCache ephemerisCache;  // the worker's own: frame-to-frame interpolation
   auto lastSky = Clock::now() - 1h;
   auto lastStats = Clock::now();
   while (!stop.load(std::memory_order_relaxed)) {
@@ -72,7 +73,8 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
       seen = host.version();
       const auto snapshot = host.get();
       try {
-        sky.publish(render::buildSkyState(observerAt(opt.config, snapshot.get(), now), opt.config.sky));
+        sky.publish(render::buildSkyState(observerAt(opt.config, snapshot.get(), now), opt.config.sky, std::nullopt,
+                                          &ephemerisCache));
         stats.skyStates.fetch_add(1, std::memory_order_relaxed);
       } catch (const std::exception& e) {
         stats.rejectedValues.fetch_add(1, std::memory_order_relaxed);
@@ -103,6 +105,7 @@ class Display {
       w.width = c.width;
       w.height = c.height;
       w.shareWith = windows_.empty() ? nullptr : windows_.front().get();
+      if (!c.monitor.empty()) w.fullscreenMonitor = c.monitor;
       windows_.push_back(std::make_unique<render::GlfwWindowContext>(w));
       renderers_.push_back(std::make_unique<render::SkyRenderer>());  // VAOs and FBOs are per context
     }

@@ -165,6 +165,7 @@ render::ChannelConfig readChannel(TableReader& r, size_t index, std::string& nod
   c.frustum.rightDeg = r.number("right", c.frustum.rightDeg, 0.1, 89.0);
   c.frustum.downDeg = r.number("down", c.frustum.downDeg, 0.1, 89.0);
   c.frustum.upDeg = r.number("up", c.frustum.upDeg, 0.1, 89.0);
+  c.monitor = r.string("monitor", c.monitor);
   c.width = r.integer("width", c.width, 16, 16384);
   c.height = r.integer("height", c.height, 16, 16384);
   if (const toml::table* t = subTable(r, "display")) {

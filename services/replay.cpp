@@ -111,7 +111,7 @@ class Feeder {
       if (const auto utc = f.host->utcAt(at(f.timeNs))) o.utc = *utc;
     }
     try {
-      f.sky = render::buildSkyState(o, options_.config.sky);
+      f.sky = render::buildSkyState(o, options_.config.sky, std::nullopt, &ephemerisCache_);
     } catch (const std::exception& e) {
       f.error = e.what();
     }
@@ -129,6 +129,7 @@ class Feeder {
   bool haveEvent_ = false;
   std::int64_t firstNs_ = 0;
   std::uint64_t events_ = 0;
+  ephemeris::EphemerisCache ephemerisCache_;
 };
 
 class Progress {

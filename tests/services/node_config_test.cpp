@@ -58,6 +58,7 @@ TEST(NodeConfig, DocumentedDefaultsEqualBuiltInDefaults) {
   EXPECT_EQ(a.frustum.leftDeg, b.frustum.leftDeg);
   EXPECT_EQ(a.frustum.upDeg, b.frustum.upDeg);
   EXPECT_EQ(a.width, b.width);
+  EXPECT_EQ(a.monitor, b.monitor);
   EXPECT_EQ(a.height, b.height);
   EXPECT_EQ(a.display.maxLuminance, b.display.maxLuminance);
   EXPECT_EQ(a.display.ambientLuminance, b.display.ambientLuminance);

@@ -55,4 +55,21 @@ Float unitRangeFromTextureCoord(Float u, Float size) {
   return (u - 0.5 / size) / (1.0 - 1.0 / size);
 }
 
+// Integral over a step of length h of a positive function known at both ends, taken as
+// exponential in between: h (b - a) / ln(b / a). Exact for the exponential density profiles,
+// where the trapezoidal rule overestimates by (h/2H) coth(h/2H) - 1 (8% for a step of one
+// Mie scale height, the step of 50 samples along a vertical ray). Falls back to the
+// trapezoid where an end is zero or the ends are nearly equal.
+Float exponentialStepIntegral(Float a, Float b, Float h) {
+  if (a <= 0.0 || b <= 0.0 || abs(b - a) <= 1e-3 * a) {
+    return 0.5 * (a + b) * h;
+  }
+  return h * (b - a) / log(b / a);
+}
+
+vec4 exponentialStepIntegral4(IN(vec4) a, IN(vec4) b, Float h) {
+  return vec4(exponentialStepIntegral(a.x, b.x, h), exponentialStepIntegral(a.y, b.y, h),
+              exponentialStepIntegral(a.z, b.z, h), exponentialStepIntegral(a.w, b.w, h));
+}
+
 #endif

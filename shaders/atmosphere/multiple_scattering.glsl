@@ -9,20 +9,28 @@
 #include "atmosphere/single_scattering.glsl"
 #include "atmosphere/irradiance.glsl"
 
-// Radiance of exactly `scattering_order` scatterings arriving at r from direction mu: the
-// single scattering tables with their phase functions for order 1, the delta table otherwise.
+// Radiance of exactly `scattering_order` scatterings arriving from the direction whose table
+// coordinates are uvwz (cosine of the scattering angle nu): the single scattering tables with
+// their phase functions for order 1, the delta table otherwise.
+vec4 scatteringOfOrderUvwz(IN(AtmosphereParameters) atm, IN(sampler3D) single_rayleigh_texture,
+                           IN(sampler3D) single_mie_texture, IN(sampler3D) multiple_texture,
+                           IN(vec4) uvwz, Float nu, int scattering_order) {
+  if (scattering_order == 1) {
+    vec4 rayleigh = lookupScatteringUvwz(atm, single_rayleigh_texture, uvwz);
+    vec4 mie = lookupScatteringUvwz(atm, single_mie_texture, uvwz);
+    return rayleigh * rayleighPhaseFunction(nu) + mie * miePhaseFunction(atm.mie_phase_g, nu);
+  }
+  return lookupScatteringUvwz(atm, multiple_texture, uvwz);
+}
+
 vec4 scatteringOfOrder(IN(AtmosphereParameters) atm, IN(sampler3D) single_rayleigh_texture,
                        IN(sampler3D) single_mie_texture, IN(sampler3D) multiple_texture, Float r,
                        Float mu, Float mu_s, Float nu, bool ray_r_mu_intersects_ground,
                        int scattering_order) {
-  if (scattering_order == 1) {
-    vec4 rayleigh = lookupScattering(atm, single_rayleigh_texture, r, mu, mu_s, nu,
-                                     ray_r_mu_intersects_ground);
-    vec4 mie = lookupScattering(atm, single_mie_texture, r, mu, mu_s, nu,
-                                ray_r_mu_intersects_ground);
-    return rayleigh * rayleighPhaseFunction(nu) + mie * miePhaseFunction(atm.mie_phase_g, nu);
-  }
-  return lookupScattering(atm, multiple_texture, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  return scatteringOfOrderUvwz(
+      atm, single_rayleigh_texture, single_mie_texture, multiple_texture,
+      scatteringUvwzFromRMuMuSNu(atm, r, mu, mu_s, nu, ray_r_mu_intersects_ground), nu,
+      scattering_order);
 }
 
 // Scattering density J of order n at (r, mu, mu_s, nu): the incident radiance of order n-1
@@ -66,16 +74,18 @@ vec4 computeScatteringDensity(IN(AtmosphereParameters) atm, IN(sampler2D) transm
       ground_albedo = atm.ground_albedo;
     }
 
+    // Only nu changes with phi: the other three table coordinates are computed once.
+    vec4 uvwz = scatteringUvwzFromRMuMuSNu(atm, r, cos_theta, mu_s, 0.0,
+                                           ray_r_theta_intersects_ground);
     for (int m = 0; m < 2 * SAMPLES; ++m) {
       Float phi = (Float(m) + 0.5) * dphi;
       vec3 omega_i = vec3(cos(phi) * sin_theta, sin(phi) * sin_theta, cos_theta);
-      Float domega_i = dtheta * dphi * sin(theta);
+      Float domega_i = dtheta * dphi * sin_theta;
 
-      Float nu1 = dot(omega_s, omega_i);
-      vec4 incident_radiance =
-          scatteringOfOrder(atm, single_rayleigh_texture, single_mie_texture, multiple_texture,
-                            r, omega_i.z, mu_s, nu1, ray_r_theta_intersects_ground,
-                            scattering_order - 1);
+      Float nu1 = atmClampCosine(dot(omega_s, omega_i));
+      vec4 incident_radiance = scatteringOfOrderUvwz(
+          atm, single_rayleigh_texture, single_mie_texture, multiple_texture,
+          vec4((nu1 + 1.0) / 2.0, uvwz.y, uvwz.z, uvwz.w), nu1, scattering_order - 1);
       if (ray_r_theta_intersects_ground) {
         vec3 ground_normal = normalize(zenith_direction * r + omega_i * distance_to_ground);
         vec4 ground_irradiance = lookupIrradiance(atm, irradiance_texture, atm.bottom_radius,
@@ -115,27 +125,35 @@ vec4 computeScatteringDensityTexel(IN(AtmosphereParameters) atm,
 }
 
 // Radiance of order n: J of order n integrated along the ray with the transmittance to the
-// viewer (trapezoidal rule).
+// viewer, the integrand taken as exponential between samples (exponentialStepIntegral4).
+vec4 multipleScatteringIntegrand(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_texture,
+                                 IN(sampler3D) scattering_density_texture, Float r, Float mu,
+                                 Float mu_s, Float nu, Float d, bool ray_r_mu_intersects_ground) {
+  Float r_d = radiusAtDistance(atm, r, mu, d);
+  Float mu_d = atmClampCosine((r * mu + d) / r_d);
+  Float mu_s_d = atmClampCosine((r * mu_s + d * nu) / r_d);
+  return lookupScattering(atm, scattering_density_texture, r_d, mu_d, mu_s_d, nu,
+                          ray_r_mu_intersects_ground) *
+         transmittanceAlongRay(atm, transmittance_texture, r, mu, d, ray_r_mu_intersects_ground);
+}
+
 vec4 computeMultipleScattering(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_texture,
                                IN(sampler3D) scattering_density_texture, Float r, Float mu,
                                Float mu_s, Float nu, bool ray_r_mu_intersects_ground) {
   Float dx = distanceToNearestAtmosphereBoundary(atm, r, mu, ray_r_mu_intersects_ground) /
              Float(ATMOSPHERE_MULTIPLE_SCATTERING_SAMPLES);
-  vec4 rayleigh_mie_sum = vec4(0.0);
-  for (int i = 0; i <= ATMOSPHERE_MULTIPLE_SCATTERING_SAMPLES; ++i) {
-    Float d_i = Float(i) * dx;
-    Float r_i = radiusAtDistance(atm, r, mu, d_i);
-    Float mu_i = atmClampCosine((r * mu + d_i) / r_i);
-    Float mu_s_i = atmClampCosine((r * mu_s + d_i * nu) / r_i);
-    vec4 rayleigh_mie_i =
-        lookupScattering(atm, scattering_density_texture, r_i, mu_i, mu_s_i, nu,
-                         ray_r_mu_intersects_ground) *
-        transmittanceAlongRay(atm, transmittance_texture, r, mu, d_i, ray_r_mu_intersects_ground) *
-        dx;
-    Float weight_i = (i == 0 || i == ATMOSPHERE_MULTIPLE_SCATTERING_SAMPLES) ? 0.5 : 1.0;
-    rayleigh_mie_sum += rayleigh_mie_i * weight_i;
+  vec4 sum = vec4(0.0);
+  vec4 previous = multipleScatteringIntegrand(atm, transmittance_texture,
+                                              scattering_density_texture, r, mu, mu_s, nu, 0.0,
+                                              ray_r_mu_intersects_ground);
+  for (int i = 1; i <= ATMOSPHERE_MULTIPLE_SCATTERING_SAMPLES; ++i) {
+    vec4 current = multipleScatteringIntegrand(atm, transmittance_texture,
+                                               scattering_density_texture, r, mu, mu_s, nu,
+                                               Float(i) * dx, ray_r_mu_intersects_ground);
+    sum += exponentialStepIntegral4(previous, current, dx);
+    previous = current;
   }
-  return rayleigh_mie_sum;
+  return sum;
 }
 
 // Returns the radiance of order n at the texel, and its nu (the accumulated table stores it
@@ -166,14 +184,15 @@ vec4 computeIndirectIrradiance(IN(AtmosphereParameters) atm,
   vec3 omega_s = vec3(sqrt(max(1.0 - mu_s * mu_s, 0.0)), 0.0, mu_s);
   for (int j = 0; j < SAMPLES / 2; ++j) {
     Float theta = (Float(j) + 0.5) * dtheta;
+    vec4 uvwz = scatteringUvwzFromRMuMuSNu(atm, r, cos(theta), mu_s, 0.0, false);
     for (int i = 0; i < 2 * SAMPLES; ++i) {
       Float phi = (Float(i) + 0.5) * dphi;
       vec3 omega = vec3(cos(phi) * sin(theta), sin(phi) * sin(theta), cos(theta));
       Float domega = dtheta * dphi * sin(theta);
-      Float nu = dot(omega, omega_s);
-      result += scatteringOfOrder(atm, single_rayleigh_texture, single_mie_texture,
-                                  multiple_texture, r, omega.z, mu_s, nu, false,
-                                  scattering_order) *
+      Float nu = atmClampCosine(dot(omega, omega_s));
+      result += scatteringOfOrderUvwz(atm, single_rayleigh_texture, single_mie_texture,
+                                      multiple_texture, vec4((nu + 1.0) / 2.0, uvwz.y, uvwz.z, uvwz.w),
+                                      nu, scattering_order) *
                 omega.z * domega;
     }
   }

@@ -102,10 +102,10 @@ void rMuMuSNuFromScatteringFragCoord(IN(AtmosphereParameters) atm, IN(vec3) frag
   nu = clamp(nu, mu * mu_s - spread, mu * mu_s + spread);
 }
 
-// Lookup of a 4D function stored as above: two trilinear fetches, blended along nu.
-vec4 lookupScattering(IN(AtmosphereParameters) atm, IN(sampler3D) scattering_texture, Float r,
-                      Float mu, Float mu_s, Float nu, bool ray_r_mu_intersects_ground) {
-  vec4 uvwz = scatteringUvwzFromRMuMuSNu(atm, r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+// Lookup of a 4D function stored as above, from table coordinates: two trilinear fetches,
+// blended along nu. Callers that vary only nu compute uvwz once and change uvwz.x.
+vec4 lookupScatteringUvwz(IN(AtmosphereParameters) atm, IN(sampler3D) scattering_texture,
+                          IN(vec4) uvwz) {
   Float tex_coord_x = uvwz.x * (atm.scattering_nu_size - 1.0);
   Float tex_x = floor(tex_coord_x);
   Float lerp = tex_coord_x - tex_x;
@@ -113,6 +113,13 @@ vec4 lookupScattering(IN(AtmosphereParameters) atm, IN(sampler3D) scattering_tex
   vec3 uvw1 = vec3((tex_x + 1.0 + uvwz.y) / atm.scattering_nu_size, uvwz.z, uvwz.w);
   return texture(scattering_texture, uvw0) * (1.0 - lerp) +
          texture(scattering_texture, uvw1) * lerp;
+}
+
+vec4 lookupScattering(IN(AtmosphereParameters) atm, IN(sampler3D) scattering_texture, Float r,
+                      Float mu, Float mu_s, Float nu, bool ray_r_mu_intersects_ground) {
+  return lookupScatteringUvwz(
+      atm, scattering_texture,
+      scatteringUvwzFromRMuMuSNu(atm, r, mu, mu_s, nu, ray_r_mu_intersects_ground));
 }
 
 #endif

@@ -22,7 +22,8 @@ void singleScatteringIntegrand(IN(AtmosphereParameters) atm, IN(sampler2D) trans
   mie = transmittance * mieDensity(atm, r_d - atm.bottom_radius);
 }
 
-// Trapezoidal rule over the ray up to the ground or the top of the atmosphere.
+// Integral over the ray up to the ground or the top of the atmosphere, step by step with
+// the integrand taken as exponential between samples (exponentialStepIntegral4).
 void computeSingleScattering(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_texture,
                              Float r, Float mu, Float mu_s, Float nu,
                              bool ray_r_mu_intersects_ground, OUT(vec4) rayleigh,
@@ -31,18 +32,23 @@ void computeSingleScattering(IN(AtmosphereParameters) atm, IN(sampler2D) transmi
              Float(ATMOSPHERE_SINGLE_SCATTERING_SAMPLES);
   vec4 rayleigh_sum = vec4(0.0);
   vec4 mie_sum = vec4(0.0);
-  for (int i = 0; i <= ATMOSPHERE_SINGLE_SCATTERING_SAMPLES; ++i) {
+  vec4 rayleigh_previous;
+  vec4 mie_previous;
+  singleScatteringIntegrand(atm, transmittance_texture, r, mu, mu_s, nu, 0.0,
+                            ray_r_mu_intersects_ground, rayleigh_previous, mie_previous);
+  for (int i = 1; i <= ATMOSPHERE_SINGLE_SCATTERING_SAMPLES; ++i) {
     Float d_i = Float(i) * dx;
     vec4 rayleigh_i;
     vec4 mie_i;
     singleScatteringIntegrand(atm, transmittance_texture, r, mu, mu_s, nu, d_i,
                               ray_r_mu_intersects_ground, rayleigh_i, mie_i);
-    Float weight_i = (i == 0 || i == ATMOSPHERE_SINGLE_SCATTERING_SAMPLES) ? 0.5 : 1.0;
-    rayleigh_sum += rayleigh_i * weight_i;
-    mie_sum += mie_i * weight_i;
+    rayleigh_sum += exponentialStepIntegral4(rayleigh_previous, rayleigh_i, dx);
+    mie_sum += exponentialStepIntegral4(mie_previous, mie_i, dx);
+    rayleigh_previous = rayleigh_i;
+    mie_previous = mie_i;
   }
-  rayleigh = rayleigh_sum * dx * atm.solar_irradiance * atm.rayleigh_scattering;
-  mie = mie_sum * dx * atm.solar_irradiance * atm.mie_scattering;
+  rayleigh = rayleigh_sum * atm.solar_irradiance * atm.rayleigh_scattering;
+  mie = mie_sum * atm.solar_irradiance * atm.mie_scattering;
 }
 
 void computeSingleScatteringTexel(IN(AtmosphereParameters) atm,

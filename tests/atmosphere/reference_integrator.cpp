@@ -32,8 +32,9 @@ double hitSphere(const glm::dvec3& o, const glm::dvec3& d, double radius, bool f
 }  // namespace
 
 double distanceToBoundary(const Medium& m, const Ray& ray, bool* hits_ground) {
+  // A ray starting on the ground and pointing down hits it at once (t = 0).
   const double t_ground = hitSphere(ray.origin, ray.direction, m.bottom_radius_m, false);
-  const bool ground = t_ground > 0.0;
+  const bool ground = t_ground >= 0.0 && glm::dot(ray.origin, ray.direction) < 0.0;
   if (hits_ground) *hits_ground = ground;
   if (ground) return t_ground;
   return std::max(0.0, hitSphere(ray.origin, ray.direction, m.top_radius_m, true));
@@ -54,6 +55,7 @@ double opticalDepth(const Medium& m, const SpectralCoefficients& c, const Ray& r
 double singleScattering(const Medium& m, const SpectralCoefficients& c, const Ray& ray,
                         const glm::dvec3& sun, int steps) {
   const double length = distanceToBoundary(m, ray);
+  if (length <= 0.0) return 0.0;
   const double dt = length / steps;
   const double nu = glm::dot(ray.direction, sun);
   const double k = 3.0 / (16.0 * kPi);
@@ -73,7 +75,7 @@ double singleScattering(const Medium& m, const SpectralCoefficients& c, const Ra
     bool blocked = false;
     const double sun_length = distanceToBoundary(m, to_sun, &blocked);
     if (blocked) continue;
-    const double depth_to_sun = opticalDepth(m, c, to_sun, sun_length, 400);
+    const double depth_to_sun = opticalDepth(m, c, to_sun, sun_length, 120);
     const LocalMedium local = localMedium(m, c, p);
     radiance += std::exp(-depth_to_viewer - depth_to_sun) *
                 (local.rayleigh_scattering * phase_r + local.mie_scattering * phase_m) * dt;

@@ -12,8 +12,8 @@ packages=(
   # images, geodesy, plumbing
   libopenexr-dev python3-imath libpng-dev libgeographiclib-dev
   libtomlplusplus-dev libcli11-dev libspdlog-dev nlohmann-json3-dev libpcap-dev
-  # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev
+  # tests and benchmarks (glslang-tools: compiles the shaders' physics as GLSL in the tests)
+  libgtest-dev libgmock-dev libbenchmark-dev glslang-tools
 )
 
 missing=()

@@ -72,6 +72,10 @@ SpectralCoefficients coefficientsAt(const Medium& m, double wavelength_nm) {
   return c;
 }
 
+double limbDarkeningExponent(double wavelength_nm) {
+  return -0.023 + 0.292 / (wavelength_nm * 1e-3);
+}
+
 std::vector<double> defaultWavelengths() {
   return {360.0, 390.0, 420.0, 440.0, 470.0, 500.0, 525.0, 550.0,
           575.0, 600.0, 630.0, 655.0, 680.0, 710.0, 760.0, 830.0};

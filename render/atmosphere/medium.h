@@ -60,6 +60,10 @@ struct SpectralCoefficients {
 };
 SpectralCoefficients coefficientsAt(const Medium& medium, double wavelength_nm);
 
+// Exponent alpha of the solar limb darkening I(mu)/I(1) = mu^alpha at a wavelength (nm):
+// alpha = -0.023 + 0.292 / lambda[um] (Hestroffer & Magnan 1998, A&A 333, 338).
+double limbDarkeningExponent(double wavelength_nm);
+
 // skyig's wavelengths (nm): 16 samples from 360 to 830 nm, about 25-30 nm apart where the
 // CIE colour matching functions are large, wider at the ends where they are nearly zero, and
 // including 440, 550 and 680 nm, the paper's three.

@@ -149,6 +149,13 @@ Spectrum AtmosphereModel::solarRadiance() const {
   });
 }
 
+Spectrum AtmosphereModel::sunDiscRadiance(const glm::dvec3& camera, const glm::dvec3& view,
+                                          const glm::dvec3& sun) const {
+  return perGroup([&](const AtmosphereParameters& a, const GroupTables& t, glm::dvec4&) {
+    return shader::sunDiscRadiance(a, t.transmittance, camera, view, sun);
+  });
+}
+
 glm::dvec3 observerPosition(const Medium& medium, double altitude_m) {
   return {0.0, 0.0, medium.bottom_radius_m + altitude_m};
 }

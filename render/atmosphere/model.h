@@ -54,6 +54,9 @@ class AtmosphereModel {
   Spectrum transmittanceToTop(double r, double mu) const;
   // Radiance of the sun disc outside the atmosphere (uniform disc).
   Spectrum solarRadiance() const;
+  // The sun disc seen along `view`: limb darkened and attenuated; zero off the disc.
+  Spectrum sunDiscRadiance(const glm::dvec3& camera, const glm::dvec3& view,
+                           const glm::dvec3& sun) const;
 
  private:
   void setUp();

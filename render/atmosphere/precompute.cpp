@@ -28,6 +28,7 @@ AtmosphereParameters makeParameters(const Medium& medium,
     atm.mie_extinction[i] = c.mie_extinction;
     atm.absorption_extinction[i] = c.ozone_absorption;
     atm.ground_albedo[i] = medium.ground_albedo;
+    atm.limb_darkening_exponent[i] = limbDarkeningExponent(wavelengths_nm[static_cast<std::size_t>(i)]);
   }
   atm.sun_angular_radius = medium.sun_angular_radius_rad;
   atm.bottom_radius = medium.bottom_radius_m;

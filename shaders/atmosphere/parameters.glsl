@@ -10,6 +10,8 @@ struct AtmosphereParameters {
   vec4 solar_irradiance;
   // Angular radius of the sun disc, radians.
   Float sun_angular_radius;
+  // Limb darkening exponent alpha of I(mu)/I(1) = mu^alpha per wavelength (rendering.glsl).
+  vec4 limb_darkening_exponent;
   // Radii of the ground sphere and of the top of the atmosphere, m.
   Float bottom_radius;
   Float top_radius;

@@ -16,6 +16,50 @@ vec4 solarRadiance(IN(AtmosphereParameters) atm) {
          (ATMOSPHERE_PI * atm.sun_angular_radius * atm.sun_angular_radius);
 }
 
+// Radiance of the sun disc seen along view_ray from camera: limb darkened, attenuated by the
+// transmittance to the top of the atmosphere, zero off the disc or behind the planet.
+// Limb darkening after Hestroffer & Magnan 1998 (A&A 333, 338): I(mu)/I(1) = mu^alpha with
+// mu the cosine of the heliocentric angle; scaled by (alpha + 2)/2 so the disc's mean is the
+// uniform solarRadiance() and its irradiance stays the solar irradiance.
+vec4 sunDiscRadiance(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_texture,
+                     IN(vec3) camera_position, IN(vec3) view_ray, IN(vec3) sun_direction) {
+  Float cos_angle = dot(view_ray, sun_direction);
+  Float cos_radius = cos(atm.sun_angular_radius);
+  if (cos_angle < cos_radius) {
+    return vec4(0.0);
+  }
+  // Fraction of the disc radius: sin(angle) / sin(radius).
+  Float x = min(sqrt(max(1.0 - cos_angle * cos_angle, 0.0)) / sin(atm.sun_angular_radius), 1.0);
+  Float mu = sqrt(max(1.0 - x * x, 0.0));
+  vec4 alpha = atm.limb_darkening_exponent;
+  vec4 darkening = vec4(pow(mu, alpha.x), pow(mu, alpha.y), pow(mu, alpha.z), pow(mu, alpha.w)) *
+                   (alpha + vec4(2.0)) * 0.5;
+  Float r = length(camera_position);
+  Float mu_view = dot(camera_position, view_ray) / r;
+  vec4 transmittance = vec4(1.0);
+  if (r <= atm.top_radius) {
+    if (rayIntersectsGround(atm, r, mu_view)) {
+      return vec4(0.0);
+    }
+    transmittance = transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r, mu_view);
+  } else {
+    // From space: the planet's disc hides the sun; otherwise the ray may graze the atmosphere.
+    Float rmu = r * mu_view;
+    Float discriminant_ground = rmu * rmu - r * r + atm.bottom_radius * atm.bottom_radius;
+    if (rmu < 0.0 && discriminant_ground >= 0.0) {
+      return vec4(0.0);
+    }
+    Float discriminant_top = rmu * rmu - r * r + atm.top_radius * atm.top_radius;
+    if (rmu < 0.0 && discriminant_top >= 0.0) {
+      vec3 entry = camera_position + view_ray * (-rmu - sqrt(discriminant_top));
+      transmittance = transmittanceToTopAtmosphereBoundary(atm, transmittance_texture,
+                                                           atm.top_radius,
+                                                           dot(entry, view_ray) / atm.top_radius);
+    }
+  }
+  return solarRadiance(atm) * darkening * transmittance;
+}
+
 // Combined lookup of both tables with their phase functions.
 vec4 scatteredRadiance(IN(AtmosphereParameters) atm, IN(sampler3D) scattering_texture,
                        IN(sampler3D) single_mie_texture, Float r, Float mu, Float mu_s,

@@ -234,3 +234,56 @@ TEST(AtmospherePhysics, GroundSeenFromAboveHasAerialPerspective) {
 
 }  // namespace
 }  // namespace skyig::atmosphere
+
+namespace skyig::atmosphere {
+namespace {
+
+TEST(AtmosphereSunDisc, LimbDarkenedDiscKeepsTheSolarIrradiance) {
+  const AtmosphereModel model = cachedModel(oneGroupConfig());
+  const Medium& m = model.config().medium;
+  const glm::dvec3 space = observerPosition(m, 1e6);
+  const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, 0.0, 1.0));
+  // Irradiance = integral of the radiance over the disc (rings of equal angular width).
+  const double radius = m.sun_angular_radius_rad;
+  const glm::dvec3 side = glm::normalize(glm::cross(sun, glm::dvec3(0.0, 1.0, 0.0)));
+  const int rings = 400;
+  Spectrum irradiance(4, 0.0);
+  for (int i = 0; i < rings; ++i) {
+    const double angle = (i + 0.5) / rings * radius;
+    const glm::dvec3 view = std::cos(angle) * sun + std::sin(angle) * side;
+    const Spectrum l = model.sunDiscRadiance(space, view, sun);
+    const double solid_angle = 2.0 * kPi * std::sin(angle) * (radius / rings);
+    for (int k = 0; k < 4; ++k) irradiance[static_cast<std::size_t>(k)] += l[static_cast<std::size_t>(k)] * solid_angle;
+  }
+  for (std::size_t k = 0; k < 4; ++k) {
+    const double expected = coefficientsAt(m, model.wavelengths()[k]).solar_irradiance;
+    EXPECT_NEAR(irradiance[k] / expected, 1.0, 0.005) << model.wavelengths()[k] << " nm";
+  }
+  // Darker at the limb, and more so in the blue (alpha grows as lambda falls).
+  const glm::dvec3 limb = std::cos(0.95 * radius) * sun + std::sin(0.95 * radius) * side;
+  const Spectrum centre = model.sunDiscRadiance(space, sun, sun);
+  const Spectrum edge = model.sunDiscRadiance(space, limb, sun);
+  EXPECT_LT(edge[0] / centre[0], edge[2] / centre[2]);
+  EXPECT_LT(edge[1] / centre[1], 0.75);
+  // Off the disc: nothing.
+  const glm::dvec3 off = std::cos(1.05 * radius) * sun + std::sin(1.05 * radius) * side;
+  for (double v : model.sunDiscRadiance(space, off, sun)) EXPECT_EQ(v, 0.0);
+}
+
+TEST(AtmosphereSunDisc, AttenuatedByTheAtmosphereAndHiddenByTheGround) {
+  const AtmosphereModel model = cachedModel(oneGroupConfig());
+  const Medium& m = model.config().medium;
+  const glm::dvec3 up(0.0, 0.0, 1.0);
+  const Spectrum outside = model.sunDiscRadiance(observerPosition(m, 1e6), up, up);
+  const Spectrum ground = model.sunDiscRadiance(observerPosition(m, 0.0), up, up);
+  const Spectrum t = model.transmittanceToTop(m.bottom_radius_m, 1.0);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(ground[k] / outside[k], t[k], 1e-12);
+  // The sun below the horizon of an observer on the ground, and behind the planet from space.
+  const glm::dvec3 low = directionFromAngles(91.0 * kDegree, 0.0);
+  for (double v : model.sunDiscRadiance(observerPosition(m, 0.0), low, low)) EXPECT_EQ(v, 0.0);
+  const glm::dvec3 down(0.0, 0.0, -1.0);
+  for (double v : model.sunDiscRadiance(observerPosition(m, 1e6), down, down)) EXPECT_EQ(v, 0.0);
+}
+
+}  // namespace
+}  // namespace skyig::atmosphere

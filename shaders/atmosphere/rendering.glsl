@@ -124,7 +124,13 @@ vec4 skyRadianceToPoint(IN(AtmosphereParameters) atm, IN(sampler2D) transmittanc
                         IN(sampler3D) scattering_texture, IN(sampler3D) single_mie_texture,
                         IN(vec3) camera_position, IN(vec3) point, IN(vec3) sun_direction,
                         OUT(vec4) transmittance) {
-  vec3 view_ray = normalize(point - camera_position);
+  // A point at the camera (a viewer standing on the ground looking down) has no segment.
+  Float segment = length(point - camera_position);
+  if (segment <= 0.0) {
+    transmittance = vec4(1.0);
+    return vec4(0.0);
+  }
+  vec3 view_ray = (point - camera_position) / segment;
   vec3 camera = camera_position;
   Float r;
   Float rmu;

@@ -42,6 +42,7 @@ using std::sqrt;
 #include "atmosphere/irradiance.glsl"
 #include "atmosphere/multiple_scattering.glsl"
 #include "atmosphere/rendering.glsl"
+#include "atmosphere/rendering_rec709.glsl"
 }  // namespace
 }  // namespace skyig::shader
 #pragma GCC diagnostic pop

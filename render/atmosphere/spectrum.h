@@ -30,6 +30,8 @@ class SpectralConverter {
   glm::dvec3 toRec709(const std::vector<double>& spectrum) const {
     return xyzToRec709(toXyz(spectrum));
   }
+  // XYZ (cd/m^2) contributed by one unit of spectral radiance at sample i.
+  const glm::dvec3& weight(std::size_t i) const { return weights_.at(i); }
   // Linear interpolation of the sampled spectrum at one wavelength (nm).
   double at(const std::vector<double>& spectrum, double wavelength_nm) const;
 

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "render/atmosphere/probe.h"
+#include "render/atmosphere/rec709_tables.h"
 #include "shared_models.h"
 
 namespace skyig::atmosphere {
@@ -64,6 +65,41 @@ TEST(AtmosphereProbe, BadInputIsNamed) {
   request.altitude_m = 0.0;
   request.views = {{190.0, 0.0}};
   EXPECT_THROW(probe(model, request), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace skyig::atmosphere
+
+namespace skyig::atmosphere {
+namespace {
+
+TEST(AtmosphereRec709Tables, FoldedTablesGiveTheSpectralSkyExactly) {
+  // Phase functions are grey, so converting the tables to Rec.709 before the phase functions
+  // commutes with converting the radiance after: the same numbers to rounding.
+  const AtmosphereModel model = testing::cachedModel(testing::smallEarthConfig());
+  const Rec709Tables tables = combineToRec709(model);
+  const Medium& m = model.config().medium;
+  int checked = 0;
+  for (double altitude : {0.0, 3000.0, 100e3}) {
+    const glm::dvec3 camera = observerPosition(m, altitude);
+    for (double sun_zenith : {20.0, 89.0, 100.0}) {
+      const glm::dvec3 sun = directionFromAngles(sun_zenith * kDegree, 0.0);
+      for (double view_zenith : {0.0, 45.0, 85.0, 95.0, 110.0}) {
+        for (double azimuth : {0.0, 2.0}) {
+          const glm::dvec3 view = directionFromAngles(view_zenith * kDegree, azimuth);
+          const glm::dvec3 folded = skyRec709(model, tables, camera, view, sun);
+          const glm::dvec3 spectral = model.converter().toRec709(model.skyRadiance(camera, view, sun));
+          for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(folded[c], spectral[c], 1e-9 * (std::abs(spectral[c]) + 1e-12));
+          }
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(checked, 90);
+  // Two RGBA tables of the scattering size: at the default size 2 x 8 MB at half float.
+  EXPECT_EQ(tables.scattering.texels.size(), TableSizes::small().scatteringTexels());
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Compiles every atmosphere physics function as real GLSL 4.50 (glslangValidator), with
 // samplers where the C++ side has CPU tables: the GPU half of "written once".
 #include "atmosphere/rendering.glsl"
+#include "atmosphere/rendering_rec709.glsl"
 #include "atmosphere/multiple_scattering.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 0) uniform sampler2D transmittance_texture;
@@ -25,5 +26,6 @@ void main() {
   l += computeIndirectIrradianceTexel(atm, scattering_texture, single_mie_texture, scattering_texture, vec2(gl_GlobalInvocationID.xy), 2);
   float nu;
   l += computeMultipleScatteringTexel(atm, transmittance_texture, scattering_texture, vec3(gl_GlobalInvocationID), nu);
+  l += vec4(skyRec709(atm, scattering_texture, single_mie_texture, cam, vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0)), 0.0);
   imageStore(result, ivec2(gl_GlobalInvocationID.xy), l + r + m);
 }

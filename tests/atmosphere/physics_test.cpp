@@ -287,3 +287,37 @@ TEST(AtmosphereSunDisc, AttenuatedByTheAtmosphereAndHiddenByTheGround) {
 
 }  // namespace
 }  // namespace skyig::atmosphere
+
+namespace skyig::atmosphere {
+namespace {
+
+TEST(AtmospherePhysics, OzoneKeepsTheTwilightZenithBlue) {
+  // At twilight the zenith's light crosses the ozone layer on a long slant path; the Chappuis
+  // band (around 600 nm) then removes orange and red, which is why the zenith stays blue
+  // (Hulburt 1953). Without ozone the same sky is far less blue.
+  ModelConfig with_ozone = oneGroupConfig();
+  with_ozone.wavelengths_nm = {440.0, 500.0, 600.0, 680.0};
+  ModelConfig without_ozone = with_ozone;
+  without_ozone.medium.ozone_column_du = 0.0;
+  const AtmosphereModel a = cachedModel(with_ozone);
+  const AtmosphereModel b = cachedModel(without_ozone);
+  const glm::dvec3 camera = observerPosition(with_ozone.medium, 0.0);
+  auto blue_over_orange = [&](const AtmosphereModel& model, double sun_zenith_deg) {
+    const glm::dvec3 sun = directionFromAngles(sun_zenith_deg * kDegree, 0.0);
+    const Spectrum l = model.skyRadiance(camera, kUp, sun);
+    const Spectrum e = model.solarRadiance();
+    return (l[0] / e[0]) / (l[2] / e[2]);
+  };
+  const double twilight_with = blue_over_orange(a, 96.0);
+  const double twilight_without = blue_over_orange(b, 96.0);
+  const double noon_with = blue_over_orange(a, 30.0);
+  const double noon_without = blue_over_orange(b, 30.0);
+  std::printf("zenith 440/600 nm ratio relative to the sun: sun 30 deg %.2f (no ozone %.2f), "
+              "sun 96 deg %.2f (no ozone %.2f)\n",
+              noon_with, noon_without, twilight_with, twilight_without);
+  EXPECT_GT(twilight_with, 1.5 * twilight_without);
+  EXPECT_LT(noon_with, 1.15 * noon_without);  // in daylight ozone matters little
+}
+
+}  // namespace
+}  // namespace skyig::atmosphere

@@ -86,8 +86,8 @@ void writeTableCache(const std::filesystem::path& path, const ModelConfig& confi
   Fnv1a64 checksum;
   checksum.bytes(payload.data(), payload.size());
 
-  std::vector<unsigned char> header;
-  header.insert(header.end(), kMagic, kMagic + 8);
+  std::vector<unsigned char> header(kMagic, kMagic + 8);
+  header.reserve(kCacheHeaderBytes);
   put(header, kCacheFormatVersion);
   put(header, kPhysicsRevision);
   put(header, parameterHash(config));

@@ -1,4 +1,4 @@
-// Irradiance on a horizontal ground element E(r, mu_s) (Bruneton & Neyret 2008, eq. 15: the
+// Irradiance on a horizontal ground element E(r, mu_s) (Bruneton & Neyret 2008, section 3 "Multiple scattering": the
 // table E[L+] of the indirect light; the direct sun is evaluated at render time). The table
 // is linear in mu_s and in r.
 #ifndef SKYIG_ATMOSPHERE_IRRADIANCE_GLSL

@@ -2,7 +2,7 @@
 // 4.1): from the radiance of order n-1 (delta S) and the ground irradiance of order n-2
 // (delta E), the scattering density J of order n (eq. 7, the light scattered at a point
 // towards a direction), then the radiance of order n (eq. 7, J integrated along the ray with
-// T) and the ground irradiance of order n-1 (eq. 15). The ground is a sphere of constant
+// T) and the ground irradiance of order n-1 (section 3, E-bar). The ground is a sphere of constant
 // albedo here (section 3, "Notations": L-bar).
 #ifndef SKYIG_ATMOSPHERE_MULTIPLE_SCATTERING_GLSL
 #define SKYIG_ATMOSPHERE_MULTIPLE_SCATTERING_GLSL
@@ -171,7 +171,7 @@ vec4 computeMultipleScatteringTexel(IN(AtmosphereParameters) atm,
                                    mu_s, nu, ray_r_mu_intersects_ground);
 }
 
-// Irradiance of order n on a horizontal surface from the radiance of order n (eq. 15 with
+// Irradiance of order n on a horizontal surface from the radiance of order n (section 3, E-bar, with
 // the ground's cosine factor), integrated over the upper hemisphere.
 vec4 computeIndirectIrradiance(IN(AtmosphereParameters) atm,
                                IN(sampler3D) single_rayleigh_texture,

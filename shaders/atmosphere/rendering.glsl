@@ -1,4 +1,4 @@
-// Rendering from the precomputed tables (Bruneton & Neyret 2008, section 5 and eq. 16-18
+// Rendering from the precomputed tables (Bruneton & Neyret 2008, section 5
 // without light shafts): sky radiance along a view ray, radiance scattered between the viewer
 // and a point (aerial perspective), and sun and sky irradiance at a point. Positions are in
 // metres relative to the planet's centre; directions are unit vectors.
@@ -118,7 +118,7 @@ vec4 skyRadiance(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_textu
 }
 
 // Radiance scattered into the segment camera -> point (aerial perspective): the difference
-// of the table at the camera and, attenuated, at the point (Bruneton & Neyret 2008, eq. 13
+// of the table at the camera and, attenuated, at the point (Bruneton & Neyret 2008, section 3
 // rewriting, with x_s = x_0); `transmittance` is that of the segment.
 vec4 skyRadianceToPoint(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_texture,
                         IN(sampler3D) scattering_texture, IN(sampler3D) single_mie_texture,
@@ -178,7 +178,7 @@ vec4 sunAndSkyIrradiance(IN(AtmosphereParameters) atm, IN(sampler2D) transmittan
 }
 
 // Radiance leaving a Lambertian ground point towards the camera, attenuated and with the
-// light scattered in between (aerial perspective): R[L] + S[L] of eq. 16 for the ground.
+// light scattered in between (aerial perspective): R[L] + S[L] of the rendering equation (eq. 8) for the ground.
 vec4 groundRadiance(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_texture,
                     IN(sampler3D) scattering_texture, IN(sampler3D) single_mie_texture,
                     IN(sampler2D) irradiance_texture, IN(vec3) camera_position,

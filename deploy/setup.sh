@@ -9,6 +9,8 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   # GL: EGL headless (Mesa llvmpipe where there is no GPU) and GLFW windows
   libegl-dev libgl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev libglm-dev
+  # GLSL compiler: the tests compile the atmosphere's physics and passes as GLSL
+  glslang-tools
   # images, geodesy, plumbing
   libopenexr-dev python3-imath libpng-dev libgeographiclib-dev
   libtomlplusplus-dev libcli11-dev libspdlog-dev nlohmann-json3-dev libpcap-dev

@@ -1,0 +1,39 @@
+#pragma once
+// Sizes and contents of the precomputed tables of one group of four wavelengths (Bruneton &
+// Neyret 2008, section 4 and 6): transmittance T(r, mu) 2D, sky irradiance E(r, mu_s) 2D,
+// inscattered radiance S(r, mu, mu_s, nu) 4D stored in 3D, with the single Mie term apart.
+#include <cstddef>
+#include <cstdint>
+
+#include "shaders/atmosphere/cpu_texture.h"
+
+namespace skyig::atmosphere {
+
+struct TableSizes {
+  int transmittance_mu = 256;  // Bruneton 2017 (the paper: 64x256 T, 16x64 E, 32x128x32x8 S)
+  int transmittance_r = 64;
+  int irradiance_mu_s = 64;
+  int irradiance_r = 16;
+  int scattering_r = 32;
+  int scattering_mu = 128;  // even
+  int scattering_mu_s = 32;
+  int scattering_nu = 8;
+
+  // Small tables for tests (the physics tests need luminance at 16 wavelengths quickly).
+  static TableSizes small();
+  // Texels of each 3D scattering table, and GPU bytes of one group at RGBA16F.
+  std::size_t scatteringTexels() const;
+  std::size_t bytesAtHalfFloat() const;
+};
+
+// Throws std::invalid_argument naming the bad size.
+void validate(const TableSizes& sizes);
+
+struct GroupTables {
+  shader::cpu_texture::sampler2D transmittance;  // mu x r
+  shader::cpu_texture::sampler2D irradiance;     // mu_s x r, indirect (sky) light only
+  shader::cpu_texture::sampler3D scattering;     // (nu * mu_s) x mu x r: C*
+  shader::cpu_texture::sampler3D single_mie;     // same layout: C_M
+};
+
+}  // namespace skyig::atmosphere

@@ -1,0 +1,24 @@
+// GPU precomputation, step 3: single Rayleigh and Mie scattering into the delta tables, and
+// the accumulated tables initialised with them (C* = S_R[L0], C_M = S_M[L0]).
+#include "atmosphere/single_scattering.glsl"
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+uniform AtmosphereParameters atm;
+layout(binding = 0) uniform sampler2D transmittance_texture;
+layout(binding = 0, rgba32f) uniform writeonly image3D delta_rayleigh_out;
+layout(binding = 1, rgba32f) uniform writeonly image3D delta_mie_out;
+layout(binding = 2, rgba32f) uniform writeonly image3D scattering_out;
+layout(binding = 3, rgba32f) uniform writeonly image3D single_mie_out;
+void main() {
+  ivec3 texel = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(texel, imageSize(delta_rayleigh_out)))) {
+    return;
+  }
+  vec4 rayleigh;
+  vec4 mie;
+  computeSingleScatteringTexel(atm, transmittance_texture, vec3(texel) + vec3(0.5), rayleigh,
+                               mie);
+  imageStore(delta_rayleigh_out, texel, rayleigh);
+  imageStore(delta_mie_out, texel, mie);
+  imageStore(scattering_out, texel, rayleigh);
+  imageStore(single_mie_out, texel, mie);
+}

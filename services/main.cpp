@@ -7,6 +7,7 @@
 #include "services/commands/bench_command.h"
 #include "services/commands/ephemeris_command.h"
 #include "services/commands/host_command.h"
+#include "services/commands/probe_command.h"
 #include "services/commands/render_command.h"
 #include "services/commands/replay_command.h"
 #include "services/recording_source.h"
@@ -38,6 +39,7 @@ int main(int argc, char** argv) {
   registerServeCommand(app, exitCode);
   registerHostCommand(app, exitCode);
   registerRecordCommand(app, exitCode);
+  registerProbeCommand(app, exitCode);
   registerReplayCommand(app, exitCode);
 
   // Exit codes: 0 done; 2 bad flags, configuration, input value or output path; 3 the GPU

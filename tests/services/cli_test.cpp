@@ -3,9 +3,11 @@
 #include "render/image_io.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -136,4 +138,27 @@ TEST_F(Cli, VersionAndCaps) {
   EXPECT_NE(r.out.find("skyig 0."), std::string::npos);
   EXPECT_NE(r.out.find("GL renderer:"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("SocketCAN:"), std::string::npos) << r.out;
+}
+
+// `skyig probe` on the physical atmosphere, with the small tables the atmosphere tests share
+// through the build tree's cache: the clear-sky reference values of sky-model-facts.md.
+TEST_F(Cli, ProbeReportsTheClearAtmosphere) {
+  const std::string cache = std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache";
+  const Result r = run("probe --sun-zenith 30 --sun-azimuth 180 --view 0,0 --view 95,180 --irradiance --cache " + cache);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& zenith = j["views"][0];
+  EXPECT_NEAR(zenith["sky"]["luminance_cd_m2"].get<double>(), 1700.0, 0.1 * 1700.0);
+  EXPECT_NEAR(zenith["transmittance"]["550"].get<double>(), 0.8677, 0.005);
+  EXPECT_NEAR(zenith["transmittance"]["440"].get<double>(), 0.7624, 0.005);
+  EXPECT_TRUE(zenith["ground"].is_null());
+  EXPECT_FALSE(j["views"][1]["ground"].is_null());  // 95 deg from the zenith: the ground
+  EXPECT_NEAR(j["irradiance"]["direct_sun_lux"].get<double>(), 115000.0 * std::cos(30.0 * 3.14159265 / 180.0), 0.1 * 100000.0);
+}
+
+TEST_F(Cli, ProbeNeedsASun) {
+  const Result r = run("probe --view 0,0");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("--sun-zenith and --sun-azimuth"), std::string::npos) << r.err;
+  EXPECT_EQ(run("probe --sun-zenith 30 --sun-azimuth 0 --view 0").exitCode, 2);
 }

@@ -1,0 +1,129 @@
+#include "services/commands/probe_command.h"
+
+#include "ephemeris/ephemeris.h"
+#include "render/atmosphere/conditions.h"
+#include "render/atmosphere/probe.h"
+#include "render/atmosphere/table_cache.h"
+#include "services/node_config.h"
+
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <numbers>
+
+namespace skyig::services {
+
+namespace {
+
+struct ProbeCli {
+  double altitudeM = 0.0;
+  std::optional<double> sunZenith, sunAzimuth;
+  std::optional<double> lat, lon;
+  std::string utc;
+  std::vector<std::string> views;
+  std::string viewsFile;
+  std::optional<double> visibilityKm, humidityPct, groundAlbedo;
+  bool irradiance = false;
+  std::string tables = "small";
+  std::string cacheDir;
+  int orders = 4;
+};
+
+atmosphere::ProbeView parseView(const std::string& text, const std::string& where) {
+  double z = 0.0, a = 0.0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf%c", &z, &a, &extra) != 2 || !(z >= 0.0 && z <= 180.0) || !std::isfinite(a))
+    throw ConfigError(where + ": expected ZENITH,AZIMUTH in degrees (zenith 0..180), got \"" + text + "\"");
+  return {z, a};
+}
+
+std::filesystem::path defaultCacheDir() {
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "skyig";
+  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "skyig";
+  return std::filesystem::temp_directory_path() / "skyig-cache";
+}
+
+int run(const ProbeCli& cli) {
+  atmosphere::ProbeRequest request;
+  request.altitude_m = cli.altitudeM;
+  request.irradiance = cli.irradiance;
+  if (cli.sunZenith || cli.sunAzimuth) {
+    if (!cli.sunZenith || !cli.sunAzimuth) throw ConfigError("--sun-zenith and --sun-azimuth: give both, or a place and time");
+    request.sun_zenith_deg = *cli.sunZenith;
+    request.sun_azimuth_deg = *cli.sunAzimuth;
+  } else {
+    if (!cli.lat || !cli.lon || cli.utc.empty())
+      throw ConfigError("the sun: give --sun-zenith and --sun-azimuth, or --lat, --lon and --utc");
+    const auto utc = ephemeris::parseIso8601Utc(cli.utc);
+    if (!utc) throw ConfigError("--utc: expected a UTC time like 2026-06-21T19:30:00Z, got \"" + cli.utc + "\"");
+    ephemeris::Observer o;
+    constexpr double kDeg = std::numbers::pi / 180.0;
+    o.latitudeRad = *cli.lat * kDeg;
+    o.longitudeRad = *cli.lon * kDeg;
+    o.heightM = std::min(cli.altitudeM, 1e5);
+    const auto e = ephemeris::computeEphemeris(*utc, o);
+    request.sun_zenith_deg = 90.0 - e.sun.altitudeRad / kDeg;
+    request.sun_azimuth_deg = e.sun.azimuthRad / kDeg;
+  }
+  for (const auto& v : cli.views) request.views.push_back(parseView(v, "--view"));
+  if (!cli.viewsFile.empty()) {
+    std::ifstream in(cli.viewsFile);
+    if (!in) throw ConfigError(cli.viewsFile + ": cannot open the views file");
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+      if (line.empty() || line[0] == '#') continue;
+      request.views.push_back(parseView(line, cli.viewsFile + ":" + std::to_string(n)));
+    }
+  }
+  if (request.views.empty()) request.views.push_back({0.0, 0.0});  // the zenith
+
+  atmosphere::ModelConfig config;
+  if (cli.tables == "small") config.sizes = atmosphere::TableSizes::small();
+  else if (cli.tables != "default") throw ConfigError("--tables: expected small or default, got \"" + cli.tables + "\"");
+  config.options.scattering_orders = cli.orders;
+  atmosphere::Conditions conditions;
+  conditions.visibility_km = cli.visibilityKm;
+  if (cli.humidityPct) conditions.relative_humidity = *cli.humidityPct / 100.0;
+  conditions.ground_albedo = cli.groundAlbedo;
+  config.medium = atmosphere::applyConditions(config.medium, conditions);
+
+  atmosphere::CacheResult cache;
+  const auto start = std::chrono::steady_clock::now();
+  const atmosphere::AtmosphereModel model =
+      atmosphere::loadOrPrecompute(config, cli.cacheDir.empty() ? defaultCacheDir() : std::filesystem::path(cli.cacheDir), &cache);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (cache.outcome != atmosphere::CacheOutcome::kLoaded)
+    std::fprintf(stderr, "probe: precomputed the %s tables in %.1f s (%s); cached in %s\n", cli.tables.c_str(), seconds,
+                 cache.reason.c_str(), cache.path.string().c_str());
+  std::printf("%s\n", atmosphere::probe(model, request).dump(2).c_str());
+  return 0;
+}
+
+}  // namespace
+
+void registerProbeCommand(CLI::App& app, int& exitCode) {
+  auto cli = std::make_shared<ProbeCli>();
+  CLI::App* c = app.add_subcommand("probe", "Sky, sun and ground radiance of the physical atmosphere in view directions, as JSON");
+  c->add_option("--alt", cli->altitudeM, "Observer altitude above the ground, m (0)")->check(CLI::Range(0.0, 1e6));
+  c->add_option("--sun-zenith", cli->sunZenith, "Sun zenith angle, degrees")->check(CLI::Range(0.0, 180.0));
+  c->add_option("--sun-azimuth", cli->sunAzimuth, "Sun azimuth, degrees from north through east")->check(CLI::Range(-360.0, 360.0));
+  c->add_option("--lat", cli->lat, "Or the sun of a place and time: latitude, degrees")->check(CLI::Range(-90.0, 90.0));
+  c->add_option("--lon", cli->lon, "Longitude, degrees east")->check(CLI::Range(-180.0, 360.0));
+  c->add_option("--utc", cli->utc, "UTC date and time");
+  c->add_option("--view", cli->views, "A view direction ZENITH,AZIMUTH in degrees (repeatable; default: the zenith)");
+  c->add_option("--views", cli->viewsFile, "A file of view directions, one ZENITH,AZIMUTH a line")->check(CLI::ExistingFile);
+  c->add_option("--visibility", cli->visibilityKm, "Visibility, km (Koschmieder; default: the clear medium's)")->check(CLI::Range(0.05, 280.0));
+  c->add_option("--humidity", cli->humidityPct, "Relative humidity, percent")->check(CLI::Range(0.0, 99.0));
+  c->add_option("--ground-albedo", cli->groundAlbedo, "Ground albedo, 0..1")->check(CLI::Range(0.0, 1.0));
+  c->add_flag("--irradiance", cli->irradiance, "Add the direct-sun and sky illuminance on a horizontal surface");
+  c->add_option("--tables", cli->tables, "Table size: small (seconds) or default (Bruneton's; minutes on a CPU)")
+      ->check(CLI::IsMember({"small", "default"}));
+  c->add_option("--orders", cli->orders, "Scattering orders (4)")->check(CLI::Range(1, 10));
+  c->add_option("--cache", cli->cacheDir, "Table cache directory (default: $XDG_CACHE_HOME/skyig or ~/.cache/skyig)");
+  c->callback([cli, &exitCode] { exitCode = run(*cli); });
+}
+
+}  // namespace skyig::services

@@ -184,7 +184,6 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   sky.publish(render::buildSkyState(opt.config.observer, opt.config.sky));
   threads.emplace_back([&] { workerLoop(opt, stats, host, sky, stop); });
 
-  int exitCode = 0;
   try {
     const auto baseChannels = opt.config.channelsOf(opt.config.nodeName);
     if (baseChannels.empty()) throw ConfigError("node \"" + opt.config.nodeName + "\" has no channels in the configuration");
@@ -252,7 +251,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   for (auto& t : threads) t.join();
   if (ownCanFd) ::close(canFd);
   if (!opt.statsPath.empty()) writeStatsFile(opt.statsPath, stats);
-  return exitCode;
+  return 0;
 }
 
 }  // namespace skyig::services

@@ -196,6 +196,7 @@ ReplayResult replay(const ReplayOptions& o) {
     render::checkWritable((std::filesystem::path(o.outDir) / "probe").string());
   }
 
+  if (!o.dumpStatePath.empty()) render::checkWritable(o.dumpStatePath);
   RecordingSource source(o.recording, o.skipBad);
   // The last record's time, for the progress bar: a first pass over the file (cheap).
   std::int64_t lastNs = 0, firstNs = 0;

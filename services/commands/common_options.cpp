@@ -2,6 +2,8 @@
 
 #include "ephemeris/time.h"
 
+#include <cstdio>
+
 namespace skyig::services {
 
 void SkyOptions::add(CLI::App& c) {
@@ -52,6 +54,16 @@ std::optional<render::SunOverride> SkyOptions::sunOverride() const {
   if (!sunAzimuth || !sunElevation)
     throw ConfigError("--sun-azimuth and --sun-elevation: give both or neither");
   return render::SunOverride{*sunAzimuth, *sunElevation};
+}
+
+void parseSize(const std::string& text, int& width, int& height) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 16 ||
+      h < 16 || w > 16384 || h > 16384)
+    throw ConfigError("--size: expected WIDTHxHEIGHT with each in 16..16384, got \"" + text + "\"");
+  width = w;
+  height = h;
 }
 
 }  // namespace skyig::services

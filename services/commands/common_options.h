@@ -23,4 +23,7 @@ struct SkyOptions {
   std::optional<render::SunOverride> sunOverride() const;
 };
 
+// "WIDTHxHEIGHT" with each in 16..16384 (--size); throws ConfigError naming the flag.
+void parseSize(const std::string& text, int& width, int& height);
+
 }  // namespace skyig::services

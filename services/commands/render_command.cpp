@@ -36,16 +36,6 @@ std::string perChannelPath(const std::string& path, const std::string& channel) 
   return (p.parent_path() / (p.stem().string() + "_" + channel + p.extension().string())).string();
 }
 
-void parseSize(const std::string& text, render::ChannelConfig& channel) {
-  int w = 0, h = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 16 ||
-      h < 16 || w > 16384 || h > 16384)
-    throw ConfigError("--size: expected WIDTHxHEIGHT with each in 16..16384, got \"" + text + "\"");
-  channel.width = w;
-  channel.height = h;
-}
-
 std::string fixed(double v, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", digits, v);
@@ -92,7 +82,7 @@ int run(const RenderOptions& opt) {
     channels.push_back(config.channels.front());
   }
   if (!opt.size.empty())
-    for (auto& c : channels) parseSize(opt.size, c);
+    for (auto& c : channels) parseSize(opt.size, c.width, c.height);
 
   // Every output is checked before any work, so a bad path fails fast and writes nothing.
   const bool perChannel = opt.allChannels && channels.size() > 1;

@@ -1,6 +1,7 @@
 #include "services/commands/replay_command.h"
 
 #include "services/can_receiver.h"
+#include "services/commands/common_options.h"
 #include "services/recorder.h"
 #include "services/replay.h"
 
@@ -106,13 +107,8 @@ struct ReplayCli {
 int runReplay(ReplayCli& cli) {
   ReplayOptions& o = cli.options;
   o.config = cli.configPath.empty() ? NodeConfig{} : loadNodeConfig(cli.configPath);
-  if (!cli.size.empty()) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(cli.size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 16 || h < 16 || w > 16384 || h > 16384)
-      throw ConfigError("--size: expected WIDTHxHEIGHT with each in 16..16384, got \"" + cli.size + "\"");
-    for (auto& c : o.config.channels) c.width = w, c.height = h;
-  }
+  if (!cli.size.empty())
+    for (auto& c : o.config.channels) parseSize(cli.size, c.width, c.height);
   if (cli.exr || cli.png) o.writeExr = cli.exr, o.writePng = cli.png;
   if (!cli.sendTo.empty()) {
     try {

@@ -1,5 +1,6 @@
 #include "services/commands/serve_command.h"
 
+#include "render/image_io.h"
 #include "services/node.h"
 
 #include <spdlog/spdlog.h>
@@ -45,6 +46,9 @@ int run(const ServeOptions& o) {
   opt.dumpStatePath = o.dumpState;
   opt.statsPath = o.statsJson;
   opt.recordPath = o.record;
+  // Output files are checked before anything starts: a bad path is a usage error (exit 2).
+  for (const std::string* path : {&o.dumpState, &o.statsJson, &o.record})
+    if (!path->empty()) render::checkWritable(*path);
   const std::string can = o.canInterface.empty() ? h.canInterface : o.canInterface;
   if (!can.empty()) opt.canInterface = can;
 

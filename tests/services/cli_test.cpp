@@ -162,3 +162,12 @@ TEST_F(Cli, ProbeNeedsASun) {
   EXPECT_NE(r.err.find("--sun-zenith and --sun-azimuth"), std::string::npos) << r.err;
   EXPECT_EQ(run("probe --sun-zenith 30 --sun-azimuth 0 --view 0").exitCode, 2);
 }
+
+TEST_F(Cli, ServeRejectsAnUnwritableDumpBeforeListening) {
+  const Result r = run("serve --headless --frames 1 --listen 127.0.0.1:0 --dump-state /nonexistent-dir/states.jsonl");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("/nonexistent-dir"), std::string::npos) << r.err;
+  const Result bad = run("serve --headless --frames 1 --listen 127.0.0.1:99999");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("port must be 0..65535"), std::string::npos) << bad.err;
+}

@@ -9,6 +9,8 @@
 #include "services/host_path.h"
 #include "services/node.h"
 
+#include "tests/services/test_support.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -23,16 +25,13 @@
 #include <thread>
 
 using namespace skyig::services;
+using namespace skyig::services::testing;
 namespace cigi = skyig::protocol::cigi;
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
 namespace {
 
-std::uint16_t freePort() {
-  UdpSocket s({"127.0.0.1", 0});
-  return s.localEndpoint().port;
-}
 
 // A headless node running on its own thread, stopped and joined by stop().
 class NodeRun {
@@ -71,13 +70,6 @@ NodeOptions smallNode(std::uint16_t port, const fs::path& dump) {
   return o;
 }
 
-std::vector<nlohmann::json> readDump(const fs::path& p) {
-  std::vector<nlohmann::json> lines;
-  std::ifstream in(p);
-  std::string line;
-  while (std::getline(in, line)) lines.push_back(nlohmann::json::parse(line));
-  return lines;
-}
 
 long rssKb() {
   std::ifstream in("/proc/self/status");
@@ -96,9 +88,7 @@ long rssKb() {
 class NodeIntegration : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("skyig_node_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = freshTestDirectory("skyig_node_");
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -141,7 +131,7 @@ class NodeIntegration : public ::testing::Test {
 }  // namespace
 
 TEST_F(NodeIntegration, HostToHeadlessNodeDumpsTheFlownPath) {
-  const std::uint16_t port = freePort();
+  const std::uint16_t port = freeLoopbackPort();
   NodeRun node(smallNode(port, dir_ / "dump.jsonl"));
   std::this_thread::sleep_for(300ms);
   fly(port, 2.0);
@@ -149,17 +139,17 @@ TEST_F(NodeIntegration, HostToHeadlessNodeDumpsTheFlownPath) {
   node.stop();
   ASSERT_TRUE(node.error.empty()) << node.error;
   int withHost = 0;
-  expectDumpFollowsPath(readDump(dir_ / "dump.jsonl"), withHost);
+  expectDumpFollowsPath(readStateDump(dir_ / "dump.jsonl"), withHost);
   EXPECT_GT(withHost, 60);
   EXPECT_EQ(node.stats.malformedDatagrams.load(), 0u);
   EXPECT_EQ(node.stats.datagrams.load(), 61u);  // 2 s at 30 Hz, frames 0..60
   // The host's date and time reached the sky: the dump's clock runs from 19:00:00.
-  const auto last = readDump(dir_ / "dump.jsonl").back();
+  const auto last = readStateDump(dir_ / "dump.jsonl").back();
   EXPECT_EQ(last["used"]["utc"].get<std::string>().substr(0, 17), "2026-06-21T19:00:");
 }
 
 TEST_F(NodeIntegration, LossAndReorderingDoNotBreakIt) {
-  const std::uint16_t port = freePort();
+  const std::uint16_t port = freeLoopbackPort();
   NodeRun node(smallNode(port, dir_ / "dump.jsonl"));
   std::this_thread::sleep_for(300ms);
   fly(port, 2.0, "--drop-every 10 --swap-pairs");
@@ -167,14 +157,14 @@ TEST_F(NodeIntegration, LossAndReorderingDoNotBreakIt) {
   node.stop();
   ASSERT_TRUE(node.error.empty()) << node.error;
   int withHost = 0;
-  expectDumpFollowsPath(readDump(dir_ / "dump.jsonl"), withHost);
+  expectDumpFollowsPath(readStateDump(dir_ / "dump.jsonl"), withHost);
   EXPECT_GT(withHost, 60);
   EXPECT_GT(node.stats.staleMessages.load(), 10u);  // the late half of each swapped pair
 }
 
 TEST_F(NodeIntegration, StartOfFrameGoesBackToTheHost) {
   UdpSocket host({"127.0.0.1", 0});
-  const std::uint16_t port = freePort();
+  const std::uint16_t port = freeLoopbackPort();
   NodeOptions o = smallNode(port, dir_ / "dump.jsonl");
   o.replyPort = host.localEndpoint().port;
   NodeRun node(o);
@@ -208,7 +198,7 @@ TEST_F(NodeIntegration, StartOfFrameGoesBackToTheHost) {
 // 100 000 malformed datagrams at full speed: the node keeps rendering, counts them, its memory
 // stays flat and the last good state is kept.
 TEST_F(NodeIntegration, SurvivesOneHundredThousandMalformedDatagrams) {
-  const std::uint16_t port = freePort();
+  const std::uint16_t port = freeLoopbackPort();
   NodeRun node(smallNode(port, dir_ / "dump.jsonl"));
   std::this_thread::sleep_for(300ms);
   UdpSocket attacker({"127.0.0.1", 0});
@@ -253,7 +243,7 @@ TEST_F(NodeIntegration, SurvivesOneHundredThousandMalformedDatagrams) {
   EXPECT_GT(node.stats.malformedDatagrams.load(), kCount * 95 / 100);
   EXPECT_GT(node.stats.frames.load(), framesBefore + 10);  // it kept rendering
   EXPECT_LT(rssAfter - rssBefore, 8 * 1024) << "RSS grew from " << rssBefore << " kB to " << rssAfter << " kB";
-  const auto last = readDump(dir_ / "dump.jsonl").back();
+  const auto last = readStateDump(dir_ / "dump.jsonl").back();
   EXPECT_NEAR(last["host"]["lat"].get<double>(), 51.4775, 1e-9);  // the last good state
   EXPECT_NEAR(last["used"]["yaw"].get<double>(), 270.0, 1e-9);
 }
@@ -261,7 +251,7 @@ TEST_F(NodeIntegration, SurvivesOneHundredThousandMalformedDatagrams) {
 TEST_F(NodeIntegration, CanAerospaceThroughARealTransport) {
   int fds[2];
   ASSERT_EQ(::socketpair(AF_UNIX, SOCK_SEQPACKET, 0, fds), 0);
-  const std::uint16_t port = freePort();
+  const std::uint16_t port = freeLoopbackPort();
   NodeOptions o = smallNode(port, dir_ / "dump.jsonl");
   o.canFd = fds[0];
   NodeRun node(o);
@@ -286,7 +276,7 @@ TEST_F(NodeIntegration, CanAerospaceThroughARealTransport) {
   ::close(fds[0]);
   ::close(fds[1]);
   ASSERT_TRUE(node.error.empty()) << node.error;
-  const auto last = readDump(dir_ / "dump.jsonl").back();
+  const auto last = readStateDump(dir_ / "dump.jsonl").back();
   EXPECT_NEAR(last["used"]["lat"].get<double>(), 47.2603, 1e-9);  // DOUBLEH+DOUBLEL pairs: full precision
   EXPECT_NEAR(last["used"]["lon"].get<double>(), 11.3439, 1e-9);
   EXPECT_NEAR(last["used"]["alt"].get<double>(), 700.0, 1e-3);

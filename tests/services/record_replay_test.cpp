@@ -7,6 +7,8 @@
 #include "services/node.h"
 #include "services/recorder.h"
 
+#include "tests/services/test_support.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -21,6 +23,7 @@
 #include <thread>
 
 using namespace skyig::services;
+using namespace skyig::services::testing;
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
@@ -38,22 +41,13 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
-std::vector<nlohmann::json> readDump(const fs::path& p) {
-  std::vector<nlohmann::json> lines;
-  std::ifstream in(p);
-  std::string line;
-  while (std::getline(in, line)) lines.push_back(nlohmann::json::parse(line));
-  return lines;
-}
 
 const std::string kRecording = std::string(SKYIG_SOURCE_DIR) + "/tests/data/circuit_timelapse.pcap";
 
 class RecordReplay : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("skyig_rr_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = freshTestDirectory("skyig_rr_");
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -74,17 +68,13 @@ class RecordReplay : public ::testing::Test {
   fs::path dir_;
 };
 
-std::uint16_t freePort() {
-  UdpSocket s({"127.0.0.1", 0});
-  return s.localEndpoint().port;
-}
 
 }  // namespace
 
 // serve --record during a live session, then replay the recording: every host frame both
 // dumps show carries the same host values.
 TEST_F(RecordReplay, ReplayGivesTheLiveRunsHostStates) {
-  const std::uint16_t port = freePort();
+  const std::uint16_t port = freeLoopbackPort();
   NodeOptions o;
   o.config.channels.front().width = 32;
   o.config.channels.front().height = 24;
@@ -106,9 +96,9 @@ TEST_F(RecordReplay, ReplayGivesTheLiveRunsHostStates) {
   const CommandResult r = skyig("replay " + (dir_ / "live.pcap").string() + " --quiet --size 32x24 --dump-state " + (dir_ / "replay.jsonl").string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   std::map<long, nlohmann::json> live, replayed;
-  for (const auto& l : readDump(dir_ / "live.jsonl"))
+  for (const auto& l : readStateDump(dir_ / "live.jsonl"))
     if (!l["host_frame"].is_null()) live[l["host_frame"].get<long>()] = l["host"];
-  for (const auto& l : readDump(dir_ / "replay.jsonl"))
+  for (const auto& l : readStateDump(dir_ / "replay.jsonl"))
     if (!l["host_frame"].is_null()) replayed[l["host_frame"].get<long>()] = l["host"];
   int compared = 0;
   for (const auto& [frame, hostValues] : replayed) {
@@ -177,7 +167,7 @@ TEST_F(RecordReplay, CandumpLogReplaysThroughTheCanAerospaceDecoder) {
                                                              static_cast<std::streamsize>(sink.data.size()));
   const CommandResult r = skyig("replay " + (dir_ / "flight.log").string() + " --quiet --size 32x24 --dump-state " + (dir_ / "can.jsonl").string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  const auto last = readDump(dir_ / "can.jsonl").back();
+  const auto last = readStateDump(dir_ / "can.jsonl").back();
   EXPECT_NEAR(last["used"]["lat"].get<double>(), -33.9461, 1e-9);
   EXPECT_NEAR(last["used"]["lon"].get<double>(), 151.1772, 1e-9);
   EXPECT_NEAR(last["used"]["yaw"].get<double>(), 160.0, 1e-4);
@@ -228,7 +218,7 @@ TEST_F(RecordReplay, UnparseableCandumpLineAndNotARecording) {
 // A full disk stops the recording with an error; the node keeps rendering.
 TEST_F(RecordReplay, FullDiskStopsRecordingNotTheNode) {
   if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
-  const std::uint16_t port = freePort();
+  const std::uint16_t port = freeLoopbackPort();
   NodeOptions o;
   o.config.channels.front().width = 16;
   o.config.channels.front().height = 16;

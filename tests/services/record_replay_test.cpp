@@ -14,6 +14,7 @@
 
 #include <sys/wait.h>
 
+#include <array>
 #include <cstdlib>
 #include <functional>
 #include <filesystem>
@@ -251,4 +252,21 @@ TEST_F(RecordReplay, TcpdumpReadsWhatSkyigRecorded) {
   const std::string cmd = "tcpdump -nr " + kRecording + " 2>/dev/null | grep -c 'UDP, length 152' > " + (dir_ / "n.txt").string();
   ASSERT_EQ(std::system(cmd.c_str()), 0);
   EXPECT_EQ(std::stoi(slurp(dir_ / "n.txt")), 801);
+}
+
+// --send re-transmits the recording's datagrams, unchanged, to a live IG instead of rendering.
+TEST_F(RecordReplay, SendRetransmitsTheRecording) {
+  UdpSocket ig({"127.0.0.1", 0});
+  const std::string to = "127.0.0.1:" + std::to_string(ig.localEndpoint().port);
+  std::thread replayer([&] { skyig("replay " + kRecording + " --quiet --send " + to); });
+  std::array<std::uint8_t, 2048> buffer{};
+  sockaddr_in from{};
+  std::size_t received = 0, bytes = 0;
+  while (const std::size_t n = ig.receive(buffer, from, 2000ms)) {
+    ++received;
+    bytes += n;
+  }
+  replayer.join();
+  EXPECT_EQ(received, 801u);
+  EXPECT_EQ(bytes, 801u * 152u);
 }

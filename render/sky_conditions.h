@@ -1,14 +1,19 @@
 #pragma once
 // What the sky depends on besides the sun: the model and the state of the air and ground.
+#include <memory>
 #include <string>
 #include <string_view>
 
+namespace skyig::atmosphere {
+class AtmosphereModel;
+}
+
 namespace skyig::render {
 
-enum class SkyModel { Preetham, Cie };
+enum class SkyModel { Preetham, Cie, Physical };
 
 std::string_view toString(SkyModel model);
-// "preetham" or "cie"; false for anything else.
+// "preetham", "cie" or "physical"; false for anything else.
 bool parseSkyModel(std::string_view text, SkyModel& model);
 
 struct SkyConditions {
@@ -17,6 +22,9 @@ struct SkyConditions {
   double turbidity = 2.5;       // Preetham's T, [1.7, 10]
   double groundAlbedo = 0.2;    // Lambertian, [0, 1]
   double sunDistanceAu = 1.0;   // scales the solar illuminance by 1/d^2
+  // SkyModel::Physical: the precomputed atmosphere (Bruneton & Neyret 2008), loaded by the
+  // caller (services/atmosphere_loader.h) and shared, immutable, by every state.
+  std::shared_ptr<const atmosphere::AtmosphereModel> atmosphere;
 };
 
 }  // namespace skyig::render

@@ -72,6 +72,13 @@ void SkyRenderer::drawSkyPass(const SkyState& state, const ChannelConfig& channe
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   hdr_->bindForDrawing();
+  if (state.conditions.model == SkyModel::Physical) {
+    if (!physical_) physical_ = std::make_unique<PhysicalSkyPass>();
+    physical_->use(*state.conditions.atmosphere);
+    physical_->draw(physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
+                    enuDirection(state.sunAzimuth, state.sunAltitude));
+    return;
+  }
   skyProgram_.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

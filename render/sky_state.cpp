@@ -1,6 +1,7 @@
 #include "render/sky_state.h"
 
 #include "ephemeris/ephemeris.h"
+#include "render/atmosphere/model.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,6 +42,24 @@ void validate(const ObserverState& o, const SkyConditions& c) {
   require(c.cieType >= 1 && c.cieType <= 15, "CIE sky type " + std::to_string(c.cieType) + " is outside 1..15");
 }
 
+// The physical sky's mean luminance over the upper hemisphere (midpoint rule in cos theta and
+// azimuth, 12 x 24: the adaptation level varies slowly, and this runs per state on the CPU).
+double physicalMeanSkyLuminance(const atmosphere::AtmosphereModel& model, double heightM, const glm::dvec3& sun) {
+  constexpr int kMu = 12, kPhi = 24;
+  const glm::dvec3 camera(0.0, 0.0, model.parameters(0).bottom_radius + std::max(heightM, 1.0));
+  double sum = 0.0;
+  for (int i = 0; i < kMu; ++i) {
+    const double mu = (i + 0.5) / kMu;
+    const double sinTheta = std::sqrt(1.0 - mu * mu);
+    for (int j = 0; j < kPhi; ++j) {
+      const double phi = 2.0 * std::numbers::pi * (j + 0.5) / kPhi;
+      const glm::dvec3 view(sinTheta * std::sin(phi), sinTheta * std::cos(phi), mu);
+      sum += model.converter().luminance(model.skyRadiance(camera, view, sun));
+    }
+  }
+  return sum / (kMu * kPhi);
+}
+
 }  // namespace
 
 SkyState buildSkyState(const ObserverState& observer, const SkyConditions& conditions,
@@ -66,6 +85,12 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
     s.sunAltitude = s.ephemeris->sun.altitudeRad;
     s.sunApparentAltitude = s.ephemeris->sun.altitudeRefractedRad;
     s.conditions.sunDistanceAu = s.ephemeris->sun.distanceKm / 149597870.7;
+  }
+  if (s.conditions.model == SkyModel::Physical) {
+    require(s.conditions.atmosphere != nullptr, "the physical sky model needs its precomputed atmosphere");
+    s.adaptationLuminance = physicalMeanSkyLuminance(*s.conditions.atmosphere, observer.heightM,
+                                                     enuDirection(s.sunAzimuth, s.sunAltitude));
+    return s;
   }
   s.sky = makeAnalyticSky(s.conditions, s.sunAzimuth, s.sunAltitude, s.sunApparentAltitude);
   // The eye adapts to the sky it sees: the solid-angle mean luminance of the upper hemisphere.

@@ -31,11 +31,6 @@ void CigiReceiver::run(UdpSocket& socket, const std::atomic<bool>& stop) {
   }
 }
 
-std::optional<sockaddr_in> CigiReceiver::lastSender() const {
-  std::lock_guard lock(senderMutex_);
-  return lastSender_;
-}
-
 void CigiReceiver::handle(std::span<const std::uint8_t> datagram, const sockaddr_in& from, Clock::time_point arrival) {
   stats_.datagrams.fetch_add(1, std::memory_order_relaxed);
   stats_.bytes.fetch_add(datagram.size(), std::memory_order_relaxed);
@@ -65,11 +60,8 @@ void CigiReceiver::handle(std::span<const std::uint8_t> datagram, const sockaddr
   }
   const HostState& s = tracker_.state();
   if (s.ownshipValid && s.ownshipTime == arrival) predictor_.addSample(s.ownship, arrival, s.rates);
-  {
-    std::lock_guard lock(senderMutex_);
-    lastSender_ = from;
-  }
-  out_.publish(HostSnapshot{s, predictor_, tracker_, Clock::now()});
+  // The sender travels with the state, so a frame answers the host whose state it shows.
+  out_.publish(HostSnapshot{s, predictor_, tracker_, from, Clock::now()});
   stats_.arrivalToVisible.add(std::chrono::duration<double, std::micro>(Clock::now() - arrival).count());
 }
 

@@ -30,7 +30,6 @@ class CigiReceiver {
   // Handles one datagram: the loop's body, and what replay feeds with recorded datagrams
   // and recorded arrival times.
   void handle(std::span<const std::uint8_t> datagram, const sockaddr_in& from, Clock::time_point arrival);
-  std::optional<sockaddr_in> lastSender() const;
   void setRecorder(DatagramRecorder* recorder) { recorder_ = recorder; }
 
  private:
@@ -40,8 +39,6 @@ class CigiReceiver {
   CigiStateTracker tracker_;
   OwnshipPredictor predictor_;
   protocol::cigi::DecodedMessage decoded_;
-  mutable std::mutex senderMutex_;
-  std::optional<sockaddr_in> lastSender_;
   Clock::time_point lastWarning_{};
   std::uint64_t suppressedWarnings_ = 0;
 };

@@ -5,6 +5,8 @@
 #include "services/host_state.h"
 #include "services/ownship_predictor.h"
 
+#include <netinet/in.h>
+
 #include <optional>
 
 namespace skyig::services {
@@ -13,6 +15,7 @@ struct HostSnapshot {
   HostState state;
   OwnshipPredictor predictor;
   std::optional<CigiStateTracker> cigi;  // the CIGI clock, when the host speaks CIGI
+  std::optional<sockaddr_in> sender;     // where the last host message came from (UDP)
   Clock::time_point published{};
 
   // UTC at a local instant: CIGI's refined clock, else the last full time plus elapsed time.

@@ -224,8 +224,8 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
       // Start of Frame: to --reply-to, else back to the host's address on the reply port.
       std::optional<sockaddr_in> to;
       if (opt.replyTo) to = toSockaddr(*opt.replyTo);
-      else if (const auto sender = cigi.lastSender()) {
-        to = *sender;
+      else if (snapshot && snapshot->sender) {
+        to = *snapshot->sender;
         to->sin_port = htons(opt.replyPort);
       }
       if (to) {

@@ -99,13 +99,18 @@ const toml::table* subTable(TableReader& parent, const std::string& key) {
   return n->as_table();
 }
 
-void readSky(TableReader& r, render::SkyConditions& sky) {
-  const std::string model = r.string("model", std::string(render::toString(sky.model)), "\"preetham\" or \"cie\"");
-  if (!render::parseSkyModel(model, sky.model))
-    r.fail(r.find("model"), "model", "expected \"preetham\" or \"cie\", got \"" + model + "\"");
+constexpr const char* kModels = "\"preetham\", \"cie\" or \"physical\"";
+
+void readSky(TableReader& r, render::SkyConditions& sky, AtmosphereSettings& atmosphere) {
+  const std::string model = r.string("model", std::string(render::toString(sky.model)), kModels);
+  if (!render::parseSkyModel(model, sky.model)) r.fail(r.find("model"), "model", "expected " + std::string(kModels) + ", got \"" + model + "\"");
   sky.cieType = r.integer("cie_type", sky.cieType, 1, 15);
   sky.turbidity = r.number("turbidity", sky.turbidity, 1.7, 10.0);
   sky.groundAlbedo = r.number("ground_albedo", sky.groundAlbedo, 0.0, 1.0);
+  atmosphere.tables = r.string("atmosphere_tables", atmosphere.tables, "\"small\" or \"default\"");
+  if (atmosphere.tables != "small" && atmosphere.tables != "default")
+    r.fail(r.find("atmosphere_tables"), "atmosphere_tables", "expected \"small\" or \"default\", got \"" + atmosphere.tables + "\"");
+  atmosphere.cacheDir = r.string("atmosphere_cache", atmosphere.cacheDir);
   r.rejectUnknownKeys();
 }
 
@@ -201,7 +206,7 @@ NodeConfig parseNodeConfig(const std::string& text, const std::string& sourceNam
   }
   if (const toml::table* t = subTable(r, "sky")) {
     TableReader s(*t, "sky.", sourceName);
-    readSky(s, config.sky);
+    readSky(s, config.sky, config.atmosphere);
   }
   if (const toml::table* t = subTable(r, "observer")) {
     TableReader o(*t, "observer.", sourceName);

@@ -5,6 +5,7 @@
 #include "protocol/canaerospace/identifiers.h"
 #include "render/channel.h"
 #include "render/sky_conditions.h"
+#include "render/atmosphere/conditions.h"
 #include "render/sky_state.h"
 
 #include <stdexcept>
@@ -24,6 +25,12 @@ struct HostLink {
   std::string canInterface;             // SocketCAN interface for a CANaerospace host; empty: none
 };
 
+// Tables of the physical sky (sky.model = "physical").
+struct AtmosphereSettings {
+  std::string tables = "small";  // "small" (seconds to precompute) or "default" (Bruneton's sizes)
+  std::string cacheDir;          // "" = $XDG_CACHE_HOME/skyig or ~/.cache/skyig
+};
+
 struct NodeConfig {
   std::string nodeName = "ig";
   render::SkyConditions sky;
@@ -31,6 +38,7 @@ struct NodeConfig {
   std::vector<render::ChannelConfig> channels{render::ChannelConfig{}};
   std::vector<std::string> channelNodes{""};  // per channel: the node that renders it ("" any)
   HostLink host;
+  AtmosphereSettings atmosphere;
   protocol::canaerospace::IdentifierMap canIdentifiers;
 
   // The channels node `name` renders: those assigned to it, and those assigned to none.

@@ -2,6 +2,7 @@
 
 #include "render/gl_context.h"
 #include "render/sky_renderer.h"
+#include "services/atmosphere_loader.h"
 #include "services/commands/common_options.h"
 
 #include <glad/gl.h>
@@ -68,6 +69,7 @@ double median(std::vector<double> v) {
 
 int run(const BenchOptions& opt) {
   NodeConfig config = opt.sky.resolve();
+  loadAtmosphereIfNeeded(config);
   render::ChannelConfig channel = config.channels.front();
   channel.width = opt.width;
   channel.height = opt.height;

@@ -16,7 +16,8 @@ void SkyOptions::add(CLI::App& c) {
   c.add_option("--pitch", pitch, "Ownship pitch, degrees, nose up positive")->check(CLI::Range(-90.0, 90.0));
   c.add_option("--roll", roll, "Ownship roll, degrees, right wing down positive")->check(CLI::Range(-180.0, 180.0));
   c.add_option("--utc", utc, "UTC date and time, e.g. 2026-06-21T19:30:00Z");
-  c.add_option("--sky-model", skyModel, "Sky model: preetham | cie")->check(CLI::IsMember({"preetham", "cie"}));
+  c.add_option("--sky-model", skyModel, "Sky model: preetham | cie | physical")
+      ->check(CLI::IsMember({"preetham", "cie", "physical"}));
   c.add_option("--cie-type", cieType, "CIE standard general sky type, 1 (overcast) .. 15")->check(CLI::Range(1, 15));
   c.add_option("--turbidity", turbidity, "Atmospheric turbidity (Preetham), 1.7 .. 10")->check(CLI::Range(1.7, 10.0));
   c.add_option("--ground-albedo", groundAlbedo, "Ground albedo, 0 .. 1")->check(CLI::Range(0.0, 1.0));

@@ -31,6 +31,8 @@ TEST(NodeConfig, DocumentedDefaultsEqualBuiltInDefaults) {
   EXPECT_EQ(file.sky.cieType, builtIn.sky.cieType);
   EXPECT_EQ(file.sky.turbidity, builtIn.sky.turbidity);
   EXPECT_EQ(file.sky.groundAlbedo, builtIn.sky.groundAlbedo);
+  EXPECT_EQ(file.atmosphere.tables, builtIn.atmosphere.tables);
+  EXPECT_EQ(file.atmosphere.cacheDir, builtIn.atmosphere.cacheDir);
   EXPECT_EQ(file.observer.latitudeDeg, builtIn.observer.latitudeDeg);
   EXPECT_EQ(file.observer.longitudeDeg, builtIn.observer.longitudeDeg);
   EXPECT_EQ(file.observer.heightM, builtIn.observer.heightM);
@@ -83,9 +85,9 @@ TEST(NodeConfig, OutOfRangeValueNamesFileLineKeyAndRange) {
 }
 
 TEST(NodeConfig, WrongTypeAndUnknownKeys) {
-  EXPECT_EQ(errorOf("[sky]\nmodel = 3\n"), "bad.toml:2: sky.model: expected \"preetham\" or \"cie\", got 3");
+  EXPECT_EQ(errorOf("[sky]\nmodel = 3\n"), "bad.toml:2: sky.model: expected \"preetham\", \"cie\" or \"physical\", got 3");
   EXPECT_EQ(errorOf("[sky]\nmodel = \"nishita\"\n"),
-            "bad.toml:2: sky.model: expected \"preetham\" or \"cie\", got \"nishita\"");
+            "bad.toml:2: sky.model: expected \"preetham\", \"cie\" or \"physical\", got \"nishita\"");
   EXPECT_NE(errorOf("[sky]\nturbidty = 3\n").find("bad.toml:2: sky.turbidty: unknown key"), std::string::npos);
   EXPECT_NE(errorOf("[[channel]]\n[channel.display]\ngama = 2\n").find("bad.toml:3: channel[0].display.gama: unknown key"),
             std::string::npos);

@@ -146,14 +146,43 @@ std::uint32_t ticks10us(Clock::duration d) {
 
 }  // namespace
 
+// Threads that are told to stop and joined however the scope is left (an exception included).
+class ThreadGroup {
+ public:
+  explicit ThreadGroup(std::atomic<bool>& stop) : stop_(stop) {}
+  ~ThreadGroup() {
+    stop_ = true;
+    for (auto& t : threads_) t.join();
+  }
+  ThreadGroup(const ThreadGroup&) = delete;
+  ThreadGroup& operator=(const ThreadGroup&) = delete;
+  template <typename F>
+  void start(F&& f) {
+    threads_.emplace_back(std::forward<F>(f));
+  }
+
+ private:
+  std::atomic<bool>& stop_;
+  std::vector<std::thread> threads_;
+};
+
+// A file descriptor closed with its scope.
+struct OwnedFd {
+  int fd = -1;
+  ~OwnedFd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
 int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& externalStop) {
   std::atomic<bool> stop{false};
   Latest<HostSnapshot> host;
   Latest<render::SkyState> sky;
   const auto start = Clock::now();
 
-  // Transports. The UDP socket always exists: Start of Frame goes out through it.
-  UdpSocket udp(opt.listen, opt.multicastGroup);
+  // Everything that can fail (sockets, SocketCAN, the recording file, the first sky) is set
+  // up before any thread starts.
+  UdpSocket udp(opt.listen, opt.multicastGroup);  // always: Start of Frame goes out through it
   spdlog::info("listening for CIGI on {}", udp.localEndpoint().toString());
   CigiReceiver cigi(stats, host);
   std::unique_ptr<PcapRecorder> recorder;
@@ -166,25 +195,19 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
     cigi.setRecorder(recorder.get());
     spdlog::info("recording the host's datagrams to {}", opt.recordPath);
   }
-  std::vector<std::thread> threads;
-  threads.emplace_back([&] { cigi.run(udp, stop); });
-  int canFd = opt.canFd;
-  bool ownCanFd = false;
-  if (opt.canInterface) {
-    canFd = openSocketCan(*opt.canInterface);
-    ownCanFd = true;
-  }
+  OwnedFd ownedCan;
+  if (opt.canInterface) ownedCan.fd = openSocketCan(*opt.canInterface);
+  const int canFd = opt.canInterface ? ownedCan.fd : opt.canFd;
   std::unique_ptr<CanReceiver> can;
-  if (canFd >= 0) {
-    can = std::make_unique<CanReceiver>(canFd, opt.config.canIdentifiers, stats, host);
-    threads.emplace_back([&] { can->run(stop); });
-  }
+  if (canFd >= 0) can = std::make_unique<CanReceiver>(canFd, opt.config.canIdentifiers, stats, host);
+  sky.publish(render::buildSkyState(opt.config.observer, opt.config.sky));  // frame 0 already has a sky
 
-  // The first sky is computed before the first frame, so frame 0 already shows it.
-  sky.publish(render::buildSkyState(opt.config.observer, opt.config.sky));
-  threads.emplace_back([&] { workerLoop(opt, stats, host, sky, stop); });
+  {
+    ThreadGroup threads(stop);  // inside what the threads use: joined before any of it goes
+    threads.start([&] { cigi.run(udp, stop); });
+    if (can) threads.start([&] { can->run(stop); });
+    threads.start([&] { workerLoop(opt, stats, host, sky, stop); });
 
-  try {
     const auto baseChannels = opt.config.channelsOf(opt.config.nodeName);
     if (baseChannels.empty()) throw ConfigError("node \"" + opt.config.nodeName + "\" has no channels in the configuration");
     Display display(opt, baseChannels);
@@ -241,16 +264,8 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
       if (dump) dump->write(frame, snapshot.get(), state);
       if (!opt.headless && display.closeRequested()) break;
     }
-  } catch (...) {
-    stop = true;
-    for (auto& t : threads) t.join();
-    if (ownCanFd) ::close(canFd);
-    throw;
-  }
-  stop = true;
-  for (auto& t : threads) t.join();
-  if (ownCanFd) ::close(canFd);
-  if (!opt.statsPath.empty()) writeStatsFile(opt.statsPath, stats);
+  }  // the threads are joined here
+  if (!opt.statsPath.empty()) writeStatsFile(opt.statsPath, stats);  // the final counters, once
   return 0;
 }
 

@@ -7,10 +7,8 @@
 
 namespace skyig::render {
 
-namespace {
-
-void setParameters(GLuint program, int group, const atmosphere::AtmosphereParameters& a) {
-  const std::string prefix = "atm[" + std::to_string(group) + "].";
+void setAtmosphereUniforms(GLuint program, const std::string& uniform, const atmosphere::AtmosphereParameters& a) {
+  const std::string prefix = uniform + ".";
   auto v4 = [&](const char* name, const glm::dvec4& v) {
     glProgramUniform4f(program, glGetUniformLocation(program, (prefix + name).c_str()), static_cast<float>(v.x),
                        static_cast<float>(v.y), static_cast<float>(v.z), static_cast<float>(v.w));
@@ -43,6 +41,8 @@ void setParameters(GLuint program, int group, const atmosphere::AtmosphereParame
   f1("scattering_mu_s_size", a.scattering_mu_s_size);
   f1("scattering_nu_size", a.scattering_nu_size);
 }
+
+namespace {
 
 // Half floats would do for the sky (16 MB budget, docs/atmosphere.md); the tables go up as
 // 32-bit floats until the packing of issue 5 lands.
@@ -107,7 +107,7 @@ void PhysicalSkyPass::use(const atmosphere::AtmosphereModel& model) {
     textures_.push_back(upload3D(t.scattering));
     textures_.push_back(upload3D(t.single_mie));
     textures_.push_back(upload2D(t.irradiance));
-    setParameters(p, g, model.parameters(static_cast<std::size_t>(g)));
+    setAtmosphereUniforms(p, "atm[" + std::to_string(g) + "]", model.parameters(static_cast<std::size_t>(g)));
     // Columns: the linear Rec.709 (cd/m^2) of one unit of spectral radiance at each wavelength.
     glm::mat4 toRec709(0.0f);
     for (int k = 0; k < 4; ++k) {

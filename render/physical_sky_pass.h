@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include <string>
 #include <vector>
 
 namespace skyig::render {
@@ -32,6 +33,10 @@ class PhysicalSkyPass {
   int groups_ = 0;
   std::vector<GLuint> textures_;  // per group: transmittance, scattering, single Mie, irradiance
 };
+
+// Sets every member of a GLSL `uniform AtmosphereParameters` named `uniform` (e.g. "atm" or
+// "atm[2]") in `program` (shaders/atmosphere/parameters.glsl), as floats.
+void setAtmosphereUniforms(GLuint program, const std::string& uniform, const atmosphere::AtmosphereParameters& a);
 
 // The camera of an observer at `heightM` above the model's ground, on the local vertical.
 glm::dvec3 physicalCamera(const atmosphere::AtmosphereModel& model, double heightM);

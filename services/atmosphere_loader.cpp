@@ -18,22 +18,28 @@ std::filesystem::path cacheDirectory(const std::string& configured) {
 }
 }  // namespace
 
-void loadAtmosphereIfNeeded(NodeConfig& config) {
-  if (config.sky.model != render::SkyModel::Physical || config.sky.atmosphere) return;
+std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const AtmosphereSettings& settings,
+                                                                  const atmosphere::Conditions& conditions, int orders) {
   atmosphere::ModelConfig model;
-  if (config.atmosphere.tables == "small") model.sizes = atmosphere::TableSizes::small();
-  atmosphere::Conditions conditions;
-  conditions.ground_albedo = config.sky.groundAlbedo;
+  if (settings.tables == "small") model.sizes = atmosphere::TableSizes::small();
+  model.options.scattering_orders = orders;
   model.medium = atmosphere::applyConditions(model.medium, conditions);
   atmosphere::CacheResult cache;
   const auto start = std::chrono::steady_clock::now();
-  config.sky.atmosphere = std::make_shared<const atmosphere::AtmosphereModel>(
-      atmosphere::loadOrPrecompute(model, cacheDirectory(config.atmosphere.cacheDir), &cache));
+  auto loaded = std::make_shared<const atmosphere::AtmosphereModel>(
+      atmosphere::loadOrPrecompute(model, cacheDirectory(settings.cacheDir), &cache));
   if (cache.outcome != atmosphere::CacheOutcome::kLoaded)
-    std::fprintf(stderr, "physical sky: precomputed the %s tables in %.1f s (%s); cached in %s\n",
-                 config.atmosphere.tables.c_str(),
+    std::fprintf(stderr, "physical sky: precomputed the %s tables in %.1f s (%s); cached in %s\n", settings.tables.c_str(),
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), cache.reason.c_str(),
                  cache.path.string().c_str());
+  return loaded;
+}
+
+void loadAtmosphereIfNeeded(NodeConfig& config) {
+  if (config.sky.model != render::SkyModel::Physical || config.sky.atmosphere) return;
+  atmosphere::Conditions conditions;
+  conditions.ground_albedo = config.sky.groundAlbedo;
+  config.sky.atmosphere = loadAtmosphere(config.atmosphere, conditions);
 }
 
 }  // namespace skyig::services

@@ -1,10 +1,8 @@
 #include "services/commands/probe_command.h"
 
 #include "ephemeris/ephemeris.h"
-#include "render/atmosphere/conditions.h"
 #include "render/atmosphere/probe.h"
-#include "render/atmosphere/table_cache.h"
-#include "services/node_config.h"
+#include "services/atmosphere_loader.h"
 
 #include <spdlog/spdlog.h>
 
@@ -38,12 +36,6 @@ atmosphere::ProbeView parseView(const std::string& text, const std::string& wher
   if (std::sscanf(text.c_str(), "%lf,%lf%c", &z, &a, &extra) != 2 || !(z >= 0.0 && z <= 180.0) || !std::isfinite(a))
     throw ConfigError(where + ": expected ZENITH,AZIMUTH in degrees (zenith 0..180), got \"" + text + "\"");
   return {z, a};
-}
-
-std::filesystem::path defaultCacheDir() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "skyig";
-  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "skyig";
-  return std::filesystem::temp_directory_path() / "skyig-cache";
 }
 
 int run(const ProbeCli& cli) {
@@ -80,25 +72,12 @@ int run(const ProbeCli& cli) {
   }
   if (request.views.empty()) request.views.push_back({0.0, 0.0});  // the zenith
 
-  atmosphere::ModelConfig config;
-  if (cli.tables == "small") config.sizes = atmosphere::TableSizes::small();
-  else if (cli.tables != "default") throw ConfigError("--tables: expected small or default, got \"" + cli.tables + "\"");
-  config.options.scattering_orders = cli.orders;
   atmosphere::Conditions conditions;
   conditions.visibility_km = cli.visibilityKm;
   if (cli.humidityPct) conditions.relative_humidity = *cli.humidityPct / 100.0;
   conditions.ground_albedo = cli.groundAlbedo;
-  config.medium = atmosphere::applyConditions(config.medium, conditions);
-
-  atmosphere::CacheResult cache;
-  const auto start = std::chrono::steady_clock::now();
-  const atmosphere::AtmosphereModel model =
-      atmosphere::loadOrPrecompute(config, cli.cacheDir.empty() ? defaultCacheDir() : std::filesystem::path(cli.cacheDir), &cache);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (cache.outcome != atmosphere::CacheOutcome::kLoaded)
-    std::fprintf(stderr, "probe: precomputed the %s tables in %.1f s (%s); cached in %s\n", cli.tables.c_str(), seconds,
-                 cache.reason.c_str(), cache.path.string().c_str());
-  std::printf("%s\n", atmosphere::probe(model, request).dump(2).c_str());
+  const auto model = loadAtmosphere({cli.tables, cli.cacheDir}, conditions, cli.orders);
+  std::printf("%s\n", atmosphere::probe(*model, request).dump(2).c_str());
   return 0;
 }
 

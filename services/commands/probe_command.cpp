@@ -4,10 +4,7 @@
 #include "render/atmosphere/probe.h"
 #include "services/atmosphere_loader.h"
 
-#include <spdlog/spdlog.h>
-
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <memory>
 #include <numbers>

@@ -8,7 +8,6 @@
 #include <string>
 
 #include "ephemeris/ephemeris_cache.h"
-#include "ephemeris/low_precision_sun.h"
 
 using namespace skyig::ephemeris;
 
@@ -119,18 +118,6 @@ TEST(Ephemeris, BrightLimbPointsTowardsTheSunInTheObserversView) {
     const Vec3 toSun = sun - dot(sun, m) * m;
     const double expected = wrapTwoPi(std::atan2(dot(toSun, left), dot(toSun, up)));
     EXPECT_NEAR(std::remainder(s.moon.brightLimbAngleRad - expected, kTwoPi), 0.0, 0.1 * kDegToRad) << day;
-  }
-}
-
-TEST(Ephemeris, LowPrecisionSunAgreesWithThePreciseOne) {
-  for (int month = 1; month <= 12; ++month) {
-    const UtcTime t{2010 + month, month, 15, 3600.0 * month};
-    const SkyEphemeris s = computeEphemeris(t, place(35.0, -100.0));
-    const HorizontalPosition low = lowPrecisionSunHorizontal(t, 35.0 * kDegToRad, -100.0 * kDegToRad);
-    EXPECT_NEAR(low.altitude, s.sun.altitudeRad, 0.02 * kDegToRad) << month;
-    EXPECT_NEAR(std::remainder(low.azimuth - s.sun.azimuthRad, kTwoPi) * std::cos(s.sun.altitudeRad), 0.0,
-                0.02 * kDegToRad)
-        << month;
   }
 }
 

@@ -83,7 +83,10 @@ glm::dvec3 physicalCamera(const atmosphere::AtmosphereModel& model, double heigh
   return {0.0, 0.0, model.parameters(0).bottom_radius + std::max(heightM, 1.0)};
 }
 
-PhysicalSkyPass::PhysicalSkyPass() : program_("passes/fullscreen.vert", "passes/physical_sky.frag") {}
+PhysicalSkyPass::PhysicalSkyPass()
+    : program_("passes/fullscreen.vert", "passes/physical_sky.frag"),
+      cameraLocation_(glGetUniformLocation(program_.id(), "camera")),
+      sunLocation_(glGetUniformLocation(program_.id(), "sunDirectionP")) {}
 
 PhysicalSkyPass::~PhysicalSkyPass() { release(); }
 
@@ -125,10 +128,10 @@ void PhysicalSkyPass::use(const atmosphere::AtmosphereModel& model) {
 
 void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirection) {
   const GLuint p = program_.id();
-  glProgramUniform3f(p, glGetUniformLocation(p, "camera"), static_cast<float>(camera.x), static_cast<float>(camera.y),
+  glProgramUniform3f(p, cameraLocation_, static_cast<float>(camera.x), static_cast<float>(camera.y),
                      static_cast<float>(camera.z));
-  glProgramUniform3f(p, glGetUniformLocation(p, "sunDirectionP"), static_cast<float>(sunDirection.x),
-                     static_cast<float>(sunDirection.y), static_cast<float>(sunDirection.z));
+  glProgramUniform3f(p, sunLocation_, static_cast<float>(sunDirection.x), static_cast<float>(sunDirection.y),
+                     static_cast<float>(sunDirection.z));
   for (int g = 0; g < groups_; ++g) {
     glBindTextureUnit(static_cast<GLuint>(0 + g), textures_[static_cast<std::size_t>(4 * g)]);
     glBindTextureUnit(static_cast<GLuint>(4 + g), textures_[static_cast<std::size_t>(4 * g + 1)]);

@@ -29,6 +29,8 @@ class PhysicalSkyPass {
  private:
   void release();
   GlProgram program_;
+  GLint cameraLocation_ = -1;  // looked up once: draw() runs every frame
+  GLint sunLocation_ = -1;
   const atmosphere::AtmosphereModel* current_ = nullptr;
   int groups_ = 0;
   std::vector<GLuint> textures_;  // per group: transmittance, scattering, single Mie, irradiance

@@ -15,14 +15,7 @@ namespace {
 ModelConfig tinyConfig() {
   ModelConfig c = testing::oneGroupConfig();
   c.wavelengths_nm = {440.0, 550.0, 680.0, 700.0, 720.0};  // two groups, the last padded
-  c.sizes.transmittance_mu = 16;
-  c.sizes.transmittance_r = 8;
-  c.sizes.irradiance_mu_s = 8;
-  c.sizes.irradiance_r = 4;
-  c.sizes.scattering_r = 4;
-  c.sizes.scattering_mu = 8;
-  c.sizes.scattering_mu_s = 4;
-  c.sizes.scattering_nu = 2;
+  c.sizes = testing::tinySizes();
   c.options.scattering_orders = 3;
   return c;
 }

@@ -28,14 +28,8 @@ double zenithLuminance(const AtmosphereModel& model, double sun_zenith_deg, doub
 // Tiny tables, two orders: enough for exact linearity checks, computed in well under a second.
 ModelConfig tinyConfig() {
   ModelConfig c = oneGroupConfig();
+  c.sizes = testing::tinySizes();
   c.sizes.transmittance_mu = 32;
-  c.sizes.transmittance_r = 8;
-  c.sizes.irradiance_mu_s = 8;
-  c.sizes.irradiance_r = 4;
-  c.sizes.scattering_r = 4;
-  c.sizes.scattering_mu = 8;
-  c.sizes.scattering_mu_s = 4;
-  c.sizes.scattering_nu = 2;
   c.options.scattering_orders = 2;
   return c;
 }

@@ -29,6 +29,21 @@ inline ModelConfig oneGroupConfig() {
   return c;
 }
 
+// Tables a few texels on a side: physics too coarse to compare with references, but computed
+// in well under a second, for tests of mechanisms (cache, updater, linearity).
+inline TableSizes tinySizes() {
+  TableSizes s;
+  s.transmittance_mu = 16;
+  s.transmittance_r = 8;
+  s.irradiance_mu_s = 8;
+  s.irradiance_r = 4;
+  s.scattering_r = 4;
+  s.scattering_mu = 8;
+  s.scattering_mu_s = 4;
+  s.scattering_nu = 2;
+  return s;
+}
+
 inline AtmosphereModel cachedModel(const ModelConfig& config) {
   return loadOrPrecompute(config, testCacheDirectory());
 }

@@ -11,14 +11,7 @@ namespace {
 
 ModelConfig tinyConfig(double albedo) {
   ModelConfig c = testing::oneGroupConfig();
-  c.sizes.transmittance_mu = 16;
-  c.sizes.transmittance_r = 8;
-  c.sizes.irradiance_mu_s = 8;
-  c.sizes.irradiance_r = 4;
-  c.sizes.scattering_r = 4;
-  c.sizes.scattering_mu = 8;
-  c.sizes.scattering_mu_s = 4;
-  c.sizes.scattering_nu = 2;
+  c.sizes = testing::tinySizes();
   c.options.scattering_orders = 2;
   c.medium.ground_albedo = albedo;
   return c;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -60,6 +61,23 @@ double physicalMeanSkyLuminance(const atmosphere::AtmosphereModel& model, double
   return sum / (kMu * kPhi);
 }
 
+// The extinction profile costs tens of milliseconds: states reuse the last one while the
+// observer stays within max(25 m, 2%) of its altitude and the medium is unchanged (a climbing
+// helicopter rebuilds it every few seconds, on the worker, never on the render thread).
+std::shared_ptr<const atmosphere::ExtinctionProfile> sharedExtinction(const atmosphere::Medium& medium,
+                                                                      double heightM) {
+  static std::mutex mutex;
+  static std::shared_ptr<const atmosphere::ExtinctionProfile> last;
+  static atmosphere::Medium lastMedium;
+  const double top = medium.top_radius_m - medium.bottom_radius_m;
+  const double h = std::clamp(heightM, 0.0, top - 1.0);  // above the top nothing changes
+  std::lock_guard lock(mutex);
+  if (last && lastMedium == medium && std::abs(last->altitudeM() - h) <= std::max(25.0, 0.02 * h)) return last;
+  last = std::make_shared<const atmosphere::ExtinctionProfile>(medium, h);
+  lastMedium = medium;
+  return last;
+}
+
 }  // namespace
 
 SkyState buildSkyState(const ObserverState& observer, const SkyConditions& conditions,
@@ -86,8 +104,12 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
     s.sunApparentAltitude = s.ephemeris->sun.altitudeRefractedRad;
     s.conditions.sunDistanceAu = s.ephemeris->sun.distanceKm / 149597870.7;
   }
-  if (s.conditions.model == SkyModel::Physical) {
+  if (s.conditions.model == SkyModel::Physical)
     require(s.conditions.atmosphere != nullptr, "the physical sky model needs its precomputed atmosphere");
+  s.extinction = sharedExtinction(s.conditions.atmosphere ? s.conditions.atmosphere->config().medium
+                                                          : atmosphere::Medium{},
+                                  observer.heightM);
+  if (s.conditions.model == SkyModel::Physical) {
     s.adaptationLuminance = physicalMeanSkyLuminance(*s.conditions.atmosphere, observer.heightM,
                                                      enuDirection(s.sunAzimuth, s.sunAltitude));
     return s;

@@ -6,9 +6,11 @@
 #include "ephemeris/ephemeris_cache.h"
 #include "ephemeris/time.h"
 #include "render/analytic_sky.h"
+#include "render/atmosphere/extinction_profile.h"
 #include "render/camera.h"
 #include "render/sky_conditions.h"
 
+#include <memory>
 #include <optional>
 
 namespace skyig::render {
@@ -37,6 +39,10 @@ struct SkyState {
   std::optional<ephemeris::SkyEphemeris> ephemeris;  // absent when the sun was overridden
   AnalyticSkyState sky;
   double adaptationLuminance = 1.0;  // the eye's world adaptation, cd/m^2
+  // Transmittance to space by elevation at the observer, for everything beyond the atmosphere
+  // (moon, planets, stars, Milky Way, zodiacal light): the physical model's medium, or the
+  // default medium under an analytic sky. Shared between states of nearly the same altitude.
+  std::shared_ptr<const atmosphere::ExtinctionProfile> extinction;
 };
 
 // Throws std::invalid_argument naming the bad value (latitude out of range, NaN, a date

@@ -38,6 +38,8 @@ struct Medium {
   // Largest sun zenith angle the scattering tables cover (twilight down to 18 deg below the
   // horizon needs more than 108 deg).
   double max_sun_zenith_rad = 120.0 * kDegree;
+
+  bool operator==(const Medium&) const = default;
 };
 
 // Throws std::invalid_argument naming the first bad value.

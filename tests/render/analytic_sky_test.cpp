@@ -124,6 +124,22 @@ TEST(SkyState, RejectsBadInput) {
   }
 }
 
+// Every state carries the extinction towards space at the observer's altitude, shared between
+// states of nearly the same altitude and rebuilt after a climb.
+TEST(SkyState, ExtinctionProfileFollowsTheAltitude) {
+  ObserverState o;
+  const SkyState a = buildSkyState(o, SkyConditions{});
+  o.heightM += 10.0;
+  const SkyState b = buildSkyState(o, SkyConditions{});
+  ASSERT_TRUE(a.extinction && b.extinction);
+  EXPECT_EQ(a.extinction, b.extinction);
+  o.heightM = 3000.0;
+  const SkyState c = buildSkyState(o, SkyConditions{});
+  EXPECT_NE(c.extinction, a.extinction);
+  EXPECT_NEAR(c.extinction->altitudeM(), 3000.0, 1e-9);
+  EXPECT_GT(c.extinction->rec709(std::numbers::pi / 2).g, a.extinction->rec709(std::numbers::pi / 2).g);
+}
+
 // The default state is the sun of the ephemeris: midsummer evening at Innsbruck, the sun in
 // the west-north-west about 20 deg up, and the eye adapted to a bright sky.
 TEST(SkyState, DefaultStateUsesTheEphemeris) {

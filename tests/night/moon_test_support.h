@@ -6,6 +6,8 @@
 #include "render/night/moon_disc.h"
 #include "render/sky_state.h"
 
+#include <glm/glm.hpp>
+
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -52,6 +54,23 @@ inline std::optional<ObserverState> nightWithMoon(double phaseMinDeg, double pha
         }
       }
   return std::nullopt;
+}
+
+// The disc's illuminance at normal incidence from its radiance (after extinction): a midpoint
+// sum over a gnomonic grid around the seen centre (solid angle of a cell da / (1 + x^2 + y^2)^1.5).
+inline double integratedLux(const MoonDisc& d, int grid) {
+  const glm::dvec3 c = d.centreSeen;
+  const glm::dvec3 right = glm::normalize(glm::cross(c, glm::dvec3(0, 0, 1)));
+  const glm::dvec3 up = glm::cross(right, c);
+  const double half = 1.01 * std::tan(d.angularRadiusRad), step = 2.0 * half / grid;
+  double sum = 0.0;
+  for (int i = 0; i < grid; ++i)
+    for (int j = 0; j < grid; ++j) {
+      const double x = -half + (i + 0.5) * step, y = -half + (j + 0.5) * step;
+      const double l = moonDiscRadiance(d, c + x * right + y * up).luminanceCdM2;
+      sum += l * step * step / std::pow(1.0 + x * x + y * y, 1.5);
+    }
+  return sum;
 }
 
 }  // namespace skyig::render::testing

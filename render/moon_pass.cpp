@@ -64,7 +64,9 @@ void MoonPass::useExtinction(const std::shared_ptr<const atmosphere::ExtinctionP
 
 void MoonPass::draw(const SkyState& state, const ChannelConfig& channel) {
   const std::optional<MoonDisc> disc = makeMoonDisc(state);
-  if (!disc) return;
+  // Well below the horizon (more than the largest dip of the horizon, 5 deg at 25 km) nothing
+  // of it can be seen: skip the pass.
+  if (!disc || disc->centreSeen.z < -std::sin(5.5 * std::numbers::pi / 180.0)) return;
   draw(*disc, ndcToWorld(eyeToEnu(state.observer.attitude, channel.offset), channel.frustum), channel);
 }
 

@@ -14,7 +14,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <cstdlib>
 #include <stdexcept>
+#include <string>
 
 using namespace skyig;
 using namespace skyig::render;
@@ -173,4 +175,19 @@ TEST(Moonlight, FullMoonSkyIsADimBlue) {
   EXPECT_GT(zenith.rec709.b / zenith.rec709.r, 1.2 * moonlightColour().b / moonlightColour().r);
   s.moonlightScale = glm::dvec3(0.0);
   EXPECT_EQ(moonlitSkyRadiance(model, s, glm::dvec3(0, 0, 1)).luminanceCdM2, 0.0);
+}
+
+// The map is found through SKYIG_DATA_DIR when it is set, and a missing map is named.
+TEST(MoonAlbedoMap, DataDirectoryOverrideAndMissingFile) {
+  ASSERT_EQ(::setenv("SKYIG_DATA_DIR", "/nonexistent-skyig-data", 1), 0);
+  const std::string path = moonAlbedoPath();
+  ::unsetenv("SKYIG_DATA_DIR");
+  EXPECT_EQ(path, "/nonexistent-skyig-data/moon.png");
+  try {
+    MoonAlbedo::load(path);
+    FAIL() << "a missing map loaded";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(moonAlbedoPath().substr(moonAlbedoPath().size() - 21), "/render/data/moon.png");
 }

@@ -63,11 +63,21 @@ void MoonPass::useExtinction(const std::shared_ptr<const atmosphere::ExtinctionP
 }
 
 void MoonPass::draw(const SkyState& state, const ChannelConfig& channel) {
-  const std::optional<MoonDisc> disc = makeMoonDisc(state);
+  if (!state.ephemeris) return;
+  // The disc's parameters cost ~0.3 ms (the albedo normalisation): computed once per state, not
+  // once per channel and frame.
+  const ephemeris::UtcTime& t = state.observer.utc;
+  const DiscKey key{{static_cast<double>(t.year), static_cast<double>(t.month), static_cast<double>(t.day), t.secondsOfDay,
+                     state.observer.latitudeDeg, state.observer.longitudeDeg, state.observer.heightM},
+                    state.extinction.get()};
+  if (!disc_ || key != discKey_) {
+    disc_ = makeMoonDisc(state);
+    discKey_ = key;
+  }
   // Well below the horizon (more than the largest dip of the horizon, 5 deg at 25 km) nothing
   // of it can be seen: skip the pass.
-  if (!disc || disc->centreSeen.z < -std::sin(5.5 * std::numbers::pi / 180.0)) return;
-  draw(*disc, ndcToWorld(eyeToEnu(state.observer.attitude, channel.offset), channel.frustum), channel);
+  if (!disc_ || disc_->centreSeen.z < -std::sin(5.5 * std::numbers::pi / 180.0)) return;
+  draw(*disc_, ndcToWorld(eyeToEnu(state.observer.attitude, channel.offset), channel.frustum), channel);
 }
 
 void MoonPass::draw(const MoonDisc& d, const glm::dmat3& ndcToWorldMatrix, const ChannelConfig& channel) {
@@ -75,8 +85,8 @@ void MoonPass::draw(const MoonDisc& d, const glm::dmat3& ndcToWorldMatrix, const
   const GLuint p = program_.id();
   // The quad: the disc's radius plus three pixels for the limb ramp (the widest pixel of the
   // channel, from its frustum's largest half-angle), at least 20% for the refractive flattening.
-  const double pixel = 2.0 * std::max(std::tan(channel.frustum.leftDeg * std::numbers::pi / 180.0) +
-                                           std::tan(channel.frustum.rightDeg * std::numbers::pi / 180.0), 0.0) /
+  const double pixel = std::max(std::tan(channel.frustum.leftDeg * std::numbers::pi / 180.0) +
+                                    std::tan(channel.frustum.rightDeg * std::numbers::pi / 180.0), 0.0) /
                        std::max(channel.width, 1);
   const double halfSize = 1.2 * std::tan(d.angularRadiusRad) + 3.0 * pixel;
   const glm::dvec3 up = std::abs(d.centreSeen.z) < 0.999 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);

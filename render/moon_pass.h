@@ -7,7 +7,9 @@
 
 #include <glm/mat3x3.hpp>
 
+#include <array>
 #include <memory>
+#include <optional>
 
 namespace skyig::render {
 
@@ -34,6 +36,13 @@ class MoonPass {
   GLuint extinctionTexture_ = 0;
   std::shared_ptr<const atmosphere::ExtinctionProfile> extinction_;  // the one in extinctionTexture_
   bool extinctionUploaded_ = false;
+  struct DiscKey {  // what a state's disc depends on: time, place and atmosphere
+    std::array<double, 7> when{};
+    const atmosphere::ExtinctionProfile* extinction = nullptr;
+    bool operator==(const DiscKey&) const = default;
+  };
+  std::optional<MoonDisc> disc_;  // the last state's disc
+  DiscKey discKey_;
   GLuint emptyVao_ = 0;
 };
 

@@ -29,8 +29,8 @@ void main() {
   if (coverage <= 0.0 || dot(view, moonCentre) <= 0.0) discard;
   vec3 n = moonSurfaceNormal(q, moonCentre);
   vec2 uv = selenographicUv(n, -moonCentre, moonNorth, moonEast);
-  // Mip level from the disc's own footprint (the longitude's wrap on the far side would fool
-  // the derivatives; the near side never crosses it).
+  // Mip-mapped: the disc is tens of pixels across, the map 1024 texels around. The longitude
+  // wraps only on the far side, so the derivatives are smooth wherever the disc is seen.
   Float albedo = texture(moonAlbedo, uv).r;
   vec3 radiance = moonSurfaceRadiance(n, -moonCentre, towardSun, albedo, sunlitScale, earthshineScale);
   vec3 transmittance = texture(extinctionTable, extinctionCoordinate(asin(clamp(view.z, -1.0, 1.0)))).rgb;

@@ -45,8 +45,8 @@ class MoonGl : public ::testing::Test {
     return c;
   }
 
-  // The moon pass alone into a black float target; returns luminance per pixel (row 0 at top).
-  static std::vector<double> drawAlone(const MoonDisc& d, const glm::dmat3& m, const ChannelConfig& c) {
+  // The moon pass alone into a black float target; returns Rec.709 per pixel (row 0 at top).
+  static std::vector<glm::dvec3> drawAlone(const MoonDisc& d, const glm::dmat3& m, const ChannelConfig& c) {
     RenderTarget target(c.width, c.height, GL_RGBA32F);
     UniformBuffer frame(SKYIG_BINDING_FRAME, sizeof(FrameBlock));
     FrameBlock b{};
@@ -62,14 +62,13 @@ class MoonGl : public ::testing::Test {
     glFinish();
     std::vector<float> rgba(static_cast<std::size_t>(c.width) * static_cast<std::size_t>(c.height) * 4);
     glGetTextureImage(target.texture(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(float)), rgba.data());
-    std::vector<double> lum(static_cast<std::size_t>(c.width) * static_cast<std::size_t>(c.height));
+    std::vector<glm::dvec3> out(static_cast<std::size_t>(c.width) * static_cast<std::size_t>(c.height));
     for (int y = 0; y < c.height; ++y)
       for (int x = 0; x < c.width; ++x) {
         const float* p = &rgba[(static_cast<std::size_t>(c.height - 1 - y) * static_cast<std::size_t>(c.width) + static_cast<std::size_t>(x)) * 4];
-        lum[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.width) + static_cast<std::size_t>(x)] =
-            shader::rec709Luminance(glm::dvec3(p[0], p[1], p[2]));
+        out[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.width) + static_cast<std::size_t>(x)] = glm::dvec3(p[0], p[1], p[2]);
       }
-    return lum;
+    return out;
   }
 
   static inline GlContext* context_ = nullptr;
@@ -131,7 +130,7 @@ TEST_F(MoonGl, FrameEnergyEqualsCpuIrradianceAtTwoResolutions) {
   for (int width : {96, 384}) {
     const ChannelConfig c = channel(width, width * 3 / 4, 1.5);
     const glm::dmat3 m = ndcToWorld(eyeToEnu(Attitude{200.0, 40.0, 0.0}, c.offset), c.frustum);
-    const std::vector<double> lum = drawAlone(d, m, c);
+    const std::vector<glm::dvec3> rgb = drawAlone(d, m, c);
     const double pixelArea = (2.0 / c.width) * (2.0 / c.height);
     const double det = std::abs(glm::determinant(m));
     double sum = 0.0;
@@ -139,7 +138,7 @@ TEST_F(MoonGl, FrameEnergyEqualsCpuIrradianceAtTwoResolutions) {
       for (int x = 0; x < c.width; ++x) {
         // d(Omega) = |det M| dx dy / |M (x, y, 1)|^3 for the ray M (x, y, 1) of eq. 22.
         const double l = glm::length(m * glm::dvec3((x + 0.5) / c.width * 2.0 - 1.0, 1.0 - (y + 0.5) / c.height * 2.0, 1.0));
-        sum += lum[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.width) + static_cast<std::size_t>(x)] * det *
+        sum += shader::rec709Luminance(rgb[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.width) + static_cast<std::size_t>(x)]) * det *
                pixelArea / (l * l * l);
       }
     EXPECT_NEAR(sum, cpu, 0.03 * cpu) << width << " pixels wide";
@@ -204,4 +203,28 @@ TEST_F(MoonGl, CrescentHornsPointAwayFromTheSun) {
   std::printf("radius %.2f px, crescent %.2f px, horns %.2f px towards the sun\n", m.radiusPx, centre, tips);
   EXPECT_GT(centre, 0.5 * m.radiusPx);  // the crescent hugs the sunward limb
   EXPECT_LT(tips, centre - 0.3 * m.radiusPx) << "tips " << tips << ", crescent " << centre;
+}
+
+// On the GL path too the moon is dimmer and redder low over the horizon, and the pass's pixels
+// agree with the CPU's radiance along the same rays (refraction, extinction, colour).
+TEST_F(MoonGl, ExtinctionReddensTheMoonNearTheHorizon) {
+  const ChannelConfig c = channel(64, 48, 0.5);
+  glm::dvec3 centre[2];
+  const double altitudes[2] = {60.0, 3.0};
+  for (int k = 0; k < 2; ++k) {
+    const MoonDisc d = makeMoonDisc(placeMoon(100.0, altitudes[k], 0.0), seaLevelExtinction());
+    const glm::dmat3 m = ndcToWorld(eyeToEnu(Attitude{100.0, altitudes[k], 0.0}, c.offset), c.frustum);
+    const std::vector<glm::dvec3> rgb = drawAlone(d, m, c);
+    // A 3x3 patch at the centre, against the CPU along the same rays.
+    glm::dvec3 gl(0.0), cpu(0.0);
+    for (int y = c.height / 2 - 1; y <= c.height / 2 + 1; ++y)
+      for (int x = c.width / 2 - 1; x <= c.width / 2 + 1; ++x) {
+        gl += rgb[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.width) + static_cast<std::size_t>(x)];
+        cpu += moonDiscRadiance(d, pixelRay(m, x, y, c.width, c.height)).rec709;
+      }
+    for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(gl[ch], cpu[ch], 0.05 * cpu[ch]) << "altitude " << altitudes[k] << ", channel " << ch;
+    centre[k] = gl;
+  }
+  EXPECT_LT(shader::rec709Luminance(centre[1]), 0.5 * shader::rec709Luminance(centre[0]));
+  EXPECT_GT(centre[1].r / centre[1].b, 1.5 * centre[0].r / centre[0].b);
 }

@@ -62,15 +62,17 @@ void validate(const MoonPlacement& p) {
 // map keep eq. 9's total at this phase and orientation (the maria are not spread evenly, so a
 // crescent would otherwise be off by ~10%). A midpoint rule over the lune that is both lit and
 // visible, in longitude about the axis normal to the sun and the observer, so a thin crescent is
-// sampled as finely as a full moon; the weight mu cos(beta) is the projected area.
-double albedoNormalisation(const MoonDisc& d, const MoonAlbedo& albedo) {
+// sampled as finely as a full moon; the weight mu cos(beta) is the projected area. Computed in
+// the moon's frame (x towards the observer, y east, z north): it depends on the sun's direction
+// there alone.
+double albedoNormalisation(const glm::dvec3& sun, const MoonAlbedo& albedo) {
   constexpr int kLongitudes = 48, kLatitudes = 48;
-  const glm::dvec3 e1 = -d.centre;  // towards the observer
-  glm::dvec3 axis = glm::cross(e1, d.towardSun);
-  if (glm::length(axis) < 1e-9) axis = glm::cross(e1, d.north);
+  const glm::dvec3 e1(1.0, 0.0, 0.0), east(0.0, 1.0, 0.0), north(0.0, 0.0, 1.0);
+  glm::dvec3 axis = glm::cross(e1, sun);
+  if (glm::length(axis) < 1e-9) axis = north;
   axis = glm::normalize(axis);
   const glm::dvec3 e2 = glm::cross(axis, e1);
-  const double sunLongitude = std::atan2(glm::dot(d.towardSun, e2), glm::dot(d.towardSun, e1));
+  const double sunLongitude = std::atan2(glm::dot(sun, e2), glm::dot(sun, e1));
   const double half = 0.5 * std::numbers::pi;
   const double lo = std::max(-half, sunLongitude - half), hi = std::min(half, sunLongitude + half);
   if (hi <= lo) return 1.0;
@@ -81,13 +83,32 @@ double albedoNormalisation(const MoonDisc& d, const MoonAlbedo& albedo) {
       const double beta = std::numbers::pi * ((j + 0.5) / kLatitudes - 0.5);
       const glm::dvec3 n = std::cos(beta) * (std::cos(lambda) * e1 + std::sin(lambda) * e2) + std::sin(beta) * axis;
       const double mu = glm::dot(n, e1);
-      const double w = shader::lommelSeeliger(glm::dot(n, d.towardSun), mu) * mu * std::cos(beta);
-      const glm::dvec2 uv = shader::selenographicUv(n, e1, d.north, d.east);
+      const double w = shader::lommelSeeliger(glm::dot(n, sun), mu) * mu * std::cos(beta);
+      const glm::dvec2 uv = shader::selenographicUv(n, e1, north, east);
       plain += w;
       mapped += w * albedo.sample(uv.x, uv.y);
     }
   }
   return mapped > 0.0 ? plain / mapped : 1.0;
+}
+
+// The same, for the sun's direction in the moon's frame rounded to 1e-4 (0.006 deg) and kept
+// per thread: the sun moves that far in the moon's frame in ~15 s, so frames of a running
+// simulation reuse it, and the rounding makes the result independent of what came before.
+double cachedAlbedoNormalisation(const MoonDisc& d, const MoonAlbedo& albedo) {
+  const glm::dvec3 local(glm::dot(d.towardSun, -d.centre), glm::dot(d.towardSun, d.east), glm::dot(d.towardSun, d.north));
+  const glm::dvec3 key = glm::round(local * 1e4);
+  thread_local struct {
+    glm::dvec3 key{-1e9};
+    const MoonAlbedo* albedo = nullptr;
+    double value = 1.0;
+  } cache;
+  if (cache.albedo != &albedo || cache.key != key) {
+    cache.value = albedoNormalisation(glm::normalize(key), albedo);
+    cache.key = key;
+    cache.albedo = &albedo;
+  }
+  return cache.value;
 }
 
 }  // namespace
@@ -137,7 +158,7 @@ MoonDisc makeMoonDisc(const MoonPlacement& p, std::shared_ptr<const atmosphere::
   const double earthAtMoon = 2.0 / 3.0 * ephemeris::kEarthAlbedo * re * re * sunAtMoon *
                              ephemeris::lunarPhaseLaw(std::numbers::pi - p.phaseAngleRad);
   const glm::dvec3& colour = moonlightColour();
-  d.sunlitScale = shader::MOON_RADIANCE_COEFFICIENT * sunAtMoon * albedoNormalisation(d, albedo) * colour;
+  d.sunlitScale = shader::MOON_RADIANCE_COEFFICIENT * sunAtMoon * cachedAlbedoNormalisation(d, albedo) * colour;
   d.earthshineScale = shader::MOON_RADIANCE_COEFFICIENT * earthAtMoon * colour;
   // Eq. 9 for the sunlit part; the earthshine is lit from the earth's direction (phase 0), where
   // eq. 9 applies the sun's phase law to it too (a difference of 1% of the total at 170 deg, less before).

@@ -40,17 +40,23 @@ std::vector<float> readGrey(const std::string& path, int& width, int& height) {
     png_set_expand(png);
     png_set_strip_16(png);
     png_set_strip_alpha(png);
-    png_set_rgb_to_gray_fixed(png, 1, -1, -1);
     png_read_update_info(png, info);
     width = static_cast<int>(png_get_image_width(png, info));
     height = static_cast<int>(png_get_image_height(png, info));
-    if (png_get_channels(png, info) != 1 || png_get_bit_depth(png, info) != 8)
+    const std::size_t channels = png_get_channels(png, info);
+    if ((channels != 1 && channels != 3) || png_get_bit_depth(png, info) != 8)
       throw PngReadError("unexpected pixel format");
-    std::vector<png_byte> pixels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    std::vector<png_byte> pixels(count * channels);
     std::vector<png_bytep> rows(static_cast<std::size_t>(height));
-    for (int y = 0; y < height; ++y) rows[static_cast<std::size_t>(y)] = &pixels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width)];
+    for (int y = 0; y < height; ++y) rows[static_cast<std::size_t>(y)] = &pixels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) * channels];
     png_read_image(png, rows.data());
-    grey.assign(pixels.begin(), pixels.end());
+    grey.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {  // the map is grey: the mean of its channels
+      float sum = 0.0f;
+      for (std::size_t c = 0; c < channels; ++c) sum += pixels[i * channels + c];
+      grey[i] = sum / static_cast<float>(channels);
+    }
   } catch (const PngReadError& e) {
     png_destroy_read_struct(&png, &info, nullptr);
     throw std::runtime_error("moon albedo map " + path + ": " + e.what());

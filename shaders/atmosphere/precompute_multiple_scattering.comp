@@ -2,7 +2,7 @@
 // delta_multiple, added to the scattering table divided by the Rayleigh phase function
 // (paper section 4, "Angular precision": C* = S_R[L0] + S[L+] / P_R).
 #include "atmosphere/multiple_scattering.glsl"
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 uniform AtmosphereParameters atm;
 layout(binding = 0) uniform sampler2D transmittance_texture;
 layout(binding = 5) uniform sampler3D scattering_density_texture;

@@ -1,7 +1,7 @@
 // GPU precomputation, step 4a (per order n >= 2): the scattering density J of order n from
 // the radiance of order n-1 and the ground irradiance of order n-2.
 #include "atmosphere/multiple_scattering.glsl"
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 uniform AtmosphereParameters atm;
 uniform int scattering_order;
 layout(binding = 0) uniform sampler2D transmittance_texture;

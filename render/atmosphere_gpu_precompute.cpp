@@ -140,10 +140,11 @@ struct AtmosphereGpuPrecompute::Programs {
   GLuint transmittance = compileCompute("atmosphere/precompute_transmittance.comp");
   GLuint direct = compileCompute("atmosphere/precompute_direct_irradiance.comp");
   GLuint single = compileCompute("atmosphere/precompute_single_scattering.comp");
+  GLuint slices = compileCompute("atmosphere/precompute_nu_slices.comp");
   GLuint density = compileCompute("atmosphere/precompute_scattering_density.comp");
   GLuint indirect = compileCompute("atmosphere/precompute_indirect_irradiance.comp");
   GLuint multiple = compileCompute("atmosphere/precompute_multiple_scattering.comp");
-  std::array<GLuint, 6> all() const { return {transmittance, direct, single, density, indirect, multiple}; }
+  std::array<GLuint, 7> all() const { return {transmittance, direct, single, slices, density, indirect, multiple}; }
   ~Programs() {
     for (GLuint p : all()) glDeleteProgram(p);
   }
@@ -159,22 +160,27 @@ AtmosphereGpuPrecompute::~AtmosphereGpuPrecompute() = default;
 
 namespace {
 
+constexpr int kDensityThetaSamples = 16;  // ATMOSPHERE_DENSITY_ANGULAR_SAMPLES
+
 // The textures of one group, reused for the next (every pass rewrites what it writes).
 struct Textures {
   GLuint transmittance, delta_irradiance, irradiance, delta_rayleigh, delta_mie, scattering, single_mie,
-      delta_multiple, delta_density;
-  Textures(const atmosphere::TableSizes& s) {
+      delta_multiple, delta_density, slices_a, slices_b;
+  explicit Textures(const atmosphere::TableSizes& s) {
     const int sw = s.scattering_nu * s.scattering_mu_s;
     transmittance = texture2D(s.transmittance_mu, s.transmittance_r);
     delta_irradiance = texture2D(s.irradiance_mu_s, s.irradiance_r);
     irradiance = texture2D(s.irradiance_mu_s, s.irradiance_r);
     for (GLuint* t : {&delta_rayleigh, &delta_mie, &scattering, &single_mie, &delta_multiple, &delta_density})
       *t = texture3D(sw, s.scattering_mu, s.scattering_r);
+    // precompute_nu_slices.comp: (nu + 1) x (theta samples x mu_s) x r.
+    for (GLuint* t : {&slices_a, &slices_b})
+      *t = texture3D(s.scattering_nu + 1, kDensityThetaSamples * s.scattering_mu_s, s.scattering_r);
   }
   ~Textures() {
     const GLuint all[] = {transmittance, delta_irradiance, irradiance, delta_rayleigh, delta_mie,
-                          scattering, single_mie, delta_multiple, delta_density};
-    glDeleteTextures(9, all);
+                          scattering, single_mie, delta_multiple, delta_density, slices_a, slices_b};
+    glDeleteTextures(11, all);
   }
   Textures(const Textures&) = delete;
   Textures& operator=(const Textures&) = delete;
@@ -229,7 +235,7 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
   for (std::size_t g = 0; g < params.size(); ++g) {
     const auto group_start = Clock::now();
     for (GLuint program : p.all()) setParameters(program, params[g]);
-    for (GLuint unit = 0; unit < 6; ++unit) glBindTextureUnit(unit, 0);
+    for (GLuint unit = 0; unit < 8; ++unit) glBindTextureUnit(unit, 0);
 
     image(0, x.transmittance, GL_WRITE_ONLY);
     run(p.transmittance, s.transmittance_mu, s.transmittance_r, 1, t.transmittance);
@@ -247,6 +253,12 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
       glBindTextureUnit(2, x.delta_mie);
       glBindTextureUnit(3, x.delta_multiple);
       glBindTextureUnit(4, x.delta_irradiance);
+      image(0, x.slices_a, GL_WRITE_ONLY);
+      image(1, x.slices_b, GL_WRITE_ONLY);
+      setOrder(p.slices, order);
+      run(p.slices, s.scattering_nu + 1, kDensityThetaSamples * s.scattering_mu_s, sd, t.nu_slices);
+      glBindTextureUnit(6, x.slices_a);
+      glBindTextureUnit(7, x.slices_b);
       image(0, x.delta_density, GL_WRITE_ONLY);
       setOrder(p.density, order);
       run(p.density, sw, sh, sd, t.scattering_density);
@@ -280,7 +292,7 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
       options.progress(line);
     }
   }
-  for (GLuint unit = 0; unit < 6; ++unit) glBindTextureUnit(unit, 0);
+  for (GLuint unit = 0; unit < 8; ++unit) glBindTextureUnit(unit, 0);
   for (GLuint unit = 0; unit < 4; ++unit) glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
   glUseProgram(0);
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {

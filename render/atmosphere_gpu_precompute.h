@@ -20,6 +20,7 @@ struct GpuPrecomputeTiming {
   double transmittance = 0.0;
   double direct_irradiance = 0.0;
   double single_scattering = 0.0;
+  double nu_slices = 0.0;
   double scattering_density = 0.0;
   double indirect_irradiance = 0.0;
   double multiple_scattering = 0.0;

@@ -162,10 +162,10 @@ std::unique_ptr<render::GlContext> makeContext() {
 }
 
 void printTiming(const char* what, const render::GpuPrecomputeTiming& t) {
-  std::printf("%s: total %.2f s = compile %.2f, T %.3f, direct E %.3f, single %.2f, density %.2f, "
+  std::printf("%s: total %.2f s = compile %.2f, T %.3f, direct E %.3f, single %.2f, slices %.2f, density %.2f, "
               "indirect E %.2f, multiple %.2f, readback %.2f s\n",
               what, t.total, t.compile, t.transmittance, t.direct_irradiance, t.single_scattering,
-              t.scattering_density, t.indirect_irradiance, t.multiple_scattering, t.readback);
+              t.nu_slices, t.scattering_density, t.indirect_irradiance, t.multiple_scattering, t.readback);
 }
 
 TEST(AtmosphereGpu, ComputePassesMatchTheCpuReferenceAndRepeat) {

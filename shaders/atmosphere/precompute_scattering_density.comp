@@ -33,7 +33,6 @@ void main() {
   int mu_s_index = texel.x - (texel.x / mu_s_size) * mu_s_size;
 
   // As computeScatteringDensity.
-  vec3 zenith_direction = vec3(0.0, 0.0, 1.0);
   vec3 omega = vec3(sqrt(max(1.0 - mu * mu, 0.0)), 0.0, mu);
   Float sun_dir_x = omega.x == 0.0 ? 0.0 : (nu - mu * mu_s) / omega.x;
   Float sun_dir_y = sqrt(max(1.0 - sun_dir_x * sun_dir_x - mu_s * mu_s, 0.0));
@@ -46,6 +45,7 @@ void main() {
   vec4 mie_coefficient = atm.mie_scattering * mieDensity(atm, altitude);
   bool single_order = scattering_order - 1 == 1;
   Float nu_scale = atm.scattering_nu_size - 1.0;
+  int irradiance_last = int(atm.irradiance_width) - 1;
   // phi = (m + 1/2) dphi by rotation: cos and sin of dphi/2, then steps of dphi.
   Float cos_step = cos(dphi);
   Float sin_step = sin(dphi);
@@ -75,7 +75,8 @@ void main() {
       cos_phi = next_cos;
 
       // lookupScatteringUvwz's blend of two slices; scatteringOfOrderUvwz's phase functions.
-      Float nu1 = atmClampCosine(dot(omega_s, omega_i));
+      Float nu1_unclamped = dot(omega_s, omega_i);
+      Float nu1 = atmClampCosine(nu1_unclamped);
       Float tex_coord_x = (nu1 + 1.0) / 2.0 * nu_scale;
       Float tex_x = floor(tex_coord_x);
       Float lerp = tex_coord_x - tex_x;
@@ -89,10 +90,20 @@ void main() {
                                 miePhaseFunction(atm.mie_phase_g, nu1);
       }
       if (ray_r_theta_intersects_ground) {
-        vec3 ground_normal = normalize(zenith_direction * r + omega_i * distance_to_ground);
-        incident_radiance += ground_light * lookupIrradiance(atm, irradiance_texture,
-                                                             atm.bottom_radius,
-                                                             dot(ground_normal, omega_s));
+        // The ground point is at the radius bottom_radius, so the cosine of the sun's zenith
+        // angle there, dot(normalize(r zenith + d omega_i), omega_s), is
+        // (r mu_s + d nu1) / bottom_radius; the irradiance at the ground is the table's first
+        // row, interpolated along mu_s as lookupIrradiance's GL_LINEAR does.
+        Float mu_s_ground = atmClampCosine((r * mu_s + distance_to_ground * nu1_unclamped) /
+                                           atm.bottom_radius);
+        Float u = textureCoordFromUnitRange(mu_s_ground * 0.5 + 0.5, atm.irradiance_width) *
+                      atm.irradiance_width - 0.5;
+        Float u0 = floor(u);
+        Float f = u - u0;
+        int i0 = clamp(int(u0), 0, irradiance_last);
+        int i1 = clamp(int(u0) + 1, 0, irradiance_last);
+        incident_radiance += ground_light * (texelFetch(irradiance_texture, ivec2(i0, 0), 0) * (1.0 - f) +
+                                             texelFetch(irradiance_texture, ivec2(i1, 0), 0) * f);
       }
       Float nu2 = dot(omega, omega_i);
       rayleigh_mie += incident_radiance *

@@ -217,13 +217,15 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
   const Programs& p = *programs_;
   Textures x(s);
 
-  // Local sizes: 8 x 8 for the 2D passes; the 3D passes use 8 x 8 x 1 too (see the .comp
-  // files: llvmpipe runs a workgroup's invocations as SIMD lanes, and one radius per group
-  // keeps the branches on the ground intersection coherent).
+  // Each pass's local size is that of its .comp file (llvmpipe runs a workgroup's
+  // invocations as SIMD lanes: 8 x 8, one radius per group, keeps the branches on the ground
+  // intersection coherent).
   auto run = [&](GLuint program, int width, int height, int depth, double& seconds) {
     const auto pass_start = Clock::now();
+    GLint local[3] = {1, 1, 1};
+    glGetProgramiv(program, GL_COMPUTE_WORK_GROUP_SIZE, local);
     glUseProgram(program);
-    glDispatchCompute(groups(width, 8), groups(height, 8), static_cast<GLuint>(depth));
+    glDispatchCompute(groups(width, local[0]), groups(height, local[1]), groups(depth, local[2]));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     if (options.time_passes) {
       glFinish();

@@ -197,7 +197,7 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
                                 " is invalid (expected 1 to 32)");
   }
   const std::vector<double>& w = config.wavelengths_nm;
-  if (w.empty()) throw std::invalid_argument("atmosphere GPU precompute: no wavelengths");
+  (void)atmosphere::SpectralConverter(w);  // throws std::invalid_argument on bad wavelengths
   // As AtmosphereModel: groups of four, the last padded by repeating the last wavelength;
   // makeParameters validates the medium and the sizes.
   std::vector<AtmosphereParameters> params;

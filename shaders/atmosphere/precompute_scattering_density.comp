@@ -17,6 +17,45 @@ layout(binding = 6) uniform sampler3D slices_a;  // precompute_nu_slices.comp
 layout(binding = 7) uniform sampler3D slices_b;
 layout(binding = 0, rgba32f) uniform writeonly image3D density_out;
 
+// The radiance of order n-1 arriving from a direction whose cosine with the sun is
+// nu1_unclamped: from the nu slices (lookupScatteringUvwz's blend of two of them, and
+// scatteringOfOrderUvwz's phase functions at order 1), plus the ground's reflection.
+vec4 incidentRadiance(Float r, Float mu_s, Float nu1_unclamped, int slice_y, int slice_z,
+                      bool single_order, Float nu_scale, int irradiance_last,
+                      bool ray_r_theta_intersects_ground, Float distance_to_ground,
+                      vec4 ground_light) {
+  Float nu1 = atmClampCosine(nu1_unclamped);
+  Float tex_coord_x = (nu1 + 1.0) / 2.0 * nu_scale;
+  Float tex_x = floor(tex_coord_x);
+  Float lerp = tex_coord_x - tex_x;
+  ivec3 slice = ivec3(int(tex_x), slice_y, slice_z);
+  vec4 radiance = texelFetch(slices_a, slice, 0) * (1.0 - lerp) +
+                  texelFetch(slices_a, slice + ivec3(1, 0, 0), 0) * lerp;
+  if (single_order) {
+    radiance = radiance * rayleighPhaseFunction(nu1) +
+               (texelFetch(slices_b, slice, 0) * (1.0 - lerp) +
+                texelFetch(slices_b, slice + ivec3(1, 0, 0), 0) * lerp) *
+                   miePhaseFunction(atm.mie_phase_g, nu1);
+  }
+  if (ray_r_theta_intersects_ground) {
+    // The ground point is at the radius bottom_radius, so the cosine of the sun's zenith
+    // angle there, dot(normalize(r zenith + d omega_i), omega_s), is
+    // (r mu_s + d nu1) / bottom_radius; the irradiance at the ground is the table's first
+    // row, interpolated along mu_s as lookupIrradiance's GL_LINEAR does.
+    Float mu_s_ground =
+        atmClampCosine((r * mu_s + distance_to_ground * nu1_unclamped) / atm.bottom_radius);
+    Float u = textureCoordFromUnitRange(mu_s_ground * 0.5 + 0.5, atm.irradiance_width) *
+                  atm.irradiance_width - 0.5;
+    Float u0 = floor(u);
+    Float f = u - u0;
+    int i0 = clamp(int(u0), 0, irradiance_last);
+    int i1 = clamp(int(u0) + 1, 0, irradiance_last);
+    radiance += ground_light * (texelFetch(irradiance_texture, ivec2(i0, 0), 0) * (1.0 - f) +
+                                texelFetch(irradiance_texture, ivec2(i1, 0), 0) * f);
+  }
+  return radiance;
+}
+
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
   if (any(greaterThanEqual(texel, imageSize(density_out)))) {
@@ -68,44 +107,22 @@ void main() {
     Float domega_i = dtheta * dphi * sin_theta;
     Float cos_phi = cos(0.5 * dphi);
     Float sin_phi = sin(0.5 * dphi);
-    for (int m = 0; m < 2 * SAMPLES; ++m) {
-      vec3 omega_i = vec3(cos_phi * sin_theta, sin_phi * sin_theta, cos_theta);
+    // phi and 2 pi - phi (m and 2 SAMPLES - 1 - m) together: the view direction is in the
+    // x-z plane, so both have the same phase functions towards it.
+    for (int m = 0; m < SAMPLES; ++m) {
+      Float x = cos_phi * sin_theta;
+      Float y = sin_phi * sin_theta;
       Float next_cos = cos_phi * cos_step - sin_phi * sin_step;
       sin_phi = sin_phi * cos_step + cos_phi * sin_step;
       cos_phi = next_cos;
-
-      // lookupScatteringUvwz's blend of two slices; scatteringOfOrderUvwz's phase functions.
-      Float nu1_unclamped = dot(omega_s, omega_i);
-      Float nu1 = atmClampCosine(nu1_unclamped);
-      Float tex_coord_x = (nu1 + 1.0) / 2.0 * nu_scale;
-      Float tex_x = floor(tex_coord_x);
-      Float lerp = tex_coord_x - tex_x;
-      ivec3 slice = ivec3(int(tex_x), slice_y, texel.z);
-      vec4 incident_radiance = texelFetch(slices_a, slice, 0) * (1.0 - lerp) +
-                               texelFetch(slices_a, slice + ivec3(1, 0, 0), 0) * lerp;
-      if (single_order) {
-        incident_radiance = incident_radiance * rayleighPhaseFunction(nu1) +
-                            (texelFetch(slices_b, slice, 0) * (1.0 - lerp) +
-                             texelFetch(slices_b, slice + ivec3(1, 0, 0), 0) * lerp) *
-                                miePhaseFunction(atm.mie_phase_g, nu1);
-      }
-      if (ray_r_theta_intersects_ground) {
-        // The ground point is at the radius bottom_radius, so the cosine of the sun's zenith
-        // angle there, dot(normalize(r zenith + d omega_i), omega_s), is
-        // (r mu_s + d nu1) / bottom_radius; the irradiance at the ground is the table's first
-        // row, interpolated along mu_s as lookupIrradiance's GL_LINEAR does.
-        Float mu_s_ground = atmClampCosine((r * mu_s + distance_to_ground * nu1_unclamped) /
-                                           atm.bottom_radius);
-        Float u = textureCoordFromUnitRange(mu_s_ground * 0.5 + 0.5, atm.irradiance_width) *
-                      atm.irradiance_width - 0.5;
-        Float u0 = floor(u);
-        Float f = u - u0;
-        int i0 = clamp(int(u0), 0, irradiance_last);
-        int i1 = clamp(int(u0) + 1, 0, irradiance_last);
-        incident_radiance += ground_light * (texelFetch(irradiance_texture, ivec2(i0, 0), 0) * (1.0 - f) +
-                                             texelFetch(irradiance_texture, ivec2(i1, 0), 0) * f);
-      }
-      Float nu2 = dot(omega, omega_i);
+      vec4 incident_radiance =
+          incidentRadiance(r, mu_s, omega_s.x * x + omega_s.y * y + omega_s.z * cos_theta,
+                           slice_y, texel.z, single_order, nu_scale, irradiance_last,
+                           ray_r_theta_intersects_ground, distance_to_ground, ground_light) +
+          incidentRadiance(r, mu_s, omega_s.x * x - omega_s.y * y + omega_s.z * cos_theta,
+                           slice_y, texel.z, single_order, nu_scale, irradiance_last,
+                           ray_r_theta_intersects_ground, distance_to_ground, ground_light);
+      Float nu2 = omega.x * x + omega.z * cos_theta;
       rayleigh_mie += incident_radiance *
                       (rayleigh_coefficient * rayleighPhaseFunction(nu2) +
                        mie_coefficient * miePhaseFunction(atm.mie_phase_g, nu2)) *

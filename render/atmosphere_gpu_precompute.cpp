@@ -54,16 +54,17 @@ GLuint compileCompute(const std::string& path) {
   return program;
 }
 
-// The members of `uniform AtmosphereParameters atm` (shaders/atmosphere/parameters.glsl), set by
-// name. (render/physical_sky_pass.cpp has its own for an array of them.)
-void setParameters(GLuint program, const AtmosphereParameters& a) {
+// The members of `uniform AtmosphereParameters atm` (shaders/atmosphere/parameters.glsl, or
+// another uniform of that type), set by name. (render/physical_sky_pass.cpp has its own for an array of them.)
+void setParameters(GLuint program, const AtmosphereParameters& a, const std::string& uniform = "atm") {
+  const std::string prefix = uniform + ".";
   auto v4 = [&](const char* name, const glm::dvec4& v) {
-    glProgramUniform4f(program, glGetUniformLocation(program, (std::string("atm.") + name).c_str()),
+    glProgramUniform4f(program, glGetUniformLocation(program, (prefix + name).c_str()),
                        static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z),
                        static_cast<float>(v.w));
   };
   auto f1 = [&](const char* name, double v) {
-    glProgramUniform1f(program, glGetUniformLocation(program, (std::string("atm.") + name).c_str()),
+    glProgramUniform1f(program, glGetUniformLocation(program, (prefix + name).c_str()),
                        static_cast<float>(v));
   };
   v4("solar_irradiance", a.solar_irradiance);
@@ -166,16 +167,17 @@ constexpr int kDensityThetaSamples = 16;  // ATMOSPHERE_DENSITY_ANGULAR_SAMPLES
 struct Textures {
   GLuint transmittance, delta_irradiance, irradiance, delta_rayleigh, delta_mie, scattering, single_mie,
       delta_multiple, delta_density, slices_a, slices_b;
-  explicit Textures(const atmosphere::TableSizes& s) {
+  Textures(const atmosphere::TableSizes& s, const atmosphere::TableSizes& density) {
     const int sw = s.scattering_nu * s.scattering_mu_s;
     transmittance = texture2D(s.transmittance_mu, s.transmittance_r);
     delta_irradiance = texture2D(s.irradiance_mu_s, s.irradiance_r);
     irradiance = texture2D(s.irradiance_mu_s, s.irradiance_r);
-    for (GLuint* t : {&delta_rayleigh, &delta_mie, &scattering, &single_mie, &delta_multiple, &delta_density})
+    for (GLuint* t : {&delta_rayleigh, &delta_mie, &scattering, &single_mie, &delta_multiple})
       *t = texture3D(sw, s.scattering_mu, s.scattering_r);
-    // precompute_nu_slices.comp: (nu + 1) x (theta samples x mu_s) x r.
+    delta_density = texture3D(sw, density.scattering_mu, density.scattering_r);
+    // precompute_nu_slices.comp: (nu + 1) x (theta samples x mu_s) x r of the density.
     for (GLuint* t : {&slices_a, &slices_b})
-      *t = texture3D(s.scattering_nu + 1, kDensityThetaSamples * s.scattering_mu_s, s.scattering_r);
+      *t = texture3D(s.scattering_nu + 1, kDensityThetaSamples * s.scattering_mu_s, density.scattering_r);
   }
   ~Textures() {
     const GLuint all[] = {transmittance, delta_irradiance, irradiance, delta_rayleigh, delta_mie,
@@ -207,6 +209,15 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
     params.push_back(atmosphere::makeParameters(config.medium, group, config.sizes));
   }
 
+  if (options.density_divisor != 1 && options.density_divisor != 2) {
+    throw std::invalid_argument("atmosphere GPU precompute: density_divisor = " +
+                                std::to_string(options.density_divisor) + " is invalid (expected 1 or 2)");
+  }
+  // The density table: its view angles divided (mu stays even: half of it for the rays that
+  // hit the ground).
+  atmosphere::TableSizes density_sizes = config.sizes;
+  density_sizes.scattering_mu = std::max(2, config.sizes.scattering_mu / options.density_divisor / 2 * 2);
+
   const auto start = Clock::now();
   GpuPrecomputeTiming t;
   t.compile = compile_seconds_;
@@ -215,7 +226,7 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
   const int sh = s.scattering_mu;
   const int sd = s.scattering_r;
   const Programs& p = *programs_;
-  Textures x(s);
+  Textures x(s, density_sizes);
 
   // Each pass's local size is that of its .comp file (llvmpipe runs a workgroup's
   // invocations as SIMD lanes: 8 x 8, one radius per group, keeps the branches on the ground
@@ -237,6 +248,10 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
   for (std::size_t g = 0; g < params.size(); ++g) {
     const auto group_start = Clock::now();
     for (GLuint program : p.all()) setParameters(program, params[g]);
+    AtmosphereParameters density_params = params[g];
+    density_params.scattering_r_size = density_sizes.scattering_r;
+    density_params.scattering_mu_size = density_sizes.scattering_mu;
+    for (GLuint program : {p.slices, p.density, p.multiple}) setParameters(program, density_params, "atm_density");
     for (GLuint unit = 0; unit < 8; ++unit) glBindTextureUnit(unit, 0);
 
     image(0, x.transmittance, GL_WRITE_ONLY);
@@ -258,12 +273,13 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
       image(0, x.slices_a, GL_WRITE_ONLY);
       image(1, x.slices_b, GL_WRITE_ONLY);
       setOrder(p.slices, order);
-      run(p.slices, s.scattering_nu + 1, kDensityThetaSamples * s.scattering_mu_s, sd, t.nu_slices);
+      run(p.slices, s.scattering_nu + 1, kDensityThetaSamples * s.scattering_mu_s, density_sizes.scattering_r,
+          t.nu_slices);
       glBindTextureUnit(6, x.slices_a);
       glBindTextureUnit(7, x.slices_b);
       image(0, x.delta_density, GL_WRITE_ONLY);
       setOrder(p.density, order);
-      run(p.density, sw, sh, sd, t.scattering_density);
+      run(p.density, sw, density_sizes.scattering_mu, density_sizes.scattering_r, t.scattering_density);
       // delta_irradiance and delta_multiple are rewritten next: unbind them as samplers.
       glBindTextureUnit(4, 0);
       image(0, x.delta_irradiance, GL_WRITE_ONLY);

@@ -30,6 +30,12 @@ struct GpuPrecomputeTiming {
 
 struct GpuPrecomputeOptions {
   bool time_passes = false;  // glFinish after every pass to time it (slightly slower)
+  // 1: the scattering density J at the tables' size (the CPU reference's quadrature). 2: at
+  // half their view zenith angles (mu), half the work of its pass, the costliest, for a
+  // difference of ~1% (docs/atmosphere.md); the other tables keep their size. Not the radii:
+  // J follows the air and aerosol density profiles, which linear interpolation between half
+  // the radii misses by tens of percent.
+  int density_divisor = 1;
   // Called after each group with a line such as "group 2/4 done (3.1 s)".
   std::function<void(const std::string&)> progress;
 };

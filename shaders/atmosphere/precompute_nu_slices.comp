@@ -12,6 +12,8 @@
 #include "atmosphere/multiple_scattering.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 uniform AtmosphereParameters atm;
+// atm with the density table's sizes (GpuPrecomputeOptions::density_divisor; = atm by default).
+uniform AtmosphereParameters atm_density;
 uniform int scattering_order;  // n: the slices are of the radiance of order n - 1
 layout(binding = 1) uniform sampler3D single_rayleigh_texture;
 layout(binding = 2) uniform sampler3D single_mie_texture;
@@ -27,12 +29,13 @@ void main() {
   int theta_index = texel.y / mu_s_size;
   int mu_s_index = texel.y - theta_index * mu_s_size;
   // r and mu_s exactly as the density's texels of this column and radius compute them.
+  // (The density table may have fewer radii than the others: atm_density.)
   Float r;
   Float mu;
   Float mu_s;
   Float nu;
   bool ray_r_mu_intersects_ground;
-  rMuMuSNuFromScatteringFragCoord(atm, vec3(Float(mu_s_index) + 0.5, 0.5, Float(texel.z) + 0.5),
+  rMuMuSNuFromScatteringFragCoord(atm_density, vec3(Float(mu_s_index) + 0.5, 0.5, Float(texel.z) + 0.5),
                                   r, mu, mu_s, nu, ray_r_mu_intersects_ground);
   Float dtheta = ATMOSPHERE_PI / Float(ATMOSPHERE_DENSITY_ANGULAR_SAMPLES);
   Float cos_theta = cos((Float(theta_index) + 0.5) * dtheta);

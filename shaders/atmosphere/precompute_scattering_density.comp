@@ -12,6 +12,9 @@
 #include "atmosphere/multiple_scattering.glsl"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 uniform AtmosphereParameters atm;
+// atm with the density table's sizes (GpuPrecomputeOptions::density_divisor; = atm by default):
+// its texels' (r, mu, mu_s, nu); the other tables are read through atm.
+uniform AtmosphereParameters atm_density;
 uniform int scattering_order;
 layout(binding = 0) uniform sampler2D transmittance_texture;
 layout(binding = 4) uniform sampler2D irradiance_texture;
@@ -68,7 +71,7 @@ void main() {
   Float mu_s;
   Float nu;
   bool ray_r_mu_intersects_ground;
-  rMuMuSNuFromScatteringFragCoord(atm, vec3(texel) + vec3(0.5), r, mu, mu_s, nu,
+  rMuMuSNuFromScatteringFragCoord(atm_density, vec3(texel) + vec3(0.5), r, mu, mu_s, nu,
                                   ray_r_mu_intersects_ground);
   int mu_s_size = int(atm.scattering_mu_s_size);
   int mu_s_index = texel.x - (texel.x / mu_s_size) * mu_s_size;

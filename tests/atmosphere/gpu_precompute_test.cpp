@@ -161,6 +161,12 @@ std::unique_ptr<render::GlContext> makeContext() {
   }
 }
 
+// SKYIG_ATMOSPHERE_GPU_DENSITY_DIVISOR=2: measure with the density at half resolution.
+int densityDivisor() {
+  const char* d = std::getenv("SKYIG_ATMOSPHERE_GPU_DENSITY_DIVISOR");
+  return d && std::string(d) == "2" ? 2 : 1;
+}
+
 void printTiming(const char* what, const render::GpuPrecomputeTiming& t) {
   std::printf("%s: total %.2f s = compile %.2f, T %.3f, direct E %.3f, single %.2f, slices %.2f, density %.2f, "
               "indirect E %.2f, multiple %.2f, readback %.2f s\n",
@@ -188,7 +194,10 @@ TEST(AtmosphereGpu, ComputePassesMatchTheCpuReferenceAndRepeat) {
   const GroupTables& cpu = model.tables(0);
   render::AtmosphereGpuPrecompute precompute;
   render::GpuPrecomputeTiming timing;
-  const AtmosphereModel gpu_model = precompute.compute(c, {true, nullptr}, &timing);
+  render::GpuPrecomputeOptions options;
+  options.time_passes = true;
+  options.density_divisor = densityDivisor();
+  const AtmosphereModel gpu_model = precompute.compute(c, options, &timing);
   const GroupTables& gpu = gpu_model.tables(0);
   printTiming("GPU precompute, one group", timing);
 
@@ -214,7 +223,8 @@ TEST(AtmosphereGpu, ComputePassesMatchTheCpuReferenceAndRepeat) {
 
   // Two precomputations with the same parameters give identical tables (the second without
   // per-pass timing, as in production).
-  const std::vector<GroupTables> again = precompute.computeTables(c);
+  options.time_passes = false;
+  const std::vector<GroupTables> again = precompute.computeTables(c, options);
   EXPECT_TRUE(again[0].transmittance.texels == gpu.transmittance.texels);
   EXPECT_TRUE(again[0].irradiance.texels == gpu.irradiance.texels);
   EXPECT_TRUE(again[0].scattering.texels == gpu.scattering.texels);
@@ -240,6 +250,24 @@ TEST(AtmosphereGpu, GroupsAreIndependentOfEachOther) {
   EXPECT_FALSE(both[0].scattering.texels == both[1].scattering.texels);
 }
 
+TEST(AtmosphereGpu, BadOptionsAreRejectedWithTheirName) {
+  const auto gl = makeContext();
+  if (!gl) GTEST_SKIP() << "no OpenGL 4.5 context through EGL";
+  ModelConfig c = testing::oneGroupConfig();
+  c.sizes = testing::tinySizes();
+  render::AtmosphereGpuPrecompute precompute;
+  render::GpuPrecomputeOptions options;
+  options.density_divisor = 3;
+  try {
+    precompute.computeTables(c, options);
+    FAIL() << "density_divisor 3 accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("density_divisor = 3"), std::string::npos) << e.what();
+  }
+  c.options.scattering_orders = 0;
+  EXPECT_THROW(precompute.computeTables(c), std::invalid_argument);
+}
+
 // Not a test but a measurement: SKYIG_ATMOSPHERE_GPU_BENCH=small|medium|default times the
 // precompute of all 16 wavelengths at that size, pass by pass.
 TEST(AtmosphereGpu, Benchmark) {
@@ -259,6 +287,7 @@ TEST(AtmosphereGpu, Benchmark) {
   const char* per_pass = std::getenv("SKYIG_ATMOSPHERE_GPU_PER_PASS");
   render::GpuPrecomputeOptions options;
   options.time_passes = per_pass && std::string(per_pass) == "1";
+  options.density_divisor = densityDivisor();
   options.progress = [](const std::string& line) { std::printf("  %s\n", line.c_str()); };
   const auto start = std::chrono::steady_clock::now();
   const std::vector<GroupTables> tables = precompute.computeTables(c, options, &timing);

@@ -43,6 +43,11 @@ struct SkyState {
   // (moon, planets, stars, Milky Way, zodiacal light): the physical model's medium, or the
   // default medium under an analytic sky. Shared between states of nearly the same altitude.
   std::shared_ptr<const atmosphere::ExtinctionProfile> extinction;
+  // A second light for the physical sky (the moonlit sky, Jensen et al. 2001): unit direction
+  // in the local east-north-up frame (x east, y north, z up) and the moon's irradiance relative
+  // to the sun's per linear Rec.709 channel; a zero scale (the default) turns it off.
+  glm::dvec3 moonDirection{0.0, 0.0, 1.0};
+  glm::dvec3 moonlightScale{0.0};
 };
 
 // Throws std::invalid_argument naming the bad value (latitude out of range, NaN, a date

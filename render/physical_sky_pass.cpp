@@ -1,9 +1,11 @@
 #include "render/physical_sky_pass.h"
 
 #include "render/gl_context.h"
+#include "shaders/atmosphere_physics.h"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -76,14 +78,18 @@ glm::dvec3 physicalCamera(const atmosphere::AtmosphereModel& model, double heigh
   return {0.0, 0.0, model.parameters(0).bottom_radius + std::max(heightM, 1.0)};
 }
 
+PhysicalSkyPass::Program::Program(const char* fragment)
+    : program("passes/fullscreen.vert", fragment),
+      camera(glGetUniformLocation(program.id(), "camera")),
+      sun(glGetUniformLocation(program.id(), "sunDirectionP")),
+      moonOn(glGetUniformLocation(program.id(), "moonlightOn")),
+      moonDirection(glGetUniformLocation(program.id(), "moonDirectionP")),
+      moonScale(glGetUniformLocation(program.id(), "moonlightScale")),
+      radii(glGetUniformLocation(program.id(), "frameRadii")),
+      angles(glGetUniformLocation(program.id(), "frameAngles")) {}
+
 PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame)
-    : slicesPerFrame_(slicesPerFrame),
-      program_("passes/fullscreen.vert", "passes/physical_sky.frag"),
-      cameraLocation_(glGetUniformLocation(program_.id(), "camera")),
-      sunLocation_(glGetUniformLocation(program_.id(), "sunDirectionP")),
-      moonOnLocation_(glGetUniformLocation(program_.id(), "moonlightOn")),
-      moonDirectionLocation_(glGetUniformLocation(program_.id(), "moonDirectionP")),
-      moonScaleLocation_(glGetUniformLocation(program_.id(), "moonlightScale")) {
+    : slicesPerFrame_(slicesPerFrame), inside_("passes/physical_sky.frag"), space_("passes/physical_sky_space.frag") {
   if (slicesPerFrame < 1) throw std::invalid_argument("PhysicalSkyPass: slices per frame " + std::to_string(slicesPerFrame) + " must be at least 1");
 }
 
@@ -133,11 +139,13 @@ std::size_t PhysicalSkyPass::uploadSlices(const TableSet& set, const atmosphere:
 void PhysicalSkyPass::makeCurrent(TableSet set) {
   releaseSet(current_);
   current_ = std::move(set);
-  const GLuint p = program_.id();
-  setAtmosphereUniforms(p, "atm", current_.model->parameters(0));
-  glProgramUniform3fv(p, glGetUniformLocation(p, "solarIrradianceXyz"), 1, &f3(current_.small.solar_irradiance_xyz)[0]);
-  glProgramUniform3fv(p, glGetUniformLocation(p, "limbDarkeningXyz"), 1, &f3(current_.small.limb_darkening_xyz)[0]);
-  glProgramUniform1f(p, glGetUniformLocation(p, "groundAlbedo"), static_cast<float>(current_.small.ground_albedo));
+  for (const Program* program : {&inside_, &space_}) {
+    const GLuint p = program->program.id();
+    setAtmosphereUniforms(p, "atm", current_.model->parameters(0));
+    glProgramUniform3fv(p, glGetUniformLocation(p, "solarIrradianceXyz"), 1, &f3(current_.small.solar_irradiance_xyz)[0]);
+    glProgramUniform3fv(p, glGetUniformLocation(p, "limbDarkeningXyz"), 1, &f3(current_.small.limb_darkening_xyz)[0]);
+    glProgramUniform1f(p, glGetUniformLocation(p, "groundAlbedo"), static_cast<float>(current_.small.ground_albedo));
+  }
 }
 
 void PhysicalSkyPass::use(std::shared_ptr<const atmosphere::AtmosphereModel> model) {
@@ -190,20 +198,34 @@ void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
                            const glm::dvec3& moonlightScale) {
   stepUpload();
   if (!current_.model) throw std::logic_error("PhysicalSkyPass::draw before use()");
-  const GLuint p = program_.id();
-  glProgramUniform3fv(p, cameraLocation_, 1, &f3(camera)[0]);
-  glProgramUniform3fv(p, sunLocation_, 1, &f3(sunDirection)[0]);
+  // The camera inside the atmosphere (every IG frame): what every pixel shares, in double, once.
+  const atmosphere::AtmosphereParameters& a = current_.model->parameters(0);
+  const double r = glm::length(camera);
+  const Program& program = r <= a.top_radius ? inside_ : space_;
+  const GLuint p = program.program.id();
+  if (&program == &inside_) {
+    const glm::dvec4 sunUvwz = shader::scatteringUvwzFromRMuMuSNu(a, r, 1.0, std::clamp(glm::dot(camera, sunDirection) / r, -1.0, 1.0), 0.0, false);
+    const glm::dvec4 moonUvwz = shader::scatteringUvwzFromRMuMuSNu(a, r, 1.0, std::clamp(glm::dot(camera, moonDirection) / r, -1.0, 1.0), 0.0, false);
+    const double rho = std::sqrt(std::max(r * r - a.bottom_radius * a.bottom_radius, 0.0));
+    const double h = std::sqrt(a.top_radius * a.top_radius - a.bottom_radius * a.bottom_radius);
+    glProgramUniform4f(p, program.radii, static_cast<float>(r), static_cast<float>(rho), static_cast<float>(h),
+                       static_cast<float>(sunUvwz.w));
+    glProgramUniform3f(p, program.angles, static_cast<float>(sunUvwz.y), static_cast<float>(moonUvwz.y),
+                       static_cast<float>(std::cos(a.sun_angular_radius)));
+  }
+  glProgramUniform3fv(p, program.camera, 1, &f3(camera)[0]);
+  glProgramUniform3fv(p, program.sun, 1, &f3(sunDirection)[0]);
   const bool moon = moonlightScale != glm::dvec3(0.0);
-  glProgramUniform1i(p, moonOnLocation_, moon ? 1 : 0);
+  glProgramUniform1i(p, program.moonOn, moon ? 1 : 0);
   if (moon) {
-    glProgramUniform3fv(p, moonDirectionLocation_, 1, &f3(moonDirection)[0]);
-    glProgramUniform3fv(p, moonScaleLocation_, 1, &f3(moonlightScale)[0]);
+    glProgramUniform3fv(p, program.moonDirection, 1, &f3(moonDirection)[0]);
+    glProgramUniform3fv(p, program.moonScale, 1, &f3(moonlightScale)[0]);
   }
   glBindTextureUnit(0, current_.transmittance);
   glBindTextureUnit(1, current_.scattering);
   glBindTextureUnit(2, current_.singleMie);
   glBindTextureUnit(3, current_.irradiance);
-  program_.use();
+  program.program.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 

@@ -65,13 +65,17 @@ class PhysicalSkyPass {
   void makeCurrent(TableSet set);
   void stepUpload();
 
+  // One of the two programs (camera inside the atmosphere / in space) and its per-frame
+  // uniforms, looked up once: draw() runs every frame.
+  struct Program {
+    explicit Program(const char* fragment);
+    GlProgram program;
+    GLint camera, sun, moonOn, moonDirection, moonScale, radii, angles;
+  };
+
   int slicesPerFrame_;
-  GlProgram program_;
-  GLint cameraLocation_ = -1;  // looked up once: draw() runs every frame
-  GLint sunLocation_ = -1;
-  GLint moonOnLocation_ = -1;
-  GLint moonDirectionLocation_ = -1;
-  GLint moonScaleLocation_ = -1;
+  Program inside_;
+  Program space_;
   TableSet current_;
   std::unique_ptr<Pending> pending_;
   std::size_t lastUploadBytes_ = 0;

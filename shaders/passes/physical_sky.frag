@@ -5,36 +5,61 @@
 // whatever the number of wavelengths. A second light (the moon: Jensen et al. 2001, the same
 // tables lit from its direction times its irradiance relative to the sun's) adds its sky and
 // ground when moonlightOn, a uniform branch.
+// With the camera inside the atmosphere (every IG frame), r, u_r and u_mu_s are the same for
+// every pixel and come from the CPU (PhysicalSkyPass::draw); only u_mu and u_nu are per pixel.
+// From space physical_sky_space.frag runs instead (a second program: a branch between the two
+// costs llvmpipe the untaken side too).
 // (No common/uniforms.h here: its analytic-sky block's member names would clash with the
 // atmosphere's functions; the vertex stage alone reads the frame block.)
-#include "atmosphere/rendering_rec709.glsl"
+#include "passes/physical_sky_uniforms.glsl"
 
-uniform AtmosphereParameters atm;
-uniform vec3 camera;         // metres from the planet's centre, local frame: x east, y north, z up
-uniform vec3 sunDirectionP;  // unit, same frame
-uniform vec3 solarIrradianceXyz;
-uniform vec3 limbDarkeningXyz;
-uniform float groundAlbedo;
-uniform bool moonlightOn;
-uniform vec3 moonDirectionP;  // unit, same frame
-uniform vec3 moonlightScale;  // Rec.709, the moon's irradiance relative to the sun's
-layout(binding = 0) uniform sampler2D transmittanceXyz;
-layout(binding = 1) uniform sampler3D scatteringPacked;
-layout(binding = 2) uniform sampler3D singleMieRG;
-layout(binding = 3) uniform sampler2D irradianceXyz;
 
-in vec3 vViewRay;
-layout(location = 0) out vec4 outRadiance;
+// u_mu of scatteringUvwzFromRMuMuSNu for this frame's radius; d: distance to the ground.
+float frameUMu(float rmu, bool ground, out float d) {
+  float r = frameRadii.x;
+  float rho = frameRadii.y;
+  float H = frameRadii.z;
+  float discriminant = rmu * rmu - rho * rho;
+  if (ground) {
+    d = -rmu - sqrt(max(discriminant, 0.0));
+    float d_min = r - atm.bottom_radius;
+    return 0.5 - 0.5 * textureCoordFromUnitRange((d - d_min) / (rho - d_min), atm.scattering_mu_size / 2.0);
+  }
+  d = -rmu + sqrt(max(discriminant + H * H, 0.0));
+  float d_min = atm.top_radius - r;
+  return 0.5 + 0.5 * textureCoordFromUnitRange((d - d_min) / (rho + H - d_min), atm.scattering_mu_size / 2.0);
+}
+
+vec3 insideRec709(vec3 view) {
+  float r = frameRadii.x;
+  float rmu = dot(camera, view);
+  bool ground = rayIntersectsGround(atm, r, rmu / r);
+  float d;
+  float u_mu = frameUMu(rmu, ground, d);
+  float nu = dot(view, sunDirectionP);
+  vec3 rgb = packedScatteredRec709(atm, scatteringPacked, singleMieRG,
+                                   vec4((nu + 1.0) * 0.5, frameAngles.x, u_mu, frameRadii.w), nu);
+  if (ground) {
+    rgb += packedGroundReflectionRec709(atm, transmittanceXyz, irradianceXyz, solarIrradianceXyz,
+                                        groundAlbedo, camera, view, d, sunDirectionP);
+  } else if (nu >= frameAngles.z) {
+    rgb += xyzToRec709Linear(packedSunDiscXyz(atm, transmittanceXyz, solarIrradianceXyz,
+                                              limbDarkeningXyz, camera, view, sunDirectionP));
+  }
+  if (moonlightOn) {
+    float nu_moon = dot(view, moonDirectionP);
+    vec3 moon = packedScatteredRec709(atm, scatteringPacked, singleMieRG,
+                                      vec4((nu_moon + 1.0) * 0.5, frameAngles.y, u_mu, frameRadii.w),
+                                      nu_moon);
+    if (ground) {
+      moon += packedGroundReflectionRec709(atm, transmittanceXyz, irradianceXyz, solarIrradianceXyz,
+                                           groundAlbedo, camera, view, d, moonDirectionP);
+    }
+    rgb += moonlightScale * moon;
+  }
+  return rgb;
+}
 
 void main() {
-  vec3 view = normalize(vViewRay);
-  vec3 rgb = packedViewRec709(atm, transmittanceXyz, scatteringPacked, singleMieRG, irradianceXyz,
-                              solarIrradianceXyz, limbDarkeningXyz, groundAlbedo, camera, view,
-                              sunDirectionP, true);
-  if (moonlightOn) {
-    rgb += moonlightScale * packedViewRec709(atm, transmittanceXyz, scatteringPacked, singleMieRG,
-                                             irradianceXyz, solarIrradianceXyz, limbDarkeningXyz,
-                                             groundAlbedo, camera, view, moonDirectionP, false);
-  }
-  outRadiance = vec4(max(rgb, vec3(0.0)), 1.0);
+  outRadiance = vec4(max(insideRec709(normalize(vViewRay)), vec3(0.0)), 1.0);
 }

@@ -52,8 +52,14 @@ class RecordReplay : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
+  // Replays render the analytic sky (what the record/replay checks need, without tables); a
+  // physical sky would keep its tables in the build tree.
   CommandResult skyig(const std::string& args) const {
-    const std::string cmd = std::string(SKYIG_EXECUTABLE) + " " + args + " >" + (dir_ / "o.txt").string() + " 2>" + (dir_ / "e.txt").string();
+    const fs::path analytic = dir_ / "analytic.toml";
+    std::ofstream(analytic) << "[sky]\nmodel = \"preetham\"\n";
+    const std::string config = args.rfind("replay ", 0) == 0 ? " --config " + analytic.string() : "";
+    const std::string cmd = "XDG_CACHE_HOME=" + std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache " +
+                            std::string(SKYIG_EXECUTABLE) + " " + args + config + " >" + (dir_ / "o.txt").string() + " 2>" + (dir_ / "e.txt").string();
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "o.txt"), slurp(dir_ / "e.txt")};
   }
@@ -77,6 +83,7 @@ class RecordReplay : public ::testing::Test {
 TEST_F(RecordReplay, ReplayGivesTheLiveRunsHostStates) {
   const std::uint16_t port = freeLoopbackPort();
   NodeOptions o;
+  o.config.sky.model = skyig::render::SkyModel::Preetham;  // the analytic sky: no tables to load
   o.config.channels.front().width = 32;
   o.config.channels.front().height = 24;
   o.listen = {"127.0.0.1", port};
@@ -221,6 +228,7 @@ TEST_F(RecordReplay, FullDiskStopsRecordingNotTheNode) {
   if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
   const std::uint16_t port = freeLoopbackPort();
   NodeOptions o;
+  o.config.sky.model = skyig::render::SkyModel::Preetham;
   o.config.channels.front().width = 16;
   o.config.channels.front().height = 16;
   o.listen = {"127.0.0.1", port};

@@ -1,6 +1,6 @@
 #pragma once
 // The GPU side of the physical atmosphere: a model's tables folded into linear Rec.709 at half
-// float (render/atmosphere/rec709_tables.h; 12.3 MB at the default size) and the sky pass that
+// float (render/atmosphere/rec709_tables.h; 12.9 MB at the default size) and the sky pass that
 // renders from them (shaders/passes/physical_sky.frag). A new model is uploaded a few
 // scattering slices per frame into a second texture set while the current one is drawn, then
 // swapped in: a frame never waits for a whole table set.
@@ -18,8 +18,10 @@ namespace skyig::render {
 
 class PhysicalSkyPass {
  public:
-  // slicesPerFrame: scattering slices (radii) a frame uploads while a new model is pending.
-  explicit PhysicalSkyPass(int slicesPerFrame = 4);
+  // Scattering slices (radii) a frame packs and uploads while a new model is pending: 2 of the
+  // default tables (256 x 128 texels each) cost a few ms of CPU (docs/atmosphere.md).
+  static constexpr int kDefaultSlicesPerFrame = 2;
+  explicit PhysicalSkyPass(int slicesPerFrame = kDefaultSlicesPerFrame);
   ~PhysicalSkyPass();
   PhysicalSkyPass(const PhysicalSkyPass&) = delete;
   PhysicalSkyPass& operator=(const PhysicalSkyPass&) = delete;

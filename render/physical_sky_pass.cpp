@@ -89,11 +89,16 @@ PhysicalSkyPass::Program::Program(const char* fragment)
       angles(glGetUniformLocation(program.id(), "frameAngles")) {}
 
 PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame)
-    : slicesPerFrame_(slicesPerFrame), inside_("passes/physical_sky.frag"), space_("passes/physical_sky_space.frag") {
+    : slicesPerFrame_(slicesPerFrame),
+      inside_("passes/physical_sky.frag"),
+      space_("passes/physical_sky_space.frag"),
+      sliceProgram_("passes/fullscreen.vert", "passes/physical_sky_slice.frag"),
+      sliceCoordsLocation_(glGetUniformLocation(sliceProgram_.id(), "sliceCoords")) {
   if (slicesPerFrame < 1) throw std::invalid_argument("PhysicalSkyPass: slices per frame " + std::to_string(slicesPerFrame) + " must be at least 1");
 }
 
 PhysicalSkyPass::~PhysicalSkyPass() {
+  releaseSlices();
   releaseSet(current_);
   if (pending_) releaseSet(pending_->set);
 }
@@ -146,6 +151,47 @@ void PhysicalSkyPass::makeCurrent(TableSet set) {
     glProgramUniform3fv(p, glGetUniformLocation(p, "limbDarkeningXyz"), 1, &f3(current_.small.limb_darkening_xyz)[0]);
     glProgramUniform1f(p, glGetUniformLocation(p, "groundAlbedo"), static_cast<float>(current_.small.ground_albedo));
   }
+}
+
+void PhysicalSkyPass::releaseSlices() {
+  for (Slice* s : {&sunSlice_, &moonSlice_}) {
+    if (s->framebuffer == 0) continue;
+    glDeleteFramebuffers(1, &s->framebuffer);
+    const GLuint ids[] = {s->scattering, s->singleMie};
+    glDeleteTextures(2, ids);
+    *s = Slice{};
+  }
+  sliceWidth_ = sliceHeight_ = 0;
+}
+
+void PhysicalSkyPass::ensureSlices() {
+  const auto& t = current_.model->tables(0).scattering;
+  const int width = static_cast<int>(current_.model->parameters(0).scattering_nu_size);
+  const int height = t.height;
+  if (width == sliceWidth_ && height == sliceHeight_) return;
+  releaseSlices();
+  for (Slice* s : {&sunSlice_, &moonSlice_}) {
+    s->scattering = createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(s->scattering, 1, GL_RGBA32F, width, height);
+    s->singleMie = createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(s->singleMie, 1, GL_RGBA32F, width, height);
+    glCreateFramebuffers(1, &s->framebuffer);
+    glNamedFramebufferTexture(s->framebuffer, GL_COLOR_ATTACHMENT0, s->scattering, 0);
+    glNamedFramebufferTexture(s->framebuffer, GL_COLOR_ATTACHMENT1, s->singleMie, 0);
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(s->framebuffer, 2, buffers);
+  }
+  sliceWidth_ = width;
+  sliceHeight_ = height;
+}
+
+void PhysicalSkyPass::drawSlice(const Slice& slice, double uMuS, double uR) {
+  glProgramUniform3f(sliceProgram_.id(), sliceCoordsLocation_, static_cast<float>(uMuS), static_cast<float>(uR),
+                     static_cast<float>(sliceWidth_));
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, slice.framebuffer);
+  glViewport(0, 0, sliceWidth_, sliceHeight_);
+  sliceProgram_.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 void PhysicalSkyPass::use(std::shared_ptr<const atmosphere::AtmosphereModel> model) {
@@ -203,6 +249,9 @@ void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   const double r = glm::length(camera);
   const Program& program = r <= a.top_radius ? inside_ : space_;
   const GLuint p = program.program.id();
+  const bool moon = moonlightScale != glm::dvec3(0.0);
+  glBindTextureUnit(1, current_.scattering);
+  glBindTextureUnit(2, current_.singleMie);
   if (&program == &inside_) {
     const glm::dvec4 sunUvwz = shader::scatteringUvwzFromRMuMuSNu(a, r, 1.0, std::clamp(glm::dot(camera, sunDirection) / r, -1.0, 1.0), 0.0, false);
     const glm::dvec4 moonUvwz = shader::scatteringUvwzFromRMuMuSNu(a, r, 1.0, std::clamp(glm::dot(camera, moonDirection) / r, -1.0, 1.0), 0.0, false);
@@ -212,18 +261,30 @@ void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
                        static_cast<float>(sunUvwz.w));
     glProgramUniform3f(p, program.angles, static_cast<float>(sunUvwz.y), static_cast<float>(moonUvwz.y),
                        static_cast<float>(std::cos(a.sun_angular_radius)));
+    // This frame's slices of the tables at r and each light's u_mu_s, into small targets; the
+    // caller's target and viewport come back after.
+    ensureSlices();
+    GLint target = 0;
+    GLint viewport[4] = {0, 0, 0, 0};
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    drawSlice(sunSlice_, sunUvwz.y, sunUvwz.w);
+    if (moon) drawSlice(moonSlice_, moonUvwz.y, moonUvwz.w);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    glBindTextureUnit(4, sunSlice_.scattering);
+    glBindTextureUnit(5, sunSlice_.singleMie);
+    glBindTextureUnit(6, moonSlice_.scattering);
+    glBindTextureUnit(7, moonSlice_.singleMie);
   }
   glProgramUniform3fv(p, program.camera, 1, &f3(camera)[0]);
   glProgramUniform3fv(p, program.sun, 1, &f3(sunDirection)[0]);
-  const bool moon = moonlightScale != glm::dvec3(0.0);
   glProgramUniform1i(p, program.moonOn, moon ? 1 : 0);
   if (moon) {
     glProgramUniform3fv(p, program.moonDirection, 1, &f3(moonDirection)[0]);
     glProgramUniform3fv(p, program.moonScale, 1, &f3(moonlightScale)[0]);
   }
   glBindTextureUnit(0, current_.transmittance);
-  glBindTextureUnit(1, current_.scattering);
-  glBindTextureUnit(2, current_.singleMie);
   glBindTextureUnit(3, current_.irradiance);
   program.program.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -75,9 +75,21 @@ class PhysicalSkyPass {
     GLint camera, sun, moonOn, moonDirection, moonScale, radii, angles;
   };
 
+  // This frame's 2D slice of the scattering tables for one light (physical_sky_slice.frag).
+  struct Slice {
+    GLuint scattering = 0, singleMie = 0, framebuffer = 0;
+  };
+  void ensureSlices();
+  void releaseSlices();
+  void drawSlice(const Slice& slice, double uMuS, double uR);
+
   int slicesPerFrame_;
   Program inside_;
   Program space_;
+  GlProgram sliceProgram_;
+  GLint sliceCoordsLocation_ = -1;
+  Slice sunSlice_, moonSlice_;
+  int sliceWidth_ = 0, sliceHeight_ = 0;
   TableSet current_;
   std::unique_ptr<Pending> pending_;
   std::size_t lastUploadBytes_ = 0;

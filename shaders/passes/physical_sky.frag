@@ -6,12 +6,30 @@
 // tables lit from its direction times its irradiance relative to the sun's) adds its sky and
 // ground when moonlightOn, a uniform branch.
 // With the camera inside the atmosphere (every IG frame), r, u_r and u_mu_s are the same for
-// every pixel and come from the CPU (PhysicalSkyPass::draw); only u_mu and u_nu are per pixel.
+// every pixel and come from the CPU (PhysicalSkyPass::draw): the scattering tables are read
+// from this frame's 2D slices (physical_sky_slice.frag); only u_mu and u_nu are per pixel.
 // From space physical_sky_space.frag runs instead (a second program: a branch between the two
 // costs llvmpipe the untaken side too).
 // (No common/uniforms.h here: its analytic-sky block's member names would clash with the
 // atmosphere's functions; the vertex stage alone reads the frame block.)
 #include "passes/physical_sky_uniforms.glsl"
+
+// This frame's 2D slices of the scattering tables (physical_sky_slice.frag) for the sun and
+// the moon: x = nu texel, y = u_mu.
+layout(binding = 4) uniform sampler2D sunSliceScattering;
+layout(binding = 5) uniform sampler2D sunSliceSingleMie;
+layout(binding = 6) uniform sampler2D moonSliceScattering;
+layout(binding = 7) uniform sampler2D moonSliceSingleMie;
+
+// packedScatteredRec709 from a slice: GL's bilinear filter does the blend in nu by hand of
+// lookupScatteringUvwz (the same weights: texel centres at (i + 0.5) / nu_size).
+vec3 sliceScatteredRec709(sampler2D scattering, sampler2D singleMie, float u_mu, float nu) {
+  float x = ((nu + 1.0) * 0.5 * (atm.scattering_nu_size - 1.0) + 0.5) / atm.scattering_nu_size;
+  vec4 s = texture(scattering, vec2(x, u_mu));
+  vec4 m = texture(singleMie, vec2(x, u_mu));
+  return (s.xyz * rayleighPhaseFunction(nu) + vec3(m.x, m.y, s.w) * miePhaseFunction(atm.mie_phase_g, nu)) *
+         (1.0 / REC709_TABLE_SCALE);
+}
 
 
 // u_mu of scatteringUvwzFromRMuMuSNu for this frame's radius; d: distance to the ground.
@@ -37,8 +55,7 @@ vec3 insideRec709(vec3 view) {
   float d;
   float u_mu = frameUMu(rmu, ground, d);
   float nu = dot(view, sunDirectionP);
-  vec3 rgb = packedScatteredRec709(atm, scatteringPacked, singleMieRG,
-                                   vec4((nu + 1.0) * 0.5, frameAngles.x, u_mu, frameRadii.w), nu);
+  vec3 rgb = sliceScatteredRec709(sunSliceScattering, sunSliceSingleMie, u_mu, nu);
   if (ground) {
     rgb += packedGroundReflectionRec709(atm, transmittanceXyz, irradianceXyz, solarIrradianceXyz,
                                         groundAlbedo, camera, view, d, sunDirectionP);
@@ -48,9 +65,7 @@ vec3 insideRec709(vec3 view) {
   }
   if (moonlightOn) {
     float nu_moon = dot(view, moonDirectionP);
-    vec3 moon = packedScatteredRec709(atm, scatteringPacked, singleMieRG,
-                                      vec4((nu_moon + 1.0) * 0.5, frameAngles.y, u_mu, frameRadii.w),
-                                      nu_moon);
+    vec3 moon = sliceScatteredRec709(moonSliceScattering, moonSliceSingleMie, u_mu, nu_moon);
     if (ground) {
       moon += packedGroundReflectionRec709(atm, transmittanceXyz, irradianceXyz, solarIrradianceXyz,
                                            groundAlbedo, camera, view, d, moonDirectionP);

@@ -3,6 +3,7 @@
 #include "shaders/common/uniforms.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace skyig::render {
 
@@ -73,10 +74,13 @@ void SkyRenderer::drawSkyPass(const SkyState& state, const ChannelConfig& channe
   glDisable(GL_BLEND);
   hdr_->bindForDrawing();
   if (state.conditions.model == SkyModel::Physical) {
+    if (!state.conditions.atmosphere) throw std::invalid_argument("physical sky without an atmosphere model");
     if (!physical_) physical_ = std::make_unique<PhysicalSkyPass>();
-    physical_->use(*state.conditions.atmosphere);
+    physical_->use(state.conditions.atmosphere);
+    // The tables on screen may still be the previous model's while a new one uploads; both
+    // share the planet, so the camera is the same.
     physical_->draw(physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
-                    enuDirection(state.sunAzimuth, state.sunAltitude));
+                    enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection, state.moonlightScale);
     return;
   }
   skyProgram_.use();

@@ -27,6 +27,10 @@ class SkyRenderer {
   // Copies the last tone-reproduced frame to the window's back buffer (windowed channels).
   void presentToDefaultFramebuffer(int windowWidth, int windowHeight) const;
 
+  // The physical sky pass, once a state needed it (its table upload state, for tests and
+  // benchmarks); null before.
+  const PhysicalSkyPass* physicalPass() const { return physical_.get(); }
+
   HdrImage readHdr() const;
   DisplayImage readDisplay() const;
 

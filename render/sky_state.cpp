@@ -3,6 +3,7 @@
 #include "ephemeris/ephemeris.h"
 #include "render/atmosphere/model.h"
 #include "render/night/moon_light.h"
+#include "render/physical_camera.h"
 
 #include <algorithm>
 #include <cmath>
@@ -48,7 +49,7 @@ void validate(const ObserverState& o, const SkyConditions& c) {
 // azimuth, 12 x 24: the adaptation level varies slowly, and this runs per state on the CPU).
 double physicalMeanSkyLuminance(const atmosphere::AtmosphereModel& model, double heightM, const glm::dvec3& sun) {
   constexpr int kMu = 12, kPhi = 24;
-  const glm::dvec3 camera(0.0, 0.0, model.parameters(0).bottom_radius + std::max(heightM, 1.0));
+  const glm::dvec3 camera = physicalCamera(model, heightM);
   double sum = 0.0;
   for (int i = 0; i < kMu; ++i) {
     const double mu = (i + 0.5) / kMu;

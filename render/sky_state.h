@@ -43,8 +43,11 @@ struct SkyState {
   // (moon, planets, stars, Milky Way, zodiacal light): the physical model's medium, or the
   // default medium under an analytic sky. Shared between states of nearly the same altitude.
   std::shared_ptr<const atmosphere::ExtinctionProfile> extinction;
-  glm::dvec3 moonDirection{0.0, 0.0, -1.0};  // ENU, airless: lights the sky like the sun
-  glm::dvec3 moonlightScale{0.0};            // moon / sun irradiance per Rec.709 channel; 0: no moonlit sky
+  // A second light for the physical sky (the moonlit sky, Jensen et al. 2001): unit direction
+  // in the local east-north-up frame (x east, y north, z up), airless, and the moon's irradiance
+  // relative to the sun's per linear Rec.709 channel; a zero scale (the default) turns it off.
+  glm::dvec3 moonDirection{0.0, 0.0, -1.0};
+  glm::dvec3 moonlightScale{0.0};
 };
 
 // Throws std::invalid_argument naming the bad value (latitude out of range, NaN, a date

@@ -1,11 +1,13 @@
 #include "services/node.h"
 
 #include "protocol/cigi/encoder.h"
+#include "render/atmosphere/updater.h"
 #include "render/gl_context.h"
 #include "render/glfw_window.h"
 #include "render/sky_renderer.h"
 #include "services/can_receiver.h"
 #include "services/cigi_receiver.h"
+#include "services/host_atmosphere.h"
 #include "services/recorder.h"
 #include "services/state_dump.h"
 
@@ -57,23 +59,69 @@ std::vector<render::ChannelConfig> channelsFor(const std::vector<render::Channel
   return channels;
 }
 
+// The physical sky's half of the worker: the host's visibility and humidity -> (debounced,
+// validated) a request to the background updater -> its newest model in the next SkyStates
+// (the renderer uploads it across frames, render/physical_sky_pass.h).
+class AtmosphereFollower {
+ public:
+  AtmosphereFollower(const NodeConfig& config, atmosphere::AtmosphereUpdater* updater)
+      : config_(config),
+        updater_(updater),
+        host_(updater ? updater->current()->config().medium : atmosphere::Medium{}, config.sky.groundAlbedo) {}
+
+  // Returns true when the sky's model changed (the conditions then carry the new one).
+  bool update(const HostSnapshot* snapshot, render::SkyConditions& conditions, NodeStats& stats, Clock::time_point now) {
+    if (!updater_) return false;
+    if (snapshot) {
+      try {
+        if (const auto c = host_.observe(snapshot->state.visibilityM, snapshot->state.humidityPct, now)) {
+          spdlog::info("physical sky: visibility {:.0f} m, humidity {:.0f} %: new tables requested",
+                       snapshot->state.visibilityM, snapshot->state.humidityPct);
+          updater_->request(nodeModelConfig(config_, *c));
+        }
+      } catch (const std::invalid_argument& e) {
+        stats.rejectedValues.fetch_add(1, std::memory_order_relaxed);
+        spdlog::warn("host atmosphere not usable, keeping the last one: {}", e.what());
+      }
+    }
+    const std::uint64_t generation = updater_->generation();
+    if (generation == generation_) return false;
+    generation_ = generation;
+    conditions.atmosphere = updater_->current();
+    return true;
+  }
+
+ private:
+  const NodeConfig& config_;
+  atmosphere::AtmosphereUpdater* updater_;
+  HostAtmosphere host_;
+  std::uint64_t generation_ = 0;  // the updater's initial model is the configuration's
+};
+
 // The worker: ephemeris, sky conditions and adaptation for the latest host state, published
 // as an immutable SkyState. It never waits for the renderer, and a state it cannot use (a
 // bad value that passed the decoder) is counted and the last good sky kept.
 void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& host,
-                Latest<render::SkyState>& sky, const std::atomic<bool>& stop) {
+                Latest<render::SkyState>& sky, atmosphere::AtmosphereUpdater* updater, const std::atomic<bool>& stop) {
+  render::SkyConditions conditions = opt.config.sky;
+  AtmosphereFollower follower(opt.config, updater);
+  std::shared_ptr<const HostSnapshot> snapshot;
   std::uint64_t seen = ~0ull;
   ephemeris::EphemerisCache ephemerisCache;  // the worker's own: frame-to-frame interpolation
   auto lastSky = Clock::now() - 1h;
   auto lastStats = Clock::now();
   while (!stop.load(std::memory_order_relaxed)) {
     const auto now = Clock::now();
-    // A new host state, or at least every 100 ms so the sun follows the clock.
-    if (host.version() != seen || now - lastSky > 100ms) {
+    const bool newHost = host.version() != seen;
+    if (newHost) {
       seen = host.version();
-      const auto snapshot = host.get();
+      snapshot = host.get();
+    }
+    const bool newAtmosphere = follower.update(snapshot.get(), conditions, stats, now);
+    // A new host state or atmosphere, or at least every 100 ms so the sun follows the clock.
+    if (newHost || newAtmosphere || now - lastSky > 100ms) {
       try {
-        sky.publish(render::buildSkyState(observerAt(opt.config, snapshot.get(), now), opt.config.sky, std::nullopt,
+        sky.publish(render::buildSkyState(observerAt(opt.config, snapshot.get(), now), conditions, std::nullopt,
                                           &ephemerisCache));
         stats.skyStates.fetch_add(1, std::memory_order_relaxed);
       } catch (const std::exception& e) {
@@ -200,13 +248,24 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   const int canFd = opt.canInterface ? ownedCan.fd : opt.canFd;
   std::unique_ptr<CanReceiver> can;
   if (canFd >= 0) can = std::make_unique<CanReceiver>(canFd, opt.config.canIdentifiers, stats, host);
-  sky.publish(render::buildSkyState(opt.config.observer, opt.config.sky));  // frame 0 already has a sky
+  // The physical sky follows the host's visibility and humidity through a background updater
+  // (from the cache the configuration's tables were just loaded from).
+  std::unique_ptr<atmosphere::AtmosphereUpdater> updater;
+  NodeConfig config = opt.config;
+  if (config.sky.model == render::SkyModel::Physical) {
+    updater = std::make_unique<atmosphere::AtmosphereUpdater>(nodeModelConfig(config, {}),
+                                                              nodeCacheDirectory(config.atmosphere));
+    if (!config.sky.atmosphere) config.sky.atmosphere = updater->current();
+  }
+  NodeOptions workerOptions = opt;
+  workerOptions.config = config;
+  sky.publish(render::buildSkyState(config.observer, config.sky));  // frame 0 already has a sky
 
   {
     ThreadGroup threads(stop);  // inside what the threads use: joined before any of it goes
     threads.start([&] { cigi.run(udp, stop); });
     if (can) threads.start([&] { can->run(stop); });
-    threads.start([&] { workerLoop(opt, stats, host, sky, stop); });
+    threads.start([&] { workerLoop(workerOptions, stats, host, sky, updater.get(), stop); });
 
     const auto baseChannels = opt.config.channelsOf(opt.config.nodeName);
     if (baseChannels.empty()) throw ConfigError("node \"" + opt.config.nodeName + "\" has no channels in the configuration");

@@ -31,9 +31,16 @@ struct AtmosphereSettings {
   std::string cacheDir;          // "" = $XDG_CACHE_HOME/skyig or ~/.cache/skyig
 };
 
+// The default sky: the physical atmosphere (Bruneton & Neyret 2008, docs/atmosphere.md).
+inline render::SkyConditions physicalSky() {
+  render::SkyConditions c;
+  c.model = render::SkyModel::Physical;
+  return c;
+}
+
 struct NodeConfig {
   std::string nodeName = "ig";
-  render::SkyConditions sky;
+  render::SkyConditions sky = physicalSky();
   render::ObserverState observer;
   std::vector<render::ChannelConfig> channels{render::ChannelConfig{}};
   std::vector<std::string> channelNodes{""};  // per channel: the node that renders it ("" any)

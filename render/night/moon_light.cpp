@@ -2,7 +2,9 @@
 
 #include "ephemeris/night_irradiance.h"
 #include "render/atmosphere/spectral_data.h"
+#include "render/atmosphere/rec709_tables.h"
 #include "render/atmosphere/spectrum.h"
+#include "render/physical_camera.h"
 #include "render/sky_state.h"
 #include "shaders/physics.h"
 
@@ -54,11 +56,9 @@ glm::dvec3 moonlightScale(const ephemeris::SkyEphemeris& sky) {
 MoonRadiance moonlitSkyRadiance(const atmosphere::AtmosphereModel& model, const SkyState& state,
                                 const glm::dvec3& viewEnu) {
   if (state.moonlightScale == glm::dvec3(0.0)) return {};
-  // The observer as the sky pass places it (render/physical_sky_pass.h physicalCamera).
-  const glm::dvec3 camera(0.0, 0.0, model.parameters(0).bottom_radius + std::max(state.observer.heightM, 1.0));
-  const glm::dvec3 rgb =
-      model.converter().toRec709(model.skyRadiance(camera, glm::normalize(viewEnu), state.moonDirection)) *
-      state.moonlightScale;
+  const glm::dvec3 rgb = atmosphere::moonlitSkyRec709(model, physicalCamera(model, state.observer.heightM),
+                                                     glm::normalize(viewEnu), state.moonDirection,
+                                                     state.moonlightScale);
   return {rgb, shader::rec709Luminance(rgb)};
 }
 

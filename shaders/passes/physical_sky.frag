@@ -1,60 +1,80 @@
 // Sky pass of the physical atmosphere (Bruneton & Neyret 2008, section 5 without light
-// shafts): for each group of four wavelengths, the sky scattered into the view ray, the limb-
-// darkened sun disc and, where the ray meets the ground, the Lambertian ground attenuated by
-// the air in between; each group's spectral radiance goes to linear Rec.709 (cd/m^2) through
-// the CIE 1931 weights of its wavelengths (groupToRec709, columns = wavelengths).
+// shafts) from the tables folded into linear Rec.709 (atmosphere/rendering_rec709.glsl): the
+// sky scattered into the view ray, the limb-darkened sun disc and, where the ray meets the
+// ground, the Lambertian ground attenuated by the air in between; one lookup set per pixel
+// whatever the number of wavelengths. A second light (the moon: Jensen et al. 2001, the same
+// tables lit from its direction times its irradiance relative to the sun's) adds its sky and
+// ground when moonlightOn, a uniform branch.
+// With the camera inside the atmosphere (every IG frame), r, u_r and u_mu_s are the same for
+// every pixel and come from the CPU (PhysicalSkyPass::draw): the scattering tables are read
+// from this frame's 2D slices (physical_sky_slice.frag); only u_mu and u_nu are per pixel.
+// From space physical_sky_space.frag runs instead (a second program: a branch between the two
+// costs llvmpipe the untaken side too).
 // (No common/uniforms.h here: its analytic-sky block's member names would clash with the
 // atmosphere's functions; the vertex stage alone reads the frame block.)
-#include "atmosphere/rendering.glsl"
+#include "passes/physical_sky_uniforms.glsl"
 
-#define MAX_GROUPS 4
-uniform AtmosphereParameters atm[MAX_GROUPS];
-uniform int groupCount;
-uniform mat4 groupToRec709[MAX_GROUPS];
-uniform vec3 camera;         // metres from the planet's centre, local frame: x east, y north, z up
-uniform vec3 sunDirectionP;  // unit, same frame
-layout(binding = 0) uniform sampler2D transmittanceTextures[MAX_GROUPS];
-layout(binding = 4) uniform sampler3D scatteringTextures[MAX_GROUPS];
-layout(binding = 8) uniform sampler3D singleMieTextures[MAX_GROUPS];
-layout(binding = 12) uniform sampler2D irradianceTextures[MAX_GROUPS];
+// This frame's 2D slices of the scattering tables (physical_sky_slice.frag) for the sun and
+// the moon: x = nu texel, y = u_mu.
+layout(binding = 4) uniform sampler2D sunSliceScattering;
+layout(binding = 5) uniform sampler2D sunSliceSingleMie;
+layout(binding = 6) uniform sampler2D moonSliceScattering;
+layout(binding = 7) uniform sampler2D moonSliceSingleMie;
 
-in vec3 vViewRay;
-layout(location = 0) out vec4 outRadiance;
+// packedScatteredRec709 from a slice: GL's bilinear filter does the blend in nu by hand of
+// lookupScatteringUvwz (the same weights: texel centres at (i + 0.5) / nu_size).
+vec3 sliceScatteredRec709(sampler2D scattering, sampler2D singleMie, float u_mu, float nu) {
+  float x = ((nu + 1.0) * 0.5 * (atm.scattering_nu_size - 1.0) + 0.5) / atm.scattering_nu_size;
+  vec4 s = texture(scattering, vec2(x, u_mu));
+  vec4 m = texture(singleMie, vec2(x, u_mu));
+  return (s.xyz * rayleighPhaseFunction(nu) + vec3(m.x, m.y, s.w) * miePhaseFunction(atm.mie_phase_g, nu)) *
+         (1.0 / REC709_TABLE_SCALE);
+}
 
-vec4 groupRadiance(IN(AtmosphereParameters) a, IN(sampler2D) t, IN(sampler3D) s, IN(sampler3D) m,
-                   IN(sampler2D) e, IN(vec3) view) {
-  vec4 transmittance;
-  vec4 radiance = skyRadiance(a, t, s, m, camera, view, sunDirectionP, transmittance);
-  radiance += sunDiscRadiance(a, t, camera, view, sunDirectionP);
-  Float r = length(camera);
-  Float rmu = dot(camera, view);
-  Float discriminant = rmu * rmu - r * r + a.bottom_radius * a.bottom_radius;
-  if (rmu < 0.0 && discriminant >= 0.0) {
-    vec3 groundPoint = camera + view * (-rmu - sqrt(discriminant));
-    vec4 skyIrradiance;
-    vec4 sunIrradiance = sunAndSkyIrradiance(a, t, e, groundPoint, normalize(groundPoint), sunDirectionP,
-                                             skyIrradiance);
-    vec4 groundTransmittance;
-    skyRadianceToPoint(a, t, s, m, camera, groundPoint, sunDirectionP, groundTransmittance);
-    radiance += a.ground_albedo * (1.0 / ATMOSPHERE_PI) * (sunIrradiance + skyIrradiance) * groundTransmittance;
+
+// u_mu of scatteringUvwzFromRMuMuSNu for this frame's radius; d: distance to the ground.
+float frameUMu(float rmu, bool ground, out float d) {
+  float r = frameRadii.x;
+  float rho = frameRadii.y;
+  float H = frameRadii.z;
+  float discriminant = rmu * rmu - rho * rho;
+  if (ground) {
+    d = -rmu - sqrt(max(discriminant, 0.0));
+    float d_min = r - atm.bottom_radius;
+    return 0.5 - 0.5 * textureCoordFromUnitRange((d - d_min) / (rho - d_min), atm.scattering_mu_size / 2.0);
   }
-  return radiance;
+  d = -rmu + sqrt(max(discriminant + H * H, 0.0));
+  float d_min = atm.top_radius - r;
+  return 0.5 + 0.5 * textureCoordFromUnitRange((d - d_min) / (rho + H - d_min), atm.scattering_mu_size / 2.0);
+}
+
+vec3 insideRec709(vec3 view) {
+  float r = frameRadii.x;
+  float rmu = dot(camera, view);
+  bool ground = rayIntersectsGround(atm, r, rmu / r);
+  float d;
+  float u_mu = frameUMu(rmu, ground, d);
+  float nu = dot(view, sunDirectionP);
+  vec3 rgb = sliceScatteredRec709(sunSliceScattering, sunSliceSingleMie, u_mu, nu);
+  if (ground) {
+    rgb += packedGroundReflectionRec709(atm, transmittanceXyz, irradianceXyz, solarIrradianceXyz,
+                                        groundAlbedo, camera, view, d, sunDirectionP);
+  } else if (nu >= frameAngles.z) {
+    rgb += xyzToRec709Linear(packedSunDiscXyz(atm, transmittanceXyz, solarIrradianceXyz,
+                                              limbDarkeningXyz, camera, view, sunDirectionP));
+  }
+  if (moonlightOn) {
+    float nu_moon = dot(view, moonDirectionP);
+    vec3 moon = sliceScatteredRec709(moonSliceScattering, moonSliceSingleMie, u_mu, nu_moon);
+    if (ground) {
+      moon += packedGroundReflectionRec709(atm, transmittanceXyz, irradianceXyz, solarIrradianceXyz,
+                                           groundAlbedo, camera, view, d, moonDirectionP);
+    }
+    rgb += moonlightScale * moon;
+  }
+  return rgb;
 }
 
 void main() {
-  vec3 view = normalize(vViewRay);
-  vec3 rgb = vec3(0.0);
-  // Sampler arrays are indexed by constants, so each group is spelled out.
-  rgb += (groupToRec709[0] * groupRadiance(atm[0], transmittanceTextures[0], scatteringTextures[0],
-                                           singleMieTextures[0], irradianceTextures[0], view)).rgb;
-  if (groupCount > 1)
-    rgb += (groupToRec709[1] * groupRadiance(atm[1], transmittanceTextures[1], scatteringTextures[1],
-                                             singleMieTextures[1], irradianceTextures[1], view)).rgb;
-  if (groupCount > 2)
-    rgb += (groupToRec709[2] * groupRadiance(atm[2], transmittanceTextures[2], scatteringTextures[2],
-                                             singleMieTextures[2], irradianceTextures[2], view)).rgb;
-  if (groupCount > 3)
-    rgb += (groupToRec709[3] * groupRadiance(atm[3], transmittanceTextures[3], scatteringTextures[3],
-                                             singleMieTextures[3], irradianceTextures[3], view)).rgb;
-  outRadiance = vec4(max(rgb, vec3(0.0)), 1.0);
+  outRadiance = vec4(max(insideRec709(normalize(vViewRay)), vec3(0.0)), 1.0);
 }

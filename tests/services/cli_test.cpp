@@ -42,7 +42,9 @@ class Cli : public ::testing::Test {
 
   Result run(const std::string& args) const {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = std::string(SKYIG_EXECUTABLE) + " " + args + " >" + out.string() + " 2>" + err.string();
+    // The physical sky (the default) keeps its tables in the build tree, not in $HOME.
+    const std::string command = "XDG_CACHE_HOME=" + std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache " +
+                                std::string(SKYIG_EXECUTABLE) + " " + args + " >" + out.string() + " 2>" + err.string();
     const int status = std::system(command.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
   }
@@ -64,8 +66,8 @@ class Cli : public ::testing::Test {
 
 }  // namespace
 
-TEST_F(Cli, RendersDefaultSkyWithOnlyAnOutput) {
-  const Result r = run("render --size 64x48 --exr " + (dir_ / "sky.exr").string() + " --png " + (dir_ / "sky.png").string());
+TEST_F(Cli, RendersAnAnalyticSkyWithOnlyAnOutput) {
+  const Result r = run("render --sky-model preetham --size 64x48 --exr " + (dir_ / "sky.exr").string() + " --png " + (dir_ / "sky.png").string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto exr = skyig::render::readExr((dir_ / "sky.exr").string());
   EXPECT_EQ(exr.image.width, 64);
@@ -112,7 +114,7 @@ TEST_F(Cli, BadConfigNamesFileLineAndKey) {
 
 TEST_F(Cli, UnwritableOutputExitsTwoAndWritesNothing) {
   const std::string good = (dir_ / "good.exr").string();
-  const Result r = run("render --exr " + good + " --png /nonexistent-dir/sky.png");
+  const Result r = run("render --sky-model preetham --exr " + good + " --png /nonexistent-dir/sky.png");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("/nonexistent-dir"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(good));  // checked before rendering: not even the good output
@@ -164,10 +166,11 @@ TEST_F(Cli, ProbeNeedsASun) {
 }
 
 TEST_F(Cli, ServeRejectsAnUnwritableDumpBeforeListening) {
-  const Result r = run("serve --headless --frames 1 --listen 127.0.0.1:0 --dump-state /nonexistent-dir/states.jsonl");
+  const fs::path analytic = write("analytic.toml", "[sky]\nmodel = \"preetham\"\n");
+  const Result r = run("serve --config " + analytic.string() + " --headless --frames 1 --listen 127.0.0.1:0 --dump-state /nonexistent-dir/states.jsonl");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("/nonexistent-dir"), std::string::npos) << r.err;
-  const Result bad = run("serve --headless --frames 1 --listen 127.0.0.1:99999");
+  const Result bad = run("serve --config " + analytic.string() + " --headless --frames 1 --listen 127.0.0.1:99999");
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_NE(bad.err.find("port must be 0..65535"), std::string::npos) << bad.err;
 }

@@ -43,9 +43,14 @@ class NodeRun {
       } catch (const std::exception& e) {
         error = e.what();
       }
+      running_ = false;
     });
   }
   ~NodeRun() { stop(); }
+  // The first frame: the socket is bound and the renderer up.
+  bool waitUntilRendering() {
+    return waitUntil([this] { return stats.frames.load() > 0 || !running_; });
+  }
   void stop() {
     stop_ = true;
     if (thread_.joinable()) thread_.join();
@@ -56,11 +61,13 @@ class NodeRun {
  private:
   NodeOptions options_;
   std::atomic<bool> stop_{false};
+  std::atomic<bool> running_{true};
   std::thread thread_;
 };
 
 NodeOptions smallNode(std::uint16_t port, const fs::path& dump) {
   NodeOptions o;
+  o.config.sky.model = skyig::render::SkyModel::Preetham;  // the analytic sky: no tables to load
   o.config.channels.front().width = 32;
   o.config.channels.front().height = 24;
   o.listen = {"127.0.0.1", port};
@@ -133,9 +140,9 @@ class NodeIntegration : public ::testing::Test {
 TEST_F(NodeIntegration, HostToHeadlessNodeDumpsTheFlownPath) {
   const std::uint16_t port = freeLoopbackPort();
   NodeRun node(smallNode(port, dir_ / "dump.jsonl"));
-  std::this_thread::sleep_for(300ms);
+  ASSERT_TRUE(node.waitUntilRendering());
   fly(port, 2.0);
-  std::this_thread::sleep_for(100ms);
+  ASSERT_TRUE(waitForFrames(node.stats.frames, 3));
   node.stop();
   ASSERT_TRUE(node.error.empty()) << node.error;
   int withHost = 0;
@@ -151,9 +158,9 @@ TEST_F(NodeIntegration, HostToHeadlessNodeDumpsTheFlownPath) {
 TEST_F(NodeIntegration, LossAndReorderingDoNotBreakIt) {
   const std::uint16_t port = freeLoopbackPort();
   NodeRun node(smallNode(port, dir_ / "dump.jsonl"));
-  std::this_thread::sleep_for(300ms);
+  ASSERT_TRUE(node.waitUntilRendering());
   fly(port, 2.0, "--drop-every 10 --swap-pairs");
-  std::this_thread::sleep_for(100ms);
+  ASSERT_TRUE(waitForFrames(node.stats.frames, 3));
   node.stop();
   ASSERT_TRUE(node.error.empty()) << node.error;
   int withHost = 0;
@@ -168,7 +175,7 @@ TEST_F(NodeIntegration, StartOfFrameGoesBackToTheHost) {
   NodeOptions o = smallNode(port, dir_ / "dump.jsonl");
   o.replyPort = host.localEndpoint().port;
   NodeRun node(o);
-  std::this_thread::sleep_for(300ms);
+  ASSERT_TRUE(node.waitUntilRendering());
   cigi::IgControl ig;
   ig.hostFrameNumber = 4242;
   const cigi::Packet packets[] = {ig};
@@ -200,7 +207,7 @@ TEST_F(NodeIntegration, StartOfFrameGoesBackToTheHost) {
 TEST_F(NodeIntegration, SurvivesOneHundredThousandMalformedDatagrams) {
   const std::uint16_t port = freeLoopbackPort();
   NodeRun node(smallNode(port, dir_ / "dump.jsonl"));
-  std::this_thread::sleep_for(300ms);
+  ASSERT_TRUE(node.waitUntilRendering());
   UdpSocket attacker({"127.0.0.1", 0});
   const sockaddr_in to = toSockaddr({"127.0.0.1", port});
   // One good state first.
@@ -215,7 +222,10 @@ TEST_F(NodeIntegration, SurvivesOneHundredThousandMalformedDatagrams) {
   std::vector<std::uint8_t> bytes;
   ASSERT_EQ(cigi::encodeMessage(good, skyig::protocol::ByteOrder::big, bytes), "");
   ASSERT_TRUE(attacker.sendTo(bytes, to));
-  std::this_thread::sleep_for(100ms);
+  // The good state's sky is drawn and everything its first frames load (the moon's map, the
+  // star catalogue) is resident before the memory is measured.
+  ASSERT_TRUE(waitUntil([&] { return node.stats.datagrams.load() >= 1; }));
+  ASSERT_TRUE(waitForFrames(node.stats.frames, 30));
   const long rssBefore = rssKb();
   const std::uint64_t framesBefore = node.stats.frames.load();
 
@@ -236,7 +246,16 @@ TEST_F(NodeIntegration, SurvivesOneHundredThousandMalformedDatagrams) {
     attacker.sendTo(junk, to);
     if (i % 2000 == 0) std::this_thread::sleep_for(1ms);  // let loopback's queue drain
   }
-  std::this_thread::sleep_for(300ms);
+  // Drained: the counts stop moving (loopback drops what overflows the socket's buffer).
+  std::uint64_t seen = 0;
+  waitUntil([&] {
+    const std::uint64_t now = node.stats.datagrams.load();
+    const bool still = now == seen;
+    seen = now;
+    std::this_thread::sleep_for(50ms);
+    return still;
+  });
+  ASSERT_TRUE(waitForFrames(node.stats.frames, 11));
   const long rssAfter = rssKb();
   node.stop();
   ASSERT_TRUE(node.error.empty()) << node.error;
@@ -255,7 +274,7 @@ TEST_F(NodeIntegration, CanAerospaceThroughARealTransport) {
   NodeOptions o = smallNode(port, dir_ / "dump.jsonl");
   o.canFd = fds[0];
   NodeRun node(o);
-  std::this_thread::sleep_for(300ms);
+  ASSERT_TRUE(node.waitUntilRendering());
   skyig::protocol::canaerospace::HostState s;
   s.latitudeDeg = 47.2603;
   s.longitudeDeg = 11.3439;
@@ -270,8 +289,10 @@ TEST_F(NodeIntegration, CanAerospaceThroughARealTransport) {
   s.month = 3;
   s.day = 7;
   skyig::protocol::canaerospace::StateEncoder encoder;
-  for (const auto& frame : encoder.encode(s)) ASSERT_EQ(::write(fds[1], &frame, sizeof frame), static_cast<ssize_t>(sizeof frame));
-  std::this_thread::sleep_for(200ms);
+  const auto frames = encoder.encode(s);
+  for (const auto& frame : frames) ASSERT_EQ(::write(fds[1], &frame, sizeof frame), static_cast<ssize_t>(sizeof frame));
+  ASSERT_TRUE(waitUntil([&] { return node.stats.canFrames.load() >= frames.size(); }));
+  ASSERT_TRUE(waitForFrames(node.stats.frames, 3));
   node.stop();
   ::close(fds[0]);
   ::close(fds[1]);

@@ -5,7 +5,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <atomic>
+#include <chrono>
+#include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <thread>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -34,6 +39,26 @@ inline std::vector<nlohmann::json> readStateDump(const std::filesystem::path& p)
   std::string line;
   while (std::getline(in, line)) lines.push_back(nlohmann::json::parse(line));
   return lines;
+}
+
+// Polls `done` every 5 ms until it holds or `limit` passes; says whether it held. A node under
+// test starts and drains its queues at the speed of a loaded 2-core CI machine: a fixed sleep is
+// too short there and wasted time here.
+inline bool waitUntil(const std::function<bool()>& done,
+                      std::chrono::milliseconds limit = std::chrono::milliseconds(20000)) {
+  const auto end = std::chrono::steady_clock::now() + limit;
+  while (!done()) {
+    if (std::chrono::steady_clock::now() > end) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return true;
+}
+
+// Waits until `frames` has advanced by `count` from its value now: the node has rendered (and
+// dumped) what it had received before the call.
+inline bool waitForFrames(const std::atomic<std::uint64_t>& frames, std::uint64_t count) {
+  const std::uint64_t start = frames.load();
+  return waitUntil([&] { return frames.load() >= start + count; });
 }
 
 }  // namespace skyig::services::testing

@@ -1,0 +1,67 @@
+#include "services/host_atmosphere.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+namespace skyig::services {
+
+HostAtmosphere::HostAtmosphere(const atmosphere::Medium& base, double groundAlbedo, double debounceS)
+    : base_(base),
+      groundAlbedo_(groundAlbedo),
+      debounce_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(debounceS))),
+      requested_{HostState{}.visibilityM, HostState{}.humidityPct},
+      candidate_(requested_) {}
+
+std::optional<atmosphere::Conditions> HostAtmosphere::observe(double visibilityM, double humidityPct,
+                                                              Clock::time_point now) {
+  const Values v{visibilityM, humidityPct};
+  if (v == requested_ && v == candidate_) return std::nullopt;
+  if (rejected_ && *rejected_ == v) return std::nullopt;  // already counted
+  atmosphere::Conditions c;
+  c.ground_albedo = groundAlbedo_;
+  try {
+    if (!std::isfinite(humidityPct) || humidityPct < 0.0 || humidityPct > 100.0)
+      throw std::invalid_argument("host humidity " + std::to_string(humidityPct) + " % must be in [0, 100]");
+    if (!std::isfinite(visibilityM))
+      throw std::invalid_argument("host visibility " + std::to_string(visibilityM) + " m must be finite");
+    // Throws for a visibility the medium cannot have (not positive, or beyond clean air).
+    atmosphere::mieExtinctionForVisibility(base_, visibilityM / 1000.0);
+  } catch (const std::invalid_argument&) {
+    rejected_ = v;
+    throw;
+  }
+  rejected_.reset();
+  if (!(v == candidate_)) {
+    candidate_ = v;
+    candidateSince_ = now;
+    return std::nullopt;
+  }
+  if (now - candidateSince_ < debounce_ || v == requested_) return std::nullopt;
+  requested_ = v;
+  c.visibility_km = visibilityM / 1000.0;
+  // With a visibility the humidity changes nothing (conditions.h); kept within its range.
+  c.relative_humidity = std::min(humidityPct / 100.0, 0.99);
+  return c;
+}
+
+atmosphere::ModelConfig nodeModelConfig(const NodeConfig& config, const atmosphere::Conditions& conditions) {
+  atmosphere::ModelConfig model;
+  if (config.atmosphere.tables == "small") model.sizes = atmosphere::TableSizes::small();
+  model.options.scattering_orders = 4;
+  atmosphere::Conditions c = conditions;
+  if (!c.ground_albedo) c.ground_albedo = config.sky.groundAlbedo;
+  model.medium = atmosphere::applyConditions(model.medium, c);
+  return model;
+}
+
+std::filesystem::path nodeCacheDirectory(const AtmosphereSettings& settings) {
+  if (!settings.cacheDir.empty()) return settings.cacheDir;
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "skyig";
+  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "skyig";
+  return std::filesystem::temp_directory_path() / "skyig-cache";
+}
+
+}  // namespace skyig::services

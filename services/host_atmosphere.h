@@ -1,0 +1,48 @@
+#pragma once
+// The host's visibility and humidity (CIGI Atmosphere Control, or global Weather Control)
+// turned into requests for a new physical atmosphere (render/atmosphere/updater.h): debounced,
+// so a host ramping the fog asks for one model once the value settles, and validated, so a
+// value the model cannot represent is counted and ignored and the last good atmosphere stays.
+#include "render/atmosphere/conditions.h"
+#include "render/atmosphere/model.h"
+#include "services/host_state.h"
+#include "services/node_config.h"
+
+#include <filesystem>
+#include <optional>
+
+namespace skyig::services {
+
+class HostAtmosphere {
+ public:
+  // The host's values before it says anything are HostState's defaults; until they change
+  // the node keeps the configuration's atmosphere.
+  HostAtmosphere(const atmosphere::Medium& base, double groundAlbedo, double debounceS = 0.5);
+
+  // The host's values at `now`. Returns the conditions to ask for once the values differ from
+  // the last ones asked for and have not changed for the debounce time. Throws
+  // std::invalid_argument naming a bad value (non-finite, visibility not in (0, clean-air
+  // limit of the medium), humidity outside [0, 100] %), once per bad value.
+  std::optional<atmosphere::Conditions> observe(double visibilityM, double humidityPct, Clock::time_point now);
+
+ private:
+  struct Values {
+    double visibilityM;
+    double humidityPct;
+    bool operator==(const Values&) const = default;
+  };
+  atmosphere::Medium base_;
+  double groundAlbedo_;
+  Clock::duration debounce_;
+  Values requested_;
+  Values candidate_;
+  Clock::time_point candidateSince_{};
+  std::optional<Values> rejected_;
+};
+
+// The model config and cache directory the node uses for `conditions` (the same as
+// services/atmosphere_loader.h, so the tables come from the same cache files).
+atmosphere::ModelConfig nodeModelConfig(const NodeConfig& config, const atmosphere::Conditions& conditions);
+std::filesystem::path nodeCacheDirectory(const AtmosphereSettings& settings);
+
+}  // namespace skyig::services

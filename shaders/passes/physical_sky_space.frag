@@ -1,0 +1,17 @@
+// The physical sky pass seen from above the atmosphere (physical_sky.frag is the IG's usual
+// case): the general packedViewRec709 of atmosphere/rendering_rec709.glsl for the sun and,
+// when moonlightOn, the moon (Jensen et al. 2001).
+#include "passes/physical_sky_uniforms.glsl"
+
+void main() {
+  vec3 view = normalize(vViewRay);
+  vec3 rgb = packedViewRec709(atm, transmittanceXyz, scatteringPacked, singleMieRG, irradianceXyz,
+                              solarIrradianceXyz, limbDarkeningXyz, groundAlbedo, camera, view,
+                              sunDirectionP, true);
+  if (moonlightOn) {
+    rgb += moonlightScale * packedViewRec709(atm, transmittanceXyz, scatteringPacked, singleMieRG,
+                                             irradianceXyz, solarIrradianceXyz, limbDarkeningXyz,
+                                             groundAlbedo, camera, view, moonDirectionP, false);
+  }
+  outRadiance = vec4(max(rgb, vec3(0.0)), 1.0);
+}

@@ -1,0 +1,28 @@
+// Uniforms of the physical sky pass's two programs (physical_sky.frag, camera inside the
+// atmosphere; physical_sky_space.frag, camera above it): PhysicalSkyPass sets both.
+#ifndef SKYIG_PASSES_PHYSICAL_SKY_UNIFORMS_GLSL
+#define SKYIG_PASSES_PHYSICAL_SKY_UNIFORMS_GLSL
+#include "atmosphere/rendering_rec709.glsl"
+
+uniform AtmosphereParameters atm;
+uniform vec3 camera;         // metres from the planet's centre, local frame: x east, y north, z up
+uniform vec3 sunDirectionP;  // unit, same frame
+uniform vec3 solarIrradianceXyz;
+uniform vec3 limbDarkeningXyz;
+uniform float groundAlbedo;
+uniform bool moonlightOn;
+uniform vec3 moonDirectionP;  // unit, same frame
+uniform vec3 moonlightScale;  // Rec.709, the moon's irradiance relative to the sun's
+// Per frame, camera inside the atmosphere: radius, rho = sqrt(r^2 - Rg^2), H, u_r, the sun's
+// and the moon's u_mu_s (scatteringUvwzFromRMuMuSNu), cos of the sun's angular radius.
+uniform vec4 frameRadii;     // r, rho, H, u_r
+uniform vec3 frameAngles;    // sun u_mu_s, moon u_mu_s, cos(sun angular radius)
+layout(binding = 0) uniform sampler2D transmittanceXyz;
+layout(binding = 1) uniform sampler3D scatteringPacked;
+layout(binding = 2) uniform sampler3D singleMieRG;
+layout(binding = 3) uniform sampler2D irradianceXyz;
+
+in vec3 vViewRay;
+layout(location = 0) out vec4 outRadiance;
+
+#endif

@@ -1,0 +1,100 @@
+// The worker's half of the physical sky's conditions (services/host_atmosphere.h): the host's
+// visibility and humidity become a request for new tables once they settle, bad values are
+// counted by the caller and ignored, and a request through the real background updater yields
+// a model whose aerosols give the host's visibility (Koschmieder).
+#include "render/atmosphere/updater.h"
+#include "services/host_atmosphere.h"
+
+#include "tests/services/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+using namespace skyig::services;
+namespace atmosphere = skyig::atmosphere;
+using namespace std::chrono_literals;
+
+namespace {
+
+const atmosphere::Medium kMedium{};
+
+TEST(HostAtmosphere, HostDefaultsKeepTheConfiguredAtmosphere) {
+  HostAtmosphere h(kMedium, 0.2);
+  const auto t0 = Clock::now();
+  EXPECT_FALSE(h.observe(HostState{}.visibilityM, HostState{}.humidityPct, t0));
+  EXPECT_FALSE(h.observe(HostState{}.visibilityM, HostState{}.humidityPct, t0 + 10s));
+}
+
+TEST(HostAtmosphere, AChangeIsRequestedOnceItSettles) {
+  HostAtmosphere h(kMedium, 0.2, 0.5);
+  const auto t0 = Clock::now();
+  EXPECT_FALSE(h.observe(20000.0, 60.0, t0));  // new: wait for it to settle
+  EXPECT_FALSE(h.observe(20000.0, 60.0, t0 + 300ms));
+  EXPECT_FALSE(h.observe(15000.0, 60.0, t0 + 400ms));  // the host ramps the fog: start again
+  EXPECT_FALSE(h.observe(15000.0, 60.0, t0 + 800ms));
+  const auto c = h.observe(15000.0, 60.0, t0 + 950ms);
+  ASSERT_TRUE(c);
+  EXPECT_DOUBLE_EQ(*c->visibility_km, 15.0);
+  EXPECT_DOUBLE_EQ(*c->relative_humidity, 0.6);
+  EXPECT_DOUBLE_EQ(*c->ground_albedo, 0.2);
+  EXPECT_FALSE(h.observe(15000.0, 60.0, t0 + 2s));  // asked for once
+  const auto back = (h.observe(50000.0, 0.0, t0 + 3s), h.observe(50000.0, 0.0, t0 + 4s));
+  ASSERT_TRUE(back);  // back to the host's defaults is a change like any other
+  EXPECT_DOUBLE_EQ(*back->visibility_km, 50.0);
+}
+
+TEST(HostAtmosphere, ValuesOutsideTheModelsRangeThrowOnceAndAreIgnored) {
+  HostAtmosphere h(kMedium, 0.2, 0.0);
+  const auto t0 = Clock::now();
+  ASSERT_TRUE((h.observe(8000.0, 50.0, t0), h.observe(8000.0, 50.0, t0 + 1ms)));
+  // Clearer than clean air (Koschmieder with Rayleigh alone: about 288 km), none, negative, NaN.
+  for (double bad : {400000.0, 0.0, -5.0, std::numeric_limits<double>::quiet_NaN()}) {
+    try {
+      h.observe(bad, 50.0, t0 + 2ms);
+      FAIL() << bad << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("isibility"), std::string::npos) << e.what();
+    }
+    if (!std::isnan(bad)) {
+      EXPECT_FALSE(h.observe(bad, 50.0, t0 + 3ms));  // counted once, then ignored
+    }
+  }
+  EXPECT_THROW(h.observe(8000.0, 101.0, t0 + 4ms), std::invalid_argument);
+  // The last good state stays: the same values again ask for nothing.
+  EXPECT_FALSE(h.observe(8000.0, 50.0, t0 + 5ms));
+  EXPECT_FALSE(h.observe(8000.0, 50.0, t0 + 6ms));
+}
+
+TEST(HostAtmosphere, TheUpdaterBuildsTheHostsVisibility) {
+  // Tiny tables (the mechanism, not the physics) through the real background updater.
+  NodeConfig config;
+  atmosphere::ModelConfig initial = nodeModelConfig(config, {});
+  initial.sizes.transmittance_mu = 16;
+  initial.sizes.transmittance_r = 8;
+  initial.sizes.irradiance_mu_s = 8;
+  initial.sizes.irradiance_r = 4;
+  initial.sizes.scattering_r = 4;
+  initial.sizes.scattering_mu = 8;
+  initial.sizes.scattering_mu_s = 4;
+  initial.sizes.scattering_nu = 2;
+  initial.options.scattering_orders = 2;
+  atmosphere::AtmosphereUpdater updater(initial, std::filesystem::path(SKYIG_BINARY_DIR) / "atmosphere-test-cache");
+  HostAtmosphere host(updater.current()->config().medium, config.sky.groundAlbedo, 0.0);
+  const auto t0 = Clock::now();
+  host.observe(12000.0, 70.0, t0);
+  const auto c = host.observe(12000.0, 70.0, t0 + 1ms);
+  ASSERT_TRUE(c);
+  atmosphere::ModelConfig next = nodeModelConfig(config, *c);
+  next.sizes = initial.sizes;
+  next.options = initial.options;
+  updater.request(next);
+  updater.waitIdle();
+  EXPECT_EQ(updater.generation(), 1u);
+  EXPECT_NEAR(atmosphere::visibilityOf(updater.current()->config().medium), 12.0, 1e-9);
+  EXPECT_DOUBLE_EQ(updater.current()->config().medium.ground_albedo, config.sky.groundAlbedo);
+}
+
+}  // namespace

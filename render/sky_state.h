@@ -8,6 +8,7 @@
 #include "render/analytic_sky.h"
 #include "render/atmosphere/extinction_profile.h"
 #include "render/camera.h"
+#include "render/night/star_field.h"
 #include "render/sky_conditions.h"
 
 #include <memory>
@@ -43,6 +44,9 @@ struct SkyState {
   // (moon, planets, stars, Milky Way, zodiacal light): the physical model's medium, or the
   // default medium under an analytic sky. Shared between states of nearly the same altitude.
   std::shared_ptr<const atmosphere::ExtinctionProfile> extinction;
+  // Stars and planets as seen at the observer's time and place (also when the sun is
+  // overridden: the override moves the sun only).
+  std::shared_ptr<const night::StarField> starField;
 };
 
 // Throws std::invalid_argument naming the bad value (latitude out of range, NaN, a date

@@ -39,6 +39,13 @@ render::ObserverState observerAt(const NodeConfig& config, const HostSnapshot* h
   return o;
 }
 
+// The configured sky with what the host sets of it (the star field intensity).
+render::SkyConditions conditionsAt(const NodeConfig& config, const HostSnapshot* host) {
+  render::SkyConditions c = config.sky;
+  if (host) c.starFieldIntensity = host->state.starFieldIntensity;
+  return c;
+}
+
 // The node's channels with the host's view overrides applied.
 std::vector<render::ChannelConfig> channelsFor(const std::vector<render::ChannelConfig>& base, const HostSnapshot* host) {
   std::vector<render::ChannelConfig> channels = base;
@@ -73,8 +80,8 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
       seen = host.version();
       const auto snapshot = host.get();
       try {
-        sky.publish(render::buildSkyState(observerAt(opt.config, snapshot.get(), now), opt.config.sky, std::nullopt,
-                                          &ephemerisCache));
+        sky.publish(render::buildSkyState(observerAt(opt.config, snapshot.get(), now),
+                                          conditionsAt(opt.config, snapshot.get()), std::nullopt, &ephemerisCache));
         stats.skyStates.fetch_add(1, std::memory_order_relaxed);
       } catch (const std::exception& e) {
         stats.rejectedValues.fetch_add(1, std::memory_order_relaxed);

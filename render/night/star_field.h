@@ -42,7 +42,7 @@ struct StarFieldOptions {
 StarField buildStarField(const StarCatalogue* catalogue, const ephemeris::SkyEphemeris& sky,
                          const atmosphere::ExtinctionProfile& extinction, const StarFieldOptions& options);
 
-// The apparent direction of an airless ENU direction, lifted by refraction (Saemundsson) at
+// The apparent direction of an airless ENU unit vector, lifted by refraction (Saemundsson) at
 // `pressureHpa` and `temperatureC`, azimuth unchanged.
 glm::dvec3 refractedDirection(const glm::dvec3& airless, double pressureHpa, double temperatureC);
 

@@ -26,8 +26,9 @@ struct StarField {
   std::vector<PointSource> planets;  // Mercury, Venus, Mars, Jupiter, Saturn, those visible
 };
 
-// Approximate B-V of the planets' reflected sunlight (Allen's Astrophysical Quantities, 4th ed.,
-// table 12.6, and Mallama 2017 for Mercury): Mercury, Venus, Mars, Jupiter, Saturn.
+// Approximate B-V of the planets' integrated light, as commonly tabulated (e.g. Allen's
+// Astrophysical Quantities), good to about 0.1: Mercury, Venus, Mars, Jupiter, Saturn. A
+// blackbody of the eq. 12 temperature only approximates reflected sunlight.
 inline constexpr double kPlanetBMinusV[5] = {0.93, 0.82, 1.36, 0.83, 1.04};
 
 struct StarFieldOptions {

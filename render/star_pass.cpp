@@ -12,6 +12,7 @@ StarPass::StarPass() : program_("passes/star.vert", "passes/star.frag") {
   glCreateVertexArrays(1, &vao_);
   glCreateBuffers(1, &buffer_);
   glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, 6 * sizeof(float));
+  glVertexArrayBindingDivisor(vao_, 0, 1);  // one source per instance of the quad
   for (GLuint a : {0u, 1u}) {
     glEnableVertexArrayAttrib(vao_, a);
     glVertexArrayAttribFormat(vao_, a, 3, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
@@ -46,12 +47,11 @@ void StarPass::draw(const std::shared_ptr<const night::StarField>& field, const 
   program_.use();
   const glm::mat3 worldToNdc(glm::inverse(ndcToWorld));
   glUniformMatrix3fv(worldToNdcLocation_, 1, GL_FALSE, glm::value_ptr(worldToNdc));
-  glEnable(GL_PROGRAM_POINT_SIZE);
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
   glBindVertexArray(vao_);
-  glDrawArrays(GL_POINTS, 0, count_);
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count_);
   glDisable(GL_BLEND);
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // The GL pass that adds stars and planets (render/night/star_field.h) to the HDR target, after
-// the sky pass: points with a normalised PSF, so each source's energy on screen equals its
+// the sky pass: a quad per source carrying a normalised PSF, so each source's energy on screen equals its
 // illuminance at any resolution and field of view (shaders/night/star_psf.glsl).
 #include "render/gl_program.h"
 #include "render/night/star_field.h"

@@ -129,6 +129,38 @@ TEST_F(StarPassGl, OnlyVisibleSourcesAdd) {
   EXPECT_NEAR(energy(two).first.g, 4e-6, 0.04e-6);
 }
 
+// A star whose centre is just off the screen still lights the pixels its PSF reaches there (no
+// pop at the edge): the energy on screen is its PSF's share inside the frame, summed on the CPU
+// with the same shader code.
+TEST_F(StarPassGl, StarJustOffTheEdgeKeepsItsShareInside) {
+  constexpr int kW = 80, kH = 60;
+  const Attitude attitude{10.0, 15.0, 0.0};
+  const Frustum frustum{20, 20, 15, 15};
+  const glm::dmat3 m = ndcToWorld(eyeToEnu(attitude, Attitude{}), frustum);
+  const double pixelArea = 4.0 / (kW * kH);
+  for (double beyond : {0.7, 2.0}) {
+    const glm::dvec2 centre(kW - 0.5 + beyond, kH / 2.0 + 0.3);  // pixels; the last column's centre is W - 0.5
+    const glm::dvec2 ndc = centre * 2.0 / glm::dvec2(kW, kH) - 1.0;
+    auto field = std::make_shared<night::StarField>();
+    night::PointSource s;
+    s.direction = glm::normalize(m * glm::dvec3(ndc, 1.0));
+    s.rec709Lux = glm::dvec3(1e-6);
+    s.illuminanceLux = 1e-6;
+    field->stars.push_back(s);
+    const Frame f = render(field, kW, kH, attitude, frustum);
+    double expected = 0.0;
+    const double omegaCentre = shader::pixelSolidAngle(m, ndc, pixelArea);
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x) {
+        const glm::dvec2 pc(x + 0.5, y + 0.5);
+        expected += 1e-6 * shader::starPsfWeight(pc - centre, shader::kStarPsfSigmaPx) *
+                    shader::pixelSolidAngle(m, pc * 2.0 / glm::dvec2(kW, kH) - 1.0, pixelArea) / omegaCentre;
+      }
+    EXPECT_GT(expected, 0.03e-6) << beyond;
+    EXPECT_NEAR(energy(f).first.g, expected, 0.02 * expected) << beyond;
+  }
+}
+
 // Through the whole renderer at night: stars from the catalogue brighten the frame, and a
 // star field intensity of 0 (CIGI Celestial Sphere Control) leaves the sky alone.
 TEST_F(StarPassGl, StarFieldIntensityZeroHidesTheStars) {

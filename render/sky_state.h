@@ -44,6 +44,8 @@ struct SkyState {
   // (moon, planets, stars, Milky Way, zodiacal light): the physical model's medium, or the
   // default medium under an analytic sky. Shared between states of nearly the same altitude.
   std::shared_ptr<const atmosphere::ExtinctionProfile> extinction;
+  glm::dvec3 moonDirection{0.0, 0.0, -1.0};  // ENU, airless: lights the sky like the sun
+  glm::dvec3 moonlightScale{0.0};            // moon / sun irradiance per Rec.709 channel; 0: no moonlit sky
   // Stars and planets as seen at the observer's time and place (also when the sun is
   // overridden: the override moves the sun only).
   std::shared_ptr<const night::StarField> starField;

@@ -7,6 +7,9 @@
 namespace skyig::atmosphere {
 class AtmosphereModel;
 }
+namespace skyig::render::night {
+class StarCatalogue;
+}
 
 namespace skyig::render {
 
@@ -25,6 +28,11 @@ struct SkyConditions {
   // SkyModel::Physical: the precomputed atmosphere (Bruneton & Neyret 2008), loaded by the
   // caller (services/atmosphere_loader.h) and shared, immutable, by every state.
   std::shared_ptr<const atmosphere::AtmosphereModel> atmosphere;
+  // The bright stars (render/night/star_catalogue.h), loaded once by the caller; without it
+  // only the planets are drawn.
+  std::shared_ptr<const night::StarCatalogue> starCatalogue;
+  // CIGI Celestial Sphere Control: star field intensity / 100, 0 when the field is disabled.
+  double starFieldIntensity = 1.0;
 };
 
 }  // namespace skyig::render

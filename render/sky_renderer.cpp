@@ -90,6 +90,9 @@ void SkyRenderer::drawSkyPass(const SkyState& state, const ChannelConfig& channe
 void SkyRenderer::draw(const SkyState& state, const ChannelConfig& channel) {
   drawSkyPass(state, channel);
   if (state.ephemeris) (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, channel);
+  if (!stars_) stars_ = std::make_unique<StarPass>();
+  stars_->draw(state.starField, ndcToWorld(eyeToEnu(state.observer.attitude, channel.offset), channel.frustum));
+  glBindVertexArray(emptyVao_);
   toneBlock_.upload(toToneBlock(state, channel));
   toneBlock_.bind();
   display_->bindForDrawing();

@@ -8,6 +8,7 @@
 #include "render/physical_sky_pass.h"
 #include "render/render_target.h"
 #include "render/sky_state.h"
+#include "render/star_pass.h"
 
 #include <memory>
 
@@ -45,6 +46,7 @@ class SkyRenderer {
   GLuint emptyVao_ = 0;
   std::unique_ptr<PhysicalSkyPass> physical_;  // compiled the first time a state needs it
   std::unique_ptr<MoonPass> moon_;             // likewise, the first time a state has a moon
+  std::unique_ptr<StarPass> stars_;
   std::unique_ptr<RenderTarget> hdr_;
   std::unique_ptr<RenderTarget> display_;
 };

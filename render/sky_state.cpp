@@ -80,6 +80,27 @@ std::shared_ptr<const atmosphere::ExtinctionProfile> sharedExtinction(const atmo
   return last;
 }
 
+// Stars and planets of a state: the ephemeris of the state, or of its time and place when the
+// sun was overridden.
+std::shared_ptr<const night::StarField> starFieldOf(const SkyState& s) {
+  const SkyConditions& c = s.conditions;
+  require(std::isfinite(c.starFieldIntensity) && c.starFieldIntensity >= 0.0 && c.starFieldIntensity <= 1.0,
+          "star field intensity " + num(c.starFieldIntensity) + " is outside [0, 1]");
+  std::optional<ephemeris::SkyEphemeris> own;
+  if (!s.ephemeris) {
+    ephemeris::Observer where;
+    where.latitudeRad = s.observer.latitudeDeg * kDeg;
+    where.longitudeRad = s.observer.longitudeDeg * kDeg;
+    where.heightM = std::min(s.observer.heightM, 1e5);
+    own = ephemeris::computeEphemeris(s.observer.utc, where);
+  }
+  night::StarFieldOptions options;
+  options.intensity = c.starFieldIntensity;
+  options.timeS = s.observer.utc.secondsOfDay;
+  return std::make_shared<const night::StarField>(
+      night::buildStarField(c.starCatalogue.get(), s.ephemeris ? *s.ephemeris : *own, *s.extinction, options));
+}
+
 }  // namespace
 
 SkyState buildSkyState(const ObserverState& observer, const SkyConditions& conditions,
@@ -114,6 +135,7 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
   s.extinction = sharedExtinction(s.conditions.atmosphere ? s.conditions.atmosphere->config().medium
                                                           : atmosphere::Medium{},
                                   observer.heightM);
+  s.starField = starFieldOf(s);
   if (s.conditions.model == SkyModel::Physical) {
     s.adaptationLuminance = physicalMeanSkyLuminance(*s.conditions.atmosphere, observer.heightM,
                                                      enuDirection(s.sunAzimuth, s.sunAltitude));

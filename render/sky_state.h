@@ -8,6 +8,7 @@
 #include "render/analytic_sky.h"
 #include "render/atmosphere/extinction_profile.h"
 #include "render/camera.h"
+#include "render/night/star_field.h"
 #include "render/sky_conditions.h"
 
 #include <memory>
@@ -48,6 +49,9 @@ struct SkyState {
   // relative to the sun's per linear Rec.709 channel; a zero scale (the default) turns it off.
   glm::dvec3 moonDirection{0.0, 0.0, -1.0};
   glm::dvec3 moonlightScale{0.0};
+  // Stars and planets as seen at the observer's time and place (also when the sun is
+  // overridden: the override moves the sun only).
+  std::shared_ptr<const night::StarField> starField;
 };
 
 // Throws std::invalid_argument naming the bad value (latitude out of range, NaN, a date

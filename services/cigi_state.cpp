@@ -92,6 +92,14 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
                             p.rollRateDegps, p.pitchRateDegps, p.yawRateDegps};
             changed = true;
           } else if constexpr (std::is_same_v<T, cigi::CelestialSphereControl>) {
+            // The star field applies whether or not the message carries a valid date.
+            if (!std::isfinite(p.starFieldIntensityPct) || p.starFieldIntensityPct < 0.0f ||
+                p.starFieldIntensityPct > 100.0f) {
+              ++rejected;
+            } else {
+              state_.starFieldIntensity = p.starFieldEnable ? static_cast<double>(p.starFieldIntensityPct) / 100.0 : 0.0;
+              changed = true;
+            }
             if (!p.dateTimeValid) return;
             const auto date = cigi::splitDate(p.date);
             if (!date || p.hour > 23 || p.minute > 59) {

@@ -51,6 +51,8 @@ struct HostState {
   double humidityPct = 0.0;
   double temperatureC = 15.0;
   double pressureHpa = 1013.25;
+  // CIGI Celestial Sphere Control: star field intensity / 100, 0 while the field is disabled.
+  double starFieldIntensity = 1.0;
   Clock::time_point received{};       // arrival of the last applied message
   std::vector<ViewOverride> views;
   ViewOverride& view(std::uint16_t id);

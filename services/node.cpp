@@ -41,6 +41,13 @@ render::ObserverState observerAt(const NodeConfig& config, const HostSnapshot* h
   return o;
 }
 
+// The configured sky with what the host sets of it (the star field intensity).
+// The sky's conditions with the host's star-field intensity (CIGI Celestial Sphere Control).
+render::SkyConditions withHostStars(render::SkyConditions c, const HostSnapshot* host) {
+  if (host) c.starFieldIntensity = host->state.starFieldIntensity;
+  return c;
+}
+
 // The node's channels with the host's view overrides applied.
 std::vector<render::ChannelConfig> channelsFor(const std::vector<render::ChannelConfig>& base, const HostSnapshot* host) {
   std::vector<render::ChannelConfig> channels = base;
@@ -121,8 +128,8 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
     // A new host state or atmosphere, or at least every 100 ms so the sun follows the clock.
     if (newHost || newAtmosphere || now - lastSky > 100ms) {
       try {
-        sky.publish(render::buildSkyState(observerAt(opt.config, snapshot.get(), now), conditions, std::nullopt,
-                                          &ephemerisCache));
+        sky.publish(render::buildSkyState(observerAt(opt.config, snapshot.get(), now),
+                                          withHostStars(conditions, snapshot.get()), std::nullopt, &ephemerisCache));
         stats.skyStates.fetch_add(1, std::memory_order_relaxed);
       } catch (const std::exception& e) {
         stats.rejectedValues.fetch_add(1, std::memory_order_relaxed);

@@ -1,0 +1,180 @@
+// Twilight through the whole pipeline: the physical sky, the stars and the full tone
+// reproduction on the real GL path. Colour drains from the frame as the sun goes down, and a
+// magnitude-1 star appears against the darkening sky because of the sky's luminance and the
+// eye's adaptation alone (issue 6, item 8; docs/night-sky-stars.md, "Twilight").
+#include "render/atmosphere/table_cache.h"
+#include "render/gl_context.h"
+#include "render/image_io.h"
+#include "render/sky_renderer.h"
+#include "tests/night/star_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <optional>
+#include <vector>
+#include <memory>
+
+using namespace skyig;
+using namespace skyig::render;
+using skyig::night_testing::kDeg;
+
+namespace {
+
+class Twilight : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    context_ = createHeadlessContext().release();
+    renderer_ = new SkyRenderer();
+    atmosphere::ModelConfig config;
+    config.sizes = atmosphere::TableSizes::small();  // shared with the render tests' cache
+    model_ = new std::shared_ptr<const atmosphere::AtmosphereModel>(std::make_shared<const atmosphere::AtmosphereModel>(
+        atmosphere::loadOrPrecompute(config, std::filesystem::path(SKYIG_BINARY_DIR) / "atmosphere-test-cache")));
+  }
+  static void TearDownTestSuite() {
+    delete model_;
+    delete renderer_;
+    delete context_;
+  }
+
+  static SkyConditions physical() {
+    SkyConditions c;
+    c.model = SkyModel::Physical;
+    c.atmosphere = *model_;
+    return c;
+  }
+
+  // Frames are also written as PNG to the build tree, to be looked at.
+  static DisplayImage drawAndKeep(const SkyState& s, const ChannelConfig& c, const std::string& name) {
+    renderer_->draw(s, c);
+    DisplayImage im = renderer_->readDisplay();
+    const auto dir = std::filesystem::path(SKYIG_BINARY_DIR) / "night-test-output";
+    std::filesystem::create_directories(dir);
+    writePng((dir / (name + ".png")).string(), im, c.display.gamma);
+    return im;
+  }
+
+  static inline GlContext* context_ = nullptr;
+  static inline SkyRenderer* renderer_ = nullptr;
+  static inline std::shared_ptr<const atmosphere::AtmosphereModel>* model_ = nullptr;
+};
+
+ObserverState dusk() {
+  ObserverState o;
+  o.attitude = Attitude{0.0, 0.0, 0.0};
+  o.utc = {2026, 3, 20, 18 * 3600.0};
+  return o;
+}
+
+// Mean over the frame of the 8-bit chroma max(R,G,B) - min(R,G,B), in [0, 1].
+double meanChroma(const DisplayImage& im) {
+  double sum = 0.0;
+  const std::size_t n = im.rgba.size() / 4;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint8_t* p = &im.rgba[i * 4];
+    sum += (std::max({p[0], p[1], p[2]}) - std::min({p[0], p[1], p[2]})) / 255.0;
+  }
+  return sum / static_cast<double>(n);
+}
+
+// Display luminance (cd/m^2) of a pixel: eq. 17 of paper 000 per channel, Rec.709 weights.
+double displayLuminance(const DisplayImage& im, int x, int y, const DisplayParams& d) {
+  const std::uint8_t* p = &im.rgba[(static_cast<std::size_t>(y) * im.width + x) * 4];
+  double l = 0.0;
+  const double w[3] = {0.2126, 0.7152, 0.0722};
+  for (int k = 0; k < 3; ++k) l += w[k] * (d.ambientLuminance + d.maxLuminance * std::pow(p[k] / 255.0, d.gamma));
+  return l;
+}
+
+// CIE 1976 u'v' of a display pixel (decoded with the display gamma); nullopt for black.
+std::optional<glm::dvec2> pixelUv(const std::uint8_t* p, double gamma) {
+  const glm::dvec3 rgb(std::pow(p[0] / 255.0, gamma), std::pow(p[1] / 255.0, gamma), std::pow(p[2] / 255.0, gamma));
+  const glm::dvec3 xyz(0.4124 * rgb.r + 0.3576 * rgb.g + 0.1805 * rgb.b, 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b,
+                       0.0193 * rgb.r + 0.1192 * rgb.g + 0.9505 * rgb.b);
+  const double den = xyz.x + 15.0 * xyz.y + 3.0 * xyz.z;
+  if (den <= 0.0) return std::nullopt;
+  return glm::dvec2(4.0 * xyz.x / den, 9.0 * xyz.y / den);
+}
+
+// The frame's colour spread: mean u'v' distance of its pixels from their mean chromaticity.
+double chromaticSpread(const DisplayImage& im, double gamma) {
+  std::vector<glm::dvec2> uv;
+  for (std::size_t i = 0; i < im.rgba.size() / 4; ++i)
+    if (auto c = pixelUv(&im.rgba[i * 4], gamma)) uv.push_back(*c);
+  glm::dvec2 mean(0.0);
+  for (const auto& c : uv) mean += c / static_cast<double>(uv.size());
+  double spread = 0.0;
+  for (const auto& c : uv) spread += glm::length(c - mean) / static_cast<double>(uv.size());
+  return spread;
+}
+
+}  // namespace
+
+// The frame (160x120, 80 x 60 degrees, looking west at the afterglow) loses its colour
+// through nautical and astronomical twilight: the mean 8-bit chroma falls from sun -6 to -18
+// degrees, and the spread of chromaticities over the frame (the red horizon against the blue
+// sky) collapses as rod vision takes over (eq. 20-21). From -2 to -6 the chroma rises: the
+// "blue hour", when ozone's Chappuis absorption leaves the sky its deepest blue (Hulburt 1953,
+// JOSA 43, 113), which the physical sky reproduces.
+TEST_F(Twilight, FramesLoseColourAsTheSunGoesDown) {
+  ChannelConfig wide;
+  wide.width = 160;
+  wide.height = 120;
+  wide.frustum = Frustum{40, 40, 30, 30};
+  wide.offset = Attitude{-90.0, 25.0, 0.0};
+  auto frame = [&](double sun) {
+    return drawAndKeep(buildSkyState(dusk(), physical(), SunOverride{270.0, sun}), wide,
+                       "twilight_west_sun" + std::to_string(static_cast<int>(sun)));
+  };
+  const DisplayImage civil = frame(-2.0);
+  double last = 1.0;
+  for (double sun : {-6.0, -10.0, -14.0, -18.0}) {
+    const double chroma = meanChroma(frame(sun));
+    EXPECT_LT(chroma, last) << "sun " << sun;
+    last = chroma;
+  }
+  const DisplayImage night = frame(-18.0);
+  EXPECT_LT(chromaticSpread(night, wide.display.gamma), 0.3 * chromaticSpread(civil, wide.display.gamma));
+}
+
+// A magnitude-1 star 30 degrees up in the east, on a channel of 2 arcmin pixels (a 1920-pixel
+// channel 64 degrees wide): its peak pixel's display luminance against the mean of a ring
+// 8-16 pixels around it. Weber contrast 0.1 is the threshold: Blackwell's (1946, JOSA 36, 624)
+// 50% detection contrast for targets of a few arcminutes at 1-10 cd/m^2 is 0.03-0.1, and one
+// 8-bit step of the +-1 LSB dither is 2% at mid-grey. The star does not stand out at sun -2
+// and -4 degrees, does at -7 and -8: it appears near -6, as observers report, through the
+// sky's luminance and the eye's adaptation alone.
+TEST_F(Twilight, MagnitudeOneStarAppearsNearSunMinusSix) {
+  ChannelConfig narrow;
+  narrow.width = 160;
+  narrow.height = 120;
+  narrow.frustum = Frustum{2.667, 2.667, 2.0, 2.0};
+  narrow.offset = Attitude{90.0, 30.0, 0.0};
+  const ObserverState o = dusk();
+  const ephemeris::SkyEphemeris e = buildSkyState(o, SkyConditions{}).ephemeris.value();
+  SkyConditions c = physical();
+  c.starCatalogue = std::make_shared<const night::StarCatalogue>(
+      std::vector<ephemeris::Star>{night_testing::starAt(e, 90.0, 30.0, 1.0, 0.0)}, o.utc);
+  auto weber = [&](double sun) {
+    const DisplayImage im = drawAndKeep(buildSkyState(o, c, SunOverride{270.0, sun}), narrow,
+                                        "twilight_star_sun" + std::to_string(static_cast<int>(sun)));
+    double peak = 0.0, ring = 0.0;
+    int n = 0;
+    for (int y = 0; y < narrow.height; ++y)
+      for (int x = 0; x < narrow.width; ++x) {
+        const double r = std::hypot(x - 79.5, y - 59.5);  // the star is at the centre (refraction: 1 px)
+        const double l = displayLuminance(im, x, y, narrow.display);
+        if (r < 2.5) peak = std::max(peak, l);
+        if (r > 8.0 && r < 16.0) ring += l, ++n;
+      }
+    ring /= n;
+    return (peak - ring) / ring;
+  };
+  constexpr double kThreshold = 0.1;
+  EXPECT_LT(weber(-2.0), kThreshold);
+  EXPECT_LT(weber(-4.0), kThreshold);
+  EXPECT_GT(weber(-7.0), kThreshold);
+  EXPECT_GT(weber(-8.0), kThreshold);
+}

@@ -1,0 +1,59 @@
+#include "render/night/night_diffuse.h"
+
+#include "render/atmosphere/spectral_data.h"
+#include "render/atmosphere/spectrum.h"
+#include "render/night/diffuse_physics.h"
+#include "render/night/zodiacal_light.h"
+#include "render/sky_state.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace skyig::render::night {
+
+const glm::dvec3& airglowRec709() {
+  static const glm::dvec3 colour = [] {
+    const glm::dvec3 xyz = atmosphere::cie1931ColorMatching(557.7);
+    glm::dvec3 rgb = glm::max(atmosphere::xyzToRec709(xyz), glm::dvec3(0.0));
+    return rgb / (0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b);
+  }();
+  return colour;
+}
+
+std::optional<NightDiffuseSky> makeNightDiffuseSky(const SkyState& state) {
+  if (!state.ephemeris) return std::nullopt;
+  NightDiffuseSky sky;
+  const ephemeris::Mat3& m = state.ephemeris->j2000ToEnu;  // row-major, ENU = M J2000
+  // GLM is column-major: enuToJ2000 = M^T, so its column j is M's row j.
+  for (int j = 0; j < 3; ++j) sky.enuToJ2000[j] = glm::dvec3(m.m[3 * j], m.m[3 * j + 1], m.m[3 * j + 2]);
+  const ephemeris::Vec3& s = state.ephemeris->sun.enu;
+  sky.sunJ2000 = glm::normalize(sky.enuToJ2000 * glm::dvec3(s.x, s.y, s.z));
+  sky.airglowZenith = shader::s10ToCdM2(kAirglowZenithS10) * airglowRec709();
+  sky.extinction = state.extinction;
+  sky.milkyWay = MilkyWayMap::standard();
+  return sky;
+}
+
+glm::dvec3 nightExtinction(const NightDiffuseSky& sky, const glm::dvec3& viewEnu) {
+  const glm::dvec3 v = glm::normalize(viewEnu);
+  if (!sky.extinction) return v.z >= 0.0 ? glm::dvec3(1.0) : glm::dvec3(0.0);
+  return sky.extinction->rec709(std::asin(std::clamp(v.z, -1.0, 1.0)));
+}
+
+NightDiffuseRadiance nightDiffuseRadiance(const NightDiffuseSky& sky, const glm::dvec3& viewEnu) {
+  const double n = glm::length(viewEnu);
+  if (!std::isfinite(n) || n == 0.0)
+    throw std::invalid_argument("night sky: view direction (" + std::to_string(viewEnu.x) + ", " +
+                                std::to_string(viewEnu.y) + ", " + std::to_string(viewEnu.z) + ") is zero or not finite");
+  const glm::dvec3 v = viewEnu / n;
+  const glm::dvec3 t = nightExtinction(sky, v);
+  const glm::dvec3 j2000 = sky.enuToJ2000 * v;
+  NightDiffuseRadiance r;
+  if (sky.milkyWay) r.milkyWay = t * shader::kS10CdM2 * sky.milkyWay->s10(j2000);
+  r.zodiacal = t * zodiacalRadiance(j2000, sky.sunJ2000);
+  r.airglow = t * shader::airglowRadiance(sky.airglowZenith, v.z);
+  return r;
+}
+
+}  // namespace skyig::render::night

@@ -133,7 +133,9 @@ MilkyWayMap::MilkyWayMap(const std::string& pngPath) {
   for (glm::vec3& t : texels_) {
     const double y709 = luminance(t);
     const double s10 = std::max(scale * (y709 - offset), 0.0);
-    t = y709 > 0.0 ? glm::vec3(glm::dvec3(t) * (s10 / y709)) : glm::vec3(0.0f);
+    // The photograph's black (its sky background already removed) carries the affine map's
+    // floor, grey: the faint starlight there has no colour the map can tell.
+    t = y709 > 1e-6 ? glm::vec3(glm::dvec3(t) * (s10 / y709)) : glm::vec3(static_cast<float>(s10));
   }
   // What the clamp left of the anchors, for the record.
   double sum = 0.0, weightSum = 0.0;

@@ -38,7 +38,9 @@ std::optional<NightDiffuseSky> makeNightDiffuseSky(const SkyState& state) {
 glm::dvec3 nightExtinction(const NightDiffuseSky& sky, const glm::dvec3& viewEnu) {
   const glm::dvec3 v = glm::normalize(viewEnu);
   if (!sky.extinction) return v.z >= 0.0 ? glm::dvec3(1.0) : glm::dvec3(0.0);
-  return sky.extinction->rec709(std::asin(std::clamp(v.z, -1.0, 1.0)));
+  // The profile's Rec.709 factors dip a little below zero in blue at the horizon (a sunlike
+  // spectrum's red end left over): no light is negative.
+  return glm::max(sky.extinction->rec709(std::asin(std::clamp(v.z, -1.0, 1.0))), glm::dvec3(0.0));
 }
 
 NightDiffuseRadiance nightDiffuseRadiance(const NightDiffuseSky& sky, const glm::dvec3& viewEnu) {

@@ -5,7 +5,7 @@
 // height h over a sphere of radius R, as Roach & Gordon (1973, "The Light of the Night Sky",
 // ch. 3) and Leinert et al. (1998, airglow section) give it:
 //   V(z) = 1 / sqrt(1 - (R / (R + h))^2 sin^2 z),
-// 1 at the zenith, 5.6 at the horizon for h = 90 km.
+// 1 at the zenith, 6.0 at the horizon for h = 90 km.
 
 const Float kAirglowLayerHeightM = 90.0e3;
 const Float kAirglowEarthRadiusM = 6371.0e3;

@@ -25,7 +25,7 @@ float extinctionTexCoord(float elevation) {
 
 void main() {
   vec3 view = normalize(vViewRay);
-  vec3 t = texture(extinctionRec709, extinctionTexCoord(asin(clamp(view.z, -1.0, 1.0)))).rgb;
+  vec3 t = max(texture(extinctionRec709, extinctionTexCoord(asin(clamp(view.z, -1.0, 1.0)))).rgb, vec3(0.0));
   vec3 j2000 = enuToJ2000 * view;
   // The panorama's u jumps from 1 to 0 at RA 90 deg: take the mip level from the gradient of a
   // copy that is continuous there, so the seam does not pick the coarsest level.

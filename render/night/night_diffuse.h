@@ -24,9 +24,13 @@ namespace skyig::render::night {
 // It varies by a factor of about 2 with the solar cycle (Leinert et al. 1998); not modelled.
 inline constexpr double kAirglowZenithS10 = 145.0;
 
-// Linear Rec.709 of the airglow with luminance 1: the OI 557.7 nm green line, which dominates
-// it in V (Roach & Gordon 1973), brought into the Rec.709 gamut (negative channels clipped,
-// luminance restored): a yellowish green.
+// Linear Rec.709 of the airglow with luminance 1. Its V-band light is the OI 557.7 nm green
+// line, the Na D lines (589.3 nm) and a pseudo-continuum (NO2, O2) across the band (Roach &
+// Gordon 1973; the ESO sky model of Noll et al. 2012 shows the same parts). The shares of V
+// below are an estimate from those spectra, not a fit: the line about a third, sodium a tenth,
+// the continuum (taken as equal-energy) the rest; the result is a pale yellowish green.
+inline constexpr double kAirglowGreenLineShare = 0.35;
+inline constexpr double kAirglowSodiumShare = 0.10;
 const glm::dvec3& airglowRec709();
 
 struct NightDiffuseSky {

@@ -61,22 +61,27 @@ double luminance(const glm::vec3& c) {
 }
 
 // One pass of a separable minimum or maximum filter of half-width r: rows wrap (the map is
-// periodic in RA), columns clamp.
+// periodic in RA), columns clamp. Each line is copied with its padding first, so the inner loop
+// has no index arithmetic.
 void extremumFilter(std::vector<glm::vec3>& image, int width, int height, int r, bool takeMax, bool alongRows) {
-  std::vector<glm::vec3> out(image.size());
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      glm::vec3 e = image[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)];
-      for (int d = -r; d <= r; ++d) {
-        int xx = x, yy = y;
-        if (alongRows) xx = (x + d + width) % width;
-        else yy = std::clamp(y + d, 0, height - 1);
-        const glm::vec3& v = image[static_cast<std::size_t>(yy) * static_cast<std::size_t>(width) + static_cast<std::size_t>(xx)];
+  const int lines = alongRows ? height : width, length = alongRows ? width : height;
+  const std::size_t stride = alongRows ? 1 : static_cast<std::size_t>(width);
+  std::vector<glm::vec3> padded(static_cast<std::size_t>(length + 2 * r));
+  for (int l = 0; l < lines; ++l) {
+    const std::size_t base = alongRows ? static_cast<std::size_t>(l) * static_cast<std::size_t>(width) : static_cast<std::size_t>(l);
+    for (int i = -r; i < length + r; ++i) {
+      const int j = alongRows ? (i + length) % length : std::clamp(i, 0, length - 1);
+      padded[static_cast<std::size_t>(i + r)] = image[base + static_cast<std::size_t>(j) * stride];
+    }
+    for (int i = 0; i < length; ++i) {
+      glm::vec3 e = padded[static_cast<std::size_t>(i)];
+      for (int d = 1; d <= 2 * r; ++d) {
+        const glm::vec3& v = padded[static_cast<std::size_t>(i + d)];
         e = takeMax ? glm::max(e, v) : glm::min(e, v);
       }
-      out[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] = e;
+      image[base + static_cast<std::size_t>(i) * stride] = e;
     }
-  image.swap(out);
+  }
 }
 
 // Grey opening (erosion then dilation) with a (2r+1)^2 square: removes bright features smaller
@@ -104,28 +109,47 @@ MilkyWayMap::MilkyWayMap(const std::string& pngPath) {
   opening(texels_, width_, height_, 2);
 
   // Calibration: the mean over |b| >= 60 deg (solid-angle weighted) and the 99th percentile
-  // within |b| <= 10 deg of the linear luminance.
-  double poleSum = 0.0, poleWeight = 0.0;
-  std::vector<double> band;
+  // within |b| <= 10 deg of the linear luminance. sin b per pixel from per-row and per-column
+  // tables (the map's directions, shaders/night/milky_way.glsl), compared with sin 60 and sin 10.
+  std::vector<double> sinRa(static_cast<std::size_t>(width_)), cosRa(sinRa.size()), sinDec(static_cast<std::size_t>(height_)),
+      cosDec(sinDec.size());
+  for (int x = 0; x < width_; ++x) {
+    const glm::dvec3 d = shader::milkyWayDirection(glm::dvec2((x + 0.5) / width_, 0.5));
+    cosRa[static_cast<std::size_t>(x)] = d.x;
+    sinRa[static_cast<std::size_t>(x)] = d.y;
+  }
   for (int y = 0; y < height_; ++y) {
-    const double v = (y + 0.5) / height_;
-    const double weight = std::cos((0.5 - v) * std::numbers::pi);
-    for (int x = 0; x < width_; ++x) {
-      const glm::dvec3 dir = shader::milkyWayDirection(glm::dvec2((x + 0.5) / width_, v));
-      const double b = std::abs(shader::galacticLatitude(dir)) * 180.0 / std::numbers::pi;
-      const double y709 = luminance(texels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)]);
-      if (b >= 60.0) {
-        poleSum += weight * y709;
-        poleWeight += weight;
-      } else if (b <= 10.0 && weight > 0.05) {
-        band.push_back(y709);
+    const double dec = (0.5 - (y + 0.5) / height_) * std::numbers::pi;
+    sinDec[static_cast<std::size_t>(y)] = std::sin(dec);
+    cosDec[static_cast<std::size_t>(y)] = std::cos(dec);
+  }
+  const double sin60 = std::sin(std::numbers::pi / 3.0), sin10 = std::sin(std::numbers::pi / 18.0);
+  // Mean over the polar caps and the band's 99th percentile of the current texels.
+  auto measure = [&](double& poleMean, double& bandP99) {
+    double sum = 0.0, weightSum = 0.0;
+    std::vector<double> band;
+    for (int y = 0; y < height_; ++y) {
+      const double weight = cosDec[static_cast<std::size_t>(y)];
+      for (int x = 0; x < width_; ++x) {
+        const glm::dvec3 dir(cosDec[static_cast<std::size_t>(y)] * cosRa[static_cast<std::size_t>(x)],
+                             cosDec[static_cast<std::size_t>(y)] * sinRa[static_cast<std::size_t>(x)], sinDec[static_cast<std::size_t>(y)]);
+        const double sinB = std::abs(shader::galacticSinLatitude(dir));
+        const double y709 = luminance(texels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)]);
+        if (sinB >= sin60) {
+          sum += weight * y709;
+          weightSum += weight;
+        } else if (sinB <= sin10 && weight > 0.05) {
+          band.push_back(y709);
+        }
       }
     }
-  }
-  const double pole = poleSum / poleWeight;
-  auto p99 = band.begin() + static_cast<std::ptrdiff_t>(0.99 * static_cast<double>(band.size()));
-  std::nth_element(band.begin(), p99, band.end());
-  const double bright = *p99;
+    poleMean = sum / weightSum;
+    auto p99 = band.begin() + static_cast<std::ptrdiff_t>(0.99 * static_cast<double>(band.size()));
+    std::nth_element(band.begin(), p99, band.end());
+    bandP99 = *p99;
+  };
+  double pole = 0.0, bright = 0.0;
+  measure(pole, bright);
   if (!(bright > pole)) throw std::invalid_argument("Milky Way map " + pngPath + " shows no galactic band");
   // S10 = scale (Y - offset): two equations, two unknowns.
   const double scale = (kBrightestS10 - kPoleS10) / (bright - pole);
@@ -137,27 +161,8 @@ MilkyWayMap::MilkyWayMap(const std::string& pngPath) {
     // floor, grey: the faint starlight there has no colour the map can tell.
     t = y709 > 1e-6 ? glm::vec3(glm::dvec3(t) * (s10 / y709)) : glm::vec3(static_cast<float>(s10));
   }
-  // What the clamp left of the anchors, for the record.
-  double sum = 0.0, weightSum = 0.0;
-  band.clear();
-  for (int y = 0; y < height_; ++y) {
-    const double v = (y + 0.5) / height_;
-    const double weight = std::cos((0.5 - v) * std::numbers::pi);
-    for (int x = 0; x < width_; ++x) {
-      const double b = std::abs(shader::galacticLatitude(shader::milkyWayDirection(glm::dvec2((x + 0.5) / width_, v))));
-      const double y709 = luminance(texels_[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)]);
-      if (b >= std::numbers::pi / 3.0) {
-        sum += weight * y709;
-        weightSum += weight;
-      } else if (b <= std::numbers::pi / 18.0 && weight > 0.05) {
-        band.push_back(y709);
-      }
-    }
-  }
-  meanPole_ = sum / weightSum;
-  p99 = band.begin() + static_cast<std::ptrdiff_t>(0.99 * static_cast<double>(band.size()));
-  std::nth_element(band.begin(), p99, band.end());
-  bright_ = *p99;
+  // What the clip left of the anchors, for the record.
+  measure(meanPole_, bright_);
 }
 
 glm::dvec3 MilkyWayMap::sampleS10(const glm::dvec2& uv) const {

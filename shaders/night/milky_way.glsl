@@ -25,9 +25,10 @@ vec3 milkyWayDirection(IN(vec2) uv) {
 // Galactic latitude (radians) of a J2000 unit vector: the third row of the ICRS-to-galactic
 // rotation (Hipparcos catalogue, vol. 1, section 1.5.3: north galactic pole at RA 192.85948 deg,
 // Dec 27.12825 deg).
-Float galacticLatitude(IN(vec3) j2000) {
-  Float z = dot(vec3(-0.8676661490, -0.1980763734, 0.4559837762), j2000);
-  return asin(clamp(z, -1.0, 1.0));
+Float galacticSinLatitude(IN(vec3) j2000) {
+  return clamp(dot(vec3(-0.8676661490, -0.1980763734, 0.4559837762), j2000), -1.0, 1.0);
 }
+
+Float galacticLatitude(IN(vec3) j2000) { return asin(galacticSinLatitude(j2000)); }
 
 #endif

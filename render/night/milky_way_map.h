@@ -50,7 +50,7 @@ class MilkyWayMap {
   double brightS10() const { return bright_; }
 
   // The shipped map: $SKYIG_DATA_DIR/milkyway.png if set, else SKYIG_RENDER_DATA_DIR's; loaded
-  // once per process (~0.3 s) and shared.
+  // once per process (~0.5 s) and shared.
   static std::shared_ptr<const MilkyWayMap> standard();
   static std::string standardPath();
 

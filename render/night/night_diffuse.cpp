@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace skyig::render::night {
@@ -26,7 +27,9 @@ const glm::dvec3& airglowRec709() {
   return colour;
 }
 
-std::optional<NightDiffuseSky> makeNightDiffuseSky(const SkyState& state) {
+namespace {
+
+std::optional<NightDiffuseSky> makeSky(const SkyState& state, bool withMilkyWay) {
   if (!state.ephemeris) return std::nullopt;
   NightDiffuseSky sky;
   const ephemeris::Mat3& m = state.ephemeris->j2000ToEnu;  // row-major, ENU = M J2000
@@ -36,8 +39,31 @@ std::optional<NightDiffuseSky> makeNightDiffuseSky(const SkyState& state) {
   sky.sunJ2000 = glm::normalize(sky.enuToJ2000 * glm::dvec3(s.x, s.y, s.z));
   sky.airglowZenith = shader::s10ToCdM2(kAirglowZenithS10) * airglowRec709();
   sky.extinction = state.extinction;
-  sky.milkyWay = MilkyWayMap::standard();
+  if (withMilkyWay) sky.milkyWay = MilkyWayMap::standard();
   return sky;
+}
+
+}  // namespace
+
+std::optional<NightDiffuseSky> makeNightDiffuseSky(const SkyState& state) { return makeSky(state, true); }
+
+double meanNightDiffuseLuminance(const SkyState& state) {
+  const auto sky = makeSky(state, false);
+  if (!sky) return 0.0;
+  constexpr int kMu = 8, kPhi = 16;
+  const glm::dvec3 floor = shader::s10ToCdM2(kPoleS10) * glm::dvec3(1.0);
+  double sum = 0.0;
+  for (int i = 0; i < kMu; ++i) {
+    const double mu = (i + 0.5) / kMu;
+    const double sinTheta = std::sqrt(1.0 - mu * mu);
+    for (int j = 0; j < kPhi; ++j) {
+      const double phi = 2.0 * std::numbers::pi * (j + 0.5) / kPhi;
+      const glm::dvec3 v(sinTheta * std::sin(phi), sinTheta * std::cos(phi), mu);
+      const glm::dvec3 rgb = nightDiffuseRadiance(*sky, v).total() + nightExtinction(*sky, v) * floor;
+      sum += 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b;
+    }
+  }
+  return sum / (kMu * kPhi);
 }
 
 glm::dvec3 nightExtinction(const NightDiffuseSky& sky, const glm::dvec3& viewEnu) {

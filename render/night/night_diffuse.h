@@ -57,6 +57,13 @@ struct NightDiffuseRadiance {
 // view.
 NightDiffuseRadiance nightDiffuseRadiance(const NightDiffuseSky& sky, const glm::dvec3& viewEnu);
 
+// The diffuse night light's solid-angle mean luminance over the upper hemisphere (cd/m^2), for
+// the eye's adaptation (SkyState::adaptationLuminance adds it to the sky's): airglow, zodiacal
+// light and, for the Milky Way, its calibrated floor of kPoleS10 everywhere (the map is not
+// loaded for this: the worker builds a state per host update; the band adds ~10% more). 8 x 16
+// directions, ~0.1 ms. 0 for a state without an ephemeris (sun overridden: tests).
+double meanNightDiffuseLuminance(const SkyState& state);
+
 // The extinction factor (linear Rec.709) of a view, as the GL pass samples it.
 glm::dvec3 nightExtinction(const NightDiffuseSky& sky, const glm::dvec3& viewEnu);
 

@@ -131,3 +131,16 @@ TEST(NightDiffuse, FiniteAndNonNegativeEverywhere) {
   EXPECT_THROW(nightDiffuseRadiance(*sky, glm::dvec3(0.0)), std::invalid_argument);
   EXPECT_THROW(nightDiffuseRadiance(*sky, glm::dvec3(std::nan(""), 0.0, 1.0)), std::invalid_argument);
 }
+
+// The eye adapts to the night's own light: a moonless sky's adaptation is the diffuse light's
+// mean (~1e-4 cd/m^2 and up), not the twilight remnant of the sky model.
+TEST(NightDiffuse, AdaptationIncludesTheNightsOwnLight) {
+  const SkyState s = afterDusk();
+  const double mean = meanNightDiffuseLuminance(s);
+  EXPECT_GT(mean, 1e-4);
+  EXPECT_LT(mean, 1e-3);
+  EXPECT_GE(s.adaptationLuminance, mean);
+  ObserverState o = s.observer;
+  const SkyState overridden = buildSkyState(o, SkyConditions{}, SunOverride{270.0, -30.0});
+  EXPECT_EQ(meanNightDiffuseLuminance(overridden), 0.0);
+}

@@ -36,9 +36,12 @@ std::vector<ProbeComponent> nightProbeComponents(const atmosphere::AtmosphereMod
   c.push_back({"sunlit_sky", [&model, camera, sun](const glm::dvec3& v) {
                  return model.converter().toRec709(model.skyRadiance(camera, v, sun));
                }});
-  // night-moon:  c.push_back({"moonlit_sky", ...moonlitSkyRadiance(model, state, v).rec709});
-  // night-moon:  c.push_back({"moon", ...moonDiscRadiance(disc, v).rec709});
-  // night-stars: c.push_back({"stars_planets", ...starLuminance(*state.starField, v).rec709});
+  // Merge points, one line each, with the other night branches' CPU functions:
+  // night-moon (render/night/moon_light.h, moon_disc.h):
+  //   c.push_back({"moonlit_sky", [&model, &state](const glm::dvec3& v) { return moonlitSkyRadiance(model, state, v).rec709; }});
+  //   if (auto disc = makeMoonDisc(state)) c.push_back({"moon", [d = *disc](const glm::dvec3& v) { return moonDiscRadiance(d, v).rec709; }});
+  // night-stars (render/night/star_luminance.h):
+  //   if (state.starField) c.push_back({"stars_planets", [f = state.starField](const glm::dvec3& v) { return starLuminance(*f, v).rec709; }});
   c.push_back({"milky_way", [sky](const glm::dvec3& v) { return nightDiffuseRadiance(*sky, v).milkyWay; }});
   c.push_back({"zodiacal_light", [sky](const glm::dvec3& v) { return nightDiffuseRadiance(*sky, v).zodiacal; }});
   c.push_back({"airglow", [sky](const glm::dvec3& v) { return nightDiffuseRadiance(*sky, v).airglow; }});

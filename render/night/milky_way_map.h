@@ -9,7 +9,8 @@
 //  3. calibrate: an affine map of the map's luminance so that its mean over |b| >= 60 deg is
 //     the integrated light of the stars fainter than the naked-eye limit at the galactic poles,
 //     and its 99th percentile within |b| <= 10 deg that of the brightest Milky Way star clouds
-//     (kPoleS10, kBrightestS10); what falls below zero is the photograph's sky background.
+//     (kPoleS10, kBrightestS10); what falls below zero is the photograph's sky background, and
+//     the photograph's black takes the map's floor, grey.
 // The result is linear Rec.709 in S10 per channel (luminance-weighted: Y in S10).
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -1,6 +1,7 @@
 // Headless OpenGL through EGL with no display server (../shared/docs/platform-notes.md): the
 // EGL device platform first (a GPU, or Mesa's software device), then Mesa's surfaceless
 // platform. Rendering goes to framebuffer objects, so no EGL surface is needed.
+#include "render/egl_context.h"
 #include "render/gl_context.h"
 
 #include <EGL/egl.h>
@@ -41,7 +42,16 @@ F eglProc(const char* name) {
 
 class EglContext final : public GlContext {
  public:
-  EglContext() {
+  // worker: for a thread that may already have a context current (a render thread), or that
+  // shares the EGL display with one: the previous binding comes back on destruction and the
+  // display stays initialised (eglTerminate would take every context of the display with it).
+  explicit EglContext(bool worker = false) : worker_(worker) {
+    if (worker_) {
+      previous_display_ = eglGetCurrentDisplay();
+      previous_context_ = eglGetCurrentContext();
+      previous_draw_ = eglGetCurrentSurface(EGL_DRAW);
+      previous_read_ = eglGetCurrentSurface(EGL_READ);
+    }
     std::string platform;
     display_ = openDisplay(platform);
     EGLint major = 0, minor = 0;
@@ -69,7 +79,11 @@ class EglContext final : public GlContext {
   ~EglContext() override {
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-    eglTerminate(display_);
+    if (!worker_) {
+      eglTerminate(display_);
+    } else if (previous_context_ != EGL_NO_CONTEXT) {
+      eglMakeCurrent(previous_display_, previous_draw_, previous_read_, previous_context_);
+    }
   }
 
   void makeCurrent() override {
@@ -116,6 +130,11 @@ class EglContext final : public GlContext {
                          "platform is available (install libegl-mesa0 and libgl1-mesa-dri)");
   }
 
+  bool worker_ = false;
+  EGLDisplay previous_display_ = EGL_NO_DISPLAY;
+  EGLContext previous_context_ = EGL_NO_CONTEXT;
+  EGLSurface previous_draw_ = EGL_NO_SURFACE;
+  EGLSurface previous_read_ = EGL_NO_SURFACE;
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
 };
@@ -123,5 +142,7 @@ class EglContext final : public GlContext {
 }  // namespace
 
 std::unique_ptr<GlContext> createHeadlessContext() { return std::make_unique<EglContext>(); }
+
+std::unique_ptr<GlContext> createWorkerHeadlessContext() { return std::make_unique<EglContext>(true); }
 
 }  // namespace skyig::render

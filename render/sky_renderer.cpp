@@ -85,6 +85,7 @@ void SkyRenderer::drawSkyPass(const SkyState& state, const ChannelConfig& channe
 
 void SkyRenderer::draw(const SkyState& state, const ChannelConfig& channel) {
   drawSkyPass(state, channel);
+  if (state.ephemeris) (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, channel);
   if (state.ephemeris) (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
   toneBlock_.upload(toToneBlock(state, channel));
   toneBlock_.bind();

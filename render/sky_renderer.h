@@ -4,6 +4,7 @@
 #include "render/channel.h"
 #include "render/gl_program.h"
 #include "render/image.h"
+#include "render/moon_pass.h"
 #include "render/night_diffuse_pass.h"
 #include "render/physical_sky_pass.h"
 #include "render/render_target.h"
@@ -40,6 +41,7 @@ class SkyRenderer {
   UniformBuffer toneBlock_;
   GLuint emptyVao_ = 0;
   std::unique_ptr<PhysicalSkyPass> physical_;  // compiled the first time a state needs it
+  std::unique_ptr<MoonPass> moon_;             // likewise, the first time a state has a moon
   std::unique_ptr<NightDiffusePass> nightDiffuse_;  // Milky Way, zodiacal light, airglow
   std::unique_ptr<RenderTarget> hdr_;
   std::unique_ptr<RenderTarget> display_;

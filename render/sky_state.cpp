@@ -2,6 +2,7 @@
 
 #include "ephemeris/ephemeris.h"
 #include "render/atmosphere/model.h"
+#include "render/night/moon_light.h"
 #include "render/night/night_diffuse.h"
 
 #include <algorithm>
@@ -104,6 +105,9 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
     s.sunAltitude = s.ephemeris->sun.altitudeRad;
     s.sunApparentAltitude = s.ephemeris->sun.altitudeRefractedRad;
     s.conditions.sunDistanceAu = s.ephemeris->sun.distanceKm / 149597870.7;
+    // The moon lights the sky as a second sun (Jensen et al. 2001), scaled by its irradiance.
+    s.moonDirection = enuDirection(s.ephemeris->moon.azimuthRad, s.ephemeris->moon.altitudeRad);
+    s.moonlightScale = moonlightScale(*s.ephemeris);
   }
   if (s.conditions.model == SkyModel::Physical)
     require(s.conditions.atmosphere != nullptr, "the physical sky model needs its precomputed atmosphere");

@@ -43,6 +43,8 @@ struct SkyState {
   // (moon, planets, stars, Milky Way, zodiacal light): the physical model's medium, or the
   // default medium under an analytic sky. Shared between states of nearly the same altitude.
   std::shared_ptr<const atmosphere::ExtinctionProfile> extinction;
+  glm::dvec3 moonDirection{0.0, 0.0, -1.0};  // ENU, airless: lights the sky like the sun
+  glm::dvec3 moonlightScale{0.0};            // moon / sun irradiance per Rec.709 channel; 0: no moonlit sky
 };
 
 // Throws std::invalid_argument naming the bad value (latitude out of range, NaN, a date

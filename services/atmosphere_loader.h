@@ -1,23 +1,42 @@
 #pragma once
 // Loads the physical atmosphere's tables when the configuration asks for the physical sky:
-// from the disk cache when a file matches every parameter, else precomputed (and cached).
+// from the disk cache when a file matches every parameter, else precomputed (and cached) on
+// the GPU when an OpenGL 4.5 context can be made, on the CPU otherwise.
 #include "render/atmosphere/conditions.h"
 #include "render/atmosphere/model.h"
+#include "render/atmosphere/table_cache.h"
 #include "services/node_config.h"
 
 #include <memory>
+#include <string>
 
 namespace skyig::services {
 
+// Where tables missing from the cache are computed. kAuto: the GPU precompute in a headless
+// EGL context of its own (render/atmosphere_gpu_precompute.h), falling back to the CPU one
+// when no context can be made or the GPU path fails; kGpu: the GPU or an error; kCpu: the
+// CPU reference (minutes for the default tables).
+enum class PrecomputeDevice { kAuto, kGpu, kCpu };
+
+// "auto", "gpu" or "cpu"; throws std::invalid_argument naming anything else.
+PrecomputeDevice parsePrecomputeDevice(const std::string& name);
+// $SKYIG_ATMOSPHERE_PRECOMPUTE (auto when unset or empty).
+PrecomputeDevice precomputeDeviceFromEnvironment();
+
+// The table builder of the loader, for AtmosphereUpdater too. Says on stderr which device it
+// used (and why it fell back), a line per group of four wavelengths, and the total time.
+// Invalid configurations throw std::invalid_argument whatever the device.
+atmosphere::TableBuilder atmosphereTableBuilder(PrecomputeDevice device = precomputeDeviceFromEnvironment());
+
 // The model of `settings` under `conditions`, from the cache directory (settings.cacheDir, else
-// $XDG_CACHE_HOME/skyig or ~/.cache/skyig) or precomputed and cached there; says on stderr when
-// it has to precompute. `orders`: scattering orders (4 by default).
+// $XDG_CACHE_HOME/skyig or ~/.cache/skyig) or precomputed (atmosphereTableBuilder) and cached
+// there; says on stderr when it has to precompute. `orders`: scattering orders (4 by default).
 std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const AtmosphereSettings& settings,
                                                                   const atmosphere::Conditions& conditions,
                                                                   int orders = 4);
 
 // Sets config.sky.atmosphere when config.sky.model is physical; prints to stderr when it has
-// to precompute (seconds for the small tables on a CPU).
+// to precompute.
 void loadAtmosphereIfNeeded(NodeConfig& config);
 
 }  // namespace skyig::services

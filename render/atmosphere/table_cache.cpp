@@ -201,8 +201,21 @@ class FileLock {
 
 }  // namespace
 
+std::vector<GroupTables> precomputeTablesOnCpu(const ModelConfig& config) {
+  const AtmosphereModel computed(config);
+  std::vector<GroupTables> tables;
+  for (std::size_t g = 0; g < computed.groupCount(); ++g) tables.push_back(computed.tables(g));
+  return tables;
+}
+
 AtmosphereModel loadOrPrecompute(const ModelConfig& config,
                                  const std::filesystem::path& directory, CacheResult* result) {
+  return loadOrPrecompute(config, directory, result, precomputeTablesOnCpu);
+}
+
+AtmosphereModel loadOrPrecompute(const ModelConfig& config,
+                                 const std::filesystem::path& directory, CacheResult* result,
+                                 const TableBuilder& builder) {
   const auto path = cacheFilePath(directory, config);
   const FileLock lock(path);
   std::string reason;
@@ -211,9 +224,7 @@ AtmosphereModel loadOrPrecompute(const ModelConfig& config,
     return AtmosphereModel(config, std::move(*tables));
   }
   const bool existed = std::filesystem::exists(path);
-  AtmosphereModel computed(config);
-  std::vector<GroupTables> tables;
-  for (std::size_t g = 0; g < computed.groupCount(); ++g) tables.push_back(computed.tables(g));
+  std::vector<GroupTables> tables = builder(config);  // validates the config (or throws)
   roundTablesToFloat(tables);
   writeTableCache(path, config, tables);
   if (result) *result = {existed ? CacheOutcome::kRebuilt : CacheOutcome::kComputed, reason, path};

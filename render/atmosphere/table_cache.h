@@ -19,6 +19,7 @@
 //                 single Mie tables in that order, texels x fastest, each RGBA float32
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -55,10 +56,22 @@ struct CacheResult {
   std::filesystem::path path;
 };
 
+// Computes the tables of every group of a config. The CPU reference is the default; the GPU
+// precompute (render/atmosphere_gpu_precompute.h) is one too, passed in by code that may use
+// GL (this library must not). Either may throw; the cache key does not say which one made a
+// file (the GPU tables are within 0.3% of the CPU ones: docs/atmosphere.md).
+using TableBuilder = std::function<std::vector<GroupTables>(const ModelConfig&)>;
+
+// The CPU precompute (precompute.h) of every group.
+std::vector<GroupTables> precomputeTablesOnCpu(const ModelConfig& config);
+
 // Loads the model's tables from `directory` if a valid file matches the config; otherwise
-// precomputes them, writes the file and returns the model.
+// precomputes them (with `builder`, the CPU by default), writes the file and returns the model.
 AtmosphereModel loadOrPrecompute(const ModelConfig& config,
                                  const std::filesystem::path& directory,
                                  CacheResult* result = nullptr);
+AtmosphereModel loadOrPrecompute(const ModelConfig& config,
+                                 const std::filesystem::path& directory, CacheResult* result,
+                                 const TableBuilder& builder);
 
 }  // namespace skyig::atmosphere

@@ -6,8 +6,14 @@ namespace skyig::atmosphere {
 
 AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial,
                                      std::filesystem::path cache_directory)
+    : AtmosphereUpdater(initial, std::move(cache_directory), precomputeTablesOnCpu) {}
+
+AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial,
+                                     std::filesystem::path cache_directory, TableBuilder builder)
     : cache_directory_(std::move(cache_directory)),
-      current_(std::make_shared<const AtmosphereModel>(loadOrPrecompute(initial, cache_directory_))),
+      builder_(builder ? std::move(builder) : TableBuilder(precomputeTablesOnCpu)),
+      current_(std::make_shared<const AtmosphereModel>(
+          loadOrPrecompute(initial, cache_directory_, nullptr, builder_))),
       worker_([this] { run(); }) {}
 
 AtmosphereUpdater::~AtmosphereUpdater() {
@@ -59,7 +65,7 @@ void AtmosphereUpdater::run() {
     std::shared_ptr<const AtmosphereModel> model;
     std::string error;
     try {
-      model = std::make_shared<const AtmosphereModel>(loadOrPrecompute(config, cache_directory_));
+      model = std::make_shared<const AtmosphereModel>(loadOrPrecompute(config, cache_directory_, nullptr, builder_));
     } catch (const std::exception& e) {
       error = e.what();
     }

@@ -19,8 +19,13 @@ namespace skyig::atmosphere {
 
 class AtmosphereUpdater {
  public:
-  // Loads or computes the initial model before returning (throws on a bad config).
+  // Loads or computes the initial model before returning (throws on a bad config). Tables
+  // missing from the cache are computed by `builder` (the CPU precompute by default; the node
+  // passes the GPU one, services/atmosphere_loader.h), on the calling thread for the initial
+  // model and on the updater's own thread afterwards.
   AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cache_directory);
+  AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cache_directory,
+                    TableBuilder builder);
   ~AtmosphereUpdater();
   AtmosphereUpdater(const AtmosphereUpdater&) = delete;
   AtmosphereUpdater& operator=(const AtmosphereUpdater&) = delete;
@@ -40,6 +45,7 @@ class AtmosphereUpdater {
   void run();
 
   const std::filesystem::path cache_directory_;
+  const TableBuilder builder_;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::condition_variable idle_;

@@ -1,23 +1,138 @@
 // GPU precomputation, step 4a (per order n >= 2): the scattering density J of order n from
 // the radiance of order n-1 and the ground irradiance of order n-2.
+//
+// The quadrature of computeScatteringDensity (multiple_scattering.glsl, the CPU reference):
+// 16 x 32 directions, midpoint rule, in the frame where the view direction is in the x-z
+// plane, with the same table lookups. About 2.5x less work on llvmpipe (docs/atmosphere.md,
+// "GPU precomputation") because the radiance of order n-1 comes from its nu slices
+// (precompute_nu_slices.comp): two texelFetch and a blend per direction instead of two
+// trilinear fetches (four at order 2); the ground's sun cosine is in closed form and its
+// irradiance a row of the table read by hand; the directions turn by a rotation instead of a
+// cos and a sin each; phi and 2 pi - phi share their phase functions.
 #include "atmosphere/multiple_scattering.glsl"
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 uniform AtmosphereParameters atm;
+// atm with the density table's sizes (GpuPrecomputeOptions::density_divisor; = atm by default):
+// its texels' (r, mu, mu_s, nu); the other tables are read through atm.
+uniform AtmosphereParameters atm_density;
 uniform int scattering_order;
 layout(binding = 0) uniform sampler2D transmittance_texture;
-layout(binding = 1) uniform sampler3D single_rayleigh_texture;
-layout(binding = 2) uniform sampler3D single_mie_texture;
-layout(binding = 3) uniform sampler3D multiple_texture;
 layout(binding = 4) uniform sampler2D irradiance_texture;
+layout(binding = 6) uniform sampler3D slices_a;  // precompute_nu_slices.comp
+layout(binding = 7) uniform sampler3D slices_b;
 layout(binding = 0, rgba32f) uniform writeonly image3D density_out;
+
+// The radiance of order n-1 arriving from a direction whose cosine with the sun is
+// nu1_unclamped: from the nu slices (lookupScatteringUvwz's blend of two of them, and
+// scatteringOfOrderUvwz's phase functions at order 1), plus the ground's reflection.
+vec4 incidentRadiance(Float r, Float mu_s, Float nu1_unclamped, int slice_y, int slice_z,
+                      bool single_order, Float nu_scale, int irradiance_last,
+                      bool ray_r_theta_intersects_ground, Float distance_to_ground,
+                      vec4 ground_light) {
+  Float nu1 = atmClampCosine(nu1_unclamped);
+  Float tex_coord_x = (nu1 + 1.0) / 2.0 * nu_scale;
+  Float tex_x = floor(tex_coord_x);
+  Float lerp = tex_coord_x - tex_x;
+  ivec3 slice = ivec3(int(tex_x), slice_y, slice_z);
+  vec4 radiance = texelFetch(slices_a, slice, 0) * (1.0 - lerp) +
+                  texelFetch(slices_a, slice + ivec3(1, 0, 0), 0) * lerp;
+  if (single_order) {
+    radiance = radiance * rayleighPhaseFunction(nu1) +
+               (texelFetch(slices_b, slice, 0) * (1.0 - lerp) +
+                texelFetch(slices_b, slice + ivec3(1, 0, 0), 0) * lerp) *
+                   miePhaseFunction(atm.mie_phase_g, nu1);
+  }
+  if (ray_r_theta_intersects_ground) {
+    // The ground point is at the radius bottom_radius, so the cosine of the sun's zenith
+    // angle there, dot(normalize(r zenith + d omega_i), omega_s), is
+    // (r mu_s + d nu1) / bottom_radius; the irradiance at the ground is the table's first
+    // row, interpolated along mu_s as lookupIrradiance's GL_LINEAR does.
+    Float mu_s_ground =
+        atmClampCosine((r * mu_s + distance_to_ground * nu1_unclamped) / atm.bottom_radius);
+    Float u = textureCoordFromUnitRange(mu_s_ground * 0.5 + 0.5, atm.irradiance_width) *
+                  atm.irradiance_width - 0.5;
+    Float u0 = floor(u);
+    Float f = u - u0;
+    int i0 = clamp(int(u0), 0, irradiance_last);
+    int i1 = clamp(int(u0) + 1, 0, irradiance_last);
+    radiance += ground_light * (texelFetch(irradiance_texture, ivec2(i0, 0), 0) * (1.0 - f) +
+                                texelFetch(irradiance_texture, ivec2(i1, 0), 0) * f);
+  }
+  return radiance;
+}
+
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
   if (any(greaterThanEqual(texel, imageSize(density_out)))) {
     return;
   }
-  imageStore(density_out, texel,
-             computeScatteringDensityTexel(atm, transmittance_texture, single_rayleigh_texture,
-                                           single_mie_texture, multiple_texture,
-                                           irradiance_texture, vec3(texel) + vec3(0.5),
-                                           scattering_order));
+  Float r;
+  Float mu;
+  Float mu_s;
+  Float nu;
+  bool ray_r_mu_intersects_ground;
+  rMuMuSNuFromScatteringFragCoord(atm_density, vec3(texel) + vec3(0.5), r, mu, mu_s, nu,
+                                  ray_r_mu_intersects_ground);
+  int mu_s_size = int(atm.scattering_mu_s_size);
+  int mu_s_index = texel.x - (texel.x / mu_s_size) * mu_s_size;
+
+  // As computeScatteringDensity.
+  vec3 omega = vec3(sqrt(max(1.0 - mu * mu, 0.0)), 0.0, mu);
+  Float sun_dir_x = omega.x == 0.0 ? 0.0 : (nu - mu * mu_s) / omega.x;
+  Float sun_dir_y = sqrt(max(1.0 - sun_dir_x * sun_dir_x - mu_s * mu_s, 0.0));
+  vec3 omega_s = vec3(sun_dir_x, sun_dir_y, mu_s);
+  const int SAMPLES = ATMOSPHERE_DENSITY_ANGULAR_SAMPLES;
+  Float dphi = ATMOSPHERE_PI / Float(SAMPLES);
+  Float dtheta = ATMOSPHERE_PI / Float(SAMPLES);
+  Float altitude = r - atm.bottom_radius;
+  vec4 rayleigh_coefficient = atm.rayleigh_scattering * rayleighDensity(atm, altitude);
+  vec4 mie_coefficient = atm.mie_scattering * mieDensity(atm, altitude);
+  bool single_order = scattering_order - 1 == 1;
+  Float nu_scale = atm.scattering_nu_size - 1.0;
+  int irradiance_last = int(atm.irradiance_width) - 1;
+  // phi = (m + 1/2) dphi by rotation: cos and sin of dphi/2, then steps of dphi.
+  Float cos_step = cos(dphi);
+  Float sin_step = sin(dphi);
+  vec4 rayleigh_mie = vec4(0.0);
+
+  for (int l = 0; l < SAMPLES; ++l) {
+    Float theta = (Float(l) + 0.5) * dtheta;
+    Float cos_theta = cos(theta);
+    Float sin_theta = sin(theta);
+    bool ray_r_theta_intersects_ground = rayIntersectsGround(atm, r, cos_theta);
+    Float distance_to_ground = 0.0;
+    vec4 ground_light = vec4(0.0);  // transmittance to the ground x albedo / pi
+    if (ray_r_theta_intersects_ground) {
+      distance_to_ground = distanceToBottomAtmosphereBoundary(atm, r, cos_theta);
+      ground_light = transmittanceAlongRay(atm, transmittance_texture, r, cos_theta,
+                                           distance_to_ground, true) *
+                     atm.ground_albedo * (1.0 / ATMOSPHERE_PI);
+    }
+    int slice_y = l * mu_s_size + mu_s_index;
+    Float domega_i = dtheta * dphi * sin_theta;
+    Float cos_phi = cos(0.5 * dphi);
+    Float sin_phi = sin(0.5 * dphi);
+    // phi and 2 pi - phi (m and 2 SAMPLES - 1 - m) together: the view direction is in the
+    // x-z plane, so both have the same phase functions towards it.
+    for (int m = 0; m < SAMPLES; ++m) {
+      Float x = cos_phi * sin_theta;
+      Float y = sin_phi * sin_theta;
+      Float next_cos = cos_phi * cos_step - sin_phi * sin_step;
+      sin_phi = sin_phi * cos_step + cos_phi * sin_step;
+      cos_phi = next_cos;
+      vec4 incident_radiance =
+          incidentRadiance(r, mu_s, omega_s.x * x + omega_s.y * y + omega_s.z * cos_theta,
+                           slice_y, texel.z, single_order, nu_scale, irradiance_last,
+                           ray_r_theta_intersects_ground, distance_to_ground, ground_light) +
+          incidentRadiance(r, mu_s, omega_s.x * x - omega_s.y * y + omega_s.z * cos_theta,
+                           slice_y, texel.z, single_order, nu_scale, irradiance_last,
+                           ray_r_theta_intersects_ground, distance_to_ground, ground_light);
+      Float nu2 = omega.x * x + omega.z * cos_theta;
+      rayleigh_mie += incident_radiance *
+                      (rayleigh_coefficient * rayleighPhaseFunction(nu2) +
+                       mie_coefficient * miePhaseFunction(atm.mie_phase_g, nu2)) *
+                      domega_i;
+    }
+  }
+  imageStore(density_out, texel, rayleigh_mie);
 }

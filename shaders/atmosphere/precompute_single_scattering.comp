@@ -1,7 +1,7 @@
 // GPU precomputation, step 3: single Rayleigh and Mie scattering into the delta tables, and
 // the accumulated tables initialised with them (C* = S_R[L0], C_M = S_M[L0]).
 #include "atmosphere/single_scattering.glsl"
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 uniform AtmosphereParameters atm;
 layout(binding = 0) uniform sampler2D transmittance_texture;
 layout(binding = 0, rgba32f) uniform writeonly image3D delta_rayleigh_out;

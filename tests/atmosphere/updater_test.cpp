@@ -2,6 +2,10 @@
 // request leaves the last good model in place.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <filesystem>
+#include <stdexcept>
+
 #include "render/atmosphere/conditions.h"
 #include "render/atmosphere/updater.h"
 #include "shared_models.h"
@@ -47,6 +51,54 @@ TEST(AtmosphereUpdater, BadRequestKeepsTheLastGoodModel) {
   EXPECT_NE(updater.lastError().find("mie_phase_g = 1.5"), std::string::npos) << updater.lastError();
   EXPECT_DOUBLE_EQ(updater.current()->config().medium.mie_phase_g, 0.8);
   EXPECT_EQ(updater.generation(), 0u);
+}
+
+// The builder computes what the cache lacks, on the calling thread for the initial model and
+// on the worker for requests; a cached model does not call it.
+TEST(AtmosphereUpdater, UsesItsBuilderForTablesMissingFromTheCache) {
+  const auto dir = testing::testCacheDirectory() / "updater-builder";
+  std::filesystem::remove_all(dir);
+  std::atomic<int> builds{0};
+  std::atomic<double> last_albedo{-1.0};
+  const TableBuilder counting = [&](const ModelConfig& c) {
+    ++builds;
+    last_albedo = c.medium.ground_albedo;
+    return precomputeTablesOnCpu(c);
+  };
+  {
+    AtmosphereUpdater updater(tinyConfig(0.1), dir, counting);
+    EXPECT_EQ(builds.load(), 1);
+    updater.request(tinyConfig(0.25));
+    updater.waitIdle();
+    EXPECT_EQ(builds.load(), 2);
+    EXPECT_DOUBLE_EQ(last_albedo.load(), 0.25);
+    EXPECT_DOUBLE_EQ(updater.current()->config().medium.ground_albedo, 0.25);
+    updater.request(tinyConfig(0.1));  // in the cache now
+    updater.waitIdle();
+    EXPECT_EQ(builds.load(), 2);
+    EXPECT_EQ(updater.generation(), 2u);
+  }
+  // An empty builder means the CPU precompute: the same tables as the reference.
+  std::filesystem::remove_all(dir);
+  AtmosphereUpdater updater(tinyConfig(0.1), dir, TableBuilder{});
+  std::vector<GroupTables> expected = precomputeTablesOnCpu(tinyConfig(0.1));
+  roundTablesToFloat(expected);
+  EXPECT_TRUE(updater.current()->tables(0).scattering.texels == expected[0].scattering.texels);
+}
+
+// A builder that fails leaves the last good model, with its reason.
+TEST(AtmosphereUpdater, AFailingBuilderKeepsTheLastGoodModel) {
+  const auto dir = testing::testCacheDirectory() / "updater-builder-fails";
+  std::filesystem::remove_all(dir);
+  const TableBuilder fails_above_half = [](const ModelConfig& c) -> std::vector<GroupTables> {
+    if (c.medium.ground_albedo > 0.5) throw std::runtime_error("no device for albedo above 0.5");
+    return precomputeTablesOnCpu(c);
+  };
+  AtmosphereUpdater updater(tinyConfig(0.1), dir, fails_above_half);
+  updater.request(tinyConfig(0.7));
+  updater.waitIdle();
+  EXPECT_EQ(updater.lastError(), "no device for albedo above 0.5");
+  EXPECT_DOUBLE_EQ(updater.current()->config().medium.ground_albedo, 0.1);
 }
 
 }  // namespace

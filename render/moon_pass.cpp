@@ -1,0 +1,136 @@
+#include "render/moon_pass.h"
+
+#include "render/camera.h"
+#include "render/sky_state.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace skyig::render {
+
+namespace {
+
+constexpr GLuint kAlbedoUnit = 20;
+constexpr GLuint kExtinctionUnit = 21;
+
+void set3(GLuint p, const char* name, const glm::dvec3& v) {
+  glProgramUniform3f(p, glGetUniformLocation(p, name), static_cast<float>(v.x), static_cast<float>(v.y),
+                     static_cast<float>(v.z));
+}
+
+void set1(GLuint p, const char* name, double v) {
+  glProgramUniform1f(p, glGetUniformLocation(p, name), static_cast<float>(v));
+}
+
+}  // namespace
+
+MoonPass::MoonPass() : program_("passes/moon.vert", "passes/moon.frag") {
+  glCreateVertexArrays(1, &emptyVao_);
+  const MoonAlbedo& map = MoonAlbedo::standard();
+  const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(map.width(), map.height()))));
+  glCreateTextures(GL_TEXTURE_2D, 1, &albedoTexture_);
+  glTextureStorage2D(albedoTexture_, levels, GL_R32F, map.width(), map.height());
+  // The disc spans tens of pixels, so the map is minified: mip levels by 2x2 box filtering on the
+  // CPU (a few ms; llvmpipe's glGenerateMipmap takes ~150 ms, a visible stall on the first frame).
+  std::vector<float> level = map.texels();
+  int w = map.width(), h = map.height();
+  for (int l = 0; l < levels; ++l) {
+    glTextureSubImage2D(albedoTexture_, l, 0, 0, w, h, GL_RED, GL_FLOAT, level.data());
+    const int w2 = std::max(w / 2, 1), h2 = std::max(h / 2, 1);
+    std::vector<float> next(static_cast<std::size_t>(w2) * static_cast<std::size_t>(h2));
+    auto at = [&](int x, int y) {
+      return level[static_cast<std::size_t>(std::min(y, h - 1)) * static_cast<std::size_t>(w) + static_cast<std::size_t>(std::min(x, w - 1))];
+    };
+    for (int y = 0; y < h2; ++y)
+      for (int x = 0; x < w2; ++x)
+        next[static_cast<std::size_t>(y) * static_cast<std::size_t>(w2) + static_cast<std::size_t>(x)] =
+            0.25f * (at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) + at(2 * x, 2 * y + 1) + at(2 * x + 1, 2 * y + 1));
+    level = std::move(next);
+    w = w2;
+    h = h2;
+  }
+  glTextureParameteri(albedoTexture_, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(albedoTexture_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(albedoTexture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(albedoTexture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glCreateTextures(GL_TEXTURE_1D, 1, &extinctionTexture_);
+  glTextureStorage1D(extinctionTexture_, 1, GL_RGB32F, atmosphere::ExtinctionProfile::kSamples);
+  glTextureParameteri(extinctionTexture_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(extinctionTexture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(extinctionTexture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+}
+
+MoonPass::~MoonPass() {
+  glDeleteTextures(1, &albedoTexture_);
+  glDeleteTextures(1, &extinctionTexture_);
+  glDeleteVertexArrays(1, &emptyVao_);
+}
+
+void MoonPass::useExtinction(const std::shared_ptr<const atmosphere::ExtinctionProfile>& extinction) {
+  if (extinctionUploaded_ && extinction == extinction_) return;
+  std::vector<glm::vec3> table(atmosphere::ExtinctionProfile::kSamples, glm::vec3(1.0f));  // no atmosphere
+  if (extinction) table = extinction->rec709Table();
+  glTextureSubImage1D(extinctionTexture_, 0, 0, static_cast<GLsizei>(table.size()), GL_RGB, GL_FLOAT, table.data());
+  extinction_ = extinction;
+  extinctionUploaded_ = true;
+}
+
+void MoonPass::draw(const SkyState& state, const ChannelConfig& channel) {
+  if (!state.ephemeris) return;
+  // The disc's parameters cost ~0.3 ms (the albedo normalisation): computed once per state, not
+  // once per channel and frame.
+  const ephemeris::UtcTime& t = state.observer.utc;
+  const DiscKey key{{static_cast<double>(t.year), static_cast<double>(t.month), static_cast<double>(t.day), t.secondsOfDay,
+                     state.observer.latitudeDeg, state.observer.longitudeDeg, state.observer.heightM},
+                    state.extinction.get()};
+  if (!disc_ || key != discKey_) {
+    disc_ = makeMoonDisc(state);
+    discKey_ = key;
+  }
+  // Well below the horizon (more than the largest dip of the horizon, 5 deg at 25 km) nothing
+  // of it can be seen: skip the pass.
+  if (!disc_ || disc_->centreSeen.z < -std::sin(5.5 * std::numbers::pi / 180.0)) return;
+  draw(*disc_, ndcToWorld(eyeToEnu(state.observer.attitude, channel.offset), channel.frustum), channel);
+}
+
+void MoonPass::draw(const MoonDisc& d, const glm::dmat3& ndcToWorldMatrix, const ChannelConfig& channel) {
+  useExtinction(d.extinction);
+  const GLuint p = program_.id();
+  // The quad: the disc's radius plus three pixels for the limb ramp (the widest pixel of the
+  // channel, from its frustum's largest half-angle), at least 20% for the refractive flattening.
+  const double pixel = std::max(std::tan(channel.frustum.leftDeg * std::numbers::pi / 180.0) +
+                                    std::tan(channel.frustum.rightDeg * std::numbers::pi / 180.0), 0.0) /
+                       std::max(channel.width, 1);
+  const double halfSize = 1.2 * std::tan(d.angularRadiusRad) + 3.0 * pixel;
+  const glm::dvec3 up = std::abs(d.centreSeen.z) < 0.999 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
+  const glm::dvec3 right = glm::normalize(glm::cross(d.centreSeen, up));
+  set3(p, "moonCentreSeen", d.centreSeen);
+  set3(p, "quadRight", right);
+  set3(p, "quadUp", glm::cross(right, d.centreSeen));
+  set1(p, "quadHalfSize", halfSize);
+  const glm::mat3 worldToNdc(glm::inverse(ndcToWorldMatrix));
+  glProgramUniformMatrix3fv(p, glGetUniformLocation(p, "worldToNdc"), 1, GL_FALSE, &worldToNdc[0][0]);
+  set3(p, "moonCentre", d.centre);
+  set1(p, "moonSinRadius", std::sin(d.angularRadiusRad));
+  set3(p, "towardSun", d.towardSun);
+  set3(p, "moonNorth", d.north);
+  set3(p, "moonEast", d.east);
+  set3(p, "sunlitScale", d.sunlitScale);
+  set3(p, "earthshineScale", d.earthshineScale);
+  glProgramUniform2f(p, glGetUniformLocation(p, "refraction"), static_cast<float>(d.refractionScale),
+                     static_cast<float>(d.refractionOffsetRad));
+  glBindTextureUnit(kAlbedoUnit, albedoTexture_);
+  glBindTextureUnit(kExtinctionUnit, extinctionTexture_);
+  glBindVertexArray(emptyVao_);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);  // light adds: the moon in front of the sky's scattered light
+  program_.use();
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  glDisable(GL_BLEND);
+}
+
+}  // namespace skyig::render

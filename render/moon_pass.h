@@ -1,0 +1,49 @@
+#pragma once
+// The moon's GL pass (shaders/passes/moon.*): a quad around the disc, added onto the HDR target
+// after the sky pass, from the same numbers as the CPU side (render/night/moon_disc.h).
+#include "render/channel.h"
+#include "render/gl_program.h"
+#include "render/night/moon_disc.h"
+
+#include <glm/mat3x3.hpp>
+
+#include <array>
+#include <memory>
+#include <optional>
+
+namespace skyig::render {
+
+struct SkyState;
+
+class MoonPass {
+ public:
+  // Needs the GL context current; uploads the albedo map (MoonAlbedo::standard()).
+  MoonPass();
+  ~MoonPass();
+  MoonPass(const MoonPass&) = delete;
+  MoonPass& operator=(const MoonPass&) = delete;
+
+  // Adds the state's moon to the bound target; nothing without an ephemeris. The frame block
+  // (shaders/common/uniforms.h) of `channel` must be bound.
+  void draw(const SkyState& state, const ChannelConfig& channel);
+  // The same for a given disc and the channel's eq. 22 matrix (ndcToWorld).
+  void draw(const MoonDisc& disc, const glm::dmat3& ndcToWorld, const ChannelConfig& channel);
+
+ private:
+  void useExtinction(const std::shared_ptr<const atmosphere::ExtinctionProfile>& extinction);
+  GlProgram program_;
+  GLuint albedoTexture_ = 0;
+  GLuint extinctionTexture_ = 0;
+  std::shared_ptr<const atmosphere::ExtinctionProfile> extinction_;  // the one in extinctionTexture_
+  bool extinctionUploaded_ = false;
+  struct DiscKey {  // what a state's disc depends on: time, place and atmosphere
+    std::array<double, 7> when{};
+    const atmosphere::ExtinctionProfile* extinction = nullptr;
+    bool operator==(const DiscKey&) const = default;
+  };
+  std::optional<MoonDisc> disc_;  // the last state's disc
+  DiscKey discKey_;
+  GLuint emptyVao_ = 0;
+};
+
+}  // namespace skyig::render

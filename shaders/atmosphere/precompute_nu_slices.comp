@@ -1,0 +1,51 @@
+// GPU precomputation, step 4a' (per order n >= 2, before the scattering density): the radiance
+// of order n-1 at the directions of the density's quadrature, as "nu slices".
+//
+// The scattering density (precompute_scattering_density.comp, the same quadrature as
+// computeScatteringDensity in multiple_scattering.glsl) integrates over circles of directions
+// of fixed theta, along which only nu changes. lookupScatteringUvwz blends two trilinear
+// fetches at x = (k + u_mu_s) / nu_size, k = floor(u_nu (nu_size - 1)), at the circle's
+// (u_mu_s, u_mu, u_r); these depend on (r, theta, mu_s) and k only. This pass makes those
+// fetches once, for k = 0..nu_size: texel (k, theta_index * mu_s_size + mu_s_index, r_index).
+// The density then reads two texels per direction (texelFetch, no filtering) and blends them
+// as lookupScatteringUvwz does: same values, a fraction of the work.
+#include "atmosphere/multiple_scattering.glsl"
+layout(local_size_x = 8, local_size_y = 8) in;
+uniform AtmosphereParameters atm;
+// atm with the density table's sizes (GpuPrecomputeOptions::density_divisor; = atm by default).
+uniform AtmosphereParameters atm_density;
+uniform int scattering_order;  // n: the slices are of the radiance of order n - 1
+layout(binding = 1) uniform sampler3D single_rayleigh_texture;
+layout(binding = 2) uniform sampler3D single_mie_texture;
+layout(binding = 3) uniform sampler3D multiple_texture;
+layout(binding = 0, rgba32f) uniform writeonly image3D slices_a_out;  // Rayleigh or delta S
+layout(binding = 1, rgba32f) uniform writeonly image3D slices_b_out;  // Mie (order 1)
+void main() {
+  ivec3 texel = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(texel, imageSize(slices_a_out)))) {
+    return;
+  }
+  int mu_s_size = int(atm.scattering_mu_s_size);
+  int theta_index = texel.y / mu_s_size;
+  int mu_s_index = texel.y - theta_index * mu_s_size;
+  // r and mu_s exactly as the density's texels of this column and radius compute them.
+  // (The density table may have fewer radii than the others: atm_density.)
+  Float r;
+  Float mu;
+  Float mu_s;
+  Float nu;
+  bool ray_r_mu_intersects_ground;
+  rMuMuSNuFromScatteringFragCoord(atm_density, vec3(Float(mu_s_index) + 0.5, 0.5, Float(texel.z) + 0.5),
+                                  r, mu, mu_s, nu, ray_r_mu_intersects_ground);
+  Float dtheta = ATMOSPHERE_PI / Float(ATMOSPHERE_DENSITY_ANGULAR_SAMPLES);
+  Float cos_theta = cos((Float(theta_index) + 0.5) * dtheta);
+  vec4 uvwz = scatteringUvwzFromRMuMuSNu(atm, r, cos_theta, mu_s, 0.0,
+                                         rayIntersectsGround(atm, r, cos_theta));
+  vec3 uvw = vec3((Float(texel.x) + uvwz.y) / atm.scattering_nu_size, uvwz.z, uvwz.w);
+  if (scattering_order - 1 == 1) {
+    imageStore(slices_a_out, texel, texture(single_rayleigh_texture, uvw));
+    imageStore(slices_b_out, texel, texture(single_mie_texture, uvw));
+  } else {
+    imageStore(slices_a_out, texel, texture(multiple_texture, uvw));
+  }
+}

@@ -1,6 +1,7 @@
 #include "render/moon_pass.h"
 
 #include "render/camera.h"
+#include "render/mip_chain.h"
 #include "render/sky_state.h"
 
 #include <glm/glm.hpp>
@@ -31,28 +32,13 @@ void set1(GLuint p, const char* name, double v) {
 MoonPass::MoonPass() : program_("passes/moon.vert", "passes/moon.frag") {
   glCreateVertexArrays(1, &emptyVao_);
   const MoonAlbedo& map = MoonAlbedo::standard();
-  const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(map.width(), map.height()))));
   glCreateTextures(GL_TEXTURE_2D, 1, &albedoTexture_);
-  glTextureStorage2D(albedoTexture_, levels, GL_R32F, map.width(), map.height());
-  // The disc spans tens of pixels, so the map is minified: mip levels by 2x2 box filtering on the
-  // CPU (a few ms; llvmpipe's glGenerateMipmap takes ~150 ms, a visible stall on the first frame).
-  std::vector<float> level = map.texels();
-  int w = map.width(), h = map.height();
-  for (int l = 0; l < levels; ++l) {
-    glTextureSubImage2D(albedoTexture_, l, 0, 0, w, h, GL_RED, GL_FLOAT, level.data());
-    const int w2 = std::max(w / 2, 1), h2 = std::max(h / 2, 1);
-    std::vector<float> next(static_cast<std::size_t>(w2) * static_cast<std::size_t>(h2));
-    auto at = [&](int x, int y) {
-      return level[static_cast<std::size_t>(std::min(y, h - 1)) * static_cast<std::size_t>(w) + static_cast<std::size_t>(std::min(x, w - 1))];
-    };
-    for (int y = 0; y < h2; ++y)
-      for (int x = 0; x < w2; ++x)
-        next[static_cast<std::size_t>(y) * static_cast<std::size_t>(w2) + static_cast<std::size_t>(x)] =
-            0.25f * (at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) + at(2 * x, 2 * y + 1) + at(2 * x + 1, 2 * y + 1));
-    level = std::move(next);
-    w = w2;
-    h = h2;
-  }
+  glTextureStorage2D(albedoTexture_, mipLevelCount(map.width(), map.height()), GL_R32F, map.width(), map.height());
+  // The disc spans tens of pixels, so the map is minified.
+  forEachMipLevel(map.texels(), map.width(), map.height(),
+                  [&](int level, int w, int h, const std::vector<float>& texels) {
+                    glTextureSubImage2D(albedoTexture_, level, 0, 0, w, h, GL_RED, GL_FLOAT, texels.data());
+                  });
   glTextureParameteri(albedoTexture_, GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTextureParameteri(albedoTexture_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glTextureParameteri(albedoTexture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);

@@ -90,6 +90,7 @@ void SkyRenderer::drawSkyPass(const SkyState& state, const ChannelConfig& channe
 void SkyRenderer::draw(const SkyState& state, const ChannelConfig& channel) {
   drawSkyPass(state, channel);
   if (state.ephemeris) (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, channel);
+  if (state.ephemeris) (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
   if (!stars_) stars_ = std::make_unique<StarPass>();
   stars_->draw(state.starField, ndcToWorld(eyeToEnu(state.observer.attitude, channel.offset), channel.frustum));
   glBindVertexArray(emptyVao_);

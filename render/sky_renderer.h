@@ -5,6 +5,7 @@
 #include "render/gl_program.h"
 #include "render/image.h"
 #include "render/moon_pass.h"
+#include "render/night_diffuse_pass.h"
 #include "render/physical_sky_pass.h"
 #include "render/render_target.h"
 #include "render/sky_state.h"
@@ -47,6 +48,7 @@ class SkyRenderer {
   std::unique_ptr<PhysicalSkyPass> physical_;  // compiled the first time a state needs it
   std::unique_ptr<MoonPass> moon_;             // likewise, the first time a state has a moon
   std::unique_ptr<StarPass> stars_;
+  std::unique_ptr<NightDiffusePass> nightDiffuse_;  // Milky Way, zodiacal light, airglow
   std::unique_ptr<RenderTarget> hdr_;
   std::unique_ptr<RenderTarget> display_;
 };

@@ -3,6 +3,7 @@
 #include "ephemeris/ephemeris.h"
 #include "render/atmosphere/model.h"
 #include "render/night/moon_light.h"
+#include "render/night/night_diffuse.h"
 #include "render/physical_camera.h"
 
 #include <algorithm>
@@ -139,11 +140,13 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
   if (s.conditions.model == SkyModel::Physical) {
     s.adaptationLuminance = physicalMeanSkyLuminance(*s.conditions.atmosphere, observer.heightM,
                                                      enuDirection(s.sunAzimuth, s.sunAltitude));
+    s.adaptationLuminance += night::meanNightDiffuseLuminance(s);  // the night's own light
     return s;
   }
   s.sky = makeAnalyticSky(s.conditions, s.sunAzimuth, s.sunAltitude, s.sunApparentAltitude);
   // The eye adapts to the sky it sees: the solid-angle mean luminance of the upper hemisphere.
   s.adaptationLuminance = s.sky.lighting.meanSkyLuminance;
+  s.adaptationLuminance += night::meanNightDiffuseLuminance(s);  // the night's own light
   return s;
 }
 

@@ -2,6 +2,8 @@
 
 #include "ephemeris/ephemeris.h"
 #include "render/atmosphere/probe.h"
+#include "render/night/night_probe.h"
+#include "render/sky_state.h"
 #include "services/atmosphere_loader.h"
 
 #include <cstdio>
@@ -43,19 +45,18 @@ int run(const ProbeCli& cli) {
     if (!cli.sunZenith || !cli.sunAzimuth) throw ConfigError("--sun-zenith and --sun-azimuth: give both, or a place and time");
     request.sun_zenith_deg = *cli.sunZenith;
     request.sun_azimuth_deg = *cli.sunAzimuth;
-  } else {
+  }
+  std::optional<render::ObserverState> place;  // a time and place: the night components too
+  if (!cli.sunZenith && !cli.sunAzimuth) {
     if (!cli.lat || !cli.lon || cli.utc.empty())
       throw ConfigError("the sun: give --sun-zenith and --sun-azimuth, or --lat, --lon and --utc");
     const auto utc = ephemeris::parseIso8601Utc(cli.utc);
     if (!utc) throw ConfigError("--utc: expected a UTC time like 2026-06-21T19:30:00Z, got \"" + cli.utc + "\"");
-    ephemeris::Observer o;
-    constexpr double kDeg = std::numbers::pi / 180.0;
-    o.latitudeRad = *cli.lat * kDeg;
-    o.longitudeRad = *cli.lon * kDeg;
-    o.heightM = std::min(cli.altitudeM, 1e5);
-    const auto e = ephemeris::computeEphemeris(*utc, o);
-    request.sun_zenith_deg = 90.0 - e.sun.altitudeRad / kDeg;
-    request.sun_azimuth_deg = e.sun.azimuthRad / kDeg;
+    place.emplace();
+    place->latitudeDeg = *cli.lat;
+    place->longitudeDeg = *cli.lon;
+    place->heightM = cli.altitudeM;
+    place->utc = *utc;
   }
   for (const auto& v : cli.views) request.views.push_back(parseView(v, "--view"));
   if (!cli.viewsFile.empty()) {
@@ -74,7 +75,15 @@ int run(const ProbeCli& cli) {
   if (cli.humidityPct) conditions.relative_humidity = *cli.humidityPct / 100.0;
   conditions.ground_albedo = cli.groundAlbedo;
   const auto model = loadAtmosphere({cli.tables, cli.cacheDir}, conditions, cli.orders);
-  std::printf("%s\n", atmosphere::probe(*model, request).dump(2).c_str());
+  if (!place) {
+    std::printf("%s\n", atmosphere::probe(*model, request).dump(2).c_str());
+    return 0;
+  }
+  render::SkyConditions sky;
+  sky.model = render::SkyModel::Physical;
+  sky.atmosphere = model;
+  const render::SkyState state = render::buildSkyState(*place, sky);
+  std::printf("%s\n", render::night::nightProbe(*model, state, request).dump(2).c_str());
   return 0;
 }
 
@@ -82,7 +91,7 @@ int run(const ProbeCli& cli) {
 
 void registerProbeCommand(CLI::App& app, int& exitCode) {
   auto cli = std::make_shared<ProbeCli>();
-  CLI::App* c = app.add_subcommand("probe", "Sky, sun and ground radiance of the physical atmosphere in view directions, as JSON");
+  CLI::App* c = app.add_subcommand("probe", "Sky, sun and ground radiance of the physical atmosphere in view directions, as JSON; with --lat --lon --utc also each night light source and the total");
   c->add_option("--alt", cli->altitudeM, "Observer altitude above the ground, m (0)")->check(CLI::Range(0.0, 1e6));
   c->add_option("--sun-zenith", cli->sunZenith, "Sun zenith angle, degrees")->check(CLI::Range(0.0, 180.0));
   c->add_option("--sun-azimuth", cli->sunAzimuth, "Sun azimuth, degrees from north through east")->check(CLI::Range(-360.0, 360.0));

@@ -1,0 +1,75 @@
+#include "render/night/night_probe.h"
+
+#include "render/night/night_diffuse.h"
+#include "render/sky_state.h"
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <stdexcept>
+
+namespace skyig::render::night {
+
+namespace {
+
+double rec709Luminance(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+glm::dvec3 rgbOf(const nlohmann::json& light) {
+  if (light.is_null()) return glm::dvec3(0.0);
+  const auto& rgb = light.at("rgb_cd_m2");
+  return {rgb.at(0).get<double>(), rgb.at(1).get<double>(), rgb.at(2).get<double>()};
+}
+
+}  // namespace
+
+nlohmann::json lightJson(const glm::dvec3& rec709) {
+  return {{"luminance_cd_m2", rec709Luminance(rec709)}, {"rgb_cd_m2", {rec709.r, rec709.g, rec709.b}}};
+}
+
+std::vector<ProbeComponent> nightProbeComponents(const atmosphere::AtmosphereModel& model, const SkyState& state) {
+  auto diffuse = makeNightDiffuseSky(state);
+  if (!diffuse) throw std::invalid_argument("night probe: the state has no ephemeris (give a place and a time)");
+  auto sky = std::make_shared<const NightDiffuseSky>(std::move(*diffuse));
+  const glm::dvec3 camera = atmosphere::observerPosition(model.config().medium, std::max(state.observer.heightM, 0.0));
+  const glm::dvec3 sun = enuDirection(state.sunAzimuth, state.sunAltitude);
+  std::vector<ProbeComponent> c;
+  c.push_back({"sunlit_sky", [&model, camera, sun](const glm::dvec3& v) {
+                 return model.converter().toRec709(model.skyRadiance(camera, v, sun));
+               }});
+  // Merge points, one line each, with the other night branches' CPU functions:
+  // night-moon (render/night/moon_light.h, moon_disc.h):
+  //   c.push_back({"moonlit_sky", [&model, &state](const glm::dvec3& v) { return moonlitSkyRadiance(model, state, v).rec709; }});
+  //   if (auto disc = makeMoonDisc(state)) c.push_back({"moon", [d = *disc](const glm::dvec3& v) { return moonDiscRadiance(d, v).rec709; }});
+  // night-stars (render/night/star_luminance.h):
+  //   if (state.starField) c.push_back({"stars_planets", [f = state.starField](const glm::dvec3& v) { return starLuminance(*f, v).rec709; }});
+  c.push_back({"milky_way", [sky](const glm::dvec3& v) { return nightDiffuseRadiance(*sky, v).milkyWay; }});
+  c.push_back({"zodiacal_light", [sky](const glm::dvec3& v) { return nightDiffuseRadiance(*sky, v).zodiacal; }});
+  c.push_back({"airglow", [sky](const glm::dvec3& v) { return nightDiffuseRadiance(*sky, v).airglow; }});
+  return c;
+}
+
+nlohmann::json nightProbe(const atmosphere::AtmosphereModel& model, const SkyState& state,
+                          atmosphere::ProbeRequest request) {
+  constexpr double kDeg = 180.0 / std::numbers::pi;
+  request.sun_zenith_deg = 90.0 - state.sunAltitude * kDeg;
+  request.sun_azimuth_deg = state.sunAzimuth * kDeg;
+  nlohmann::json out = atmosphere::probe(model, request);
+  const std::vector<ProbeComponent> components = nightProbeComponents(model, state);
+  for (nlohmann::json& view : out["views"]) {
+    const glm::dvec3 v =
+        atmosphere::localDirection(view.at("zenith_deg").get<double>(), view.at("azimuth_deg").get<double>());
+    glm::dvec3 total = rgbOf(view.at("sun")) + rgbOf(view.at("ground"));
+    for (const ProbeComponent& c : components) {
+      const glm::dvec3 rgb = c.radiance(v);
+      view[c.key] = lightJson(rgb);
+      total += rgb;
+    }
+    view["total"] = lightJson(total);
+  }
+  out["utc"] = ephemeris::formatIso8601Utc(state.observer.utc);
+  out["latitude_deg"] = state.observer.latitudeDeg;
+  out["longitude_deg"] = state.observer.longitudeDeg;
+  return out;
+}
+
+}  // namespace skyig::render::night

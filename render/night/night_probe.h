@@ -1,0 +1,52 @@
+#pragma once
+// `skyig probe` at night (issue 6, item 7): for a time and place, every view reports each light
+// source separately and their sum, each as {"luminance_cd_m2", "rgb_cd_m2"} (linear Rec.709
+// scaled so that Y is cd/m^2):
+//   sunlit_sky      the physical atmosphere's sky lit by the sun (the day probe's "sky")
+//   milky_way       the Milky Way and the unresolved stars, after extinction
+//   zodiacal_light  after extinction
+//   airglow         after extinction
+//   total           all the components, plus the day probe's "sun" disc and "ground" where the
+//                   view has them
+// The moon's disc, the moonlit sky and the stars and planets join as one line each in
+// nightProbeComponents() when their CPU functions land (branches night-moon, night-stars);
+// until then they are absent, not zero.
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "render/atmosphere/model.h"
+#include "render/atmosphere/probe.h"
+
+namespace skyig::render {
+struct SkyState;
+}
+
+namespace skyig::render::night {
+
+// One source of light: its JSON key and its radiance along an ENU view direction (unit
+// vector), linear Rec.709, cd/m^2 per channel.
+struct ProbeComponent {
+  std::string key;
+  std::function<glm::dvec3(const glm::dvec3& viewEnu)> radiance;
+};
+
+// The components skyig models for `state` (which must have an ephemeris: a time and place),
+// the sunlit sky from `model`. The functions keep references to `model` and `state`.
+std::vector<ProbeComponent> nightProbeComponents(const atmosphere::AtmosphereModel& model, const SkyState& state);
+
+// {"luminance_cd_m2": Y, "rgb_cd_m2": [r, g, b]}.
+nlohmann::json lightJson(const glm::dvec3& rec709);
+
+// atmosphere::probe's output for `request` (its sun replaced by the state's), each view with
+// the night components and "total" added; request.altitude_m is the observer's height above
+// the model's ground. Throws std::invalid_argument when the state has no ephemeris, or for the
+// probe's own bad values.
+nlohmann::json nightProbe(const atmosphere::AtmosphereModel& model, const SkyState& state,
+                          atmosphere::ProbeRequest request);
+
+}  // namespace skyig::render::night

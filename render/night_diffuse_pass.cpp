@@ -1,0 +1,109 @@
+#include "render/night_diffuse_pass.h"
+
+#include "render/mip_chain.h"
+#include "render/night/zodiacal_light.h"
+#include "render/sky_state.h"
+
+#include <glm/gtc/packing.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace skyig::render {
+
+namespace {
+
+GLuint uploadMilkyWay(const night::MilkyWayMap& map) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  glTextureStorage2D(id, mipLevelCount(map.width(), map.height()), GL_RGBA16F, map.width(), map.height());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  forEachMipLevel(map.texels(), map.width(), map.height(),
+                  [&](int level, int w, int h, const std::vector<glm::vec3>& texels) {
+                    // Half floats hold S10 (0..~1000) to 0.05%; cd/m^2 (1e-4) would sit among
+                    // the denormals.
+                    std::vector<std::uint16_t> half;
+                    half.reserve(texels.size() * 4);
+                    for (const glm::vec3& t : texels)
+                      for (float c : {t.r, t.g, t.b, 1.0f}) half.push_back(static_cast<std::uint16_t>(glm::packHalf1x16(c)));
+                    glTextureSubImage2D(id, level, 0, 0, w, h, GL_RGBA, GL_HALF_FLOAT, half.data());
+                  });
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  return id;
+}
+
+GLuint uploadZodiacal() {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  glTextureStorage2D(id, 1, GL_R32F, night::kZodiacalColumns, night::kZodiacalRows);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(id, 0, 0, 0, night::kZodiacalColumns, night::kZodiacalRows, GL_RED, GL_FLOAT,
+                      night::zodiacalTableS10().data());
+  for (GLenum p : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T}) glTextureParameteri(id, p, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  return id;
+}
+
+}  // namespace
+
+NightDiffusePass::NightDiffusePass()
+    : program_("passes/fullscreen.vert", "passes/night_diffuse.frag"),
+      enuToJ2000Location_(glGetUniformLocation(program_.id(), "enuToJ2000")),
+      sunLocation_(glGetUniformLocation(program_.id(), "sunJ2000")),
+      airglowLocation_(glGetUniformLocation(program_.id(), "airglowZenith")) {
+  milkyWay_ = uploadMilkyWay(*night::MilkyWayMap::standard());
+  zodiacal_ = uploadZodiacal();
+  glCreateTextures(GL_TEXTURE_1D, 1, &extinction_);
+  glTextureStorage1D(extinction_, 1, GL_RGB32F, atmosphere::ExtinctionProfile::kSamples);
+  glTextureParameteri(extinction_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(extinction_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(extinction_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  const glm::vec3 sun(night::sunlightRec709());
+  glProgramUniform3fv(program_.id(), glGetUniformLocation(program_.id(), "sunlightRec709"), 1, glm::value_ptr(sun));
+}
+
+NightDiffusePass::~NightDiffusePass() {
+  const GLuint textures[] = {milkyWay_, zodiacal_, extinction_};
+  glDeleteTextures(3, textures);
+}
+
+void NightDiffusePass::draw(const SkyState& state) {
+  const auto sky = night::makeNightDiffuseSky(state);
+  if (sky) draw(*sky);
+}
+
+void NightDiffusePass::draw(const night::NightDiffuseSky& sky) {
+  if (sky.extinction.get() != uploadedExtinction_) {
+    std::vector<glm::vec3> table(atmosphere::ExtinctionProfile::kSamples, glm::vec3(1.0f));
+    if (sky.extinction) {
+      table = sky.extinction->rec709Table();
+    } else {  // no atmosphere: everything above the horizon arrives
+      for (int i = 0; i < atmosphere::ExtinctionProfile::kSamples / 2; ++i) table[static_cast<std::size_t>(i)] = glm::vec3(0.0f);
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage1D(extinction_, 0, 0, atmosphere::ExtinctionProfile::kSamples, GL_RGB, GL_FLOAT, table.data());
+    uploadedExtinction_ = sky.extinction.get();
+    keepAlive_ = sky.extinction;
+  }
+  const GLuint p = program_.id();
+  const glm::mat3 m(sky.enuToJ2000);
+  glProgramUniformMatrix3fv(p, enuToJ2000Location_, 1, GL_FALSE, glm::value_ptr(m));
+  const glm::vec3 sun(sky.sunJ2000), airglow(sky.airglowZenith);
+  glProgramUniform3fv(p, sunLocation_, 1, glm::value_ptr(sun));
+  glProgramUniform3fv(p, airglowLocation_, 1, glm::value_ptr(airglow));
+  glBindTextureUnit(0, milkyWay_);
+  glBindTextureUnit(1, zodiacal_);
+  glBindTextureUnit(2, extinction_);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  program_.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_BLEND);
+}
+
+}  // namespace skyig::render

@@ -1,0 +1,40 @@
+#pragma once
+// The GL pass of the diffuse night light (shaders/passes/night_diffuse.frag): one full-screen
+// triangle added onto the sky pass's float target. Its textures: the calibrated Milky Way
+// (2048x1024 RGBA16F in S10, mipmapped), Leinert's zodiacal table (11x19 R32F, S10) and the
+// state's extinction profile (512 RGB32F, re-uploaded when the profile changes).
+#include "render/gl_program.h"
+#include "render/night/night_diffuse.h"
+
+#include <memory>
+
+namespace skyig::render {
+
+struct SkyState;
+
+class NightDiffusePass {
+ public:
+  // Needs the GL context current; loads the Milky Way map (MilkyWayMap::standard()).
+  NightDiffusePass();
+  ~NightDiffusePass();
+  NightDiffusePass(const NightDiffusePass&) = delete;
+  NightDiffusePass& operator=(const NightDiffusePass&) = delete;
+
+  // Adds the state's diffuse night light to the bound target; the frame block must be bound.
+  // Draws nothing for a state without an ephemeris (no J2000 frame).
+  void draw(const SkyState& state);
+  void draw(const night::NightDiffuseSky& sky);
+
+ private:
+  GlProgram program_;
+  GLint enuToJ2000Location_ = -1;
+  GLint sunLocation_ = -1;
+  GLint airglowLocation_ = -1;
+  GLuint milkyWay_ = 0;
+  GLuint zodiacal_ = 0;
+  GLuint extinction_ = 0;
+  const atmosphere::ExtinctionProfile* uploadedExtinction_ = nullptr;
+  std::shared_ptr<const atmosphere::ExtinctionProfile> keepAlive_;  // so the pointer stays unique
+};
+
+}  // namespace skyig::render

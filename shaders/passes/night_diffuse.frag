@@ -1,0 +1,45 @@
+// The diffuse night light, added to the sky pass's radiance (blend ONE, ONE): the Milky Way and
+// the unresolved stars (a calibrated panorama, S10 per channel), the zodiacal light (Leinert et
+// al. 1998 table 17, S10) and the airglow (van Rhijn), all dimmed by the transmittance to space
+// along the view. The CPU twin is render/night/night_diffuse.h.
+#include "night/units.glsl"
+#include "night/milky_way.glsl"
+#include "night/zodiacal.glsl"
+#include "night/airglow.glsl"
+
+uniform mat3 enuToJ2000;
+uniform vec3 sunJ2000;
+uniform vec3 sunlightRec709;   // luminance 1
+uniform vec3 airglowZenith;    // linear Rec.709, cd/m^2
+layout(binding = 0) uniform sampler2D milkyWayS10;
+layout(binding = 1) uniform sampler2D zodiacalS10;
+layout(binding = 2) uniform sampler1D extinctionRec709;
+
+in vec3 vViewRay;
+layout(location = 0) out vec4 outRadiance;
+
+// render/atmosphere/extinction_profile.h: u = (1 + sign(e) sqrt(|e| / 90 deg)) / 2.
+float extinctionTexCoord(float elevation) {
+  return 0.5 * (1.0 + sign(elevation) * sqrt(abs(elevation) / (0.5 * 3.14159265358979)));
+}
+
+void main() {
+  vec3 view = normalize(vViewRay);
+  vec3 t = max(texture(extinctionRec709, extinctionTexCoord(asin(clamp(view.z, -1.0, 1.0)))).rgb, vec3(0.0));
+  vec3 j2000 = enuToJ2000 * view;
+  // The panorama's u jumps from 1 to 0 at RA 90 deg: take the mip level from the gradient of a
+  // copy that is continuous there, so the seam does not pick the coarsest level.
+  vec2 uv = milkyWayTexCoord(j2000);
+  vec2 uvShifted = vec2(fract(uv.x + 0.5), uv.y);
+  vec2 dx = dFdx(uv), dy = dFdy(uv);
+  vec2 dxS = dFdx(uvShifted), dyS = dFdy(uvShifted);
+  if (abs(dxS.x) + abs(dyS.x) < abs(dx.x) + abs(dy.x)) {
+    dx = dxS;
+    dy = dyS;
+  }
+  vec3 milkyWay = kS10CdM2 * textureGrad(milkyWayS10, uv, dx, dy).rgb;
+  vec2 lonLat = helioEclipticCoordinates(j2000, sunJ2000);
+  vec3 zodiacal = s10ToCdM2(texture(zodiacalS10, zodiacalTexCoord(lonLat)).r) * sunlightRec709;
+  vec3 airglow = airglowRadiance(airglowZenith, view.z);
+  outRadiance = vec4(t * (milkyWay + zodiacal + airglow), 0.0);
+}

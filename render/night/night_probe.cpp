@@ -1,6 +1,9 @@
 #include "render/night/night_probe.h"
 
+#include "render/night/moon_disc.h"
+#include "render/night/moon_light.h"
 #include "render/night/night_diffuse.h"
+#include "render/night/star_luminance.h"
 #include "render/sky_state.h"
 
 #include <cmath>
@@ -36,12 +39,11 @@ std::vector<ProbeComponent> nightProbeComponents(const atmosphere::AtmosphereMod
   c.push_back({"sunlit_sky", [&model, camera, sun](const glm::dvec3& v) {
                  return model.converter().toRec709(model.skyRadiance(camera, v, sun));
                }});
-  // Merge points, one line each, with the other night branches' CPU functions:
-  // night-moon (render/night/moon_light.h, moon_disc.h):
-  //   c.push_back({"moonlit_sky", [&model, &state](const glm::dvec3& v) { return moonlitSkyRadiance(model, state, v).rec709; }});
-  //   if (auto disc = makeMoonDisc(state)) c.push_back({"moon", [d = *disc](const glm::dvec3& v) { return moonDiscRadiance(d, v).rec709; }});
-  // night-stars (render/night/star_luminance.h):
-  //   if (state.starField) c.push_back({"stars_planets", [f = state.starField](const glm::dvec3& v) { return starLuminance(*f, v).rec709; }});
+  c.push_back({"moonlit_sky", [&model, &state](const glm::dvec3& v) { return moonlitSkyRadiance(model, state, v).rec709; }});
+  if (auto disc = makeMoonDisc(state))
+    c.push_back({"moon", [d = *disc](const glm::dvec3& v) { return moonDiscRadiance(d, v).rec709; }});
+  if (state.starField)
+    c.push_back({"stars_planets", [f = state.starField](const glm::dvec3& v) { return starLuminance(*f, v).rec709; }});
   c.push_back({"milky_way", [sky](const glm::dvec3& v) { return nightDiffuseRadiance(*sky, v).milkyWay; }});
   c.push_back({"zodiacal_light", [sky](const glm::dvec3& v) { return nightDiffuseRadiance(*sky, v).zodiacal; }});
   c.push_back({"airglow", [sky](const glm::dvec3& v) { return nightDiffuseRadiance(*sky, v).airglow; }});
@@ -65,6 +67,16 @@ nlohmann::json nightProbe(const atmosphere::AtmosphereModel& model, const SkySta
       total += rgb;
     }
     view["total"] = lightJson(total);
+  }
+  if (out.contains("irradiance")) {
+    // The moon beside the sun: its disc after extinction, and the sky it lights (the sunlit
+    // sky's irradiance lit from the moon's direction, scaled as the moonlit sky).
+    const glm::dvec3 camera = atmosphere::observerPosition(model.config().medium, std::max(state.observer.heightM, 0.0));
+    const glm::dvec3 moonlitSky =
+        model.converter().toRec709(model.skyIrradiance(camera, glm::dvec3(0.0, 0.0, 1.0), state.moonDirection)) *
+        state.moonlightScale;
+    out["irradiance"]["moon_lux"] = moonIlluminanceLux(state);
+    out["irradiance"]["moonlit_sky_lux"] = rec709Luminance(moonlitSky);
   }
   out["utc"] = ephemeris::formatIso8601Utc(state.observer.utc);
   out["latitude_deg"] = state.observer.latitudeDeg;

@@ -3,14 +3,17 @@
 // source separately and their sum, each as {"luminance_cd_m2", "rgb_cd_m2"} (linear Rec.709
 // scaled so that Y is cd/m^2):
 //   sunlit_sky      the physical atmosphere's sky lit by the sun (the day probe's "sky")
+//   moonlit_sky     the same sky lit by the moon (Jensen et al. 2001)
+//   moon            the moon's disc after extinction; present when the moon is known
+//   stars_planets   the mean luminance of the stars and planets within 0.5 degrees of the view
+//                   (render/night/star_luminance.h), after extinction
 //   milky_way       the Milky Way and the unresolved stars, after extinction
 //   zodiacal_light  after extinction
 //   airglow         after extinction
 //   total           all the components, plus the day probe's "sun" disc and "ground" where the
 //                   view has them
-// The moon's disc, the moonlit sky and the stars and planets join as one line each in
-// nightProbeComponents() when their CPU functions land (branches night-moon, night-stars);
-// until then they are absent, not zero.
+// With --irradiance, "irradiance" gains "moon_lux" (the disc, after extinction) and
+// "moonlit_sky_lux" on a horizontal surface, beside the sun's and the sky's.
 #include <nlohmann/json.hpp>
 
 #include <functional>

@@ -101,7 +101,7 @@ const toml::table* subTable(TableReader& parent, const std::string& key) {
 
 constexpr const char* kModels = "\"preetham\", \"cie\" or \"physical\"";
 
-void readSky(TableReader& r, render::SkyConditions& sky, AtmosphereSettings& atmosphere) {
+void readSky(TableReader& r, render::SkyConditions& sky, AtmosphereSettings& atmosphere, std::string& starCatalogue) {
   const std::string model = r.string("model", std::string(render::toString(sky.model)), kModels);
   if (!render::parseSkyModel(model, sky.model)) r.fail(r.find("model"), "model", "expected " + std::string(kModels) + ", got \"" + model + "\"");
   sky.cieType = r.integer("cie_type", sky.cieType, 1, 15);
@@ -111,6 +111,7 @@ void readSky(TableReader& r, render::SkyConditions& sky, AtmosphereSettings& atm
   if (atmosphere.tables != "small" && atmosphere.tables != "default")
     r.fail(r.find("atmosphere_tables"), "atmosphere_tables", "expected \"small\" or \"default\", got \"" + atmosphere.tables + "\"");
   atmosphere.cacheDir = r.string("atmosphere_cache", atmosphere.cacheDir);
+  starCatalogue = r.string("star_catalogue", starCatalogue);
   r.rejectUnknownKeys();
 }
 
@@ -206,7 +207,7 @@ NodeConfig parseNodeConfig(const std::string& text, const std::string& sourceNam
   }
   if (const toml::table* t = subTable(r, "sky")) {
     TableReader s(*t, "sky.", sourceName);
-    readSky(s, config.sky, config.atmosphere);
+    readSky(s, config.sky, config.atmosphere, config.starCataloguePath);
   }
   if (const toml::table* t = subTable(r, "observer")) {
     TableReader o(*t, "observer.", sourceName);

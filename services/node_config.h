@@ -46,6 +46,9 @@ struct NodeConfig {
   std::vector<std::string> channelNodes{""};  // per channel: the node that renders it ("" any)
   HostLink host;
   AtmosphereSettings atmosphere;
+  // The star catalogue (BSC5 CSV) that sky.starCatalogue is loaded from (services/sky_data.h):
+  // "" = the bundled one, "none" = planets only.
+  std::string starCataloguePath;
   protocol::canaerospace::IdentifierMap canIdentifiers;
 
   // The channels node `name` renders: those assigned to it, and those assigned to none.

@@ -2,8 +2,8 @@
 
 #include "render/gl_context.h"
 #include "render/sky_renderer.h"
-#include "services/atmosphere_loader.h"
 #include "services/commands/common_options.h"
+#include "services/sky_data.h"
 
 #include <glad/gl.h>
 #include <nlohmann/json.hpp>
@@ -69,7 +69,7 @@ double median(std::vector<double> v) {
 
 int run(const BenchOptions& opt) {
   NodeConfig config = opt.sky.resolve();
-  loadAtmosphereIfNeeded(config);
+  loadSkyData(config);
   render::ChannelConfig channel = config.channels.front();
   channel.width = opt.width;
   channel.height = opt.height;

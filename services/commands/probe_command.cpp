@@ -5,6 +5,7 @@
 #include "render/night/night_probe.h"
 #include "render/sky_state.h"
 #include "services/atmosphere_loader.h"
+#include "services/sky_data.h"
 
 #include <cstdio>
 #include <fstream>
@@ -27,6 +28,7 @@ struct ProbeCli {
   std::string tables = "small";
   std::string cacheDir;
   int orders = 4;
+  std::string starCatalogue;  // "" = the bundled BSC5
 };
 
 atmosphere::ProbeView parseView(const std::string& text, const std::string& where) {
@@ -82,6 +84,7 @@ int run(const ProbeCli& cli) {
   render::SkyConditions sky;
   sky.model = render::SkyModel::Physical;
   sky.atmosphere = model;
+  sky.starCatalogue = loadConfiguredStarCatalogue(cli.starCatalogue, place->utc);
   const render::SkyState state = render::buildSkyState(*place, sky);
   std::printf("%s\n", render::night::nightProbe(*model, state, request).dump(2).c_str());
   return 0;
@@ -107,6 +110,7 @@ void registerProbeCommand(CLI::App& app, int& exitCode) {
   c->add_option("--tables", cli->tables, "Table size: small (seconds) or default (Bruneton's; minutes on a CPU)")
       ->check(CLI::IsMember({"small", "default"}));
   c->add_option("--orders", cli->orders, "Scattering orders (4)")->check(CLI::Range(1, 10));
+  c->add_option("--star-catalogue", cli->starCatalogue, "Star catalogue CSV for the stars_planets key (default: the bundled BSC5; none: planets only)");
   c->add_option("--cache", cli->cacheDir, "Table cache directory (default: $XDG_CACHE_HOME/skyig or ~/.cache/skyig)");
   c->callback([cli, &exitCode] { exitCode = run(*cli); });
 }

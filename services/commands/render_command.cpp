@@ -4,8 +4,8 @@
 #include "render/gl_context.h"
 #include "render/image_io.h"
 #include "render/sky_renderer.h"
-#include "services/atmosphere_loader.h"
 #include "services/commands/common_options.h"
+#include "services/sky_data.h"
 #include "services/version.h"
 
 #include <spdlog/spdlog.h>
@@ -68,7 +68,7 @@ render::ImageAttributes attributesOf(const render::SkyState& s, const render::Ch
 int run(const RenderOptions& opt) {
   if (opt.exrPath.empty() && opt.pngPath.empty()) throw ConfigError("render: give --exr PATH and/or --png PATH");
   NodeConfig config = opt.sky.resolve();
-  loadAtmosphereIfNeeded(config);
+  loadSkyData(config);
   std::vector<render::ChannelConfig> channels;
   if (opt.allChannels) {
     channels = config.channels;

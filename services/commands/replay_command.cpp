@@ -1,10 +1,10 @@
 #include "services/commands/replay_command.h"
 
-#include "services/atmosphere_loader.h"
 #include "services/can_receiver.h"
 #include "services/commands/common_options.h"
 #include "services/recorder.h"
 #include "services/replay.h"
+#include "services/sky_data.h"
 
 #include <poll.h>
 #include <unistd.h>
@@ -108,7 +108,7 @@ struct ReplayCli {
 int runReplay(ReplayCli& cli) {
   ReplayOptions& o = cli.options;
   o.config = cli.configPath.empty() ? NodeConfig{} : loadNodeConfig(cli.configPath);
-  loadAtmosphereIfNeeded(o.config);
+  loadSkyData(o.config);
   if (!cli.size.empty())
     for (auto& c : o.config.channels) parseSize(cli.size, c.width, c.height);
   if (cli.exr || cli.png) o.writeExr = cli.exr, o.writePng = cli.png;

@@ -1,8 +1,8 @@
 #include "services/commands/serve_command.h"
 
 #include "render/image_io.h"
-#include "services/atmosphere_loader.h"
 #include "services/node.h"
+#include "services/sky_data.h"
 
 #include <spdlog/spdlog.h>
 
@@ -30,7 +30,7 @@ int run(const ServeOptions& o) {
   NodeOptions opt;
   opt.config = o.configPath.empty() ? NodeConfig{} : loadNodeConfig(o.configPath);
   if (!o.node.empty()) opt.config.nodeName = o.node;
-  loadAtmosphereIfNeeded(opt.config);
+  loadSkyData(opt.config);
   const HostLink& h = opt.config.host;
   try {
     opt.listen = parseEndpoint(o.listen.empty() ? h.listen : o.listen);

@@ -7,6 +7,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -173,4 +174,43 @@ TEST_F(Cli, ServeRejectsAnUnwritableDumpBeforeListening) {
   const Result bad = run("serve --config " + analytic.string() + " --headless --frames 1 --listen 127.0.0.1:99999");
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_NE(bad.err.find("port must be 0..65535"), std::string::npos) << bad.err;
+}
+
+namespace {
+
+// Pixels of an EXR brighter than `factor` times its median luminance: the point sources.
+int pointSources(const skyig::render::HdrImage& image, double factor) {
+  std::vector<double> y;
+  for (std::size_t i = 0; i + 3 < image.rgba.size(); i += 4)
+    y.push_back(0.2126 * double(image.rgba[i]) + 0.7152 * double(image.rgba[i + 1]) + 0.0722 * double(image.rgba[i + 2]));
+  std::vector<double> sorted = y;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  return static_cast<int>(std::count_if(y.begin(), y.end(), [&](double v) { return v > factor * median; }));
+}
+
+}  // namespace
+
+// The render command loads the bundled catalogue: the zenith of a moonless night over the Alps
+// shows dozens of stars; with star_catalogue = "none" only what planets are in view.
+TEST_F(Cli, RenderDrawsTheBundledStarCatalogue) {
+  const std::string night = "render --sky-model preetham --lat 47.26 --lon 11.34 --utc 2026-11-09T22:00:00Z --pitch 90 --size 200x200 --exr ";
+  const Result stars = run(night + (dir_ / "stars.exr").string());
+  ASSERT_EQ(stars.exitCode, 0) << stars.err;
+  const fs::path none = write("none.toml", "[sky]\nstar_catalogue = \"none\"\n");
+  const Result planets = run(night + (dir_ / "planets.exr").string() + " --config " + none.string());
+  ASSERT_EQ(planets.exitCode, 0) << planets.err;
+  const int withStars = pointSources(skyig::render::readExr((dir_ / "stars.exr").string()).image, 3.0);
+  const int without = pointSources(skyig::render::readExr((dir_ / "planets.exr").string()).image, 3.0);
+  EXPECT_GT(withStars, 30);
+  EXPECT_LT(without, 10);
+}
+
+TEST_F(Cli, MissingStarCatalogueNamesTheFile) {
+  const fs::path cfg = write("stars.toml", "[sky]\nmodel = \"preetham\"\nstar_catalogue = \"/nonexistent/stars.csv\"\n");
+  const Result r = run("render --config " + cfg.string() + " --png " + (dir_ / "x.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("sky.star_catalogue"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("/nonexistent/stars.csv"), std::string::npos) << r.err;
+  EXPECT_EQ(imageFiles(), 0u);
 }

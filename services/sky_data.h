@@ -1,0 +1,25 @@
+#pragma once
+// What the sky reads from disk before the first frame, for every command that draws or probes
+// it: the physical atmosphere's tables (services/atmosphere_loader.h) and the star catalogue.
+#include "render/night/star_catalogue.h"
+#include "services/node_config.h"
+
+#include <memory>
+#include <string>
+
+namespace skyig::services {
+
+// The catalogue file `configured` names: itself, or for "" the bundled BSC5
+// ($SKYIG_DATA_DIR/bsc5.csv when that is set, else the source tree's ephemeris/data/bsc5.csv).
+std::string starCataloguePath(const std::string& configured);
+
+// The catalogue of `configured` prepared for `epoch` (proper motion), or null for "none".
+// Throws ConfigError naming the file when it cannot be read or parsed.
+std::shared_ptr<const render::night::StarCatalogue> loadConfiguredStarCatalogue(const std::string& configured,
+                                                                              const ephemeris::UtcTime& epoch);
+
+// Sets config.sky.atmosphere (physical model) and config.sky.starCatalogue (at the observer's
+// epoch) where they are not set yet.
+void loadSkyData(NodeConfig& config);
+
+}  // namespace skyig::services

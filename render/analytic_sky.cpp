@@ -1,6 +1,7 @@
 #include "render/analytic_sky.h"
 
 #include "render/cie_sky_types.h"
+#include "render/hemisphere_grid.h"
 #include "shaders/physics.h"
 
 #include <cmath>
@@ -87,22 +88,15 @@ void setLuminanceDistribution(const SkyConditions& c, double thetaS, double sunA
 }
 
 SkyLighting integrateLighting(const AnalyticSkyParams& p) {
-  // Midpoint rule in (cos theta, phi), where the solid angle element is d(cos theta) d(phi).
   constexpr int kMu = 64, kPhi = 128;
   SkyLighting lighting;
   double luminanceSum = 0.0;
   const shader::AnalyticSky sky = toShader(p);
-  for (int i = 0; i < kMu; ++i) {
-    const double mu = (i + 0.5) / kMu;
-    const double sinTheta = std::sqrt(1.0 - mu * mu);
-    for (int j = 0; j < kPhi; ++j) {
-      const double phi = 2.0 * kPi * (j + 0.5) / kPhi;
-      const glm::dvec3 dir(sinTheta * std::sin(phi), sinTheta * std::cos(phi), mu);
-      const glm::dvec3 l = shader::analyticSkyLight(sky, dir);
-      lighting.diffuseHorizontal += l * mu;
-      luminanceSum += shader::rec709Luminance(l);
-    }
-  }
+  forEachHemisphereDirection(kMu, kPhi, [&](const glm::dvec3& dir) {
+    const glm::dvec3 l = shader::analyticSkyLight(sky, dir);
+    lighting.diffuseHorizontal += l * dir.z;
+    luminanceSum += shader::rec709Luminance(l);
+  });
   const double dOmega = (1.0 / kMu) * (2.0 * kPi / kPhi);
   lighting.diffuseHorizontal *= dOmega;
   lighting.meanSkyLuminance = luminanceSum * dOmega / (2.0 * kPi);

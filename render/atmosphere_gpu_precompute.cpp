@@ -12,6 +12,7 @@
 #include "render/atmosphere/precompute.h"
 #include "render/egl_context.h"
 #include "render/gl_context.h"
+#include "render/atmosphere_uniforms.h"
 #include "render/gl_program.h"
 #include "render/shader_source.h"
 
@@ -27,70 +28,7 @@ namespace {
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 GLuint compileCompute(const std::string& path) {
-  const AssembledShader source = assembleShader(path);
-  const char* text = source.text.c_str();
-  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<std::size_t>(length) + 1, '\0');
-    glGetShaderInfoLog(shader, length, nullptr, log.data());
-    glDeleteShader(shader);
-    throw ShaderCompileError("compiling " + path + ":\n" + annotateCompilerLog(log, source.files));
-  }
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, shader);
-  glLinkProgram(program);
-  glDeleteShader(shader);
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    glDeleteProgram(program);
-    throw ShaderCompileError("linking " + path);
-  }
-  return program;
-}
-
-// The members of `uniform AtmosphereParameters atm` (shaders/atmosphere/parameters.glsl, or
-// another uniform of that type), set by name. (render/physical_sky_pass.cpp has its own for an array of them.)
-void setParameters(GLuint program, const AtmosphereParameters& a, const std::string& uniform = "atm") {
-  const std::string prefix = uniform + ".";
-  auto v4 = [&](const char* name, const glm::dvec4& v) {
-    glProgramUniform4f(program, glGetUniformLocation(program, (prefix + name).c_str()),
-                       static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z),
-                       static_cast<float>(v.w));
-  };
-  auto f1 = [&](const char* name, double v) {
-    glProgramUniform1f(program, glGetUniformLocation(program, (prefix + name).c_str()),
-                       static_cast<float>(v));
-  };
-  v4("solar_irradiance", a.solar_irradiance);
-  f1("sun_angular_radius", a.sun_angular_radius);
-  v4("limb_darkening_exponent", a.limb_darkening_exponent);
-  f1("bottom_radius", a.bottom_radius);
-  f1("top_radius", a.top_radius);
-  v4("rayleigh_scattering", a.rayleigh_scattering);
-  f1("rayleigh_scale_height", a.rayleigh_scale_height);
-  v4("mie_scattering", a.mie_scattering);
-  v4("mie_extinction", a.mie_extinction);
-  f1("mie_scale_height", a.mie_scale_height);
-  f1("mie_phase_g", a.mie_phase_g);
-  v4("absorption_extinction", a.absorption_extinction);
-  f1("ozone_center_altitude", a.ozone_center_altitude);
-  f1("ozone_half_width", a.ozone_half_width);
-  v4("ground_albedo", a.ground_albedo);
-  f1("mu_s_min", a.mu_s_min);
-  f1("transmittance_width", a.transmittance_width);
-  f1("transmittance_height", a.transmittance_height);
-  f1("irradiance_width", a.irradiance_width);
-  f1("irradiance_height", a.irradiance_height);
-  f1("scattering_r_size", a.scattering_r_size);
-  f1("scattering_mu_size", a.scattering_mu_size);
-  f1("scattering_mu_s_size", a.scattering_mu_s_size);
-  f1("scattering_nu_size", a.scattering_nu_size);
+  return linkProgram({compileShaderStage(GL_COMPUTE_SHADER, path)}, path);
 }
 
 void setOrder(GLuint program, int order) {
@@ -247,11 +185,11 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
   std::vector<GroupTables> out(params.size());
   for (std::size_t g = 0; g < params.size(); ++g) {
     const auto group_start = Clock::now();
-    for (GLuint program : p.all()) setParameters(program, params[g]);
+    for (GLuint program : p.all()) setAtmosphereUniforms(program, "atm", params[g]);
     AtmosphereParameters density_params = params[g];
     density_params.scattering_r_size = density_sizes.scattering_r;
     density_params.scattering_mu_size = density_sizes.scattering_mu;
-    for (GLuint program : {p.slices, p.density, p.multiple}) setParameters(program, density_params, "atm_density");
+    for (GLuint program : {p.slices, p.density, p.multiple}) setAtmosphereUniforms(program, "atm_density", density_params);
     for (GLuint unit = 0; unit < 8; ++unit) glBindTextureUnit(unit, 0);
 
     image(0, x.transmittance, GL_WRITE_ONLY);

@@ -7,9 +7,7 @@
 
 namespace skyig::render {
 
-namespace {
-
-GLuint compileStage(GLenum stage, const std::string& path) {
+GLuint compileShaderStage(GLenum stage, const std::string& path) {
   const AssembledShader source = assembleShader(path);
   const GLuint shader = glCreateShader(stage);
   const char* text = source.text.c_str();
@@ -28,33 +26,34 @@ GLuint compileStage(GLenum stage, const std::string& path) {
   return shader;
 }
 
-}  // namespace
+GLuint linkProgram(std::initializer_list<GLuint> shaders, const std::string& what) {
+  const GLuint program = glCreateProgram();
+  for (GLuint s : shaders) glAttachShader(program, s);
+  glLinkProgram(program);
+  for (GLuint s : shaders) glDeleteShader(s);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::vector<char> log(static_cast<size_t>(length) + 1, '\0');
+    glGetProgramInfoLog(program, length, nullptr, log.data());
+    glDeleteProgram(program);
+    throw ShaderCompileError("linking " + what + ":\n" + log.data());
+  }
+  return program;
+}
 
 GlProgram::GlProgram(const std::string& vertexPath, const std::string& fragmentPath) {
-  const GLuint vs = compileStage(GL_VERTEX_SHADER, vertexPath);
+  const GLuint vs = compileShaderStage(GL_VERTEX_SHADER, vertexPath);
   GLuint fs = 0;
   try {
-    fs = compileStage(GL_FRAGMENT_SHADER, fragmentPath);
+    fs = compileShaderStage(GL_FRAGMENT_SHADER, fragmentPath);
   } catch (...) {
     glDeleteShader(vs);
     throw;
   }
-  id_ = glCreateProgram();
-  glAttachShader(id_, vs);
-  glAttachShader(id_, fs);
-  glLinkProgram(id_);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(id_, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    GLint length = 0;
-    glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(static_cast<size_t>(length) + 1, '\0');
-    glGetProgramInfoLog(id_, length, nullptr, log.data());
-    glDeleteProgram(id_);
-    throw ShaderCompileError("linking " + vertexPath + " + " + fragmentPath + ":\n" + log.data());
-  }
+  id_ = linkProgram({vs, fs}, vertexPath + " + " + fragmentPath);
 }
 
 GlProgram::~GlProgram() { glDeleteProgram(id_); }

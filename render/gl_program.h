@@ -3,6 +3,7 @@
 // compiler messages that name the real file and line.
 #include <glad/gl.h>
 
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +13,14 @@ class ShaderCompileError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// One stage of an embedded shader file, compiled; throws ShaderCompileError with the compiler's
+// messages mapped to the real files and lines.
+GLuint compileShaderStage(GLenum stage, const std::string& path);
+
+// A program of `shaders`, which it deletes (linked or not); throws ShaderCompileError with the
+// linker's log, naming `what`.
+GLuint linkProgram(std::initializer_list<GLuint> shaders, const std::string& what);
 
 class GlProgram {
  public:

@@ -6,6 +6,7 @@
 // swapped in: a frame never waits for a whole table set.
 #include "render/atmosphere/model.h"
 #include "render/atmosphere/rec709_tables.h"
+#include "render/atmosphere_uniforms.h"
 #include "render/gl_program.h"
 #include "render/physical_camera.h"
 
@@ -96,9 +97,5 @@ class PhysicalSkyPass {
   std::size_t lastUploadBytes_ = 0;
   double lastUploadSeconds_ = 0.0;
 };
-
-// Sets every member of a GLSL `uniform AtmosphereParameters` named `uniform` (e.g. "atm" or
-// "atm[2]") in `program` (shaders/atmosphere/parameters.glsl), as floats.
-void setAtmosphereUniforms(GLuint program, const std::string& uniform, const atmosphere::AtmosphereParameters& a);
 
 }  // namespace skyig::render

@@ -2,6 +2,7 @@
 
 #include "ephemeris/ephemeris.h"
 #include "render/atmosphere/model.h"
+#include "render/hemisphere_grid.h"
 #include "render/night/moon_light.h"
 #include "render/night/night_diffuse.h"
 #include "render/physical_camera.h"
@@ -52,15 +53,9 @@ double physicalMeanSkyLuminance(const atmosphere::AtmosphereModel& model, double
   constexpr int kMu = 12, kPhi = 24;
   const glm::dvec3 camera = physicalCamera(model, heightM);
   double sum = 0.0;
-  for (int i = 0; i < kMu; ++i) {
-    const double mu = (i + 0.5) / kMu;
-    const double sinTheta = std::sqrt(1.0 - mu * mu);
-    for (int j = 0; j < kPhi; ++j) {
-      const double phi = 2.0 * std::numbers::pi * (j + 0.5) / kPhi;
-      const glm::dvec3 view(sinTheta * std::sin(phi), sinTheta * std::cos(phi), mu);
-      sum += model.converter().luminance(model.skyRadiance(camera, view, sun));
-    }
-  }
+  forEachHemisphereDirection(kMu, kPhi, [&](const glm::dvec3& view) {
+    sum += model.converter().luminance(model.skyRadiance(camera, view, sun));
+  });
   return sum / (kMu * kPhi);
 }
 

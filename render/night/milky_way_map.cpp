@@ -2,8 +2,7 @@
 
 #include "render/night/diffuse_physics.h"
 #include "render/night/render_data.h"
-
-#include <png.h>
+#include "render/png_reader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,40 +16,12 @@ namespace skyig::render::night {
 
 namespace {
 
-struct PngError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-[[noreturn]] void pngError(png_structp, png_const_charp message) { throw PngError(message); }
-
 // 8-bit RGB of a PNG (palette, grey and alpha expanded or stripped).
 std::vector<std::uint8_t> readRgb(const std::string& path, int& width, int& height) {
-  std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!file) throw std::runtime_error("Milky Way map " + path + " cannot be opened");
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, pngError, nullptr);
-  png_infop info = png_create_info_struct(png);
-  std::vector<std::uint8_t> rgb;
-  try {
-    png_init_io(png, file.get());
-    png_read_info(png, info);
-    png_set_expand(png);
-    png_set_strip_16(png);
-    png_set_strip_alpha(png);
-    png_set_gray_to_rgb(png);
-    png_read_update_info(png, info);
-    width = static_cast<int>(png_get_image_width(png, info));
-    height = static_cast<int>(png_get_image_height(png, info));
-    if (png_get_channels(png, info) != 3) throw PngError("unexpected pixel format");
-    rgb.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
-    std::vector<png_bytep> rows(static_cast<std::size_t>(height));
-    for (int y = 0; y < height; ++y) rows[static_cast<std::size_t>(y)] = &rgb[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) * 3];
-    png_read_image(png, rows.data());
-  } catch (const PngError& e) {
-    png_destroy_read_struct(&png, &info, nullptr);
-    throw std::runtime_error("Milky Way map " + path + ": " + e.what());
-  }
-  png_destroy_read_struct(&png, &info, nullptr);
-  return rgb;
+  Rgb8Image image = readPngRgb8(path, "Milky Way map");
+  width = image.width;
+  height = image.height;
+  return std::move(image.rgb);
 }
 
 double srgbToLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }

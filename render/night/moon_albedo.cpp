@@ -1,8 +1,7 @@
 #include "render/night/moon_albedo.h"
 
 #include "night/moon_physics.h"
-
-#include <png.h>
+#include "render/png_reader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,49 +18,17 @@ namespace skyig::render {
 
 namespace {
 
-struct PngReadError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-[[noreturn]] void pngError(png_structp, png_const_charp message) { throw PngReadError(message); }
-
 // Grey values of an 8-bit PNG. Taken as linear in albedo, not sRGB-decoded: read linearly the
 // map's maria are about half as bright as its highlands, as measured normal albedos are (about
 // 0.07 against 0.12-0.15); sRGB decoding would make them five times darker.
 std::vector<float> readGrey(const std::string& path, int& width, int& height) {
-  std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!file) throw std::runtime_error("moon albedo map " + path + " cannot be opened");
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, pngError, nullptr);
-  png_infop info = png_create_info_struct(png);
-  std::vector<float> grey;
-  try {
-    png_init_io(png, file.get());
-    png_read_info(png, info);
-    png_set_expand(png);
-    png_set_strip_16(png);
-    png_set_strip_alpha(png);
-    png_read_update_info(png, info);
-    width = static_cast<int>(png_get_image_width(png, info));
-    height = static_cast<int>(png_get_image_height(png, info));
-    const std::size_t channels = png_get_channels(png, info);
-    if ((channels != 1 && channels != 3) || png_get_bit_depth(png, info) != 8)
-      throw PngReadError("unexpected pixel format");
-    const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-    std::vector<png_byte> pixels(count * channels);
-    std::vector<png_bytep> rows(static_cast<std::size_t>(height));
-    for (int y = 0; y < height; ++y) rows[static_cast<std::size_t>(y)] = &pixels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) * channels];
-    png_read_image(png, rows.data());
-    grey.resize(count);
-    for (std::size_t i = 0; i < count; ++i) {  // the map is grey: the mean of its channels
-      float sum = 0.0f;
-      for (std::size_t c = 0; c < channels; ++c) sum += pixels[i * channels + c];
-      grey[i] = sum / static_cast<float>(channels);
-    }
-  } catch (const PngReadError& e) {
-    png_destroy_read_struct(&png, &info, nullptr);
-    throw std::runtime_error("moon albedo map " + path + ": " + e.what());
-  }
-  png_destroy_read_struct(&png, &info, nullptr);
+  const Rgb8Image image = readPngRgb8(path, "moon albedo map");
+  width = image.width;
+  height = image.height;
+  std::vector<float> grey(image.rgb.size() / 3);
+  for (std::size_t i = 0; i < grey.size(); ++i)  // the map is grey: the mean of its channels
+    grey[i] = (static_cast<float>(image.rgb[3 * i]) + static_cast<float>(image.rgb[3 * i + 1]) +
+               static_cast<float>(image.rgb[3 * i + 2])) / 3.0f;
   return grey;
 }
 

@@ -2,6 +2,7 @@
 
 #include "render/atmosphere/spectral_data.h"
 #include "render/atmosphere/spectrum.h"
+#include "render/hemisphere_grid.h"
 #include "render/night/diffuse_physics.h"
 #include "render/night/zodiacal_light.h"
 #include "render/sky_state.h"
@@ -53,16 +54,10 @@ double meanNightDiffuseLuminance(const SkyState& state) {
   constexpr int kMu = 8, kPhi = 16;
   const glm::dvec3 floor = shader::s10ToCdM2(kPoleS10) * glm::dvec3(1.0);
   double sum = 0.0;
-  for (int i = 0; i < kMu; ++i) {
-    const double mu = (i + 0.5) / kMu;
-    const double sinTheta = std::sqrt(1.0 - mu * mu);
-    for (int j = 0; j < kPhi; ++j) {
-      const double phi = 2.0 * std::numbers::pi * (j + 0.5) / kPhi;
-      const glm::dvec3 v(sinTheta * std::sin(phi), sinTheta * std::cos(phi), mu);
-      const glm::dvec3 rgb = nightDiffuseRadiance(*sky, v).total() + nightExtinction(*sky, v) * floor;
-      sum += 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b;
-    }
-  }
+  forEachHemisphereDirection(kMu, kPhi, [&](const glm::dvec3& v) {
+    const glm::dvec3 rgb = nightDiffuseRadiance(*sky, v).total() + nightExtinction(*sky, v) * floor;
+    sum += 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b;
+  });
   return sum / (kMu * kPhi);
 }
 

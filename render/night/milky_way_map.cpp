@@ -1,6 +1,6 @@
 #include "render/night/milky_way_map.h"
 
-#include "render/night/diffuse_physics.h"
+#include "night/diffuse_physics.h"
 #include "render/night/render_data.h"
 #include "render/png_reader.h"
 

@@ -3,7 +3,7 @@
 #include "render/atmosphere/spectral_data.h"
 #include "render/atmosphere/spectrum.h"
 #include "render/hemisphere_grid.h"
-#include "render/night/diffuse_physics.h"
+#include "night/diffuse_physics.h"
 #include "render/night/zodiacal_light.h"
 #include "render/sky_state.h"
 

@@ -2,7 +2,7 @@
 
 #include "render/atmosphere/spectral_data.h"
 #include "render/atmosphere/spectrum.h"
-#include "render/night/diffuse_physics.h"
+#include "night/diffuse_physics.h"
 
 #include <algorithm>
 #include <cmath>

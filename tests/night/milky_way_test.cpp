@@ -1,5 +1,5 @@
 // The calibrated Milky Way map (render/night/milky_way_map.h) and its placement in the sky.
-#include "render/night/diffuse_physics.h"
+#include "night/diffuse_physics.h"
 #include "render/night/milky_way_map.h"
 #include "render/night/night_diffuse.h"
 #include "render/sky_state.h"

@@ -1,6 +1,6 @@
 // Surface-brightness units of the night sky (shaders/night/units.glsl): closed forms and the
 // published anchors they come from.
-#include "render/night/diffuse_physics.h"
+#include "night/diffuse_physics.h"
 
 #include <gtest/gtest.h>
 

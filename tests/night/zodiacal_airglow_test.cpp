@@ -1,5 +1,5 @@
 // Zodiacal light (Leinert et al. 1998 table 17) and airglow (van Rhijn) on the CPU.
-#include "render/night/diffuse_physics.h"
+#include "night/diffuse_physics.h"
 #include "render/night/night_diffuse.h"
 #include "render/night/zodiacal_light.h"
 #include "render/sky_state.h"

@@ -86,7 +86,7 @@ atmosphere::TableBuilder atmosphereTableBuilder(PrecomputeDevice device) {
 std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const AtmosphereSettings& settings,
                                                                   const atmosphere::Conditions& conditions, int orders) {
   atmosphere::ModelConfig model;
-  if (settings.tables == "small") model.sizes = atmosphere::TableSizes::small();
+  model.sizes = atmosphere::TableSizes::named(settings.tables);
   model.options.scattering_orders = orders;
   model.medium = atmosphere::applyConditions(model.medium, conditions);
   atmosphere::CacheResult cache;

@@ -49,7 +49,7 @@ std::optional<atmosphere::Conditions> HostAtmosphere::observe(double visibilityM
 
 atmosphere::ModelConfig nodeModelConfig(const NodeConfig& config, const atmosphere::Conditions& conditions) {
   atmosphere::ModelConfig model;
-  if (config.atmosphere.tables == "small") model.sizes = atmosphere::TableSizes::small();
+  model.sizes = atmosphere::TableSizes::named(config.atmosphere.tables);
   model.options.scattering_orders = 4;
   atmosphere::Conditions c = conditions;
   if (!c.ground_albedo) c.ground_albedo = config.sky.groundAlbedo;

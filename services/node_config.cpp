@@ -107,9 +107,10 @@ void readSky(TableReader& r, render::SkyConditions& sky, AtmosphereSettings& atm
   sky.cieType = r.integer("cie_type", sky.cieType, 1, 15);
   sky.turbidity = r.number("turbidity", sky.turbidity, 1.7, 10.0);
   sky.groundAlbedo = r.number("ground_albedo", sky.groundAlbedo, 0.0, 1.0);
-  atmosphere.tables = r.string("atmosphere_tables", atmosphere.tables, "\"small\" or \"default\"");
-  if (atmosphere.tables != "small" && atmosphere.tables != "default")
-    r.fail(r.find("atmosphere_tables"), "atmosphere_tables", "expected \"small\" or \"default\", got \"" + atmosphere.tables + "\"");
+  constexpr const char* kTables = "\"small\", \"medium\" or \"default\"";
+  atmosphere.tables = r.string("atmosphere_tables", atmosphere.tables, kTables);
+  if (atmosphere.tables != "small" && atmosphere.tables != "medium" && atmosphere.tables != "default")
+    r.fail(r.find("atmosphere_tables"), "atmosphere_tables", "expected " + std::string(kTables) + ", got \"" + atmosphere.tables + "\"");
   atmosphere.cacheDir = r.string("atmosphere_cache", atmosphere.cacheDir);
   starCatalogue = r.string("star_catalogue", starCatalogue);
   r.rejectUnknownKeys();

@@ -18,6 +18,20 @@ TableSizes TableSizes::small() {
   return s;
 }
 
+TableSizes TableSizes::medium() {
+  TableSizes s;
+  s.scattering_r = 16;
+  s.scattering_mu = 64;
+  return s;
+}
+
+TableSizes TableSizes::named(const std::string& name) {
+  if (name == "small") return small();
+  if (name == "medium") return medium();
+  if (name == "default") return TableSizes{};
+  throw std::invalid_argument("table size \"" + name + "\": expected \"small\", \"medium\" or \"default\"");
+}
+
 std::size_t TableSizes::scatteringTexels() const {
   return static_cast<std::size_t>(scattering_r) * static_cast<std::size_t>(scattering_mu) *
          static_cast<std::size_t>(scattering_mu_s) * static_cast<std::size_t>(scattering_nu);

@@ -4,6 +4,7 @@
 // inscattered radiance S(r, mu, mu_s, nu) 4D stored in 3D, with the single Mie term apart.
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include "shaders/atmosphere/cpu_texture.h"
 
@@ -19,8 +20,14 @@ struct TableSizes {
   int scattering_mu_s = 32;
   int scattering_nu = 8;
 
-  // Small tables for tests (the physics tests need luminance at 16 wavelengths quickly).
+  // Small tables for tests (the physics tests need luminance at 16 wavelengths quickly): seconds
+  // to precompute on llvmpipe, but 15-22% off the default tables at sunset.
   static TableSizes small();
+  // Half the default's radii and view angles: within 3% of the default tables up to 5 km
+  // (docs/atmosphere.md), a quarter of their texels, ~28 s to precompute on llvmpipe.
+  static TableSizes medium();
+  // "small", "medium" or "default"; throws std::invalid_argument naming anything else.
+  static TableSizes named(const std::string& name);
   // Texels of each 3D scattering table, and GPU bytes of one group at RGBA16F.
   std::size_t scatteringTexels() const;
   std::size_t bytesAtHalfFloat() const;

@@ -25,7 +25,7 @@ struct ProbeCli {
   std::string viewsFile;
   std::optional<double> visibilityKm, humidityPct, groundAlbedo;
   bool irradiance = false;
-  std::string tables = "small";
+  std::string tables = "medium";
   std::string cacheDir;
   int orders = 4;
   std::string starCatalogue;  // "" = the bundled BSC5
@@ -107,8 +107,8 @@ void registerProbeCommand(CLI::App& app, int& exitCode) {
   c->add_option("--humidity", cli->humidityPct, "Relative humidity, percent")->check(CLI::Range(0.0, 99.0));
   c->add_option("--ground-albedo", cli->groundAlbedo, "Ground albedo, 0..1")->check(CLI::Range(0.0, 1.0));
   c->add_flag("--irradiance", cli->irradiance, "Add the direct-sun and sky illuminance on a horizontal surface");
-  c->add_option("--tables", cli->tables, "Table size: small (seconds) or default (Bruneton's; minutes on a CPU)")
-      ->check(CLI::IsMember({"small", "default"}));
+  c->add_option("--tables", cli->tables, "Table size: medium (the node's default), small (seconds; coarse at sunset) or default (Bruneton's)")
+      ->check(CLI::IsMember({"small", "medium", "default"}));
   c->add_option("--orders", cli->orders, "Scattering orders (4)")->check(CLI::Range(1, 10));
   c->add_option("--star-catalogue", cli->starCatalogue, "Star catalogue CSV for the stars_planets key (default: the bundled BSC5; none: planets only)");
   c->add_option("--cache", cli->cacheDir, "Table cache directory (default: $XDG_CACHE_HOME/skyig or ~/.cache/skyig)");

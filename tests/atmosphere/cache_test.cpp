@@ -185,3 +185,26 @@ TEST(AtmosphereCache, BadConfigurationIsRejectedWithItsName) {
 
 }  // namespace
 }  // namespace skyig::atmosphere
+
+using skyig::atmosphere::TableSizes;
+
+// The named sizes: medium halves the default's radii and view angles and keeps the rest; small is
+// the tests'; unknown names are refused with the three that exist.
+TEST(AtmosphereTableSizes, NamedSizes) {
+  const TableSizes medium = TableSizes::named("medium");
+  const TableSizes full = TableSizes::named("default");
+  EXPECT_EQ(medium.scattering_r * 2, full.scattering_r);
+  EXPECT_EQ(medium.scattering_mu * 2, full.scattering_mu);
+  EXPECT_EQ(medium.scattering_mu_s, full.scattering_mu_s);
+  EXPECT_EQ(medium.scattering_nu, full.scattering_nu);
+  EXPECT_EQ(medium.transmittance_mu, full.transmittance_mu);
+  EXPECT_EQ(full.scatteringTexels(), 4 * medium.scatteringTexels());
+  EXPECT_EQ(TableSizes::named("small").scattering_r, TableSizes::small().scattering_r);
+  try {
+    (void)TableSizes::named("huge");
+    FAIL() << "accepted an unknown size";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("\"huge\""), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\"medium\""), std::string::npos) << e.what();
+  }
+}

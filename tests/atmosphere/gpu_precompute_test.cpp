@@ -278,10 +278,7 @@ TEST(AtmosphereGpu, Benchmark) {
   ModelConfig c;
   const std::string size = bench;
   if (size == "small") c.sizes = TableSizes::small();
-  if (size == "medium") {
-    c.sizes.scattering_r = 16;
-    c.sizes.scattering_mu = 64;
-  }
+  if (size == "medium") c.sizes = TableSizes::medium();
   render::AtmosphereGpuPrecompute precompute;
   render::GpuPrecomputeTiming timing;
   const char* per_pass = std::getenv("SKYIG_ATMOSPHERE_GPU_PER_PASS");

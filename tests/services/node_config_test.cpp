@@ -33,6 +33,7 @@ TEST(NodeConfig, DocumentedDefaultsEqualBuiltInDefaults) {
   EXPECT_EQ(file.sky.groundAlbedo, builtIn.sky.groundAlbedo);
   EXPECT_EQ(file.atmosphere.tables, builtIn.atmosphere.tables);
   EXPECT_EQ(file.atmosphere.cacheDir, builtIn.atmosphere.cacheDir);
+  EXPECT_EQ(file.starCataloguePath, builtIn.starCataloguePath);
   EXPECT_EQ(file.observer.latitudeDeg, builtIn.observer.latitudeDeg);
   EXPECT_EQ(file.observer.longitudeDeg, builtIn.observer.longitudeDeg);
   EXPECT_EQ(file.observer.heightM, builtIn.observer.heightM);
@@ -124,4 +125,15 @@ TEST(NodeConfig, HostSectionErrors) {
 
 TEST(NodeConfig, MissingFile) {
   EXPECT_THROW(loadNodeConfig("/nonexistent/skyig.toml"), ConfigError);
+}
+
+// The physical sky's table sizes: the three names, medium by default; anything else is named.
+TEST(NodeConfig, AtmosphereTablesAndStarCatalogue) {
+  EXPECT_EQ(parseNodeConfig("", "empty").atmosphere.tables, "medium");
+  for (const char* size : {"small", "medium", "default"})
+    EXPECT_EQ(parseNodeConfig(std::string("[sky]\natmosphere_tables = \"") + size + "\"\n", "t.toml").atmosphere.tables, size);
+  EXPECT_NE(errorOf("[sky]\natmosphere_tables = \"huge\"\n").find("bad.toml:2: sky.atmosphere_tables: expected \"small\", \"medium\" or \"default\", got \"huge\""),
+            std::string::npos)
+      << errorOf("[sky]\natmosphere_tables = \"huge\"\n");
+  EXPECT_EQ(parseNodeConfig("[sky]\nstar_catalogue = \"none\"\n", "t.toml").starCataloguePath, "none");
 }

@@ -87,8 +87,8 @@ std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const Atmosphe
                                                                   const atmosphere::Conditions& conditions, int orders) {
   atmosphere::ModelConfig model;
   model.sizes = atmosphere::TableSizes::named(settings.tables);
-  model.options.scattering_orders = orders;
-  model.medium = atmosphere::applyConditions(model.medium, conditions);
+  model.options.scattering_orders = orders > 0 ? orders : settings.scatteringOrders;
+  model.medium = atmosphere::applyConditions(settings.medium, conditions);
   atmosphere::CacheResult cache;
   const auto start = std::chrono::steady_clock::now();
   auto loaded = std::make_shared<const atmosphere::AtmosphereModel>(

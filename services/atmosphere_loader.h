@@ -30,10 +30,11 @@ atmosphere::TableBuilder atmosphereTableBuilder(PrecomputeDevice device = precom
 
 // The model of `settings` under `conditions`, from the cache directory (settings.cacheDir, else
 // $XDG_CACHE_HOME/skyig or ~/.cache/skyig) or precomputed (atmosphereTableBuilder) and cached
-// there; says on stderr when it has to precompute. `orders`: scattering orders (4 by default).
+// there; says on stderr when it has to precompute. The medium is settings.medium under
+// `conditions`; `orders`: scattering orders (0: settings.scatteringOrders).
 std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const AtmosphereSettings& settings,
                                                                   const atmosphere::Conditions& conditions,
-                                                                  int orders = 4);
+                                                                  int orders = 0);
 
 // Sets config.sky.atmosphere when config.sky.model is physical; prints to stderr when it has
 // to precompute.

@@ -50,10 +50,10 @@ std::optional<atmosphere::Conditions> HostAtmosphere::observe(double visibilityM
 atmosphere::ModelConfig nodeModelConfig(const NodeConfig& config, const atmosphere::Conditions& conditions) {
   atmosphere::ModelConfig model;
   model.sizes = atmosphere::TableSizes::named(config.atmosphere.tables);
-  model.options.scattering_orders = 4;
+  model.options.scattering_orders = config.atmosphere.scatteringOrders;
   atmosphere::Conditions c = conditions;
   if (!c.ground_albedo) c.ground_albedo = config.sky.groundAlbedo;
-  model.medium = atmosphere::applyConditions(model.medium, c);
+  model.medium = atmosphere::applyConditions(config.atmosphere.medium, c);
   return model;
 }
 

@@ -116,6 +116,34 @@ void readSky(TableReader& r, render::SkyConditions& sky, AtmosphereSettings& atm
   r.rejectUnknownKeys();
 }
 
+// [atmosphere]: the medium of Bruneton & Neyret's model (render/atmosphere/medium.h), in the
+// units a meteorologist writes (km, m, per metre, Dobson units, degrees).
+void readAtmosphere(TableReader& r, AtmosphereSettings& a) {
+  atmosphere::Medium& m = a.medium;
+  m.bottom_radius_m = 1e3 * r.number("ground_radius_km", m.bottom_radius_m / 1e3, 1000.0, 100000.0);
+  m.top_radius_m = 1e3 * r.number("top_radius_km", m.top_radius_m / 1e3, 1000.0, 100000.0);
+  m.rayleigh_scattering_at_1um_per_m = r.number("rayleigh_scattering_1um", m.rayleigh_scattering_at_1um_per_m, 0.0, 1e-3);
+  m.rayleigh_scale_height_m = r.number("rayleigh_scale_height", m.rayleigh_scale_height_m, 100.0, 100000.0);
+  m.mie_extinction_per_m = r.number("mie_extinction", m.mie_extinction_per_m, 0.0, 1e-2);
+  m.mie_single_scattering_albedo = r.number("mie_single_scattering_albedo", m.mie_single_scattering_albedo, 0.0, 1.0);
+  m.mie_angstrom_exponent = r.number("mie_angstrom_exponent", m.mie_angstrom_exponent, -1.0, 4.0);
+  m.mie_scale_height_m = r.number("mie_scale_height", m.mie_scale_height_m, 10.0, 100000.0);
+  m.mie_phase_g = r.number("mie_phase_g", m.mie_phase_g, -0.99, 0.99);
+  m.ozone_column_du = r.number("ozone_column_du", m.ozone_column_du, 0.0, 1000.0);
+  m.ozone_center_altitude_m = r.number("ozone_center_altitude", m.ozone_center_altitude_m, 0.0, 100000.0);
+  m.ozone_half_width_m = r.number("ozone_half_width", m.ozone_half_width_m, 100.0, 100000.0);
+  m.sun_angular_radius_rad =
+      atmosphere::kDegree * r.number("sun_angular_radius_deg", m.sun_angular_radius_rad / atmosphere::kDegree, 0.01, 5.0);
+  m.solar_irradiance_scale = r.number("solar_irradiance_scale", m.solar_irradiance_scale, 0.0, 100.0);
+  a.scatteringOrders = r.integer("scattering_orders", a.scatteringOrders, 1, 10);
+  r.rejectUnknownKeys();
+  try {
+    atmosphere::validate(m);  // what one key cannot tell: the top above the ground, the ozone layer inside
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError(r.source() + ": atmosphere: " + e.what());
+  }
+}
+
 void readObserver(TableReader& r, render::ObserverState& o) {
   o.latitudeDeg = r.number("latitude", o.latitudeDeg, -90.0, 90.0);
   o.longitudeDeg = r.number("longitude", o.longitudeDeg, -180.0, 360.0);
@@ -209,6 +237,10 @@ NodeConfig parseNodeConfig(const std::string& text, const std::string& sourceNam
   if (const toml::table* t = subTable(r, "sky")) {
     TableReader s(*t, "sky.", sourceName);
     readSky(s, config.sky, config.atmosphere, config.starCataloguePath);
+  }
+  if (const toml::table* t = subTable(r, "atmosphere")) {
+    TableReader a(*t, "atmosphere.", sourceName);
+    readAtmosphere(a, config.atmosphere);
   }
   if (const toml::table* t = subTable(r, "observer")) {
     TableReader o(*t, "observer.", sourceName);

@@ -6,6 +6,7 @@
 #include "render/channel.h"
 #include "render/sky_conditions.h"
 #include "render/atmosphere/conditions.h"
+#include "render/atmosphere/medium.h"
 #include "render/sky_state.h"
 
 #include <stdexcept>
@@ -25,11 +26,14 @@ struct HostLink {
   std::string canInterface;             // SocketCAN interface for a CANaerospace host; empty: none
 };
 
-// Tables of the physical sky (sky.model = "physical").
+// Tables of the physical sky (sky.model = "physical"): their size and cache ([sky]) and the
+// medium they are computed for ([atmosphere]; Bruneton's 2017 Earth by default).
 struct AtmosphereSettings {
   // "medium" (the default: within 3% of Bruneton's tables up to 5 km, ~28 s once on llvmpipe),
   // "small" (2 s; for tests, coarse at sunset) or "default" (Bruneton's sizes, for a GPU).
   std::string tables = "medium";
+  atmosphere::Medium medium;  // the ground albedo comes from sky.ground_albedo
+  int scatteringOrders = 4;
   std::string cacheDir;          // "" = $XDG_CACHE_HOME/skyig or ~/.cache/skyig
 };
 

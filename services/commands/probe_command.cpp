@@ -25,9 +25,10 @@ struct ProbeCli {
   std::string viewsFile;
   std::optional<double> visibilityKm, humidityPct, groundAlbedo;
   bool irradiance = false;
-  std::string tables = "medium";
-  std::string cacheDir;
-  int orders = 4;
+  std::optional<std::string> tables;  // default: the configuration's ("medium" without one)
+  std::optional<std::string> cacheDir;
+  std::optional<int> orders;
+  std::string configPath;
   std::string starCatalogue;  // "" = the bundled BSC5
 };
 
@@ -72,11 +73,22 @@ int run(const ProbeCli& cli) {
   }
   if (request.views.empty()) request.views.push_back({0.0, 0.0});  // the zenith
 
+  // The node's atmosphere ([atmosphere], sky.atmosphere_tables, sky.ground_albedo) when a
+  // configuration is given; the flags override it.
+  AtmosphereSettings settings;
   atmosphere::Conditions conditions;
+  if (!cli.configPath.empty()) {
+    const NodeConfig node = loadNodeConfig(cli.configPath);
+    settings = node.atmosphere;
+    conditions.ground_albedo = node.sky.groundAlbedo;
+  }
+  if (cli.tables) settings.tables = *cli.tables;
+  if (cli.cacheDir) settings.cacheDir = *cli.cacheDir;
+  if (cli.orders) settings.scatteringOrders = *cli.orders;
   conditions.visibility_km = cli.visibilityKm;
   if (cli.humidityPct) conditions.relative_humidity = *cli.humidityPct / 100.0;
-  conditions.ground_albedo = cli.groundAlbedo;
-  const auto model = loadAtmosphere({cli.tables, cli.cacheDir}, conditions, cli.orders);
+  if (cli.groundAlbedo) conditions.ground_albedo = cli.groundAlbedo;
+  const auto model = loadAtmosphere(settings, conditions);
   if (!place) {
     std::printf("%s\n", atmosphere::probe(*model, request).dump(2).c_str());
     return 0;
@@ -110,6 +122,8 @@ void registerProbeCommand(CLI::App& app, int& exitCode) {
   c->add_option("--tables", cli->tables, "Table size: medium (the node's default), small (seconds; coarse at sunset) or default (Bruneton's)")
       ->check(CLI::IsMember({"small", "medium", "default"}));
   c->add_option("--orders", cli->orders, "Scattering orders (4)")->check(CLI::Range(1, 10));
+  c->add_option("--config", cli->configPath, "Node configuration (TOML): its [atmosphere] medium, table size and ground albedo")
+      ->check(CLI::ExistingFile);
   c->add_option("--star-catalogue", cli->starCatalogue, "Star catalogue CSV for the stars_planets key (default: the bundled BSC5; none: planets only)");
   c->add_option("--cache", cli->cacheDir, "Table cache directory (default: $XDG_CACHE_HOME/skyig or ~/.cache/skyig)");
   c->callback([cli, &exitCode] { exitCode = run(*cli); });

@@ -214,3 +214,20 @@ TEST_F(Cli, MissingStarCatalogueNamesTheFile) {
   EXPECT_NE(r.err.find("/nonexistent/stars.csv"), std::string::npos) << r.err;
   EXPECT_EQ(imageFiles(), 0u);
 }
+
+// The probe computes for the configuration's [atmosphere]: five times Bruneton's aerosols
+// (mie_extinction 2.22e-5 m^-1 with his 1.2 km scale height) add 4 x 4.44e-6 x 1200 = 0.0213 to
+// the vertical optical depth, so the zenith transmittance at 550 nm falls from 0.8677 to
+// 0.8677 exp(-0.0213) = 0.8494.
+TEST_F(Cli, ProbeUsesTheConfiguredMedium) {
+  const std::string cache = std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache";
+  const fs::path hazy = write("hazy.toml", "[atmosphere]\nmie_extinction = 2.22e-5\n");
+  const Result r = run("probe --config " + hazy.string() + " --tables small --sun-zenith 30 --sun-azimuth 0 --view 0,0 --cache " + cache);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["views"][0]["transmittance"]["550"].get<double>(), 0.8494, 0.002);
+  const fs::path bad = write("bad.toml", "[atmosphere]\nmie_phase_g = 2\n");
+  const Result refused = run("probe --config " + bad.string() + " --sun-zenith 30 --sun-azimuth 0");
+  EXPECT_EQ(refused.exitCode, 2);
+  EXPECT_NE(refused.err.find("atmosphere.mie_phase_g"), std::string::npos) << refused.err;
+}

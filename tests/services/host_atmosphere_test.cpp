@@ -97,4 +97,22 @@ TEST(HostAtmosphere, TheUpdaterBuildsTheHostsVisibility) {
   EXPECT_DOUBLE_EQ(updater.current()->config().medium.ground_albedo, config.sky.groundAlbedo);
 }
 
+// The node's tables are those of its configuration: the [atmosphere] medium and orders, the
+// sky's ground albedo, the host's conditions on top.
+TEST(HostAtmosphere, NodeTablesFollowTheConfiguredMedium) {
+  NodeConfig config;
+  config.atmosphere.medium.mie_phase_g = 0.7;
+  config.atmosphere.medium.ozone_column_du = 350.0;
+  config.atmosphere.scatteringOrders = 6;
+  const atmosphere::ModelConfig m = nodeModelConfig(config, {});
+  EXPECT_EQ(m.medium.mie_phase_g, 0.7);
+  EXPECT_EQ(m.medium.ozone_column_du, 350.0);
+  EXPECT_EQ(m.options.scattering_orders, 6);
+  EXPECT_EQ(m.medium.ground_albedo, config.sky.groundAlbedo);
+  atmosphere::Conditions hazy;
+  hazy.visibility_km = 5.0;
+  EXPECT_NEAR(atmosphere::visibilityOf(nodeModelConfig(config, hazy).medium), 5.0, 1e-9);
+  EXPECT_EQ(nodeModelConfig(config, hazy).medium.mie_phase_g, 0.7);
+}
+
 }  // namespace

@@ -66,21 +66,11 @@ void MoonPass::useExtinction(const std::shared_ptr<const atmosphere::ExtinctionP
 }
 
 void MoonPass::draw(const SkyState& state, const ChannelConfig& channel) {
-  if (!state.ephemeris) return;
-  // The disc's parameters cost ~0.3 ms (the albedo normalisation): computed once per state, not
-  // once per channel and frame.
-  const ephemeris::UtcTime& t = state.observer.utc;
-  const DiscKey key{{static_cast<double>(t.year), static_cast<double>(t.month), static_cast<double>(t.day), t.secondsOfDay,
-                     state.observer.latitudeDeg, state.observer.longitudeDeg, state.observer.heightM},
-                    state.extinction.get()};
-  if (!disc_ || key != discKey_) {
-    disc_ = makeMoonDisc(state);
-    discKey_ = key;
-  }
   // Well below the horizon (more than the largest dip of the horizon, 5 deg at 25 km) nothing
   // of it can be seen: skip the pass.
-  if (!disc_ || disc_->centreSeen.z < -std::sin(5.5 * std::numbers::pi / 180.0)) return;
-  draw(*disc_, ndcToWorld(eyeToEnu(state.observer.attitude, channel.offset), channel.frustum), channel);
+  const MoonDisc* d = state.moonDisc.get();
+  if (!d || d->centreSeen.z < -std::sin(5.5 * std::numbers::pi / 180.0)) return;
+  draw(*d, ndcToWorld(eyeToEnu(state.observer.attitude, channel.offset), channel.frustum), channel);
 }
 
 void MoonPass::draw(const MoonDisc& d, const glm::dmat3& ndcToWorldMatrix, const ChannelConfig& channel) {

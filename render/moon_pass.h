@@ -7,9 +7,7 @@
 
 #include <glm/mat3x3.hpp>
 
-#include <array>
 #include <memory>
-#include <optional>
 
 namespace skyig::render {
 
@@ -23,7 +21,7 @@ class MoonPass {
   MoonPass(const MoonPass&) = delete;
   MoonPass& operator=(const MoonPass&) = delete;
 
-  // Adds the state's moon to the bound target; nothing without an ephemeris. The frame block
+  // Adds the state's moon (SkyState::moonDisc) to the bound target; nothing without one. The frame block
   // (shaders/common/uniforms.h) of `channel` must be bound.
   void draw(const SkyState& state, const ChannelConfig& channel);
   // The same for a given disc and the channel's eq. 22 matrix (ndcToWorld).
@@ -36,13 +34,6 @@ class MoonPass {
   GLuint extinctionTexture_ = 0;
   std::shared_ptr<const atmosphere::ExtinctionProfile> extinction_;  // the one in extinctionTexture_
   bool extinctionUploaded_ = false;
-  struct DiscKey {  // what a state's disc depends on: time, place and atmosphere
-    std::array<double, 7> when{};
-    const atmosphere::ExtinctionProfile* extinction = nullptr;
-    bool operator==(const DiscKey&) const = default;
-  };
-  std::optional<MoonDisc> disc_;  // the last state's disc
-  DiscKey discKey_;
   GLuint emptyVao_ = 0;
 };
 

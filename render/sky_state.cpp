@@ -3,6 +3,7 @@
 #include "ephemeris/ephemeris.h"
 #include "render/atmosphere/model.h"
 #include "render/hemisphere_grid.h"
+#include "render/night/moon_disc.h"
 #include "render/night/moon_light.h"
 #include "render/night/night_diffuse.h"
 #include "render/physical_camera.h"
@@ -132,6 +133,8 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
                                                           : atmosphere::Medium{},
                                   observer.heightM);
   s.starField = starFieldOf(s);
+  if (s.ephemeris)
+    s.moonDisc = std::make_shared<const MoonDisc>(makeMoonDisc(moonPlacement(*s.ephemeris), s.extinction));
   if (s.conditions.model == SkyModel::Physical) {
     s.adaptationLuminance = physicalMeanSkyLuminance(*s.conditions.atmosphere, observer.heightM,
                                                      enuDirection(s.sunAzimuth, s.sunAltitude));

@@ -8,6 +8,7 @@
 #include "render/analytic_sky.h"
 #include "render/atmosphere/extinction_profile.h"
 #include "render/camera.h"
+#include "render/night/moon_disc.h"
 #include "render/night/star_field.h"
 #include "render/sky_conditions.h"
 
@@ -52,6 +53,9 @@ struct SkyState {
   // Stars and planets as seen at the observer's time and place (also when the sun is
   // overridden: the override moves the sun only).
   std::shared_ptr<const night::StarField> starField;
+  // The moon's disc as the moon pass and the probe use it, built once per state here rather
+  // than per channel on the render thread; null without an ephemeris (sun overridden).
+  std::shared_ptr<const MoonDisc> moonDisc;
 };
 
 // Throws std::invalid_argument naming the bad value (latitude out of range, NaN, a date

@@ -167,11 +167,6 @@ MoonDisc makeMoonDisc(const MoonPlacement& p, std::shared_ptr<const atmosphere::
   return d;
 }
 
-std::optional<MoonDisc> makeMoonDisc(const SkyState& state) {
-  if (!state.ephemeris) return std::nullopt;
-  return makeMoonDisc(moonPlacement(*state.ephemeris), state.extinction);
-}
-
 MoonRadiance moonDiscRadiance(const MoonDisc& d, const glm::dvec3& viewEnu) {
   const double l = glm::length(viewEnu);
   if (!(l > 0.0) || !std::isfinite(l)) throw std::invalid_argument("moon view direction has length " + std::to_string(l));
@@ -196,9 +191,6 @@ double moonIlluminanceLux(const MoonDisc& d) {
   return shader::rec709Luminance(e) * std::sin(seenAltitude);
 }
 
-double moonIlluminanceLux(const SkyState& state) {
-  const std::optional<MoonDisc> d = makeMoonDisc(state);
-  return d ? moonIlluminanceLux(*d) : 0.0;
-}
+double moonIlluminanceLux(const SkyState& state) { return state.moonDisc ? moonIlluminanceLux(*state.moonDisc) : 0.0; }
 
 }  // namespace skyig::render

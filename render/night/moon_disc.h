@@ -62,8 +62,6 @@ MoonPlacement moonPlacement(const ephemeris::SkyEphemeris& sky);
 MoonDisc makeMoonDisc(const MoonPlacement& placement,
                       std::shared_ptr<const atmosphere::ExtinctionProfile> extinction,
                       const MoonAlbedo& albedo = MoonAlbedo::standard());
-// The state's moon; none when the state has no ephemeris (sun overridden).
-std::optional<MoonDisc> makeMoonDisc(const SkyState& state);
 
 // Radiance seen along a view (ENU, need not be normalised) at the observer, after extinction;
 // zero off the disc (a hard limb: no pixel footprint on the CPU).

@@ -40,8 +40,8 @@ std::vector<ProbeComponent> nightProbeComponents(const atmosphere::AtmosphereMod
                  return model.converter().toRec709(model.skyRadiance(camera, v, sun));
                }});
   c.push_back({"moonlit_sky", [&model, &state](const glm::dvec3& v) { return moonlitSkyRadiance(model, state, v).rec709; }});
-  if (auto disc = makeMoonDisc(state))
-    c.push_back({"moon", [d = *disc](const glm::dvec3& v) { return moonDiscRadiance(d, v).rec709; }});
+  if (state.moonDisc)
+    c.push_back({"moon", [d = state.moonDisc](const glm::dvec3& v) { return moonDiscRadiance(*d, v).rec709; }});
   if (state.starField)
     c.push_back({"stars_planets", [f = state.starField](const glm::dvec3& v) { return starLuminance(*f, v).rec709; }});
   c.push_back({"milky_way", [sky](const glm::dvec3& v) { return nightDiffuseRadiance(*sky, v).milkyWay; }});

@@ -74,7 +74,7 @@ void BM_MoonPass1920x1200(benchmark::State& bench) {
   frame.upload(b);
   frame.bind();
   target.bindForDrawing();
-  const MoonDisc d = *makeMoonDisc(s);
+  const MoonDisc d = *s.moonDisc;
   for (auto _ : bench) {
     pass.draw(d, m, c);
     glFinish();
@@ -86,7 +86,7 @@ BENCHMARK(BM_MoonPass1920x1200)->Unit(benchmark::kMillisecond)->UseRealTime();
 void BM_MakeMoonDisc(benchmark::State& bench) {
   const std::optional<ObserverState> night = nightWithMoon(100.0, 150.0, 10.0);
   const SkyState s = buildSkyState(*night, SkyConditions{});
-  for (auto _ : bench) benchmark::DoNotOptimize(makeMoonDisc(s));
+  for (auto _ : bench) benchmark::DoNotOptimize(makeMoonDisc(moonPlacement(*s.ephemeris), s.extinction));
 }
 BENCHMARK(BM_MakeMoonDisc)->Unit(benchmark::kMicrosecond);
 

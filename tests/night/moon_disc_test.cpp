@@ -107,7 +107,7 @@ TEST(MoonDisc, LitSideFacesTheSun) {
   const std::optional<ObserverState> night = nightWithMoon(70.0, 110.0, 20.0);
   ASSERT_TRUE(night.has_value());
   const SkyState s = buildSkyState(*night, SkyConditions{});
-  const MoonDisc d = *makeMoonDisc(s);
+  const MoonDisc d = *s.moonDisc;
   const glm::dvec3 sun = enuDirection(s.ephemeris->sun.azimuthRad, s.ephemeris->sun.altitudeRad);
   const glm::dvec3 towardSunOnSky = glm::normalize(sun - glm::dot(sun, d.centre) * d.centre);
   const double offset = 0.6 * std::sin(d.angularRadiusRad);
@@ -156,7 +156,7 @@ TEST(Moonlight, ScaleIsAMillionthOfSunlightAndRedder) {
   // Overridden sun: no ephemeris, no moon.
   const SkyState day = buildSkyState(*night, SkyConditions{}, SunOverride{180.0, 30.0});
   EXPECT_EQ(day.moonlightScale, glm::dvec3(0.0));
-  EXPECT_FALSE(makeMoonDisc(day).has_value());
+  EXPECT_EQ(day.moonDisc, nullptr);
 }
 
 // The full-moon sky is a dim blue: bluer than the moonlight that lights it, and near the zenith

@@ -104,7 +104,7 @@ MoonImage renderMoon(SkyRenderer& renderer, const SkyState& s, const ChannelConf
       m.luminance[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.width) + static_cast<std::size_t>(x)] =
           shader::rec709Luminance(glm::dvec3(a[0] - b[0], a[1] - b[1], a[2] - b[2]));
     }
-  const MoonDisc d = *makeMoonDisc(s);
+  const MoonDisc d = *s.moonDisc;
   const glm::dmat3 ndc = ndcToWorld(eyeToEnu(s.observer.attitude, c.offset), c.frustum);
   m.centre = project(ndc, d.centreSeen, c.width, c.height);
   const glm::dvec3 sun = enuDirection(s.ephemeris->sun.azimuthRad, s.ephemeris->sun.altitudeRad);

@@ -144,8 +144,8 @@ TEST(NightProbe, FullMoonDiscMoonlitSkyAndIlluminance) {
   const SkyState s = fullMoonHigh();
   ASSERT_GT(s.ephemeris->moon.altitudeRad, 50.0 * kDeg);
   ASSERT_LT(s.sunAltitude, -18.0 * kDeg);
-  const auto disc = makeMoonDisc(s);
-  ASSERT_TRUE(disc.has_value());
+  const auto& disc = s.moonDisc;
+  ASSERT_NE(disc, nullptr);
   atmosphere::ProbeRequest r;
   r.altitude_m = s.observer.heightM;
   r.irradiance = true;

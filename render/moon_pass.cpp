@@ -43,26 +43,11 @@ MoonPass::MoonPass() : program_("passes/moon.vert", "passes/moon.frag") {
   glTextureParameteri(albedoTexture_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   glTextureParameteri(albedoTexture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTextureParameteri(albedoTexture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glCreateTextures(GL_TEXTURE_1D, 1, &extinctionTexture_);
-  glTextureStorage1D(extinctionTexture_, 1, GL_RGB32F, atmosphere::ExtinctionProfile::kSamples);
-  glTextureParameteri(extinctionTexture_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(extinctionTexture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(extinctionTexture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
 }
 
 MoonPass::~MoonPass() {
   glDeleteTextures(1, &albedoTexture_);
-  glDeleteTextures(1, &extinctionTexture_);
   glDeleteVertexArrays(1, &emptyVao_);
-}
-
-void MoonPass::useExtinction(const std::shared_ptr<const atmosphere::ExtinctionProfile>& extinction) {
-  if (extinctionUploaded_ && extinction == extinction_) return;
-  std::vector<glm::vec3> table(atmosphere::ExtinctionProfile::kSamples, glm::vec3(1.0f));  // no atmosphere
-  if (extinction) table = extinction->rec709Table();
-  glTextureSubImage1D(extinctionTexture_, 0, 0, static_cast<GLsizei>(table.size()), GL_RGB, GL_FLOAT, table.data());
-  extinction_ = extinction;
-  extinctionUploaded_ = true;
 }
 
 void MoonPass::draw(const SkyState& state, const ChannelConfig& channel) {
@@ -74,7 +59,7 @@ void MoonPass::draw(const SkyState& state, const ChannelConfig& channel) {
 }
 
 void MoonPass::draw(const MoonDisc& d, const glm::dmat3& ndcToWorldMatrix, const ChannelConfig& channel) {
-  useExtinction(d.extinction);
+  extinction_.use(d.extinction);
   const GLuint p = program_.id();
   // The quad: the disc's radius plus three pixels for the limb ramp (the widest pixel of the
   // channel, from its frustum's largest half-angle), at least 20% for the refractive flattening.
@@ -100,7 +85,7 @@ void MoonPass::draw(const MoonDisc& d, const glm::dmat3& ndcToWorldMatrix, const
   glProgramUniform2f(p, glGetUniformLocation(p, "refraction"), static_cast<float>(d.refractionScale),
                      static_cast<float>(d.refractionOffsetRad));
   glBindTextureUnit(kAlbedoUnit, albedoTexture_);
-  glBindTextureUnit(kExtinctionUnit, extinctionTexture_);
+  extinction_.bind(kExtinctionUnit);
   glBindVertexArray(emptyVao_);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);  // light adds: the moon in front of the sky's scattered light

@@ -2,6 +2,7 @@
 // The moon's GL pass (shaders/passes/moon.*): a quad around the disc, added onto the HDR target
 // after the sky pass, from the same numbers as the CPU side (render/night/moon_disc.h).
 #include "render/channel.h"
+#include "render/extinction_texture.h"
 #include "render/gl_program.h"
 #include "render/night/moon_disc.h"
 
@@ -28,12 +29,9 @@ class MoonPass {
   void draw(const MoonDisc& disc, const glm::dmat3& ndcToWorld, const ChannelConfig& channel);
 
  private:
-  void useExtinction(const std::shared_ptr<const atmosphere::ExtinctionProfile>& extinction);
   GlProgram program_;
   GLuint albedoTexture_ = 0;
-  GLuint extinctionTexture_ = 0;
-  std::shared_ptr<const atmosphere::ExtinctionProfile> extinction_;  // the one in extinctionTexture_
-  bool extinctionUploaded_ = false;
+  ExtinctionTexture extinction_;
   GLuint emptyVao_ = 0;
 };
 

@@ -58,18 +58,13 @@ NightDiffusePass::NightDiffusePass()
       airglowLocation_(glGetUniformLocation(program_.id(), "airglowZenith")) {
   milkyWay_ = uploadMilkyWay(*night::MilkyWayMap::standard());
   zodiacal_ = uploadZodiacal();
-  glCreateTextures(GL_TEXTURE_1D, 1, &extinction_);
-  glTextureStorage1D(extinction_, 1, GL_RGB32F, atmosphere::ExtinctionProfile::kSamples);
-  glTextureParameteri(extinction_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(extinction_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(extinction_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   const glm::vec3 sun(night::sunlightRec709());
   glProgramUniform3fv(program_.id(), glGetUniformLocation(program_.id(), "sunlightRec709"), 1, glm::value_ptr(sun));
 }
 
 NightDiffusePass::~NightDiffusePass() {
-  const GLuint textures[] = {milkyWay_, zodiacal_, extinction_};
-  glDeleteTextures(3, textures);
+  const GLuint textures[] = {milkyWay_, zodiacal_};
+  glDeleteTextures(2, textures);
 }
 
 void NightDiffusePass::draw(const SkyState& state) {
@@ -78,18 +73,7 @@ void NightDiffusePass::draw(const SkyState& state) {
 }
 
 void NightDiffusePass::draw(const night::NightDiffuseSky& sky) {
-  if (sky.extinction.get() != uploadedExtinction_) {
-    std::vector<glm::vec3> table(atmosphere::ExtinctionProfile::kSamples, glm::vec3(1.0f));
-    if (sky.extinction) {
-      table = sky.extinction->rec709Table();
-    } else {  // no atmosphere: everything above the horizon arrives
-      for (int i = 0; i < atmosphere::ExtinctionProfile::kSamples / 2; ++i) table[static_cast<std::size_t>(i)] = glm::vec3(0.0f);
-    }
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTextureSubImage1D(extinction_, 0, 0, atmosphere::ExtinctionProfile::kSamples, GL_RGB, GL_FLOAT, table.data());
-    uploadedExtinction_ = sky.extinction.get();
-    keepAlive_ = sky.extinction;
-  }
+  extinction_.use(sky.extinction);
   const GLuint p = program_.id();
   const glm::mat3 m(sky.enuToJ2000);
   glProgramUniformMatrix3fv(p, enuToJ2000Location_, 1, GL_FALSE, glm::value_ptr(m));
@@ -98,7 +82,7 @@ void NightDiffusePass::draw(const night::NightDiffuseSky& sky) {
   glProgramUniform3fv(p, airglowLocation_, 1, glm::value_ptr(airglow));
   glBindTextureUnit(0, milkyWay_);
   glBindTextureUnit(1, zodiacal_);
-  glBindTextureUnit(2, extinction_);
+  extinction_.bind(2);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   program_.use();

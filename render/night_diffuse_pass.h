@@ -3,6 +3,7 @@
 // triangle added onto the sky pass's float target. Its textures: the calibrated Milky Way
 // (2048x1024 RGBA16F in S10, mipmapped), Leinert's zodiacal table (11x19 R32F, S10) and the
 // state's extinction profile (512 RGB32F, re-uploaded when the profile changes).
+#include "render/extinction_texture.h"
 #include "render/gl_program.h"
 #include "render/night/night_diffuse.h"
 
@@ -32,9 +33,7 @@ class NightDiffusePass {
   GLint airglowLocation_ = -1;
   GLuint milkyWay_ = 0;
   GLuint zodiacal_ = 0;
-  GLuint extinction_ = 0;
-  const atmosphere::ExtinctionProfile* uploadedExtinction_ = nullptr;
-  std::shared_ptr<const atmosphere::ExtinctionProfile> keepAlive_;  // so the pointer stays unique
+  ExtinctionTexture extinction_;
 };
 
 }  // namespace skyig::render

@@ -14,12 +14,6 @@
 namespace skyig::services {
 
 namespace {
-std::filesystem::path cacheDirectory(const std::string& configured) {
-  if (!configured.empty()) return configured;
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "skyig";
-  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "skyig";
-  return std::filesystem::temp_directory_path() / "skyig-cache";
-}
 double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -83,16 +77,27 @@ atmosphere::TableBuilder atmosphereTableBuilder(PrecomputeDevice device) {
   };
 }
 
-std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const AtmosphereSettings& settings,
-                                                                  const atmosphere::Conditions& conditions, int orders) {
+std::filesystem::path cacheDirectory(const AtmosphereSettings& settings) {
+  if (!settings.cacheDir.empty()) return settings.cacheDir;
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "skyig";
+  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "skyig";
+  return std::filesystem::temp_directory_path() / "skyig-cache";
+}
+
+atmosphere::ModelConfig modelConfig(const AtmosphereSettings& settings, const atmosphere::Conditions& conditions) {
   atmosphere::ModelConfig model;
   model.sizes = atmosphere::TableSizes::named(settings.tables);
-  model.options.scattering_orders = orders > 0 ? orders : settings.scatteringOrders;
+  model.options.scattering_orders = settings.scatteringOrders;
   model.medium = atmosphere::applyConditions(settings.medium, conditions);
+  return model;
+}
+
+std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const AtmosphereSettings& settings,
+                                                                  const atmosphere::Conditions& conditions) {
   atmosphere::CacheResult cache;
   const auto start = std::chrono::steady_clock::now();
-  auto loaded = std::make_shared<const atmosphere::AtmosphereModel>(
-      atmosphere::loadOrPrecompute(model, cacheDirectory(settings.cacheDir), &cache, atmosphereTableBuilder()));
+  auto loaded = std::make_shared<const atmosphere::AtmosphereModel>(atmosphere::loadOrPrecompute(
+      modelConfig(settings, conditions), cacheDirectory(settings), &cache, atmosphereTableBuilder()));
   if (cache.outcome != atmosphere::CacheOutcome::kLoaded)
     std::fprintf(stderr, "physical sky: precomputed the %s tables in %.1f s (%s); cached in %s\n", settings.tables.c_str(),
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), cache.reason.c_str(),

@@ -7,6 +7,7 @@
 #include "render/atmosphere/table_cache.h"
 #include "services/node_config.h"
 
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -28,13 +29,18 @@ PrecomputeDevice precomputeDeviceFromEnvironment();
 // Invalid configurations throw std::invalid_argument whatever the device.
 atmosphere::TableBuilder atmosphereTableBuilder(PrecomputeDevice device = precomputeDeviceFromEnvironment());
 
-// The model of `settings` under `conditions`, from the cache directory (settings.cacheDir, else
-// $XDG_CACHE_HOME/skyig or ~/.cache/skyig) or precomputed (atmosphereTableBuilder) and cached
-// there; says on stderr when it has to precompute. The medium is settings.medium under
-// `conditions`; `orders`: scattering orders (0: settings.scatteringOrders).
+// Where tables are cached: settings.cacheDir, else $XDG_CACHE_HOME/skyig or ~/.cache/skyig.
+std::filesystem::path cacheDirectory(const AtmosphereSettings& settings);
+
+// The model `settings` describe under `conditions`: table size, scattering orders, and
+// settings.medium with the conditions applied. Every caller builds it here, so the loader, the
+// node's updater and the probe find the same cache files.
+atmosphere::ModelConfig modelConfig(const AtmosphereSettings& settings, const atmosphere::Conditions& conditions);
+
+// modelConfig(settings, conditions) from the cache directory, or precomputed
+// (atmosphereTableBuilder) and cached there; says on stderr when it has to precompute.
 std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const AtmosphereSettings& settings,
-                                                                  const atmosphere::Conditions& conditions,
-                                                                  int orders = 0);
+                                                                  const atmosphere::Conditions& conditions);
 
 // Sets config.sky.atmosphere when config.sky.model is physical; prints to stderr when it has
 // to precompute.

@@ -1,8 +1,9 @@
 #include "services/host_atmosphere.h"
 
+#include "services/atmosphere_loader.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -48,20 +49,9 @@ std::optional<atmosphere::Conditions> HostAtmosphere::observe(double visibilityM
 }
 
 atmosphere::ModelConfig nodeModelConfig(const NodeConfig& config, const atmosphere::Conditions& conditions) {
-  atmosphere::ModelConfig model;
-  model.sizes = atmosphere::TableSizes::named(config.atmosphere.tables);
-  model.options.scattering_orders = config.atmosphere.scatteringOrders;
   atmosphere::Conditions c = conditions;
   if (!c.ground_albedo) c.ground_albedo = config.sky.groundAlbedo;
-  model.medium = atmosphere::applyConditions(config.atmosphere.medium, c);
-  return model;
-}
-
-std::filesystem::path nodeCacheDirectory(const AtmosphereSettings& settings) {
-  if (!settings.cacheDir.empty()) return settings.cacheDir;
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "skyig";
-  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "skyig";
-  return std::filesystem::temp_directory_path() / "skyig-cache";
+  return modelConfig(config.atmosphere, c);
 }
 
 }  // namespace skyig::services

@@ -8,7 +8,6 @@
 #include "services/host_state.h"
 #include "services/node_config.h"
 
-#include <filesystem>
 #include <optional>
 
 namespace skyig::services {
@@ -40,9 +39,9 @@ class HostAtmosphere {
   std::optional<Values> rejected_;
 };
 
-// The model config and cache directory the node uses for `conditions` (the same as
-// services/atmosphere_loader.h, so the tables come from the same cache files).
+// The model config the node uses for the host's `conditions`: the configuration's (its ground
+// albedo unless the host gives one), built by services/atmosphere_loader.h's modelConfig, so the
+// tables come from the same cache files as the start-up load.
 atmosphere::ModelConfig nodeModelConfig(const NodeConfig& config, const atmosphere::Conditions& conditions);
-std::filesystem::path nodeCacheDirectory(const AtmosphereSettings& settings);
 
 }  // namespace skyig::services

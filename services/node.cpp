@@ -5,6 +5,7 @@
 #include "render/gl_context.h"
 #include "render/glfw_window.h"
 #include "render/sky_renderer.h"
+#include "services/atmosphere_loader.h"
 #include "services/can_receiver.h"
 #include "services/cigi_receiver.h"
 #include "services/host_atmosphere.h"
@@ -261,7 +262,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   NodeConfig config = opt.config;
   if (config.sky.model == render::SkyModel::Physical) {
     updater = std::make_unique<atmosphere::AtmosphereUpdater>(nodeModelConfig(config, {}),
-                                                              nodeCacheDirectory(config.atmosphere));
+                                                              cacheDirectory(config.atmosphere));
     if (!config.sky.atmosphere) config.sky.atmosphere = updater->current();
   }
   NodeOptions workerOptions = opt;

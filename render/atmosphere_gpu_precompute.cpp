@@ -23,6 +23,16 @@ using atmosphere::GroupTables;
 using atmosphere::ModelConfig;
 using Clock = std::chrono::steady_clock;
 
+std::string describe(const GpuPrecomputeTiming& t) {
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "total %.2f s = compile %.2f, T %.3f, direct E %.3f, single %.2f, slices %.2f, density %.2f, "
+                "indirect E %.2f, multiple %.2f, readback %.2f s",
+                t.total, t.compile, t.transmittance, t.direct_irradiance, t.single_scattering, t.nu_slices,
+                t.scattering_density, t.indirect_irradiance, t.multiple_scattering, t.readback);
+  return line;
+}
+
 namespace {
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }

@@ -28,6 +28,9 @@ struct GpuPrecomputeTiming {
   double total = 0.0;  // everything, compile included
 };
 
+// "total 3.61 s = compile 0.02, T 0.001, ..." for benchmarks and test logs.
+std::string describe(const GpuPrecomputeTiming& t);
+
 struct GpuPrecomputeOptions {
   bool time_passes = false;  // glFinish after every pass to time it (slightly slower)
   // 1: the scattering density J at the tables' size (the CPU reference's quadrature). 2: at

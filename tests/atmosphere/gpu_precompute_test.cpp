@@ -1,12 +1,12 @@
 // The GPU precomputation passes (shaders/atmosphere/precompute_*.comp) run through OpenGL 4.5
 // compute shaders on whatever EGL gives (llvmpipe on CI, a GPU elsewhere) and compared with
 // the CPU reference path, which runs the same GLSL as C++ in double precision. Skipped when
-// no GL 4.5 context can be created. The precompute is render/atmosphere_gpu_precompute.h; the
-// panorama check has its own minimal shader assembly.
+// no GL 4.5 context can be created. The precompute is render/atmosphere_gpu_precompute.h.
 #include <glad/gl.h>
 
 #include "render/atmosphere_gpu_precompute.h"
 #include "render/gl_context.h"
+#include "render/gl_program.h"
 #include "render/physical_sky_pass.h"
 
 #include <gtest/gtest.h>
@@ -15,9 +15,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstdio>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -27,54 +25,9 @@
 namespace skyig::atmosphere {
 namespace {
 
-std::string readShader(const std::string& name) {
-  std::ifstream f(std::string(SKYIG_SOURCE_DIR) + "/shaders/" + name);
-  if (!f) throw std::runtime_error("cannot read shader " + name);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-// Inlines `#include "x"` relative to shaders/ (include guards handle repeats).
-std::string resolveIncludes(const std::string& text, int depth = 0) {
-  if (depth > 16) throw std::runtime_error("include depth");
-  std::istringstream in(text);
-  std::string line;
-  std::string out;
-  while (std::getline(in, line)) {
-    const auto p = line.find("#include \"");
-    if (p != std::string::npos && line.find_first_not_of(" \t") == p) {
-      const auto q = line.find('"', p + 10);
-      out += resolveIncludes(readShader(line.substr(p + 10, q - p - 10)), depth + 1);
-    } else {
-      out += line + "\n";
-    }
-  }
-  return out;
-}
-
+// A compute pass from the embedded shaders, assembled as the renderer assembles them.
 GLuint computeProgram(const std::string& pass) {
-  const std::string source = "#version 450 core\n" +
-                             resolveIncludes(readShader("common/glsl_prelude.glsl")) +
-                             resolveIncludes(readShader("atmosphere/" + pass));
-  const char* text = source.c_str();
-  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[4096];
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    throw std::runtime_error(pass + ": " + log);
-  }
-  const GLuint program = glCreateProgram();
-  glAttachShader(program, shader);
-  glLinkProgram(program);
-  glDeleteShader(shader);
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) throw std::runtime_error(pass + ": link failed");
-  return program;
+  return render::linkProgram({render::compileShaderStage(GL_COMPUTE_SHADER, "atmosphere/" + pass)}, pass);
 }
 
 void setParameters(GLuint program, const AtmosphereParameters& a) {
@@ -161,18 +114,6 @@ std::unique_ptr<render::GlContext> makeContext() {
   }
 }
 
-// SKYIG_ATMOSPHERE_GPU_DENSITY_DIVISOR=2: measure with the density at half resolution.
-int densityDivisor() {
-  const char* d = std::getenv("SKYIG_ATMOSPHERE_GPU_DENSITY_DIVISOR");
-  return d && std::string(d) == "2" ? 2 : 1;
-}
-
-void printTiming(const char* what, const render::GpuPrecomputeTiming& t) {
-  std::printf("%s: total %.2f s = compile %.2f, T %.3f, direct E %.3f, single %.2f, slices %.2f, density %.2f, "
-              "indirect E %.2f, multiple %.2f, readback %.2f s\n",
-              what, t.total, t.compile, t.transmittance, t.direct_irradiance, t.single_scattering,
-              t.nu_slices, t.scattering_density, t.indirect_irradiance, t.multiple_scattering, t.readback);
-}
 
 TEST(AtmosphereGpu, ComputePassesMatchTheCpuReferenceAndRepeat) {
   const auto gl = makeContext();
@@ -180,26 +121,18 @@ TEST(AtmosphereGpu, ComputePassesMatchTheCpuReferenceAndRepeat) {
   std::printf("GL_RENDERER: %s\n", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
 
   ModelConfig c = testing::oneGroupConfig();
-  // SKYIG_ATMOSPHERE_GPU_FULL=1 (or =medium): the default (Bruneton-size) tables (or the
-  // medium ones, 16 x 64 x 32 x 8), for measuring; the CPU reference then takes minutes unless
-  // it is in the cache already.
-  const char* full = std::getenv("SKYIG_ATMOSPHERE_GPU_FULL");
-  if (full && std::string(full) == "1") c.sizes = TableSizes{};
-  if (full && std::string(full) == "medium") {
-    c.sizes = TableSizes{};
-    c.sizes.scattering_r = 16;
-    c.sizes.scattering_mu = 64;
-  }
+  // SKYIG_ATMOSPHERE_GPU_FULL=small|medium|default: compare at that size instead (the CPU
+  // reference then takes minutes unless it is in the cache already).
+  if (const char* size = std::getenv("SKYIG_ATMOSPHERE_GPU_FULL")) c.sizes = TableSizes::named(size);
   const AtmosphereModel model = testing::cachedModel(c);  // the CPU reference (float-rounded)
   const GroupTables& cpu = model.tables(0);
   render::AtmosphereGpuPrecompute precompute;
   render::GpuPrecomputeTiming timing;
   render::GpuPrecomputeOptions options;
   options.time_passes = true;
-  options.density_divisor = densityDivisor();
   const AtmosphereModel gpu_model = precompute.compute(c, options, &timing);
   const GroupTables& gpu = gpu_model.tables(0);
-  printTiming("GPU precompute, one group", timing);
+  std::printf("GPU precompute, one group: %s\n", render::describe(timing).c_str());
 
   const Stats t = compare(gpu.transmittance.texels, cpu.transmittance.texels);
   const Stats e = compare(gpu.irradiance.texels, cpu.irradiance.texels);
@@ -266,32 +199,6 @@ TEST(AtmosphereGpu, BadOptionsAreRejectedWithTheirName) {
   }
   c.options.scattering_orders = 0;
   EXPECT_THROW(precompute.computeTables(c), std::invalid_argument);
-}
-
-// Not a test but a measurement: SKYIG_ATMOSPHERE_GPU_BENCH=small|medium|default times the
-// precompute of all 16 wavelengths at that size, pass by pass.
-TEST(AtmosphereGpu, Benchmark) {
-  const char* bench = std::getenv("SKYIG_ATMOSPHERE_GPU_BENCH");
-  if (!bench) GTEST_SKIP() << "set SKYIG_ATMOSPHERE_GPU_BENCH=small|medium|default to measure";
-  const auto gl = makeContext();
-  if (!gl) GTEST_SKIP() << "no OpenGL 4.5 context through EGL";
-  ModelConfig c;
-  const std::string size = bench;
-  if (size == "small") c.sizes = TableSizes::small();
-  if (size == "medium") c.sizes = TableSizes::medium();
-  render::AtmosphereGpuPrecompute precompute;
-  render::GpuPrecomputeTiming timing;
-  const char* per_pass = std::getenv("SKYIG_ATMOSPHERE_GPU_PER_PASS");
-  render::GpuPrecomputeOptions options;
-  options.time_passes = per_pass && std::string(per_pass) == "1";
-  options.density_divisor = densityDivisor();
-  options.progress = [](const std::string& line) { std::printf("  %s\n", line.c_str()); };
-  const auto start = std::chrono::steady_clock::now();
-  const std::vector<GroupTables> tables = precompute.computeTables(c, options, &timing);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  printTiming(("GPU precompute, " + size + " tables, 16 wavelengths").c_str(), timing);
-  std::printf("wall %.2f s\n", wall);
-  EXPECT_EQ(tables.size(), 4u);
 }
 
 GLuint upload2D(const shader::cpu_texture::sampler2D& t) {

@@ -33,12 +33,7 @@ std::vector<ProbeComponent> nightProbeComponents(const atmosphere::AtmosphereMod
   auto diffuse = makeNightDiffuseSky(state);
   if (!diffuse) throw std::invalid_argument("night probe: the state has no ephemeris (give a place and a time)");
   auto sky = std::make_shared<const NightDiffuseSky>(std::move(*diffuse));
-  const glm::dvec3 camera = atmosphere::observerPosition(model.config().medium, std::max(state.observer.heightM, 0.0));
-  const glm::dvec3 sun = enuDirection(state.sunAzimuth, state.sunAltitude);
   std::vector<ProbeComponent> c;
-  c.push_back({"sunlit_sky", [&model, camera, sun](const glm::dvec3& v) {
-                 return model.converter().toRec709(model.skyRadiance(camera, v, sun));
-               }});
   c.push_back({"moonlit_sky", [&model, &state](const glm::dvec3& v) { return moonlitSkyRadiance(model, state, v).rec709; }});
   if (state.moonDisc)
     c.push_back({"moon", [d = state.moonDisc](const glm::dvec3& v) { return moonDiscRadiance(*d, v).rec709; }});
@@ -60,7 +55,9 @@ nlohmann::json nightProbe(const atmosphere::AtmosphereModel& model, const SkySta
   for (nlohmann::json& view : out["views"]) {
     const glm::dvec3 v =
         atmosphere::localDirection(view.at("zenith_deg").get<double>(), view.at("azimuth_deg").get<double>());
-    glm::dvec3 total = rgbOf(view.at("sun")) + rgbOf(view.at("ground"));
+    // The sunlit sky is the day output's "sky", under the name that pairs it with the moonlit one.
+    view["sunlit_sky"] = lightJson(rgbOf(view.at("sky")));
+    glm::dvec3 total = rgbOf(view.at("sky")) + rgbOf(view.at("sun")) + rgbOf(view.at("ground"));
     for (const ProbeComponent& c : components) {
       const glm::dvec3 rgb = c.radiance(v);
       view[c.key] = lightJson(rgb);

@@ -2,7 +2,7 @@
 // `skyig probe` at night (issue 6, item 7): for a time and place, every view reports each light
 // source separately and their sum, each as {"luminance_cd_m2", "rgb_cd_m2"} (linear Rec.709
 // scaled so that Y is cd/m^2):
-//   sunlit_sky      the physical atmosphere's sky lit by the sun (the day probe's "sky")
+//   sunlit_sky      the physical atmosphere's sky lit by the sun (a copy of the day probe's "sky")
 //   moonlit_sky     the same sky lit by the moon (Jensen et al. 2001)
 //   moon            the moon's disc after extinction; present when the moon is known
 //   stars_planets   the mean luminance of the stars and planets within 0.5 degrees of the view
@@ -38,8 +38,9 @@ struct ProbeComponent {
   std::function<glm::dvec3(const glm::dvec3& viewEnu)> radiance;
 };
 
-// The components skyig models for `state` (which must have an ephemeris: a time and place),
-// the sunlit sky from `model`. The functions keep references to `model` and `state`.
+// The light sources skyig models for `state` (which must have an ephemeris: a time and place)
+// besides the day probe's sky, sun and ground; the moonlit sky from `model`. The functions keep
+// references to `model` and `state`.
 std::vector<ProbeComponent> nightProbeComponents(const atmosphere::AtmosphereModel& model, const SkyState& state);
 
 // {"luminance_cd_m2": Y, "rgb_cd_m2": [r, g, b]}.

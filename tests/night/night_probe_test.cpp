@@ -95,6 +95,7 @@ TEST(NightProbe, ComponentsAndTheirTotal) {
     }
     const auto& t = v["total"]["rgb_cd_m2"];
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(t[k].get<double>(), sum[k], 1e-12 + 1e-9 * std::abs(sum[k]));
+    EXPECT_EQ(v["sunlit_sky"]["rgb_cd_m2"], v["sky"]["rgb_cd_m2"]);  // one sky, counted once
     // The day probe's keys are still there.
     for (const char* day : {"sky", "sun", "ground", "transmittance"}) EXPECT_TRUE(v.contains(day)) << day;
   }

@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   # toolchain
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git python3
   # GL: EGL headless (Mesa llvmpipe where there is no GPU) and GLFW windows
   libegl-dev libgl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev libglm-dev
   # GLSL compiler: the tests compile the atmosphere's physics and passes as GLSL

@@ -11,7 +11,7 @@ namespace {
 
 glm::vec4 v4(const glm::dvec3& v, double w = 0.0) { return glm::vec4(glm::dvec4(v, w)); }
 
-AnalyticSkyBlock toBlock(const AnalyticSkyParams& p) {
+AnalyticSkyBlock toBlock(const skyig::sky::AnalyticSkyParams& p) {
   AnalyticSkyBlock b{};
   b.perezA = v4(p.a);
   b.perezB = v4(p.b);
@@ -27,18 +27,18 @@ AnalyticSkyBlock toBlock(const AnalyticSkyParams& p) {
   return b;
 }
 
-FrameBlock toBlock(const SkyState& state, const ChannelConfig& channel) {
+FrameBlock toBlock(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
   FrameBlock b{};
-  const glm::dmat3 m = ndcToWorld(eyeToEnu(state.observer.attitude, channel.offset), channel.frustum);
+  const glm::dmat3 m = skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(state.observer.attitude, channel.offset), channel.frustum);
   b.ndcToWorld = glm::mat4(glm::mat3(m));
   b.viewport = glm::vec4(static_cast<float>(channel.width), static_cast<float>(channel.height),
                          1.0f / static_cast<float>(channel.width), 1.0f / static_cast<float>(channel.height));
   return b;
 }
 
-ToneBlock toToneBlock(const SkyState& state, const ChannelConfig& channel) {
+ToneBlock toToneBlock(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
   ToneBlock b{};
-  const DisplayParams& d = channel.display;
+  const skyig::sky::DisplayParams& d = channel.display;
   b.display = glm::vec4(glm::dvec4(d.maxLuminance, d.ambientLuminance, d.gamma, d.adaptationLuminance));
   b.adaptation = glm::vec4(static_cast<float>(state.adaptationLuminance), 1.0f, 0.0f, 0.0f);
   return b;
@@ -63,7 +63,7 @@ void SkyRenderer::ensureTargets(int width, int height) {
   display_ = std::make_unique<RenderTarget>(width, height, GL_RGBA8);
 }
 
-void SkyRenderer::drawSkyPass(const SkyState& state, const ChannelConfig& channel) {
+void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
   ensureTargets(channel.width, channel.height);
   frameBlock_.upload(toBlock(state, channel));
   skyBlock_.upload(toBlock(state.sky.params));
@@ -73,26 +73,26 @@ void SkyRenderer::drawSkyPass(const SkyState& state, const ChannelConfig& channe
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   hdr_->bindForDrawing();
-  if (state.conditions.model == SkyModel::Physical) {
+  if (state.conditions.model == skyig::sky::SkyModel::Physical) {
     if (!state.conditions.atmosphere) throw std::invalid_argument("physical sky without an atmosphere model");
     if (!physical_) physical_ = std::make_unique<PhysicalSkyPass>();
     physical_->use(state.conditions.atmosphere);
     // The tables on screen may still be the previous model's while a new one uploads; both
     // share the planet, so the camera is the same.
-    physical_->draw(physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
-                    enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection, state.moonlightScale);
+    physical_->draw(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
+                    skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection, state.moonlightScale);
     return;
   }
   skyProgram_.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void SkyRenderer::draw(const SkyState& state, const ChannelConfig& channel) {
+void SkyRenderer::draw(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
   drawSkyPass(state, channel);
   if (state.ephemeris) (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, channel);
   if (state.ephemeris) (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
   if (!stars_) stars_ = std::make_unique<StarPass>();
-  stars_->draw(state.starField, ndcToWorld(eyeToEnu(state.observer.attitude, channel.offset), channel.frustum));
+  stars_->draw(state.starField, skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(state.observer.attitude, channel.offset), channel.frustum));
   glBindVertexArray(emptyVao_);
   toneBlock_.upload(toToneBlock(state, channel));
   toneBlock_.bind();

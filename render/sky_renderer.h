@@ -1,15 +1,15 @@
 #pragma once
-// Renders one channel of a SkyState: the sky pass into a float target (absolute radiance),
+// Renders one channel of a skyig::sky::SkyState: the sky pass into a float target (absolute radiance),
 // then tone reproduction into an 8-bit target (what the projector shows).
-#include "render/channel.h"
-#include "render/gl_program.h"
+#include "sky/channel.h"
+#include "render/gl/gl_program.h"
 #include "render/image.h"
-#include "render/moon_pass.h"
-#include "render/night_diffuse_pass.h"
-#include "render/physical_sky_pass.h"
-#include "render/render_target.h"
-#include "render/sky_state.h"
-#include "render/star_pass.h"
+#include "render/passes/moon_pass.h"
+#include "render/passes/night_diffuse_pass.h"
+#include "render/passes/physical_sky_pass.h"
+#include "render/gl/render_target.h"
+#include "sky/sky_state.h"
+#include "render/passes/star_pass.h"
 
 #include <memory>
 
@@ -22,9 +22,9 @@ class SkyRenderer {
   ~SkyRenderer();
 
   // Draws both passes; the targets stay bound to the renderer until the next call.
-  void draw(const SkyState& state, const ChannelConfig& channel);
+  void draw(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel);
   // Draws only the sky pass (for benchmarks of the pass itself).
-  void drawSkyPass(const SkyState& state, const ChannelConfig& channel);
+  void drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel);
 
   // Copies the last tone-reproduced frame to the window's back buffer (windowed channels).
   void presentToDefaultFramebuffer(int windowWidth, int windowHeight) const;

@@ -1,7 +1,7 @@
 #include "services/atmosphere_loader.h"
 
-#include "render/atmosphere/table_cache.h"
-#include "render/atmosphere_gpu_precompute.h"
+#include "sky/atmosphere/table_cache.h"
+#include "render/passes/atmosphere_gpu_precompute.h"
 
 #include <chrono>
 #include <algorithm>
@@ -106,7 +106,7 @@ std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const Atmosphe
 }
 
 void loadAtmosphereIfNeeded(NodeConfig& config) {
-  if (config.sky.model != render::SkyModel::Physical || config.sky.atmosphere) return;
+  if (config.sky.model != sky::SkyModel::Physical || config.sky.atmosphere) return;
   atmosphere::Conditions conditions;
   conditions.ground_albedo = config.sky.groundAlbedo;
   config.sky.atmosphere = loadAtmosphere(config.atmosphere, conditions);

@@ -2,9 +2,9 @@
 // Loads the physical atmosphere's tables when the configuration asks for the physical sky:
 // from the disk cache when a file matches every parameter, else precomputed (and cached) on
 // the GPU when an OpenGL 4.5 context can be made, on the CPU otherwise.
-#include "render/atmosphere/conditions.h"
-#include "render/atmosphere/model.h"
-#include "render/atmosphere/table_cache.h"
+#include "sky/atmosphere/conditions.h"
+#include "sky/atmosphere/model.h"
+#include "sky/atmosphere/table_cache.h"
 #include "services/node_config.h"
 
 #include <filesystem>
@@ -14,7 +14,7 @@
 namespace skyig::services {
 
 // Where tables missing from the cache are computed. kAuto: the GPU precompute in a headless
-// EGL context of its own (render/atmosphere_gpu_precompute.h), falling back to the CPU one
+// EGL context of its own (render/passes/atmosphere_gpu_precompute.h), falling back to the CPU one
 // when no context can be made or the GPU path fails; kGpu: the GPU or an error; kCpu: the
 // CPU reference (minutes for the default tables).
 enum class PrecomputeDevice { kAuto, kGpu, kCpu };

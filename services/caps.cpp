@@ -1,6 +1,6 @@
 #include "services/caps.h"
 
-#include "render/gl_context.h"
+#include "render/gl/gl_context.h"
 #include "services/version.h"
 
 #include <sys/socket.h>

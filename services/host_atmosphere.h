@@ -1,10 +1,10 @@
 #pragma once
 // The host's visibility and humidity (CIGI Atmosphere Control, or global Weather Control)
-// turned into requests for a new physical atmosphere (render/atmosphere/updater.h): debounced,
+// turned into requests for a new physical atmosphere (sky/atmosphere/updater.h): debounced,
 // so a host ramping the fog asks for one model once the value settles, and validated, so a
 // value the model cannot represent is counted and ignored and the last good atmosphere stays.
-#include "render/atmosphere/conditions.h"
-#include "render/atmosphere/model.h"
+#include "sky/atmosphere/conditions.h"
+#include "sky/atmosphere/model.h"
 #include "services/host_state.h"
 #include "services/node_config.h"
 

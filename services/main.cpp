@@ -1,7 +1,7 @@
 // skyig: the sky image generator of a helicopter flight simulator. One executable, one
 // subcommand per use (../shared/DESIGN.md, "Interfaces people and tests rely on").
-#include "render/gl_context.h"
-#include "render/gl_program.h"
+#include "render/gl/gl_context.h"
+#include "render/gl/gl_program.h"
 #include "render/image_io.h"
 #include "services/caps.h"
 #include "services/commands/bench_command.h"

@@ -1,9 +1,9 @@
 #include "services/node.h"
 
 #include "protocol/cigi/encoder.h"
-#include "render/atmosphere/updater.h"
-#include "render/gl_context.h"
-#include "render/glfw_window.h"
+#include "sky/atmosphere/updater.h"
+#include "render/gl/gl_context.h"
+#include "render/gl/glfw_window.h"
 #include "render/sky_renderer.h"
 #include "services/atmosphere_loader.h"
 #include "services/can_receiver.h"
@@ -28,8 +28,8 @@ using namespace std::chrono_literals;
 
 // The observer a frame shows: the host's state evaluated at `t`, or the configuration's
 // observer until the host has said anything.
-render::ObserverState observerAt(const NodeConfig& config, const HostSnapshot* host, Clock::time_point t) {
-  render::ObserverState o = config.observer;
+sky::ObserverState observerAt(const NodeConfig& config, const HostSnapshot* host, Clock::time_point t) {
+  sky::ObserverState o = config.observer;
   if (!host) return o;
   if (host->state.ownshipValid) {
     const Ownship s = host->predictor.at(t);
@@ -44,18 +44,18 @@ render::ObserverState observerAt(const NodeConfig& config, const HostSnapshot* h
 
 // The configured sky with what the host sets of it (the star field intensity).
 // The sky's conditions with the host's star-field intensity (CIGI Celestial Sphere Control).
-render::SkyConditions withHostStars(render::SkyConditions c, const HostSnapshot* host) {
+sky::SkyConditions withHostStars(sky::SkyConditions c, const HostSnapshot* host) {
   if (host) c.starFieldIntensity = host->state.starFieldIntensity;
   return c;
 }
 
 // The node's channels with the host's view overrides applied.
-std::vector<render::ChannelConfig> channelsFor(const std::vector<render::ChannelConfig>& base, const HostSnapshot* host) {
-  std::vector<render::ChannelConfig> channels = base;
+std::vector<sky::ChannelConfig> channelsFor(const std::vector<sky::ChannelConfig>& base, const HostSnapshot* host) {
+  std::vector<sky::ChannelConfig> channels = base;
   if (!host) return channels;
   for (const ViewOverride& v : host->state.views) {
     if (v.viewId >= channels.size()) continue;
-    render::ChannelConfig& c = channels[v.viewId];
+    sky::ChannelConfig& c = channels[v.viewId];
     if (v.yawDeg) c.offset.yawDeg = *v.yawDeg;
     if (v.pitchDeg) c.offset.pitchDeg = *v.pitchDeg;
     if (v.rollDeg) c.offset.rollDeg = *v.rollDeg;
@@ -69,7 +69,7 @@ std::vector<render::ChannelConfig> channelsFor(const std::vector<render::Channel
 
 // The physical sky's half of the worker: the host's visibility and humidity -> (debounced,
 // validated) a request to the background updater -> its newest model in the next SkyStates
-// (the renderer uploads it across frames, render/physical_sky_pass.h).
+// (the renderer uploads it across frames, render/passes/physical_sky_pass.h).
 class AtmosphereFollower {
  public:
   AtmosphereFollower(const NodeConfig& config, atmosphere::AtmosphereUpdater* updater)
@@ -78,7 +78,7 @@ class AtmosphereFollower {
         host_(updater ? updater->current()->config().medium : atmosphere::Medium{}, config.sky.groundAlbedo) {}
 
   // Returns true when the sky's model changed (the conditions then carry the new one).
-  bool update(const HostSnapshot* snapshot, render::SkyConditions& conditions, NodeStats& stats, Clock::time_point now) {
+  bool update(const HostSnapshot* snapshot, sky::SkyConditions& conditions, NodeStats& stats, Clock::time_point now) {
     if (!updater_) return false;
     if (snapshot) {
       try {
@@ -110,8 +110,8 @@ class AtmosphereFollower {
 // as an immutable SkyState. It never waits for the renderer, and a state it cannot use (a
 // bad value that passed the decoder) is counted and the last good sky kept.
 void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& host,
-                Latest<render::SkyState>& sky, atmosphere::AtmosphereUpdater* updater, const std::atomic<bool>& stop) {
-  render::SkyConditions conditions = opt.config.sky;
+                Latest<sky::SkyState>& sky, atmosphere::AtmosphereUpdater* updater, const std::atomic<bool>& stop) {
+  sky::SkyConditions conditions = opt.config.sky;
   AtmosphereFollower follower(opt.config, updater);
   std::shared_ptr<const HostSnapshot> snapshot;
   std::uint64_t seen = ~0ull;
@@ -129,7 +129,7 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
     // A new host state or atmosphere, or at least every 100 ms so the sun follows the clock.
     if (newHost || newAtmosphere || now - lastSky > 100ms) {
       try {
-        sky.publish(render::buildSkyState(observerAt(opt.config, snapshot.get(), now),
+        sky.publish(sky::buildSkyState(observerAt(opt.config, snapshot.get(), now),
                                           withHostStars(conditions, snapshot.get()), std::nullopt, &ephemerisCache));
         stats.skyStates.fetch_add(1, std::memory_order_relaxed);
       } catch (const std::exception& e) {
@@ -149,7 +149,7 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
 // What renders: one headless context for every channel, or one window per channel.
 class Display {
  public:
-  Display(const NodeOptions& opt, const std::vector<render::ChannelConfig>& channels) : headless_(opt.headless) {
+  Display(const NodeOptions& opt, const std::vector<sky::ChannelConfig>& channels) : headless_(opt.headless) {
     if (headless_) {
       context_ = render::createHeadlessContext();
       renderers_.push_back(std::make_unique<render::SkyRenderer>());
@@ -174,7 +174,7 @@ class Display {
     return false;
   }
 
-  void draw(const render::SkyState& state, const std::vector<render::ChannelConfig>& channels) {
+  void draw(const sky::SkyState& state, const std::vector<sky::ChannelConfig>& channels) {
     for (std::size_t i = 0; i < channels.size(); ++i) {
       if (headless_) {
         renderers_.front()->draw(state, channels[i]);
@@ -233,7 +233,7 @@ struct OwnedFd {
 int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& externalStop) {
   std::atomic<bool> stop{false};
   Latest<HostSnapshot> host;
-  Latest<render::SkyState> sky;
+  Latest<sky::SkyState> sky;
   const auto start = Clock::now();
 
   // Everything that can fail (sockets, SocketCAN, the recording file, the first sky) is set
@@ -260,14 +260,14 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   // (from the cache the configuration's tables were just loaded from).
   std::unique_ptr<atmosphere::AtmosphereUpdater> updater;
   NodeConfig config = opt.config;
-  if (config.sky.model == render::SkyModel::Physical) {
+  if (config.sky.model == sky::SkyModel::Physical) {
     updater = std::make_unique<atmosphere::AtmosphereUpdater>(nodeModelConfig(config, {}),
                                                               cacheDirectory(config.atmosphere));
     if (!config.sky.atmosphere) config.sky.atmosphere = updater->current();
   }
   NodeOptions workerOptions = opt;
   workerOptions.config = config;
-  sky.publish(render::buildSkyState(config.observer, config.sky));  // frame 0 already has a sky
+  sky.publish(sky::buildSkyState(config.observer, config.sky));  // frame 0 already has a sky
 
   {
     ThreadGroup threads(stop);  // inside what the threads use: joined before any of it goes
@@ -299,7 +299,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
       hostVersionShown = host.version();
       const auto snapshot = host.get();
       const auto frameStart = Clock::now();
-      render::SkyState state = *sky.get();
+      sky::SkyState state = *sky.get();
       state.observer = observerAt(opt.config, snapshot.get(), frameStart);  // attitude of this frame
       const auto channels = channelsFor(baseChannels, snapshot.get());
       display.draw(state, channels);

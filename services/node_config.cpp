@@ -101,9 +101,9 @@ const toml::table* subTable(TableReader& parent, const std::string& key) {
 
 constexpr const char* kModels = "\"preetham\", \"cie\" or \"physical\"";
 
-void readSky(TableReader& r, render::SkyConditions& sky, AtmosphereSettings& atmosphere, std::string& starCatalogue) {
-  const std::string model = r.string("model", std::string(render::toString(sky.model)), kModels);
-  if (!render::parseSkyModel(model, sky.model)) r.fail(r.find("model"), "model", "expected " + std::string(kModels) + ", got \"" + model + "\"");
+void readSky(TableReader& r, skyig::sky::SkyConditions& sky, AtmosphereSettings& atmosphere, std::string& starCatalogue) {
+  const std::string model = r.string("model", std::string(skyig::sky::toString(sky.model)), kModels);
+  if (!skyig::sky::parseSkyModel(model, sky.model)) r.fail(r.find("model"), "model", "expected " + std::string(kModels) + ", got \"" + model + "\"");
   sky.cieType = r.integer("cie_type", sky.cieType, 1, 15);
   sky.turbidity = r.number("turbidity", sky.turbidity, 1.7, 10.0);
   sky.groundAlbedo = r.number("ground_albedo", sky.groundAlbedo, 0.0, 1.0);
@@ -116,7 +116,7 @@ void readSky(TableReader& r, render::SkyConditions& sky, AtmosphereSettings& atm
   r.rejectUnknownKeys();
 }
 
-// [atmosphere]: the medium of Bruneton & Neyret's model (render/atmosphere/medium.h), in the
+// [atmosphere]: the medium of Bruneton & Neyret's model (sky/atmosphere/medium.h), in the
 // units a meteorologist writes (km, m, per metre, Dobson units, degrees).
 void readAtmosphere(TableReader& r, AtmosphereSettings& a) {
   atmosphere::Medium& m = a.medium;
@@ -144,7 +144,7 @@ void readAtmosphere(TableReader& r, AtmosphereSettings& a) {
   }
 }
 
-void readObserver(TableReader& r, render::ObserverState& o) {
+void readObserver(TableReader& r, sky::ObserverState& o) {
   o.latitudeDeg = r.number("latitude", o.latitudeDeg, -90.0, 90.0);
   o.longitudeDeg = r.number("longitude", o.longitudeDeg, -180.0, 360.0);
   o.heightM = r.number("altitude", o.heightM, -400.0, 1e6);
@@ -187,8 +187,8 @@ void readCanIdentifiers(TableReader& r, protocol::canaerospace::IdentifierMap& m
   r.rejectUnknownKeys();
 }
 
-render::ChannelConfig readChannel(TableReader& r, size_t index, std::string& node) {
-  render::ChannelConfig c;
+sky::ChannelConfig readChannel(TableReader& r, size_t index, std::string& node) {
+  sky::ChannelConfig c;
   node = r.string("node", "");
   c.name = r.string("name", "channel" + std::to_string(index));
   if (c.name.empty() || c.name.find_first_of("/\\ \t") != std::string::npos)
@@ -275,8 +275,8 @@ NodeConfig parseNodeConfig(const std::string& text, const std::string& sourceNam
   return config;
 }
 
-std::vector<render::ChannelConfig> NodeConfig::channelsOf(const std::string& name) const {
-  std::vector<render::ChannelConfig> mine;
+std::vector<sky::ChannelConfig> NodeConfig::channelsOf(const std::string& name) const {
+  std::vector<sky::ChannelConfig> mine;
   for (size_t i = 0; i < channels.size(); ++i)
     if (channelNodes[i].empty() || channelNodes[i] == name) mine.push_back(channels[i]);
   return mine;

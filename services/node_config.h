@@ -3,11 +3,11 @@
 // `skyig render`, and the display channels. Every value has a default, so an empty file (or
 // none) is a valid configuration.
 #include "protocol/canaerospace/identifiers.h"
-#include "render/channel.h"
-#include "render/sky_conditions.h"
-#include "render/atmosphere/conditions.h"
-#include "render/atmosphere/medium.h"
-#include "render/sky_state.h"
+#include "sky/channel.h"
+#include "sky/common/sky_conditions.h"
+#include "sky/atmosphere/conditions.h"
+#include "sky/atmosphere/medium.h"
+#include "sky/sky_state.h"
 
 #include <stdexcept>
 #include <string>
@@ -38,17 +38,17 @@ struct AtmosphereSettings {
 };
 
 // The default sky: the physical atmosphere (Bruneton & Neyret 2008, docs/atmosphere.md).
-inline render::SkyConditions physicalSky() {
-  render::SkyConditions c;
-  c.model = render::SkyModel::Physical;
+inline sky::SkyConditions physicalSky() {
+  sky::SkyConditions c;
+  c.model = sky::SkyModel::Physical;
   return c;
 }
 
 struct NodeConfig {
   std::string nodeName = "ig";
-  render::SkyConditions sky = physicalSky();
-  render::ObserverState observer;
-  std::vector<render::ChannelConfig> channels{render::ChannelConfig{}};
+  sky::SkyConditions sky = physicalSky();
+  sky::ObserverState observer;
+  std::vector<sky::ChannelConfig> channels{sky::ChannelConfig{}};
   std::vector<std::string> channelNodes{""};  // per channel: the node that renders it ("" any)
   HostLink host;
   AtmosphereSettings atmosphere;
@@ -58,7 +58,7 @@ struct NodeConfig {
   protocol::canaerospace::IdentifierMap canIdentifiers;
 
   // The channels node `name` renders: those assigned to it, and those assigned to none.
-  std::vector<render::ChannelConfig> channelsOf(const std::string& name) const;
+  std::vector<sky::ChannelConfig> channelsOf(const std::string& name) const;
 };
 
 // A bad file: what() reads "FILE:LINE: KEY: expected ..., got ..." (the CLI exits with 2).

@@ -1,6 +1,6 @@
 #include "services/replay.h"
 
-#include "render/gl_context.h"
+#include "render/gl/gl_context.h"
 #include "render/image_io.h"
 #include "render/sky_renderer.h"
 #include "services/can_receiver.h"
@@ -70,7 +70,7 @@ struct Frame {
   std::uint64_t number = 0;
   std::int64_t timeNs = 0;
   std::shared_ptr<const HostSnapshot> host;
-  std::optional<render::SkyState> sky;
+  std::optional<sky::SkyState> sky;
   std::string error;  // a host state the sky could not use (kept: the previous sky is shown)
 };
 
@@ -99,7 +99,7 @@ class Feeder {
       haveEvent_ = source_.next(event_);
     }
     f.host = latest_.get();
-    render::ObserverState o = options_.config.observer;
+    sky::ObserverState o = options_.config.observer;
     if (f.host) {
       if (f.host->state.ownshipValid) {
         const Ownship s = f.host->predictor.at(at(f.timeNs));
@@ -111,7 +111,7 @@ class Feeder {
       if (const auto utc = f.host->utcAt(at(f.timeNs))) o.utc = *utc;
     }
     try {
-      f.sky = render::buildSkyState(o, options_.config.sky, std::nullopt, &ephemerisCache_);
+      f.sky = sky::buildSkyState(o, options_.config.sky, std::nullopt, &ephemerisCache_);
     } catch (const std::exception& e) {
       f.error = e.what();
     }
@@ -182,9 +182,9 @@ ReplayResult sendRecording(const ReplayOptions& o) {
 ReplayResult replay(const ReplayOptions& o) {
   if (o.sendTo) return sendRecording(o);
   const Bound from = parseBound(o.from, "--from"), to = parseBound(o.to, "--to");
-  std::vector<render::ChannelConfig> channels = o.config.channelsOf(o.config.nodeName);
+  std::vector<sky::ChannelConfig> channels = o.config.channelsOf(o.config.nodeName);
   if (!o.channel.empty()) {
-    std::erase_if(channels, [&](const render::ChannelConfig& c) { return c.name != o.channel; });
+    std::erase_if(channels, [&](const sky::ChannelConfig& c) { return c.name != o.channel; });
     if (channels.empty()) throw ConfigError("--channel: no channel named \"" + o.channel + "\"");
   } else if (!o.allChannels) {
     channels.resize(1);
@@ -216,7 +216,7 @@ ReplayResult replay(const ReplayOptions& o) {
   Progress progress(o.progress);
   ReplayResult result;
   const auto wallStart = std::chrono::steady_clock::now();
-  std::optional<render::SkyState> lastSky;
+  std::optional<sky::SkyState> lastSky;
 
   std::future<Frame> next = std::async(std::launch::async, [&] { return feeder.prepare(0); });
   for (std::uint64_t k = 0;; ++k) {

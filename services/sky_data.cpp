@@ -17,12 +17,12 @@ std::string starCataloguePath(const std::string& configured) {
   return dir && *dir ? std::string(dir) + "/bsc5.csv" : std::string(SKYIG_DEFAULT_STAR_CATALOG);
 }
 
-std::shared_ptr<const render::night::StarCatalogue> loadConfiguredStarCatalogue(const std::string& configured,
+std::shared_ptr<const sky::night::StarCatalogue> loadConfiguredStarCatalogue(const std::string& configured,
                                                                               const ephemeris::UtcTime& epoch) {
   if (configured == "none") return nullptr;
   const std::string path = starCataloguePath(configured);
   try {
-    return render::night::loadStarCatalogue(path, epoch);
+    return sky::night::loadStarCatalogue(path, epoch);
   } catch (const std::exception& e) {
     throw ConfigError("sky.star_catalogue: " + std::string(e.what()));
   }

@@ -1,7 +1,7 @@
 #pragma once
 // What the sky reads from disk before the first frame, for every command that draws or probes
 // it: the physical atmosphere's tables (services/atmosphere_loader.h) and the star catalogue.
-#include "render/night/star_catalogue.h"
+#include "sky/night/star_catalogue.h"
 #include "services/node_config.h"
 
 #include <memory>
@@ -15,7 +15,7 @@ std::string starCataloguePath(const std::string& configured);
 
 // The catalogue of `configured` prepared for `epoch` (proper motion), or null for "none".
 // Throws ConfigError naming the file when it cannot be read or parsed.
-std::shared_ptr<const render::night::StarCatalogue> loadConfiguredStarCatalogue(const std::string& configured,
+std::shared_ptr<const sky::night::StarCatalogue> loadConfiguredStarCatalogue(const std::string& configured,
                                                                               const ephemeris::UtcTime& epoch);
 
 // Sets config.sky.atmosphere (physical model) and config.sky.starCatalogue (at the observer's

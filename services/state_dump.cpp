@@ -35,7 +35,7 @@ StateDump::~StateDump() {
   if (file_) std::fclose(file_);
 }
 
-void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const render::SkyState& used) {
+void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const sky::SkyState& used) {
   const auto& o = used.observer;
   nlohmann::json line = {
       {"ig_frame", igFrame},

@@ -2,7 +2,7 @@
 // `--dump-state FILE.jsonl`: one JSON line per rendered frame — the IG frame, the last host
 // frame, the host's values as last received, the values the frame used after extrapolation,
 // and the sun — for debugging, support and tests.
-#include "render/sky_state.h"
+#include "sky/sky_state.h"
 #include "services/host_snapshot.h"
 #include "services/node_stats.h"
 
@@ -17,7 +17,7 @@ class StateDump {
   ~StateDump();
   StateDump(const StateDump&) = delete;
   StateDump& operator=(const StateDump&) = delete;
-  void write(std::uint64_t igFrame, const HostSnapshot* host, const render::SkyState& used);
+  void write(std::uint64_t igFrame, const HostSnapshot* host, const sky::SkyState& used);
 
  private:
   std::FILE* file_ = nullptr;

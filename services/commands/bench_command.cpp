@@ -1,6 +1,6 @@
 #include "services/commands/bench_command.h"
 
-#include "render/gl_context.h"
+#include "render/gl/gl_context.h"
 #include "render/sky_renderer.h"
 #include "services/commands/common_options.h"
 #include "services/sky_data.h"
@@ -70,10 +70,10 @@ double median(std::vector<double> v) {
 int run(const BenchOptions& opt) {
   NodeConfig config = opt.sky.resolve();
   loadSkyData(config);
-  render::ChannelConfig channel = config.channels.front();
+  sky::ChannelConfig channel = config.channels.front();
   channel.width = opt.width;
   channel.height = opt.height;
-  const render::SkyState state = render::buildSkyState(config.observer, config.sky, opt.sky.sunOverride());
+  const sky::SkyState state = sky::buildSkyState(config.observer, config.sky, opt.sky.sunOverride());
   const auto context = render::createHeadlessContext();
   render::SkyRenderer renderer;
   const bool gpuTimers = !context->info().softwareRenderer;

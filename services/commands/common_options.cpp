@@ -28,7 +28,7 @@ void SkyOptions::add(CLI::App& c) {
 
 NodeConfig SkyOptions::resolve() const {
   NodeConfig config = configPath.empty() ? NodeConfig{} : loadNodeConfig(configPath);
-  render::ObserverState& o = config.observer;
+  sky::ObserverState& o = config.observer;
   if (lat) o.latitudeDeg = *lat;
   if (lon) o.longitudeDeg = *lon;
   if (alt) o.heightM = *alt;
@@ -40,21 +40,21 @@ NodeConfig SkyOptions::resolve() const {
     if (!t) throw ConfigError("--utc: expected a UTC time like 2026-06-21T19:30:00Z, got \"" + *utc + "\"");
     o.utc = *t;
   }
-  if (skyModel) render::parseSkyModel(*skyModel, config.sky.model);
+  if (skyModel) sky::parseSkyModel(*skyModel, config.sky.model);
   if (cieType) {
     config.sky.cieType = *cieType;
-    if (!skyModel) config.sky.model = render::SkyModel::Cie;  // a CIE type implies the CIE model
+    if (!skyModel) config.sky.model = sky::SkyModel::Cie;  // a CIE type implies the CIE model
   }
   if (turbidity) config.sky.turbidity = *turbidity;
   if (groundAlbedo) config.sky.groundAlbedo = *groundAlbedo;
   return config;
 }
 
-std::optional<render::SunOverride> SkyOptions::sunOverride() const {
+std::optional<sky::SunOverride> SkyOptions::sunOverride() const {
   if (!sunAzimuth && !sunElevation) return std::nullopt;
   if (!sunAzimuth || !sunElevation)
     throw ConfigError("--sun-azimuth and --sun-elevation: give both or neither");
-  return render::SunOverride{*sunAzimuth, *sunElevation};
+  return sky::SunOverride{*sunAzimuth, *sunElevation};
 }
 
 void parseSize(const std::string& text, int& width, int& height) {

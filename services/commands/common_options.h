@@ -20,7 +20,7 @@ struct SkyOptions {
   void add(CLI::App& command);
   // The configuration with the options applied; throws ConfigError on a bad value.
   NodeConfig resolve() const;
-  std::optional<render::SunOverride> sunOverride() const;
+  std::optional<sky::SunOverride> sunOverride() const;
 };
 
 // "WIDTHxHEIGHT" with each in 16..16384 (--size); throws ConfigError naming the flag.

@@ -1,9 +1,9 @@
 #include "services/commands/probe_command.h"
 
 #include "ephemeris/ephemeris.h"
-#include "render/atmosphere/probe.h"
-#include "render/night/night_probe.h"
-#include "render/sky_state.h"
+#include "sky/atmosphere/probe.h"
+#include "sky/night_probe.h"
+#include "sky/sky_state.h"
 #include "services/atmosphere_loader.h"
 #include "services/sky_data.h"
 
@@ -49,7 +49,7 @@ int run(const ProbeCli& cli) {
     request.sun_zenith_deg = *cli.sunZenith;
     request.sun_azimuth_deg = *cli.sunAzimuth;
   }
-  std::optional<render::ObserverState> place;  // a time and place: the night components too
+  std::optional<sky::ObserverState> place;  // a time and place: the night components too
   if (!cli.sunZenith && !cli.sunAzimuth) {
     if (!cli.lat || !cli.lon || cli.utc.empty())
       throw ConfigError("the sun: give --sun-zenith and --sun-azimuth, or --lat, --lon and --utc");
@@ -93,12 +93,12 @@ int run(const ProbeCli& cli) {
     std::printf("%s\n", atmosphere::probe(*model, request).dump(2).c_str());
     return 0;
   }
-  render::SkyConditions sky;
-  sky.model = render::SkyModel::Physical;
+  sky::SkyConditions sky;
+  sky.model = sky::SkyModel::Physical;
   sky.atmosphere = model;
   sky.starCatalogue = loadConfiguredStarCatalogue(cli.starCatalogue, place->utc);
-  const render::SkyState state = render::buildSkyState(*place, sky);
-  std::printf("%s\n", render::night::nightProbe(*model, state, request).dump(2).c_str());
+  const sky::SkyState state = sky::buildSkyState(*place, sky);
+  std::printf("%s\n", sky::nightProbe(*model, state, request).dump(2).c_str());
   return 0;
 }
 

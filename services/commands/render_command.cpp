@@ -1,7 +1,7 @@
 #include "services/commands/render_command.h"
 
 #include "ephemeris/time.h"
-#include "render/gl_context.h"
+#include "render/gl/gl_context.h"
 #include "render/image_io.h"
 #include "render/sky_renderer.h"
 #include "services/commands/common_options.h"
@@ -43,7 +43,7 @@ std::string fixed(double v, int digits) {
   return buf;
 }
 
-render::ImageAttributes attributesOf(const render::SkyState& s, const render::ChannelConfig& c) {
+render::ImageAttributes attributesOf(const sky::SkyState& s, const sky::ChannelConfig& c) {
   const auto& o = s.observer;
   return {
       {"skyig:version", std::string(kVersion)},
@@ -55,7 +55,7 @@ render::ImageAttributes attributesOf(const render::SkyState& s, const render::Ch
       {"skyig:pitch_deg", fixed(o.attitude.pitchDeg, 3)},
       {"skyig:roll_deg", fixed(o.attitude.rollDeg, 3)},
       {"skyig:channel", c.name},
-      {"skyig:sky_model", std::string(render::toString(s.conditions.model))},
+      {"skyig:sky_model", std::string(sky::toString(s.conditions.model))},
       {"skyig:cie_type", std::to_string(s.conditions.cieType)},
       {"skyig:turbidity", fixed(s.conditions.turbidity, 3)},
       {"skyig:sun_azimuth_deg", fixed(s.sunAzimuth / kDeg, 4)},
@@ -69,7 +69,7 @@ int run(const RenderOptions& opt) {
   if (opt.exrPath.empty() && opt.pngPath.empty()) throw ConfigError("render: give --exr PATH and/or --png PATH");
   NodeConfig config = opt.sky.resolve();
   loadSkyData(config);
-  std::vector<render::ChannelConfig> channels;
+  std::vector<sky::ChannelConfig> channels;
   if (opt.allChannels) {
     channels = config.channels;
   } else if (!opt.channel.empty()) {
@@ -88,7 +88,7 @@ int run(const RenderOptions& opt) {
 
   // Every output is checked before any work, so a bad path fails fast and writes nothing.
   const bool perChannel = opt.allChannels && channels.size() > 1;
-  auto outPath = [&](const std::string& p, const render::ChannelConfig& c) {
+  auto outPath = [&](const std::string& p, const sky::ChannelConfig& c) {
     return perChannel ? perChannelPath(p, c.name) : p;
   };
   for (const auto& c : channels) {
@@ -96,12 +96,12 @@ int run(const RenderOptions& opt) {
     if (!opt.pngPath.empty()) render::checkWritable(outPath(opt.pngPath, c));
   }
 
-  const render::SkyState state = render::buildSkyState(config.observer, config.sky, opt.sky.sunOverride());
+  const sky::SkyState state = sky::buildSkyState(config.observer, config.sky, opt.sky.sunOverride());
   const auto context = render::createHeadlessContext();
   spdlog::info("GL: {} ({}, {})", context->info().renderer, context->info().version, context->info().platform);
   render::SkyRenderer renderer;
   std::printf("sky: %s, sun azimuth %.2f deg, altitude %.2f deg, adaptation %.4g cd/m^2\n",
-              std::string(render::toString(state.conditions.model)).c_str(), state.sunAzimuth / kDeg,
+              std::string(sky::toString(state.conditions.model)).c_str(), state.sunAzimuth / kDeg,
               state.sunAltitude / kDeg, state.adaptationLuminance);
   for (const auto& c : channels) {
     const auto start = std::chrono::steady_clock::now();

@@ -1,7 +1,7 @@
 // The medium and the table sizes of the precomputed atmosphere (Bruneton & Neyret 2008,
 // section 2.1; the spectral, ozone-aware form of Bruneton's 2017 reference implementation).
 // Lengths in metres, coefficients in m^-1. A vec4 spectrum holds four wavelengths: the C++
-// side (render/atmosphere/) fills one AtmosphereParameters per group of four wavelengths.
+// side (sky/atmosphere/) fills one AtmosphereParameters per group of four wavelengths.
 #ifndef SKYIG_ATMOSPHERE_PARAMETERS_GLSL
 #define SKYIG_ATMOSPHERE_PARAMETERS_GLSL
 

@@ -1,5 +1,5 @@
 // GPU precomputation, step 1 (Bruneton & Neyret 2008, algorithm 4.1): T(r, mu). A pass
-// (GLSL only); the physics is in transmittance.glsl. Host sequence: render/atmosphere/
+// (GLSL only); the physics is in transmittance.glsl. Host sequence: sky/atmosphere/
 // precompute.cpp does the same steps on the CPU, and docs/atmosphere.md lists the bindings.
 #include "atmosphere/transmittance.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;

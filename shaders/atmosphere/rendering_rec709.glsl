@@ -1,6 +1,6 @@
 // Sky radiance from tables already converted to linear Rec.709 (cd/m^2 per unit phase
 // function): the sum over all wavelength groups of each group's C* and C_M times the 3 x 4
-// block of the spectral-to-Rec.709 matrix (render/atmosphere/rec709_tables.h). Exact for the
+// block of the spectral-to-Rec.709 matrix (sky/atmosphere/rec709_tables.h). Exact for the
 // sky, because both phase functions are the same at every wavelength (paper eq. 2 and 4 with
 // a grey g), so phase and colour conversion commute; one table pair for any number of
 // wavelengths, which is what keeps the GPU tables within budget.
@@ -27,7 +27,7 @@ vec3 skyRec709(IN(AtmosphereParameters) atm, IN(sampler3D) scattering_rec709,
   return vec3(rgb.x, rgb.y, rgb.z);
 }
 
-// ---- The renderer's packed tables (render/atmosphere/rec709_tables.h, PackedRec709Tables) ----
+// ---- The renderer's packed tables (sky/atmosphere/rec709_tables.h, PackedRec709Tables) ----
 // scattering_packed: C*.rgb and C_M.b (alpha); single_mie_rg: C_M.rg; both in Rec.709 times
 // REC709_TABLE_SCALE (half floats). transmittance_xyz: the sun-weighted CIE XYZ transmittance
 // T_c = sum_i w_c(i) E_sun(i) T(i) / sum_i w_c(i) E_sun(i) (w >= 0, so 0 <= T_c <= 1; w = 1);
@@ -37,7 +37,7 @@ vec3 skyRec709(IN(AtmosphereParameters) atm, IN(sampler3D) scattering_rec709,
 // an approximation for anything else (documented and bounded in docs/atmosphere.md).
 #define REC709_TABLE_SCALE 0.0625
 
-// IEC 61966-2-1 (the same matrix as render/atmosphere/spectrum.cpp).
+// IEC 61966-2-1 (the same matrix as sky/atmosphere/spectrum.cpp).
 vec3 xyzToRec709Linear(IN(vec3) c) {
   return vec3(3.2404542 * c.x - 1.5371385 * c.y - 0.4985314 * c.z,
               -0.9692660 * c.x + 1.8760108 * c.y + 0.0415560 * c.z,

@@ -2,8 +2,8 @@
 #define SKYIG_NIGHT_MILKY_WAY_GLSL
 // Where a direction falls on the Milky Way panorama (Mellinger's all-sky map, equirectangular in
 // J2000 equatorial coordinates: RA = 90 deg - 360 deg (x + 0.5) / width, Dec = 90 deg - 180 deg
-// (y + 0.5) / height, row 0 at the top; render/data/README.md), and the galactic frame the map
-// is calibrated in (render/night/milky_way_map.h).
+// (y + 0.5) / height, row 0 at the top; sky/data/README.md), and the galactic frame the map
+// is calibrated in (sky/night/milky_way_map.h).
 
 // Texture coordinate (u, v) of a J2000 unit vector: u = fract(1/4 - RA / 2 pi), v = (90 deg -
 // Dec) / 180 deg, v = 0 at the map's top row (the rows are uploaded top first).

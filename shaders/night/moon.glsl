@@ -2,7 +2,7 @@
 #define SKYIG_NIGHT_MOON_GLSL
 // The moon's disc (issue 6, docs/night-sky.md "Moon"): a sphere lit by the sun and by the
 // earth, seen through refraction and extinction. Shared by the GL pass (shaders/passes/moon.*)
-// and the CPU (render/night/moon_disc.h) through shaders/night/moon_physics.h.
+// and the CPU (sky/night/moon_disc.h) through shaders/night/moon_physics.h.
 //
 // Reflectance: Lommel-Seeliger, r = mu0 / (mu0 + mu), the single-scattering limit of Hapke's
 // (1981, eq. 16) law for a dark surface; it gives the full moon its flat, unshaded look. Its
@@ -36,7 +36,7 @@ vec3 moonSurfaceNormal(IN(vec3) q, IN(vec3) centre) {
   return q - sqrt(1.0 - s2) * centre;
 }
 
-// Texture coordinates in the selenographic equirectangular map (render/data/moon.png):
+// Texture coordinates in the selenographic equirectangular map (sky/data/moon.png):
 // longitude 0 (the mean sub-earth point) at u = 0.5, east longitude towards +u, north at v = 0
 // (the first image row). `north` and `east` are the moon's axes in the observer's frame.
 vec2 selenographicUv(IN(vec3) n, IN(vec3) towardObserver, IN(vec3) north, IN(vec3) east) {
@@ -78,7 +78,7 @@ vec3 unrefractView(IN(vec3) view, Float scale, Float offset) {
 Float moonLimbCoverage(Float inside, Float pixel) { return clamp(inside / max(pixel, 1e-9) + 0.5, 0.0, 1.0); }
 
 // Texture coordinate of an elevation in an ExtinctionProfile's table
-// (render/atmosphere/extinction_profile.h): u = (1 + sign(e) sqrt(|e| / 90 deg)) / 2.
+// (sky/atmosphere/extinction_profile.h): u = (1 + sign(e) sqrt(|e| / 90 deg)) / 2.
 Float extinctionCoordinate(Float elevation) {
   Float e = clamp(elevation, -0.5 * PI, 0.5 * PI);
   return 0.5 * (1.0 + sign(e) * sqrt(abs(e) / (0.5 * PI)));

@@ -1,6 +1,6 @@
 #pragma once
 // shaders/night/moon.glsl compiled as C++ in double precision (the pattern of shaders/physics.h),
-// for the CPU side of the moon (render/night/moon_disc.h) and its tests.
+// for the CPU side of the moon (sky/night/moon_disc.h) and its tests.
 #include "common/glsl_cpp.h"
 
 #pragma GCC diagnostic push

@@ -4,7 +4,7 @@
 // A&AS 127, 1, table 17) against helio-ecliptic longitude (lambda - lambda_sun, 0..180 deg,
 // symmetric about the sun) and ecliptic latitude (|beta|, 0..90 deg), on a grid that is 5 deg
 // wide near the sun and 15 deg wide far from it. The table's values live in a texture (GPU) and
-// an array (CPU, render/night/zodiacal_light.h); this file holds the geometry both share.
+// an array (CPU, sky/night/zodiacal_light.h); this file holds the geometry both share.
 
 const Float kZodiacalLongitudeSamples = 19.0;  // 0, 5, ..., 45, 60, ..., 180 deg
 const Float kZodiacalLatitudeSamples = 11.0;   // 0, 5, ..., 30, 45, 60, 75, 90 deg

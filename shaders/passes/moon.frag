@@ -9,7 +9,7 @@ uniform float moonSinRadius;
 uniform vec3 towardSun;         // from the moon to the sun
 uniform vec3 moonNorth;         // selenographic axes, ENU
 uniform vec3 moonEast;
-uniform vec3 sunlitScale;       // cd/m^2 (render/night/moon_disc.h)
+uniform vec3 sunlitScale;       // cd/m^2 (sky/night/moon_disc.h)
 uniform vec3 earthshineScale;
 uniform vec2 refraction;        // scale, offset (radians)
 layout(binding = 20) uniform sampler2D moonAlbedo;     // relative albedo, mean 1 on the near side

@@ -1,7 +1,7 @@
 // The diffuse night light, added to the sky pass's radiance (blend ONE, ONE): the Milky Way and
 // the unresolved stars (a calibrated panorama, S10 per channel), the zodiacal light (Leinert et
 // al. 1998 table 17, S10) and the airglow (van Rhijn), all dimmed by the transmittance to space
-// along the view. The CPU twin is render/night/night_diffuse.h.
+// along the view. The CPU twin is sky/night/night_diffuse.h.
 #include "night/units.glsl"
 #include "night/milky_way.glsl"
 #include "night/zodiacal.glsl"
@@ -18,7 +18,7 @@ layout(binding = 2) uniform sampler1D extinctionRec709;
 in vec3 vViewRay;
 layout(location = 0) out vec4 outRadiance;
 
-// render/atmosphere/extinction_profile.h: u = (1 + sign(e) sqrt(|e| / 90 deg)) / 2.
+// sky/atmosphere/extinction_profile.h: u = (1 + sign(e) sqrt(|e| / 90 deg)) / 2.
 float extinctionTexCoord(float elevation) {
   return 0.5 * (1.0 + sign(elevation) * sqrt(abs(elevation) / (0.5 * 3.14159265358979)));
 }

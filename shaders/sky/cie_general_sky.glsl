@@ -3,7 +3,7 @@
 // CIE standard general sky (CIE S 011/E:2003 = ISO 15469:2004), the Perez-form relative
 // luminance of paper 000 eq. 6-7 (with NOTES.md's corrections: the last term of eq. 6 is
 // e cos^2(chi), and eq. 7 divides by the same function at the zenith with the sun's zenith
-// angle). Coefficients a..e of the 15 types are in render/cie_sky_types.cpp.
+// angle). Coefficients a..e of the 15 types are in sky/analytic/cie_sky_types.cpp.
 #include "common/constants.glsl"
 
 struct CieSkyCoefficients {

@@ -1,11 +1,11 @@
 // Headless renders on the real GL path (llvmpipe where there is no GPU), checked for physics
 // and against the same shader code evaluated in double precision on the CPU.
-#include "render/analytic_sky.h"
-#include "render/atmosphere/conditions.h"
-#include "render/atmosphere/rec709_tables.h"
-#include "render/atmosphere/table_cache.h"
-#include "render/physical_sky_pass.h"
-#include "render/gl_context.h"
+#include "sky/analytic/analytic_sky.h"
+#include "sky/atmosphere/conditions.h"
+#include "sky/atmosphere/rec709_tables.h"
+#include "sky/atmosphere/table_cache.h"
+#include "render/passes/physical_sky_pass.h"
+#include "render/gl/gl_context.h"
 #include "render/image_io.h"
 #include "render/sky_renderer.h"
 #include "shaders/physics.h"
@@ -22,6 +22,7 @@
 
 using namespace skyig;
 using namespace skyig::render;
+using namespace skyig::sky;
 namespace atmosphere = skyig::atmosphere;
 
 namespace {

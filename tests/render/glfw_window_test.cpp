@@ -1,7 +1,7 @@
 // The windowed path of `skyig serve`: a GLFW window with an OpenGL 4.5 core context renders
 // the sky and presents exactly the tone-reproduced frame. Runs under Xvfb in CI (see
 // CMakeLists.txt); skips, saying why, where there is no X display.
-#include "render/glfw_window.h"
+#include "render/gl/glfw_window.h"
 #include "render/sky_renderer.h"
 
 #include <gtest/gtest.h>
@@ -10,6 +10,7 @@
 #include <vector>
 
 using namespace skyig::render;
+using namespace skyig::sky;
 
 TEST(GlfwWindow, PresentsTheToneReproducedFrame) {
   if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no X display (DISPLAY unset): run under xvfb-run";

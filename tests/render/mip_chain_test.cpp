@@ -1,6 +1,6 @@
-// The CPU mip chain of render/mip_chain.h: a full chain to 1x1, each level the 2x2 mean of the
+// The CPU mip chain of render/gl/mip_chain.h: a full chain to 1x1, each level the 2x2 mean of the
 // one before, so the mean of a power-of-two image is kept at every level.
-#include "render/mip_chain.h"
+#include "render/gl/mip_chain.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // visibility and humidity become a request for new tables once they settle, bad values are
 // counted by the caller and ignored, and a request through the real background updater yields
 // a model whose aerosols give the host's visibility (Koschmieder).
-#include "render/atmosphere/updater.h"
+#include "sky/atmosphere/updater.h"
 #include "services/host_atmosphere.h"
 
 #include "tests/services/test_support.h"

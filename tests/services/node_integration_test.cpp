@@ -67,7 +67,7 @@ class NodeRun {
 
 NodeOptions smallNode(std::uint16_t port, const fs::path& dump) {
   NodeOptions o;
-  o.config.sky.model = skyig::render::SkyModel::Preetham;  // the analytic sky: no tables to load
+  o.config.sky.model = skyig::sky::SkyModel::Preetham;  // the analytic sky: no tables to load
   o.config.channels.front().width = 32;
   o.config.channels.front().height = 24;
   o.listen = {"127.0.0.1", port};

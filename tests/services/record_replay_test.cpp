@@ -83,7 +83,7 @@ class RecordReplay : public ::testing::Test {
 TEST_F(RecordReplay, ReplayGivesTheLiveRunsHostStates) {
   const std::uint16_t port = freeLoopbackPort();
   NodeOptions o;
-  o.config.sky.model = skyig::render::SkyModel::Preetham;  // the analytic sky: no tables to load
+  o.config.sky.model = skyig::sky::SkyModel::Preetham;  // the analytic sky: no tables to load
   o.config.channels.front().width = 32;
   o.config.channels.front().height = 24;
   o.listen = {"127.0.0.1", port};
@@ -228,7 +228,7 @@ TEST_F(RecordReplay, FullDiskStopsRecordingNotTheNode) {
   if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this system";
   const std::uint16_t port = freeLoopbackPort();
   NodeOptions o;
-  o.config.sky.model = skyig::render::SkyModel::Preetham;
+  o.config.sky.model = skyig::sky::SkyModel::Preetham;
   o.config.channels.front().width = 16;
   o.config.channels.front().height = 16;
   o.listen = {"127.0.0.1", port};

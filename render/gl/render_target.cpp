@@ -1,0 +1,35 @@
+#include "render/gl/render_target.h"
+
+#include "render/gl/gl_context.h"
+
+#include <string>
+
+namespace skyig::render {
+
+RenderTarget::RenderTarget(int width, int height, GLenum internalFormat) : width_(width), height_(height) {
+  glCreateTextures(GL_TEXTURE_2D, 1, &texture_);
+  glTextureStorage2D(texture_, 1, internalFormat, width, height);
+  glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glCreateFramebuffers(1, &framebuffer_);
+  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, texture_, 0);
+  const GLenum status = glCheckNamedFramebufferStatus(framebuffer_, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    glDeleteFramebuffers(1, &framebuffer_);
+    glDeleteTextures(1, &texture_);
+    throw GlContextError("framebuffer of " + std::to_string(width) + "x" + std::to_string(height) +
+                         " is incomplete (status 0x" + std::to_string(status) + ")");
+  }
+}
+
+RenderTarget::~RenderTarget() {
+  glDeleteFramebuffers(1, &framebuffer_);
+  glDeleteTextures(1, &texture_);
+}
+
+void RenderTarget::bindForDrawing() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glViewport(0, 0, width_, height_);
+}
+
+}  // namespace skyig::render

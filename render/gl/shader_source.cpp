@@ -1,0 +1,84 @@
+#include "render/gl/shader_source.h"
+
+#include "render/gl/embedded_shaders.h"
+
+#include <algorithm>
+#include <regex>
+#include <sstream>
+
+namespace skyig::render {
+
+namespace {
+
+std::string_view findShader(std::string_view path) {
+  for (const EmbeddedShader& s : embeddedShaders())
+    if (s.path == path) return s.source;
+  throw ShaderSourceError("shader file not found among the embedded shaders: " + std::string(path));
+}
+
+int fileIndex(std::vector<std::string>& files, std::string_view path) {
+  const auto it = std::find(files.begin(), files.end(), path);
+  if (it != files.end()) return static_cast<int>(it - files.begin());
+  files.emplace_back(path);
+  return static_cast<int>(files.size() - 1);
+}
+
+// Appends `path` to out, expanding its quoted includes depth first. Angle-bracket includes
+// (C++-only headers inside `#ifdef __cplusplus`) are left for the GLSL preprocessor to skip.
+void expand(std::string_view path, AssembledShader& out, std::vector<std::string>& stack) {
+  if (std::find(stack.begin(), stack.end(), path) != stack.end())
+    throw ShaderSourceError("include cycle through " + std::string(path));
+  stack.emplace_back(path);
+  const int index = fileIndex(out.files, path);
+  std::istringstream in{std::string(findShader(path))};
+  std::string line;
+  int lineNumber = 0;
+  out.text += "#line 1 " + std::to_string(index) + "\n";
+  static const std::regex includeLine(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
+  std::smatch m;
+  while (std::getline(in, line)) {
+    ++lineNumber;
+    if (std::regex_match(line, m, includeLine)) {
+      expand(m[1].str(), out, stack);
+      out.text += "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(index) + "\n";
+    } else {
+      out.text += line;
+      out.text += '\n';
+    }
+  }
+  stack.pop_back();
+}
+
+}  // namespace
+
+AssembledShader assembleShader(std::string_view path) {
+  AssembledShader out;
+  out.text = "#version 450 core\n";
+  std::vector<std::string> stack;
+  expand("common/glsl_prelude.glsl", out, stack);
+  expand(path, out, stack);
+  return out;
+}
+
+std::string annotateCompilerLog(std::string_view log, const std::vector<std::string>& files) {
+  // Mesa writes "0:12(5): error: ...", NVIDIA "0(12) : error ...": both start with the source
+  // number.
+  static const std::regex sourceRef(R"((^|\n)(\d+)([:(]))");
+  std::string text(log);
+  std::string result;
+  std::sregex_iterator it(text.begin(), text.end(), sourceRef), end;
+  size_t last = 0;
+  for (; it != end; ++it) {
+    const std::smatch& m = *it;
+    const size_t index = std::stoul(m[2].str());
+    result += text.substr(last, static_cast<size_t>(m.position(0)) - last);
+    result += m[1].str();
+    result += index < files.size() ? files[index] : m[2].str();
+    result += m[3].str();
+    last = static_cast<size_t>(m.position(0) + m.length(0));
+  }
+  result += text.substr(last);
+  return result;
+}
+
+}  // namespace skyig::render

@@ -1,0 +1,289 @@
+#include "render/passes/atmosphere_gpu_precompute.h"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "sky/atmosphere/precompute.h"
+#include "render/gl/egl_context.h"
+#include "render/gl/gl_context.h"
+#include "render/passes/atmosphere_uniforms.h"
+#include "render/gl/gl_program.h"
+#include "render/gl/shader_source.h"
+
+namespace skyig::render {
+
+using atmosphere::AtmosphereParameters;
+using atmosphere::GroupTables;
+using atmosphere::ModelConfig;
+using Clock = std::chrono::steady_clock;
+
+std::string describe(const GpuPrecomputeTiming& t) {
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "total %.2f s = compile %.2f, T %.3f, direct E %.3f, single %.2f, slices %.2f, density %.2f, "
+                "indirect E %.2f, multiple %.2f, readback %.2f s",
+                t.total, t.compile, t.transmittance, t.direct_irradiance, t.single_scattering, t.nu_slices,
+                t.scattering_density, t.indirect_irradiance, t.multiple_scattering, t.readback);
+  return line;
+}
+
+namespace {
+
+double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+GLuint compileCompute(const std::string& path) {
+  return linkProgram({compileShaderStage(GL_COMPUTE_SHADER, path)}, path);
+}
+
+void setOrder(GLuint program, int order) {
+  glProgramUniform1i(program, glGetUniformLocation(program, "scattering_order"), order);
+}
+
+void setFiltering(GLuint t) {
+  glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+    glTextureParameteri(t, wrap, GL_CLAMP_TO_EDGE);
+}
+
+// RGBA32F throughout: the tables leave as float32 (the cache's precision) and the deltas feed
+// the next order, so half floats would add error at every order.
+GLuint texture2D(int w, int h) {
+  GLuint t = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &t);
+  glTextureStorage2D(t, 1, GL_RGBA32F, w, h);
+  setFiltering(t);
+  return t;
+}
+
+GLuint texture3D(int w, int h, int d) {
+  GLuint t = 0;
+  glCreateTextures(GL_TEXTURE_3D, 1, &t);
+  glTextureStorage3D(t, 1, GL_RGBA32F, w, h, d);
+  setFiltering(t);
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearTexImage(t, 0, GL_RGBA, GL_FLOAT, zero);
+  return t;
+}
+
+void image(GLuint unit, GLuint t, GLenum access) { glBindImageTexture(unit, t, 0, GL_TRUE, 0, access, GL_RGBA32F); }
+
+void download(GLuint t, std::vector<glm::dvec4>& texels) {
+  std::vector<float> v(texels.size() * 4);
+  glGetTextureImage(t, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(v.size() * sizeof(float)), v.data());
+  for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = glm::dvec4(v[4 * i], v[4 * i + 1], v[4 * i + 2], v[4 * i + 3]);
+}
+
+GLuint groups(int size, int local) { return static_cast<GLuint>((size + local - 1) / local); }
+
+}  // namespace
+
+// Local sizes must match the layout() declarations of the .comp files.
+struct AtmosphereGpuPrecompute::Programs {
+  GLuint transmittance = compileCompute("atmosphere/precompute_transmittance.comp");
+  GLuint direct = compileCompute("atmosphere/precompute_direct_irradiance.comp");
+  GLuint single = compileCompute("atmosphere/precompute_single_scattering.comp");
+  GLuint slices = compileCompute("atmosphere/precompute_nu_slices.comp");
+  GLuint density = compileCompute("atmosphere/precompute_scattering_density.comp");
+  GLuint indirect = compileCompute("atmosphere/precompute_indirect_irradiance.comp");
+  GLuint multiple = compileCompute("atmosphere/precompute_multiple_scattering.comp");
+  std::array<GLuint, 7> all() const { return {transmittance, direct, single, slices, density, indirect, multiple}; }
+  ~Programs() {
+    for (GLuint p : all()) glDeleteProgram(p);
+  }
+};
+
+AtmosphereGpuPrecompute::AtmosphereGpuPrecompute() {
+  const auto start = Clock::now();
+  programs_ = std::make_unique<Programs>();
+  compile_seconds_ = since(start);
+}
+
+AtmosphereGpuPrecompute::~AtmosphereGpuPrecompute() = default;
+
+namespace {
+
+constexpr int kDensityThetaSamples = 16;  // ATMOSPHERE_DENSITY_ANGULAR_SAMPLES
+
+// The textures of one group, reused for the next (every pass rewrites what it writes).
+struct Textures {
+  GLuint transmittance, delta_irradiance, irradiance, delta_rayleigh, delta_mie, scattering, single_mie,
+      delta_multiple, delta_density, slices_a, slices_b;
+  Textures(const atmosphere::TableSizes& s, const atmosphere::TableSizes& density) {
+    const int sw = s.scattering_nu * s.scattering_mu_s;
+    transmittance = texture2D(s.transmittance_mu, s.transmittance_r);
+    delta_irradiance = texture2D(s.irradiance_mu_s, s.irradiance_r);
+    irradiance = texture2D(s.irradiance_mu_s, s.irradiance_r);
+    for (GLuint* t : {&delta_rayleigh, &delta_mie, &scattering, &single_mie, &delta_multiple})
+      *t = texture3D(sw, s.scattering_mu, s.scattering_r);
+    delta_density = texture3D(sw, density.scattering_mu, density.scattering_r);
+    // precompute_nu_slices.comp: (nu + 1) x (theta samples x mu_s) x r of the density.
+    for (GLuint* t : {&slices_a, &slices_b})
+      *t = texture3D(s.scattering_nu + 1, kDensityThetaSamples * s.scattering_mu_s, density.scattering_r);
+  }
+  ~Textures() {
+    const GLuint all[] = {transmittance, delta_irradiance, irradiance, delta_rayleigh, delta_mie,
+                          scattering, single_mie, delta_multiple, delta_density, slices_a, slices_b};
+    glDeleteTextures(11, all);
+  }
+  Textures(const Textures&) = delete;
+  Textures& operator=(const Textures&) = delete;
+};
+
+}  // namespace
+
+std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfig& config,
+                                                                const GpuPrecomputeOptions& options,
+                                                                GpuPrecomputeTiming* timing) {
+  const int orders = config.options.scattering_orders;
+  if (orders < 1 || orders > 32) {
+    throw std::invalid_argument("atmosphere GPU precompute: scattering_orders = " + std::to_string(orders) +
+                                " is invalid (expected 1 to 32)");
+  }
+  const std::vector<double>& w = config.wavelengths_nm;
+  (void)atmosphere::SpectralConverter(w);  // throws std::invalid_argument on bad wavelengths
+  // As AtmosphereModel: groups of four, the last padded by repeating the last wavelength;
+  // makeParameters validates the medium and the sizes.
+  std::vector<AtmosphereParameters> params;
+  for (std::size_t g = 0; g < (w.size() + 3) / 4; ++g) {
+    std::array<double, 4> group{};
+    for (std::size_t i = 0; i < 4; ++i) group[i] = w[std::min(g * 4 + i, w.size() - 1)];
+    params.push_back(atmosphere::makeParameters(config.medium, group, config.sizes));
+  }
+
+  if (options.density_divisor != 1 && options.density_divisor != 2) {
+    throw std::invalid_argument("atmosphere GPU precompute: density_divisor = " +
+                                std::to_string(options.density_divisor) + " is invalid (expected 1 or 2)");
+  }
+  // The density table: its view angles divided (mu stays even: half of it for the rays that
+  // hit the ground).
+  atmosphere::TableSizes density_sizes = config.sizes;
+  density_sizes.scattering_mu = std::max(2, config.sizes.scattering_mu / options.density_divisor / 2 * 2);
+
+  const auto start = Clock::now();
+  GpuPrecomputeTiming t;
+  t.compile = compile_seconds_;
+  const atmosphere::TableSizes& s = config.sizes;
+  const int sw = s.scattering_nu * s.scattering_mu_s;
+  const int sh = s.scattering_mu;
+  const int sd = s.scattering_r;
+  const Programs& p = *programs_;
+  Textures x(s, density_sizes);
+
+  // Each pass's local size is that of its .comp file (llvmpipe runs a workgroup's
+  // invocations as SIMD lanes: 8 x 8, one radius per group, keeps the branches on the ground
+  // intersection coherent).
+  auto run = [&](GLuint program, int width, int height, int depth, double& seconds) {
+    const auto pass_start = Clock::now();
+    GLint local[3] = {1, 1, 1};
+    glGetProgramiv(program, GL_COMPUTE_WORK_GROUP_SIZE, local);
+    glUseProgram(program);
+    glDispatchCompute(groups(width, local[0]), groups(height, local[1]), groups(depth, local[2]));
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    if (options.time_passes) {
+      glFinish();
+      seconds += since(pass_start);
+    }
+  };
+
+  std::vector<GroupTables> out(params.size());
+  for (std::size_t g = 0; g < params.size(); ++g) {
+    const auto group_start = Clock::now();
+    for (GLuint program : p.all()) setAtmosphereUniforms(program, "atm", params[g]);
+    AtmosphereParameters density_params = params[g];
+    density_params.scattering_r_size = density_sizes.scattering_r;
+    density_params.scattering_mu_size = density_sizes.scattering_mu;
+    for (GLuint program : {p.slices, p.density, p.multiple}) setAtmosphereUniforms(program, "atm_density", density_params);
+    for (GLuint unit = 0; unit < 8; ++unit) glBindTextureUnit(unit, 0);
+
+    image(0, x.transmittance, GL_WRITE_ONLY);
+    run(p.transmittance, s.transmittance_mu, s.transmittance_r, 1, t.transmittance);
+    glBindTextureUnit(0, x.transmittance);
+    image(0, x.delta_irradiance, GL_WRITE_ONLY);
+    image(1, x.irradiance, GL_WRITE_ONLY);
+    run(p.direct, s.irradiance_mu_s, s.irradiance_r, 1, t.direct_irradiance);
+    image(0, x.delta_rayleigh, GL_WRITE_ONLY);
+    image(1, x.delta_mie, GL_WRITE_ONLY);
+    image(2, x.scattering, GL_WRITE_ONLY);
+    image(3, x.single_mie, GL_WRITE_ONLY);
+    run(p.single, sw, sh, sd, t.single_scattering);
+    for (int order = 2; order <= orders; ++order) {
+      glBindTextureUnit(1, x.delta_rayleigh);
+      glBindTextureUnit(2, x.delta_mie);
+      glBindTextureUnit(3, x.delta_multiple);
+      glBindTextureUnit(4, x.delta_irradiance);
+      image(0, x.slices_a, GL_WRITE_ONLY);
+      image(1, x.slices_b, GL_WRITE_ONLY);
+      setOrder(p.slices, order);
+      run(p.slices, s.scattering_nu + 1, kDensityThetaSamples * s.scattering_mu_s, density_sizes.scattering_r,
+          t.nu_slices);
+      glBindTextureUnit(6, x.slices_a);
+      glBindTextureUnit(7, x.slices_b);
+      image(0, x.delta_density, GL_WRITE_ONLY);
+      setOrder(p.density, order);
+      run(p.density, sw, density_sizes.scattering_mu, density_sizes.scattering_r, t.scattering_density);
+      // delta_irradiance and delta_multiple are rewritten next: unbind them as samplers.
+      glBindTextureUnit(4, 0);
+      image(0, x.delta_irradiance, GL_WRITE_ONLY);
+      image(1, x.irradiance, GL_READ_WRITE);
+      setOrder(p.indirect, order);
+      run(p.indirect, s.irradiance_mu_s, s.irradiance_r, 1, t.indirect_irradiance);
+      glBindTextureUnit(3, 0);
+      glBindTextureUnit(5, x.delta_density);
+      image(0, x.delta_multiple, GL_WRITE_ONLY);
+      image(2, x.scattering, GL_READ_WRITE);
+      run(p.multiple, sw, sh, sd, t.multiple_scattering);
+    }
+
+    const auto read_start = Clock::now();
+    GroupTables& tables = out[g];
+    tables.transmittance = shader::cpu_texture::sampler2D(s.transmittance_mu, s.transmittance_r);
+    tables.irradiance = shader::cpu_texture::sampler2D(s.irradiance_mu_s, s.irradiance_r);
+    tables.scattering = shader::cpu_texture::sampler3D(sw, sh, sd);
+    tables.single_mie = shader::cpu_texture::sampler3D(sw, sh, sd);
+    download(x.transmittance, tables.transmittance.texels);
+    download(x.irradiance, tables.irradiance.texels);
+    download(x.scattering, tables.scattering.texels);
+    download(x.single_mie, tables.single_mie.texels);
+    t.readback += since(read_start);
+    if (options.progress) {
+      char line[96];
+      std::snprintf(line, sizeof line, "group %zu/%zu done (%.1f s)", g + 1, params.size(), since(group_start));
+      options.progress(line);
+    }
+  }
+  for (GLuint unit = 0; unit < 8; ++unit) glBindTextureUnit(unit, 0);
+  for (GLuint unit = 0; unit < 4; ++unit) glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+  glUseProgram(0);
+  if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+    char code[16];
+    std::snprintf(code, sizeof code, "0x%04x", error);
+    throw std::runtime_error(std::string("atmosphere GPU precompute: OpenGL error ") + code);
+  }
+  t.total = compile_seconds_ + since(start);
+  compile_seconds_ = 0.0;  // counted once
+  if (timing) *timing = t;
+  return out;
+}
+
+atmosphere::AtmosphereModel AtmosphereGpuPrecompute::compute(const ModelConfig& config,
+                                                             const GpuPrecomputeOptions& options,
+                                                             GpuPrecomputeTiming* timing) {
+  return atmosphere::AtmosphereModel(config, computeTables(config, options, timing));
+}
+
+std::vector<GroupTables> precomputeTablesOnGpu(const ModelConfig& config, const GpuPrecomputeOptions& options,
+                                               GpuPrecomputeTiming* timing) {
+  const std::unique_ptr<GlContext> context = createWorkerHeadlessContext();
+  if (options.progress) options.progress("on " + context->info().renderer + " (" + context->info().platform + ")");
+  AtmosphereGpuPrecompute precompute;
+  return precompute.computeTables(config, options, timing);
+}
+
+}  // namespace skyig::render

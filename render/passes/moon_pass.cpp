@@ -1,0 +1,97 @@
+#include "render/passes/moon_pass.h"
+
+#include "sky/camera.h"
+#include "render/gl/mip_chain.h"
+#include "sky/sky_state.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace skyig::render {
+
+namespace {
+
+constexpr GLuint kAlbedoUnit = 20;
+constexpr GLuint kExtinctionUnit = 21;
+
+void set3(GLuint p, const char* name, const glm::dvec3& v) {
+  glProgramUniform3f(p, glGetUniformLocation(p, name), static_cast<float>(v.x), static_cast<float>(v.y),
+                     static_cast<float>(v.z));
+}
+
+void set1(GLuint p, const char* name, double v) {
+  glProgramUniform1f(p, glGetUniformLocation(p, name), static_cast<float>(v));
+}
+
+}  // namespace
+
+MoonPass::MoonPass() : program_("passes/moon.vert", "passes/moon.frag") {
+  glCreateVertexArrays(1, &emptyVao_);
+  const skyig::sky::night::MoonAlbedo& map = skyig::sky::night::MoonAlbedo::standard();
+  glCreateTextures(GL_TEXTURE_2D, 1, &albedoTexture_);
+  glTextureStorage2D(albedoTexture_, mipLevelCount(map.width(), map.height()), GL_R32F, map.width(), map.height());
+  // The disc spans tens of pixels, so the map is minified.
+  forEachMipLevel(map.texels(), map.width(), map.height(),
+                  [&](int level, int w, int h, const std::vector<float>& texels) {
+                    glTextureSubImage2D(albedoTexture_, level, 0, 0, w, h, GL_RED, GL_FLOAT, texels.data());
+                  });
+  glTextureParameteri(albedoTexture_, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(albedoTexture_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(albedoTexture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(albedoTexture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+}
+
+MoonPass::~MoonPass() {
+  glDeleteTextures(1, &albedoTexture_);
+  glDeleteVertexArrays(1, &emptyVao_);
+}
+
+void MoonPass::draw(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
+  // Well below the horizon (more than the largest dip of the horizon, 5 deg at 25 km) nothing
+  // of it can be seen: skip the pass.
+  const skyig::sky::night::MoonDisc* d = state.moonDisc.get();
+  if (!d || d->centreSeen.z < -std::sin(5.5 * std::numbers::pi / 180.0)) return;
+  draw(*d, skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(state.observer.attitude, channel.offset), channel.frustum), channel);
+}
+
+void MoonPass::draw(const skyig::sky::night::MoonDisc& d, const glm::dmat3& ndcToWorldMatrix, const skyig::sky::ChannelConfig& channel) {
+  extinction_.use(d.extinction);
+  const GLuint p = program_.id();
+  // The quad: the disc's radius plus three pixels for the limb ramp (the widest pixel of the
+  // channel, from its frustum's largest half-angle), at least 20% for the refractive flattening.
+  const double pixel = std::max(std::tan(channel.frustum.leftDeg * std::numbers::pi / 180.0) +
+                                    std::tan(channel.frustum.rightDeg * std::numbers::pi / 180.0), 0.0) /
+                       std::max(channel.width, 1);
+  const double halfSize = 1.2 * std::tan(d.angularRadiusRad) + 3.0 * pixel;
+  const glm::dvec3 up = std::abs(d.centreSeen.z) < 0.999 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
+  const glm::dvec3 right = glm::normalize(glm::cross(d.centreSeen, up));
+  set3(p, "moonCentreSeen", d.centreSeen);
+  set3(p, "quadRight", right);
+  set3(p, "quadUp", glm::cross(right, d.centreSeen));
+  set1(p, "quadHalfSize", halfSize);
+  const glm::mat3 worldToNdc(glm::inverse(ndcToWorldMatrix));
+  glProgramUniformMatrix3fv(p, glGetUniformLocation(p, "worldToNdc"), 1, GL_FALSE, &worldToNdc[0][0]);
+  set3(p, "moonCentre", d.centre);
+  set1(p, "moonSinRadius", std::sin(d.angularRadiusRad));
+  set3(p, "towardSun", d.towardSun);
+  set3(p, "moonNorth", d.north);
+  set3(p, "moonEast", d.east);
+  set3(p, "sunlitScale", d.sunlitScale);
+  set3(p, "earthshineScale", d.earthshineScale);
+  glProgramUniform2f(p, glGetUniformLocation(p, "refraction"), static_cast<float>(d.refractionScale),
+                     static_cast<float>(d.refractionOffsetRad));
+  glBindTextureUnit(kAlbedoUnit, albedoTexture_);
+  extinction_.bind(kExtinctionUnit);
+  glBindVertexArray(emptyVao_);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);  // light adds: the moon in front of the sky's scattered light
+  program_.use();
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  glDisable(GL_BLEND);
+}
+
+}  // namespace skyig::render

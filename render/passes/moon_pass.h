@@ -1,0 +1,40 @@
+#pragma once
+// The moon's GL pass (shaders/passes/moon.*): a quad around the disc, added onto the HDR target
+// after the sky pass, from the same numbers as the CPU side (sky/night/moon_disc.h).
+#include "sky/channel.h"
+#include "render/passes/extinction_texture.h"
+#include "render/gl/gl_program.h"
+#include "sky/night/moon_disc.h"
+
+#include <glm/mat3x3.hpp>
+
+#include <memory>
+
+namespace skyig::sky {
+struct SkyState;
+}
+
+namespace skyig::render {
+
+class MoonPass {
+ public:
+  // Needs the GL context current; uploads the albedo map (skyig::sky::night::MoonAlbedo::standard()).
+  MoonPass();
+  ~MoonPass();
+  MoonPass(const MoonPass&) = delete;
+  MoonPass& operator=(const MoonPass&) = delete;
+
+  // Adds the state's moon (skyig::sky::SkyState::moonDisc) to the bound target; nothing without one. The frame block
+  // (shaders/common/uniforms.h) of `channel` must be bound.
+  void draw(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel);
+  // The same for a given disc and the channel's eq. 22 matrix (ndcToWorld).
+  void draw(const skyig::sky::night::MoonDisc& disc, const glm::dmat3& ndcToWorld, const skyig::sky::ChannelConfig& channel);
+
+ private:
+  GlProgram program_;
+  GLuint albedoTexture_ = 0;
+  ExtinctionTexture extinction_;
+  GLuint emptyVao_ = 0;
+};
+
+}  // namespace skyig::render

@@ -1,0 +1,93 @@
+#include "render/passes/night_diffuse_pass.h"
+
+#include "render/gl/mip_chain.h"
+#include "sky/night/zodiacal_light.h"
+#include "sky/sky_state.h"
+
+#include <glm/gtc/packing.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace skyig::render {
+
+namespace {
+
+GLuint uploadMilkyWay(const skyig::sky::night::MilkyWayMap& map) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  glTextureStorage2D(id, mipLevelCount(map.width(), map.height()), GL_RGBA16F, map.width(), map.height());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  forEachMipLevel(map.texels(), map.width(), map.height(),
+                  [&](int level, int w, int h, const std::vector<glm::vec3>& texels) {
+                    // Half floats hold S10 (0..~1000) to 0.05%; cd/m^2 (1e-4) would sit among
+                    // the denormals.
+                    std::vector<std::uint16_t> half;
+                    half.reserve(texels.size() * 4);
+                    for (const glm::vec3& t : texels)
+                      for (float c : {t.r, t.g, t.b, 1.0f}) half.push_back(static_cast<std::uint16_t>(glm::packHalf1x16(c)));
+                    glTextureSubImage2D(id, level, 0, 0, w, h, GL_RGBA, GL_HALF_FLOAT, half.data());
+                  });
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  return id;
+}
+
+GLuint uploadZodiacal() {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  glTextureStorage2D(id, 1, GL_R32F, skyig::sky::night::kZodiacalColumns, skyig::sky::night::kZodiacalRows);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage2D(id, 0, 0, 0, skyig::sky::night::kZodiacalColumns, skyig::sky::night::kZodiacalRows, GL_RED, GL_FLOAT,
+                      skyig::sky::night::zodiacalTableS10().data());
+  for (GLenum p : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T}) glTextureParameteri(id, p, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  return id;
+}
+
+}  // namespace
+
+NightDiffusePass::NightDiffusePass()
+    : program_("passes/fullscreen.vert", "passes/night_diffuse.frag"),
+      enuToJ2000Location_(glGetUniformLocation(program_.id(), "enuToJ2000")),
+      sunLocation_(glGetUniformLocation(program_.id(), "sunJ2000")),
+      airglowLocation_(glGetUniformLocation(program_.id(), "airglowZenith")) {
+  milkyWay_ = uploadMilkyWay(*skyig::sky::night::MilkyWayMap::standard());
+  zodiacal_ = uploadZodiacal();
+  const glm::vec3 sun(skyig::sky::night::sunlightRec709());
+  glProgramUniform3fv(program_.id(), glGetUniformLocation(program_.id(), "sunlightRec709"), 1, glm::value_ptr(sun));
+}
+
+NightDiffusePass::~NightDiffusePass() {
+  const GLuint textures[] = {milkyWay_, zodiacal_};
+  glDeleteTextures(2, textures);
+}
+
+void NightDiffusePass::draw(const skyig::sky::SkyState& state) {
+  const auto sky = skyig::sky::nightDiffuseSky(state);
+  if (sky) draw(*sky);
+}
+
+void NightDiffusePass::draw(const skyig::sky::night::NightDiffuseSky& sky) {
+  extinction_.use(sky.extinction);
+  const GLuint p = program_.id();
+  const glm::mat3 m(sky.enuToJ2000);
+  glProgramUniformMatrix3fv(p, enuToJ2000Location_, 1, GL_FALSE, glm::value_ptr(m));
+  const glm::vec3 sun(sky.sunJ2000), airglow(sky.airglowZenith);
+  glProgramUniform3fv(p, sunLocation_, 1, glm::value_ptr(sun));
+  glProgramUniform3fv(p, airglowLocation_, 1, glm::value_ptr(airglow));
+  glBindTextureUnit(0, milkyWay_);
+  glBindTextureUnit(1, zodiacal_);
+  extinction_.bind(2);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  program_.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_BLEND);
+}
+
+}  // namespace skyig::render

@@ -1,0 +1,253 @@
+#include "render/passes/physical_sky_pass.h"
+
+#include "render/gl/gl_context.h"
+#include "shaders/atmosphere_physics.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace skyig::render {
+
+namespace {
+
+GLuint createTexture(GLenum target) {
+  GLuint id = 0;
+  glCreateTextures(target, 1, &id);
+  for (GLenum p : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(id, p, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  return id;
+}
+
+// RGBA32F: the transmittance spans more orders of magnitude than half floats hold.
+GLuint upload2D(const shader::cpu_texture::sampler2D& s) {
+  std::vector<float> texels;
+  texels.reserve(s.texels.size() * 4);
+  for (const glm::dvec4& t : s.texels)
+    for (int c = 0; c < 4; ++c) texels.push_back(static_cast<float>(t[c]));
+  const GLuint id = createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(id, 1, GL_RGBA32F, s.width, s.height);
+  glTextureSubImage2D(id, 0, 0, 0, s.width, s.height, GL_RGBA, GL_FLOAT, texels.data());
+  return id;
+}
+
+glm::vec3 f3(const glm::dvec3& v) { return glm::vec3(v); }
+
+}  // namespace
+
+PhysicalSkyPass::Program::Program(const char* fragment)
+    : program("passes/fullscreen.vert", fragment),
+      camera(glGetUniformLocation(program.id(), "camera")),
+      sun(glGetUniformLocation(program.id(), "sunDirectionP")),
+      moonOn(glGetUniformLocation(program.id(), "moonlightOn")),
+      moonDirection(glGetUniformLocation(program.id(), "moonDirectionP")),
+      moonScale(glGetUniformLocation(program.id(), "moonlightScale")),
+      radii(glGetUniformLocation(program.id(), "frameRadii")),
+      angles(glGetUniformLocation(program.id(), "frameAngles")) {}
+
+PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame)
+    : slicesPerFrame_(slicesPerFrame),
+      inside_("passes/physical_sky.frag"),
+      space_("passes/physical_sky_space.frag"),
+      sliceProgram_("passes/fullscreen.vert", "passes/physical_sky_slice.frag"),
+      sliceCoordsLocation_(glGetUniformLocation(sliceProgram_.id(), "sliceCoords")) {
+  if (slicesPerFrame < 1) throw std::invalid_argument("PhysicalSkyPass: slices per frame " + std::to_string(slicesPerFrame) + " must be at least 1");
+}
+
+PhysicalSkyPass::~PhysicalSkyPass() {
+  releaseSlices();
+  releaseSet(current_);
+  if (pending_) releaseSet(pending_->set);
+}
+
+PhysicalSkyPass::TableSet PhysicalSkyPass::createSet(std::shared_ptr<const atmosphere::AtmosphereModel> model,
+                                                     const atmosphere::Rec709Packer& packer) {
+  TableSet set;
+  set.model = std::move(model);
+  set.small = packer.packSmallTables();
+  set.transmittance = upload2D(set.small.transmittance_xyz);
+  set.irradiance = upload2D(set.small.irradiance_xyz);
+  const auto& s = set.model->tables(0).scattering;
+  set.scattering = createTexture(GL_TEXTURE_3D);
+  glTextureStorage3D(set.scattering, 1, GL_RGBA16F, s.width, s.height, s.depth);
+  set.singleMie = createTexture(GL_TEXTURE_3D);
+  glTextureStorage3D(set.singleMie, 1, GL_RG16F, s.width, s.height, s.depth);
+  const std::size_t texels3 = s.texels.size();
+  set.bytes = 16 * (set.small.transmittance_xyz.texels.size() + set.small.irradiance_xyz.texels.size()) + 8 * texels3 + 4 * texels3;
+  return set;
+}
+
+void PhysicalSkyPass::releaseSet(TableSet& set) {
+  const GLuint ids[] = {set.transmittance, set.irradiance, set.scattering, set.singleMie};
+  if (set.model) glDeleteTextures(4, ids);
+  set = TableSet{};
+}
+
+std::size_t PhysicalSkyPass::uploadSlices(const TableSet& set, const atmosphere::Rec709Packer& packer, int first,
+                                          int count) {
+  const auto& s = set.model->tables(0).scattering;
+  std::vector<std::uint16_t> scattering, mie;
+  std::size_t bytes = 0;
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  for (int z = first; z < first + count && z < s.depth; ++z) {
+    packer.packSlice(z, scattering, mie);
+    glTextureSubImage3D(set.scattering, 0, 0, 0, z, s.width, s.height, 1, GL_RGBA, GL_HALF_FLOAT, scattering.data());
+    glTextureSubImage3D(set.singleMie, 0, 0, 0, z, s.width, s.height, 1, GL_RG, GL_HALF_FLOAT, mie.data());
+    bytes += 2 * (scattering.size() + mie.size());
+  }
+  return bytes;
+}
+
+void PhysicalSkyPass::makeCurrent(TableSet set) {
+  releaseSet(current_);
+  current_ = std::move(set);
+  for (const Program* program : {&inside_, &space_}) {
+    const GLuint p = program->program.id();
+    setAtmosphereUniforms(p, "atm", current_.model->parameters(0));
+    glProgramUniform3fv(p, glGetUniformLocation(p, "solarIrradianceXyz"), 1, &f3(current_.small.solar_irradiance_xyz)[0]);
+    glProgramUniform3fv(p, glGetUniformLocation(p, "limbDarkeningXyz"), 1, &f3(current_.small.limb_darkening_xyz)[0]);
+    glProgramUniform1f(p, glGetUniformLocation(p, "groundAlbedo"), static_cast<float>(current_.small.ground_albedo));
+  }
+}
+
+void PhysicalSkyPass::releaseSlices() {
+  for (Slice* s : {&sunSlice_, &moonSlice_}) {
+    if (s->framebuffer == 0) continue;
+    glDeleteFramebuffers(1, &s->framebuffer);
+    const GLuint ids[] = {s->scattering, s->singleMie};
+    glDeleteTextures(2, ids);
+    *s = Slice{};
+  }
+  sliceWidth_ = sliceHeight_ = 0;
+}
+
+void PhysicalSkyPass::ensureSlices() {
+  const auto& t = current_.model->tables(0).scattering;
+  const int width = static_cast<int>(current_.model->parameters(0).scattering_nu_size);
+  const int height = t.height;
+  if (width == sliceWidth_ && height == sliceHeight_) return;
+  releaseSlices();
+  for (Slice* s : {&sunSlice_, &moonSlice_}) {
+    s->scattering = createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(s->scattering, 1, GL_RGBA32F, width, height);
+    s->singleMie = createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(s->singleMie, 1, GL_RGBA32F, width, height);
+    glCreateFramebuffers(1, &s->framebuffer);
+    glNamedFramebufferTexture(s->framebuffer, GL_COLOR_ATTACHMENT0, s->scattering, 0);
+    glNamedFramebufferTexture(s->framebuffer, GL_COLOR_ATTACHMENT1, s->singleMie, 0);
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(s->framebuffer, 2, buffers);
+  }
+  sliceWidth_ = width;
+  sliceHeight_ = height;
+}
+
+void PhysicalSkyPass::drawSlice(const Slice& slice, double uMuS, double uR) {
+  glProgramUniform3f(sliceProgram_.id(), sliceCoordsLocation_, static_cast<float>(uMuS), static_cast<float>(uR),
+                     static_cast<float>(sliceWidth_));
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, slice.framebuffer);
+  glViewport(0, 0, sliceWidth_, sliceHeight_);
+  sliceProgram_.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void PhysicalSkyPass::use(std::shared_ptr<const atmosphere::AtmosphereModel> model) {
+  if (!model) throw std::invalid_argument("PhysicalSkyPass: no atmosphere model");
+  if (model == current_.model) {
+    if (pending_) releaseSet(pending_->set);
+    pending_.reset();  // back to the model on screen: nothing to swap
+    return;
+  }
+  if (pending_ && pending_->set.model == model) return;
+  const atmosphere::Rec709Packer packer(*model);
+  if (!current_.model) {  // nothing to draw yet: the whole set now
+    TableSet set = createSet(model, packer);
+    uploadSlices(set, packer, 0, packer.slices());
+    makeCurrent(std::move(set));
+    return;
+  }
+  if (pending_) releaseSet(pending_->set);  // the latest model wins
+  pending_.reset(new Pending{TableSet{}, atmosphere::Rec709Packer(*model), 0});
+  pending_->set.model = model;  // created by the first step, so use() itself stays cheap
+}
+
+int PhysicalSkyPass::framesUntilSwap() const {
+  if (!pending_) return 0;
+  const int left = pending_->packer.slices() - pending_->nextSlice;
+  return std::max(1, (left + slicesPerFrame_ - 1) / slicesPerFrame_);
+}
+
+void PhysicalSkyPass::stepUpload() {
+  lastUploadBytes_ = 0;
+  lastUploadSeconds_ = 0.0;
+  if (!pending_) return;
+  const auto start = std::chrono::steady_clock::now();
+  Pending& p = *pending_;
+  if (p.set.scattering == 0) {
+    p.set = createSet(p.set.model, p.packer);
+    lastUploadBytes_ += p.set.bytes - 12 * p.set.model->tables(0).scattering.texels.size();
+  }
+  lastUploadBytes_ += uploadSlices(p.set, p.packer, p.nextSlice, slicesPerFrame_);
+  p.nextSlice += slicesPerFrame_;
+  if (p.nextSlice >= p.packer.slices()) {
+    TableSet set = std::move(p.set);
+    pending_.reset();
+    makeCurrent(std::move(set));
+  }
+  lastUploadSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirection, const glm::dvec3& moonDirection,
+                           const glm::dvec3& moonlightScale) {
+  stepUpload();
+  if (!current_.model) throw std::logic_error("PhysicalSkyPass::draw before use()");
+  // The camera inside the atmosphere (every IG frame): what every pixel shares, in double, once.
+  const atmosphere::AtmosphereParameters& a = current_.model->parameters(0);
+  const double r = glm::length(camera);
+  const Program& program = r <= a.top_radius ? inside_ : space_;
+  const GLuint p = program.program.id();
+  const bool moon = moonlightScale != glm::dvec3(0.0);
+  glBindTextureUnit(1, current_.scattering);
+  glBindTextureUnit(2, current_.singleMie);
+  if (&program == &inside_) {
+    const glm::dvec4 sunUvwz = shader::scatteringUvwzFromRMuMuSNu(a, r, 1.0, std::clamp(glm::dot(camera, sunDirection) / r, -1.0, 1.0), 0.0, false);
+    const glm::dvec4 moonUvwz = shader::scatteringUvwzFromRMuMuSNu(a, r, 1.0, std::clamp(glm::dot(camera, moonDirection) / r, -1.0, 1.0), 0.0, false);
+    const double rho = std::sqrt(std::max(r * r - a.bottom_radius * a.bottom_radius, 0.0));
+    const double h = std::sqrt(a.top_radius * a.top_radius - a.bottom_radius * a.bottom_radius);
+    glProgramUniform4f(p, program.radii, static_cast<float>(r), static_cast<float>(rho), static_cast<float>(h),
+                       static_cast<float>(sunUvwz.w));
+    glProgramUniform3f(p, program.angles, static_cast<float>(sunUvwz.y), static_cast<float>(moonUvwz.y),
+                       static_cast<float>(std::cos(a.sun_angular_radius)));
+    // This frame's slices of the tables at r and each light's u_mu_s, into small targets; the
+    // caller's target and viewport come back after.
+    ensureSlices();
+    GLint target = 0;
+    GLint viewport[4] = {0, 0, 0, 0};
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    drawSlice(sunSlice_, sunUvwz.y, sunUvwz.w);
+    if (moon) drawSlice(moonSlice_, moonUvwz.y, moonUvwz.w);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    glBindTextureUnit(4, sunSlice_.scattering);
+    glBindTextureUnit(5, sunSlice_.singleMie);
+    glBindTextureUnit(6, moonSlice_.scattering);
+    glBindTextureUnit(7, moonSlice_.singleMie);
+  }
+  glProgramUniform3fv(p, program.camera, 1, &f3(camera)[0]);
+  glProgramUniform3fv(p, program.sun, 1, &f3(sunDirection)[0]);
+  glProgramUniform1i(p, program.moonOn, moon ? 1 : 0);
+  if (moon) {
+    glProgramUniform3fv(p, program.moonDirection, 1, &f3(moonDirection)[0]);
+    glProgramUniform3fv(p, program.moonScale, 1, &f3(moonlightScale)[0]);
+  }
+  glBindTextureUnit(0, current_.transmittance);
+  glBindTextureUnit(3, current_.irradiance);
+  program.program.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+}  // namespace skyig::render

@@ -1,0 +1,101 @@
+#pragma once
+// The GPU side of the physical atmosphere: a model's tables folded into linear Rec.709 at half
+// float (sky/atmosphere/rec709_tables.h; 12.9 MB at the default size) and the sky pass that
+// renders from them (shaders/passes/physical_sky.frag). A new model is uploaded a few
+// scattering slices per frame into a second texture set while the current one is drawn, then
+// swapped in: a frame never waits for a whole table set.
+#include "sky/atmosphere/model.h"
+#include "sky/atmosphere/rec709_tables.h"
+#include "render/passes/atmosphere_uniforms.h"
+#include "render/gl/gl_program.h"
+#include "sky/atmosphere/physical_camera.h"
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <string>
+
+namespace skyig::render {
+
+class PhysicalSkyPass {
+ public:
+  // Scattering slices (radii) a frame packs and uploads while a new model is pending: 2 of the
+  // default tables (256 x 128 texels each) cost a few ms of CPU (docs/atmosphere.md).
+  static constexpr int kDefaultSlicesPerFrame = 2;
+  explicit PhysicalSkyPass(int slicesPerFrame = kDefaultSlicesPerFrame);
+  ~PhysicalSkyPass();
+  PhysicalSkyPass(const PhysicalSkyPass&) = delete;
+  PhysicalSkyPass& operator=(const PhysicalSkyPass&) = delete;
+
+  // Makes `model` the one to draw. The first model is uploaded at once; a later one becomes
+  // pending and is uploaded by the next draws (a newer one replaces a pending one).
+  void use(std::shared_ptr<const atmosphere::AtmosphereModel> model);
+  // Uploads the pending model's next slices (swapping it in once complete), then draws into
+  // the bound target: camera in metres from the planet's centre, the sun's and the moon's
+  // directions, all in the local east-north-up frame; a zero moonlightScale skips the moon.
+  // The frame block must be bound.
+  void draw(const glm::dvec3& camera, const glm::dvec3& sunDirection,
+            const glm::dvec3& moonDirection = glm::dvec3(0.0, 0.0, 1.0),
+            const glm::dvec3& moonlightScale = glm::dvec3(0.0));
+
+  const atmosphere::AtmosphereModel* current() const { return current_.model.get(); }
+  const atmosphere::AtmosphereModel* pending() const { return pending_ ? pending_->set.model.get() : nullptr; }
+  // How many draw() calls from now the pending model is first drawn (0: none pending).
+  int framesUntilSwap() const;
+  // What the last draw() spent on the pending model: bytes sent and wall seconds (packing the
+  // slices on the CPU and the GL calls, not waiting for the GPU).
+  std::size_t lastUploadBytes() const { return lastUploadBytes_; }
+  double lastUploadSeconds() const { return lastUploadSeconds_; }
+  // GPU memory of one table set (the current one).
+  std::size_t tableBytes() const { return current_.bytes; }
+
+ private:
+  struct TableSet {
+    std::shared_ptr<const atmosphere::AtmosphereModel> model;
+    GLuint transmittance = 0, irradiance = 0, scattering = 0, singleMie = 0;
+    atmosphere::PackedRec709Tables small;  // the 2D tables and the sun (no scattering texels)
+    std::size_t bytes = 0;
+  };
+  struct Pending {
+    TableSet set;
+    atmosphere::Rec709Packer packer;
+    int nextSlice = 0;
+  };
+  static TableSet createSet(std::shared_ptr<const atmosphere::AtmosphereModel> model,
+                            const atmosphere::Rec709Packer& packer);
+  static void releaseSet(TableSet& set);
+  static std::size_t uploadSlices(const TableSet& set, const atmosphere::Rec709Packer& packer, int first, int count);
+  void makeCurrent(TableSet set);
+  void stepUpload();
+
+  // One of the two programs (camera inside the atmosphere / in space) and its per-frame
+  // uniforms, looked up once: draw() runs every frame.
+  struct Program {
+    explicit Program(const char* fragment);
+    GlProgram program;
+    GLint camera, sun, moonOn, moonDirection, moonScale, radii, angles;
+  };
+
+  // This frame's 2D slice of the scattering tables for one light (physical_sky_slice.frag).
+  struct Slice {
+    GLuint scattering = 0, singleMie = 0, framebuffer = 0;
+  };
+  void ensureSlices();
+  void releaseSlices();
+  void drawSlice(const Slice& slice, double uMuS, double uR);
+
+  int slicesPerFrame_;
+  Program inside_;
+  Program space_;
+  GlProgram sliceProgram_;
+  GLint sliceCoordsLocation_ = -1;
+  Slice sunSlice_, moonSlice_;
+  int sliceWidth_ = 0, sliceHeight_ = 0;
+  TableSet current_;
+  std::unique_ptr<Pending> pending_;
+  std::size_t lastUploadBytes_ = 0;
+  double lastUploadSeconds_ = 0.0;
+};
+
+}  // namespace skyig::render

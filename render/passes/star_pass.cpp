@@ -1,0 +1,58 @@
+#include "render/passes/star_pass.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <vector>
+
+namespace skyig::render {
+
+StarPass::StarPass() : program_("passes/star.vert", "passes/star.frag") {
+  worldToNdcLocation_ = glGetUniformLocation(program_.id(), "uWorldToNdc");
+  glCreateVertexArrays(1, &vao_);
+  glCreateBuffers(1, &buffer_);
+  glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, 6 * sizeof(float));
+  glVertexArrayBindingDivisor(vao_, 0, 1);  // one source per instance of the quad
+  for (GLuint a : {0u, 1u}) {
+    glEnableVertexArrayAttrib(vao_, a);
+    glVertexArrayAttribFormat(vao_, a, 3, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
+    glVertexArrayAttribBinding(vao_, a, 0);
+  }
+}
+
+StarPass::~StarPass() {
+  glDeleteBuffers(1, &buffer_);
+  glDeleteVertexArrays(1, &vao_);
+}
+
+void StarPass::upload(const skyig::sky::night::StarField& field) {
+  std::vector<float> data;
+  data.reserve((field.stars.size() + field.planets.size()) * 6);
+  for (const auto* list : {&field.stars, &field.planets})
+    for (const skyig::sky::night::PointSource& p : *list)
+      for (double v : {p.direction.x, p.direction.y, p.direction.z, p.rec709Lux.r, p.rec709Lux.g, p.rec709Lux.b})
+        data.push_back(static_cast<float>(v));
+  // A new store per state: states change at most at the host's rate, and the size varies.
+  glNamedBufferData(buffer_, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
+  count_ = static_cast<GLsizei>(data.size() / 6);
+}
+
+void StarPass::draw(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld) {
+  if (!field) return;
+  if (field != uploaded_) {
+    upload(*field);
+    uploaded_ = field;
+  }
+  if (count_ == 0) return;
+  program_.use();
+  const glm::mat3 worldToNdc(glm::inverse(ndcToWorld));
+  glUniformMatrix3fv(worldToNdcLocation_, 1, GL_FALSE, glm::value_ptr(worldToNdc));
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  glBlendFunc(GL_ONE, GL_ONE);
+  glBindVertexArray(vao_);
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count_);
+  glDisable(GL_BLEND);
+}
+
+}  // namespace skyig::render

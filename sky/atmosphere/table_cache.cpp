@@ -1,0 +1,234 @@
+#include "sky/atmosphere/table_cache.h"
+
+#include <array>
+#include <bit>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <system_error>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include "sky/atmosphere/parameter_hash.h"
+
+namespace skyig::atmosphere {
+
+static_assert(std::endian::native == std::endian::little,
+              "the table cache is written in host order and documented little-endian");
+
+namespace {
+
+constexpr char kMagic[8] = {'S', 'K', 'Y', 'I', 'G', 'A', 'T', 'M'};
+constexpr std::uint32_t kFloat32 = 1;
+
+std::array<std::int32_t, 8> sizeArray(const TableSizes& s) {
+  return {s.transmittance_mu, s.transmittance_r, s.irradiance_mu_s, s.irradiance_r,
+          s.scattering_r,     s.scattering_mu,   s.scattering_mu_s, s.scattering_nu};
+}
+
+std::size_t groupTexels(const TableSizes& s) {
+  return static_cast<std::size_t>(s.transmittance_mu) * static_cast<std::size_t>(s.transmittance_r) +
+         static_cast<std::size_t>(s.irradiance_mu_s) * static_cast<std::size_t>(s.irradiance_r) +
+         2 * s.scatteringTexels();
+}
+
+std::size_t groupCount(const ModelConfig& c) { return (c.wavelengths_nm.size() + 3) / 4; }
+
+template <typename T>
+void put(std::vector<unsigned char>& out, const T& v) {
+  const auto* p = reinterpret_cast<const unsigned char*>(&v);
+  out.insert(out.end(), p, p + sizeof v);
+}
+
+template <typename T>
+T get(const std::vector<unsigned char>& in, std::size_t offset) {
+  T v;
+  std::memcpy(&v, in.data() + offset, sizeof v);
+  return v;
+}
+
+template <typename Fn>
+void forEachTable(std::vector<GroupTables>& tables, Fn fn) {
+  for (auto& g : tables) {
+    fn(g.transmittance.texels);
+    fn(g.irradiance.texels);
+    fn(g.scattering.texels);
+    fn(g.single_mie.texels);
+  }
+}
+
+}  // namespace
+
+std::filesystem::path cacheFilePath(const std::filesystem::path& directory,
+                                    const ModelConfig& config) {
+  return directory / ("atmosphere-" + hexHash(parameterHash(config)) + ".skyatm");
+}
+
+void roundTablesToFloat(std::vector<GroupTables>& tables) {
+  forEachTable(tables, [](std::vector<glm::dvec4>& texels) {
+    for (auto& t : texels) t = glm::dvec4(glm::vec4(t));
+  });
+}
+
+void writeTableCache(const std::filesystem::path& path, const ModelConfig& config,
+                     const std::vector<GroupTables>& tables) {
+  std::vector<unsigned char> payload;
+  payload.reserve(groupTexels(config.sizes) * tables.size() * 16);
+  auto tablesCopy = tables;  // forEachTable wants mutable access; the copy is cheap enough
+  forEachTable(tablesCopy, [&](std::vector<glm::dvec4>& texels) {
+    for (const auto& t : texels) {
+      for (int c = 0; c < 4; ++c) put(payload, static_cast<float>(t[c]));
+    }
+  });
+  Fnv1a64 checksum;
+  checksum.bytes(payload.data(), payload.size());
+
+  std::vector<unsigned char> header(kMagic, kMagic + 8);
+  header.reserve(kCacheHeaderBytes);
+  put(header, kCacheFormatVersion);
+  put(header, kPhysicsRevision);
+  put(header, parameterHash(config));
+  put(header, static_cast<std::uint32_t>(tables.size()));
+  for (std::int32_t s : sizeArray(config.sizes)) put(header, s);
+  put(header, kFloat32);
+  put(header, static_cast<std::uint64_t>(payload.size()));
+  put(header, checksum.value());
+  if (header.size() != kCacheHeaderBytes) throw std::logic_error("table cache header size");
+
+  std::error_code ec;
+  std::filesystem::create_directories(path.parent_path(), ec);
+  // Unique temporary name per thread and process, then an atomic rename.
+  const auto tmp = path.string() + ".tmp" + std::to_string(::getpid()) + "-" +
+                   std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()));
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    if (!f) throw std::runtime_error("atmosphere cache: cannot write " + tmp);
+    f.write(reinterpret_cast<const char*>(header.data()), static_cast<std::streamsize>(header.size()));
+    f.write(reinterpret_cast<const char*>(payload.data()), static_cast<std::streamsize>(payload.size()));
+    if (!f) throw std::runtime_error("atmosphere cache: write failed for " + tmp);
+  }
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw std::runtime_error("atmosphere cache: cannot rename into " + path.string());
+  }
+}
+
+std::optional<std::vector<GroupTables>> readTableCache(const std::filesystem::path& path,
+                                                       const ModelConfig& config,
+                                                       std::string* reason) {
+  auto fail = [&](const std::string& why) -> std::optional<std::vector<GroupTables>> {
+    if (reason) *reason = path.string() + ": " + why;
+    return std::nullopt;
+  };
+  std::ifstream f(path, std::ios::binary);
+  if (!f) return fail("no such file");
+  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  if (bytes.size() < kCacheHeaderBytes) return fail("shorter than the header");
+  if (std::memcmp(bytes.data(), kMagic, 8) != 0) return fail("not a skyig atmosphere cache");
+  if (get<std::uint32_t>(bytes, 8) != kCacheFormatVersion) return fail("other format version");
+  if (get<std::uint32_t>(bytes, 12) != kPhysicsRevision) return fail("other physics revision");
+  if (get<std::uint64_t>(bytes, 16) != parameterHash(config)) return fail("other parameters");
+  const std::size_t groups = groupCount(config);
+  if (get<std::uint32_t>(bytes, 24) != groups) return fail("other wavelength group count");
+  const auto sizes = sizeArray(config.sizes);
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    if (get<std::int32_t>(bytes, 28 + 4 * i) != sizes[i]) return fail("other table sizes");
+  }
+  if (get<std::uint32_t>(bytes, 60) != kFloat32) return fail("unknown scalar type");
+  const std::size_t expected = groupTexels(config.sizes) * groups * 16;
+  const auto payload_size = get<std::uint64_t>(bytes, 64);
+  if (payload_size != expected || bytes.size() != kCacheHeaderBytes + expected) {
+    return fail("payload size " + std::to_string(bytes.size() - kCacheHeaderBytes) +
+                " bytes, expected " + std::to_string(expected));
+  }
+  Fnv1a64 checksum;
+  checksum.bytes(bytes.data() + kCacheHeaderBytes, expected);
+  if (checksum.value() != get<std::uint64_t>(bytes, 72)) return fail("checksum mismatch (corrupt)");
+
+  const TableSizes& s = config.sizes;
+  std::vector<GroupTables> tables(groups);
+  for (auto& g : tables) {
+    g.transmittance = shader::cpu_texture::sampler2D(s.transmittance_mu, s.transmittance_r);
+    g.irradiance = shader::cpu_texture::sampler2D(s.irradiance_mu_s, s.irradiance_r);
+    g.scattering = shader::cpu_texture::sampler3D(s.scattering_nu * s.scattering_mu_s,
+                                                  s.scattering_mu, s.scattering_r);
+    g.single_mie = g.scattering;
+  }
+  std::size_t offset = kCacheHeaderBytes;
+  bool finite = true;
+  forEachTable(tables, [&](std::vector<glm::dvec4>& texels) {
+    for (auto& t : texels) {
+      for (int c = 0; c < 4; ++c) {
+        const float v = get<float>(bytes, offset);
+        offset += 4;
+        finite = finite && std::isfinite(v) && v >= 0.0f;
+        t[c] = static_cast<double>(v);
+      }
+    }
+  });
+  if (!finite) return fail("negative, NaN or infinite values");
+  return tables;
+}
+
+namespace {
+
+// An exclusive advisory lock on `path`.lock for the scope: two processes needing the same
+// tables (ctest -j, two skyig instances on a node) compute them once, the second one loads.
+class FileLock {
+ public:
+  explicit FileLock(const std::filesystem::path& path) {
+    std::error_code ec;
+    std::filesystem::create_directories(path.parent_path(), ec);
+    fd_ = ::open((path.string() + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ >= 0 && ::flock(fd_, LOCK_EX) != 0) {
+      ::close(fd_);
+      fd_ = -1;  // no lock: still correct (atomic rename), just possibly computed twice
+    }
+  }
+  ~FileLock() {
+    if (fd_ >= 0) ::close(fd_);  // closing releases the lock
+  }
+  FileLock(const FileLock&) = delete;
+  FileLock& operator=(const FileLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+}  // namespace
+
+std::vector<GroupTables> precomputeTablesOnCpu(const ModelConfig& config) {
+  const AtmosphereModel computed(config);
+  std::vector<GroupTables> tables;
+  for (std::size_t g = 0; g < computed.groupCount(); ++g) tables.push_back(computed.tables(g));
+  return tables;
+}
+
+AtmosphereModel loadOrPrecompute(const ModelConfig& config,
+                                 const std::filesystem::path& directory, CacheResult* result) {
+  return loadOrPrecompute(config, directory, result, precomputeTablesOnCpu);
+}
+
+AtmosphereModel loadOrPrecompute(const ModelConfig& config,
+                                 const std::filesystem::path& directory, CacheResult* result,
+                                 const TableBuilder& builder) {
+  const auto path = cacheFilePath(directory, config);
+  const FileLock lock(path);
+  std::string reason;
+  if (auto tables = readTableCache(path, config, &reason)) {
+    if (result) *result = {CacheOutcome::kLoaded, "", path};
+    return AtmosphereModel(config, std::move(*tables));
+  }
+  const bool existed = std::filesystem::exists(path);
+  std::vector<GroupTables> tables = builder(config);  // validates the config (or throws)
+  roundTablesToFloat(tables);
+  writeTableCache(path, config, tables);
+  if (result) *result = {existed ? CacheOutcome::kRebuilt : CacheOutcome::kComputed, reason, path};
+  return AtmosphereModel(config, std::move(tables));
+}
+
+}  // namespace skyig::atmosphere

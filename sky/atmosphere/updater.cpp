@@ -1,0 +1,85 @@
+#include "sky/atmosphere/updater.h"
+
+#include <exception>
+
+namespace skyig::atmosphere {
+
+AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial,
+                                     std::filesystem::path cache_directory)
+    : AtmosphereUpdater(initial, std::move(cache_directory), precomputeTablesOnCpu) {}
+
+AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial,
+                                     std::filesystem::path cache_directory, TableBuilder builder)
+    : cache_directory_(std::move(cache_directory)),
+      builder_(builder ? std::move(builder) : TableBuilder(precomputeTablesOnCpu)),
+      current_(std::make_shared<const AtmosphereModel>(
+          loadOrPrecompute(initial, cache_directory_, nullptr, builder_))),
+      worker_([this] { run(); }) {}
+
+AtmosphereUpdater::~AtmosphereUpdater() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  worker_.join();  // a running precomputation finishes first (it has no cancellation point)
+}
+
+void AtmosphereUpdater::request(const ModelConfig& config) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    pending_ = config;
+  }
+  wake_.notify_all();
+}
+
+std::shared_ptr<const AtmosphereModel> AtmosphereUpdater::current() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return current_;
+}
+
+std::uint64_t AtmosphereUpdater::generation() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return generation_;
+}
+
+std::string AtmosphereUpdater::lastError() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return last_error_;
+}
+
+void AtmosphereUpdater::waitIdle() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  idle_.wait(lock, [this] { return !busy_ && !pending_; });
+}
+
+void AtmosphereUpdater::run() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (true) {
+    wake_.wait(lock, [this] { return stop_ || pending_.has_value(); });
+    if (stop_) return;
+    const ModelConfig config = *pending_;
+    pending_.reset();
+    busy_ = true;
+    lock.unlock();  // compute without holding the lock: current() stays instant
+    std::shared_ptr<const AtmosphereModel> model;
+    std::string error;
+    try {
+      model = std::make_shared<const AtmosphereModel>(loadOrPrecompute(config, cache_directory_, nullptr, builder_));
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    lock.lock();
+    if (model) {
+      current_ = std::move(model);
+      ++generation_;
+      last_error_.clear();
+    } else {
+      last_error_ = error;
+    }
+    busy_ = false;
+    if (!pending_) idle_.notify_all();
+  }
+}
+
+}  // namespace skyig::atmosphere

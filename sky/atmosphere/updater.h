@@ -1,0 +1,61 @@
+#pragma once
+// Rebuilds the atmosphere on a background thread when the conditions change, and hands out the
+// latest complete model as an immutable snapshot (../shared/DESIGN.md: latest value wins, no
+// lock held while computing). A caller never waits for a precomputation: until the new model
+// is ready it keeps getting the previous one. A request that fails (bad parameters) is
+// reported and the last good model stays.
+#include <condition_variable>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "sky/atmosphere/table_cache.h"
+
+namespace skyig::atmosphere {
+
+class AtmosphereUpdater {
+ public:
+  // Loads or computes the initial model before returning (throws on a bad config). Tables
+  // missing from the cache are computed by `builder` (the CPU precompute by default; the node
+  // passes the GPU one, services/atmosphere_loader.h), on the calling thread for the initial
+  // model and on the updater's own thread afterwards.
+  AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cache_directory);
+  AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cache_directory,
+                    TableBuilder builder);
+  ~AtmosphereUpdater();
+  AtmosphereUpdater(const AtmosphereUpdater&) = delete;
+  AtmosphereUpdater& operator=(const AtmosphereUpdater&) = delete;
+
+  // Asks for a model with this config; returns at once. A newer request replaces a pending one.
+  void request(const ModelConfig& config);
+  // The latest complete model; cheap, never waits for a computation.
+  std::shared_ptr<const AtmosphereModel> current() const;
+  // Incremented each time a new model is swapped in.
+  std::uint64_t generation() const;
+  // Why the last failed request failed; empty if none failed since the last success.
+  std::string lastError() const;
+  // Blocks until no request is pending or running (tests, shutdown).
+  void waitIdle();
+
+ private:
+  void run();
+
+  const std::filesystem::path cache_directory_;
+  const TableBuilder builder_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::condition_variable idle_;
+  std::shared_ptr<const AtmosphereModel> current_;
+  std::optional<ModelConfig> pending_;
+  bool busy_ = false;
+  bool stop_ = false;
+  std::uint64_t generation_ = 0;
+  std::string last_error_;
+  std::thread worker_;
+};
+
+}  // namespace skyig::atmosphere

@@ -1,0 +1,31 @@
+#pragma once
+// A display channel of the node: an eyepoint rotation in the body frame, a frustum, a
+// resolution and the display (projector) it is shown on.
+#include "sky/camera.h"
+
+#include <string>
+
+namespace skyig::sky {
+
+// Paper 000 eq. 17: L_d = L_amb + L_dmax n^gamma, and the viewer's adaptation to the display.
+struct DisplayParams {
+  double maxLuminance = 100.0;        // L_dmax, cd/m^2
+  double ambientLuminance = 0.1;      // L_amb, cd/m^2
+  double gamma = 2.2;
+  // L_a(d), cd/m^2: the viewer adapts to what the screen shows on average, about a tenth of its
+  // peak for projected sky scenes; with L_a(d) = L_dmax / 2 the Tumblin-Rushmeier operator puts
+  // the mean daylight sky above L_dmax (docs/tone-reproduction.md).
+  double adaptationLuminance = 10.0;
+};
+
+struct ChannelConfig {
+  std::string name = "front";
+  Attitude offset;
+  Frustum frustum;
+  int width = 1280;
+  int height = 1024;
+  std::string monitor;  // `serve` in windows: fullscreen on this monitor (GLFW's name); "" windowed
+  DisplayParams display;
+};
+
+}  // namespace skyig::sky

@@ -1,0 +1,80 @@
+#pragma once
+// SkyState: everything the renderer needs for a frame, computed once per host state on the
+// worker thread (../shared/DESIGN.md) and shared, immutable, by every channel. Adaptation
+// comes from the sky model, never from a channel's pixels, so a dome shows no exposure seam.
+#include "ephemeris/ephemeris.h"
+#include "ephemeris/ephemeris_cache.h"
+#include "ephemeris/time.h"
+#include "sky/analytic/analytic_sky.h"
+#include "sky/atmosphere/extinction_profile.h"
+#include "sky/camera.h"
+#include "sky/atmosphere/model.h"
+#include "sky/night/moon_disc.h"
+#include "sky/night/moon_light.h"
+#include "sky/night/night_diffuse.h"
+#include "sky/night/star_field.h"
+#include "sky/common/sky_conditions.h"
+
+#include <memory>
+#include <optional>
+
+namespace skyig::sky {
+
+// Where the ownship is, how it is oriented, and when: the host's state, as used for a frame.
+struct ObserverState {
+  double latitudeDeg = 47.2603;   // Innsbruck airport (LOWI), a valley the sky is framed by
+  double longitudeDeg = 11.3439;
+  double heightM = 581.0;         // above the WGS84 ellipsoid
+  Attitude attitude{180.0, 5.0, 0.0};
+  ephemeris::UtcTime utc{2026, 6, 21, 17 * 3600.0};  // 19:00 CEST on midsummer's day
+};
+
+// Overrides the ephemeris (degrees), for tests and for rendering a given sun.
+struct SunOverride {
+  double azimuthDeg = 180.0;
+  double altitudeDeg = 45.0;
+};
+
+struct SkyState {
+  ObserverState observer;
+  SkyConditions conditions;
+  double sunAzimuth = 0.0;           // radians, from north through east
+  double sunAltitude = 0.0;          // radians, airless: lights the sky
+  double sunApparentAltitude = 0.0;  // radians, refracted: where the disc is seen
+  std::optional<ephemeris::SkyEphemeris> ephemeris;  // absent when the sun was overridden
+  AnalyticSkyState sky;
+  double adaptationLuminance = 1.0;  // the eye's world adaptation, cd/m^2
+  // Transmittance to space by elevation at the observer, for everything beyond the atmosphere
+  // (moon, planets, stars, Milky Way, zodiacal light): the physical model's medium, or the
+  // default medium under an analytic sky. Shared between states of nearly the same altitude.
+  std::shared_ptr<const atmosphere::ExtinctionProfile> extinction;
+  // A second light for the physical sky (the moonlit sky, Jensen et al. 2001): unit direction
+  // in the local east-north-up frame (x east, y north, z up), airless, and the moon's irradiance
+  // relative to the sun's per linear Rec.709 channel; a zero scale (the default) turns it off.
+  glm::dvec3 moonDirection{0.0, 0.0, -1.0};
+  glm::dvec3 moonlightScale{0.0};
+  // Stars and planets as seen at the observer's time and place (also when the sun is
+  // overridden: the override moves the sun only).
+  std::shared_ptr<const night::StarField> starField;
+  // The moon's disc as the moon pass and the probe use it, built once per state here rather
+  // than per channel on the render thread; null without an ephemeris (sun overridden).
+  std::shared_ptr<const night::MoonDisc> moonDisc;
+};
+
+// Throws std::invalid_argument naming the bad value (latitude out of range, NaN, a date
+// outside the ephemeris' 1900-2100). The ephemeris is the precise one (ephemeris/ephemeris.h).
+// `cache`: a per-thread ephemeris cache for frame-to-frame use (the worker's, 3 us instead of
+// 28 us an update); without it every series is evaluated.
+// The night's sources of a state, for the probe, the passes and tests: the moon's illuminance on
+// the ground (0 without a moon), the moonlit sky along a view, and the diffuse night light
+// (none without an ephemeris, when the sun was overridden).
+double moonIlluminanceLux(const SkyState& state);
+night::MoonRadiance moonlitSkyRadiance(const atmosphere::AtmosphereModel& model, const SkyState& state,
+                                       const glm::dvec3& viewEnu);
+std::optional<night::NightDiffuseSky> nightDiffuseSky(const SkyState& state);
+
+SkyState buildSkyState(const ObserverState& observer, const SkyConditions& conditions,
+                       const std::optional<SunOverride>& sun = std::nullopt,
+                       ephemeris::EphemerisCache* cache = nullptr);
+
+}  // namespace skyig::sky

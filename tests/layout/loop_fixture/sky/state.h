@@ -1,0 +1,2 @@
+#pragma once
+#include "sky/night/moon.h"

@@ -1,0 +1,150 @@
+// The analytic sky's absolute levels and the lighting derived from it, against reference
+// values (../shared/docs/sky-model-facts.md) and closed forms.
+#include "sky/analytic/analytic_sky.h"
+#include "sky/sky_state.h"
+#include "shaders/physics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+using namespace skyig;
+using namespace skyig::sky;
+
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+double lum(const glm::dvec3& rgb) { return shader::rec709Luminance(rgb); }
+}  // namespace
+
+// Sun at the zenith in a clear atmosphere: ~115 klx direct and ~8 klx from the sky on a
+// horizontal surface (Bruneton's very clean atmosphere, sky-model-facts.md). The direct beam
+// must land near it; Preetham's sky is known to be bright at high sun (Zotti et al. 2007) and
+// gives ~27 klx of diffuse light, within the range measured under clear skies with some haze
+// (10-30 klx), so only that range is asserted.
+TEST(AnalyticSky, ZenithSunIlluminanceNearClearAtmosphereReference) {
+  SkyConditions c;
+  c.turbidity = 2.0;
+  const AnalyticSkyState s = makeAnalyticSky(c, 0.0, 90.0 * kDeg);
+  EXPECT_NEAR(lum(s.lighting.directHorizontal), 115000.0, 0.15 * 115000.0);
+  EXPECT_GT(lum(s.lighting.diffuseHorizontal), 8000.0);
+  EXPECT_LT(lum(s.lighting.diffuseHorizontal), 30000.0);
+}
+
+// Preetham's zenith luminance at sun zenith 30 deg, T = 2 (by hand from appendix A.2:
+// chi = (4/9 - 2/120)(pi - pi/3) = 0.89594, Y_z = (4.0453*2 - 4.9710) tan(chi) - 0.431 + 2.4192
+// = 3.1196 * 1.24967 - 0.431 + 2.4192 = 5.8867 kcd/m^2).
+TEST(AnalyticSky, PreethamZenithLuminanceHandValue) {
+  EXPECT_NEAR(shader::preethamZenithLuminance(2.0, 30.0 * kDeg), 5886.7, 0.5);
+  SkyConditions c;
+  c.turbidity = 2.0;
+  const AnalyticSkyState s = makeAnalyticSky(c, 0.0, 60.0 * kDeg);
+  EXPECT_NEAR(lum(analyticSkyLightOnly(s.params, {0, 0, 1})), 5886.7, 0.01 * 5886.7);
+}
+
+// A Lambertian ground reflects albedo/pi of the horizontal illuminance.
+TEST(AnalyticSky, GroundIsLambertianUnderSunAndSky) {
+  SkyConditions c;
+  c.groundAlbedo = 0.3;
+  const AnalyticSkyState s = makeAnalyticSky(c, 1.0, 40.0 * kDeg);
+  const glm::dvec3 e = s.lighting.directHorizontal + s.lighting.diffuseHorizontal;
+  const glm::dvec3 ground = analyticSkyRadiance(s.params, glm::normalize(glm::dvec3(0.3, 0.2, -0.5)));
+  EXPECT_NEAR(lum(ground), 0.3 * lum(e) / std::numbers::pi, 1e-9 * lum(e));
+}
+
+// For the uniform sky (CIE type 5) the sky illuminance is pi times the luminance, exactly.
+TEST(AnalyticSky, UniformSkyIlluminanceIsPiTimesLuminance) {
+  SkyConditions c;
+  c.model = SkyModel::Cie;
+  c.cieType = 5;
+  const AnalyticSkyState s = makeAnalyticSky(c, 0.0, 30.0 * kDeg);
+  const double l = lum(analyticSkyLightOnly(s.params, {0, 0, 1}));
+  EXPECT_NEAR(lum(s.lighting.diffuseHorizontal), std::numbers::pi * l, 1e-6 * l);
+  EXPECT_NEAR(s.lighting.meanSkyLuminance, l, 1e-9 * l);
+  EXPECT_EQ(lum(s.lighting.directHorizontal), 0.0);  // overcast: no sun disc
+}
+
+// The overcast zenith follows Krochmann & Seidl: 123 + 8600 sin(h) cd/m^2, and is grey (D65).
+TEST(AnalyticSky, OvercastZenithLuminanceAndColour) {
+  SkyConditions c;
+  c.model = SkyModel::Cie;
+  c.cieType = 1;
+  const AnalyticSkyState s = makeAnalyticSky(c, 0.0, 30.0 * kDeg);
+  const glm::dvec3 z = analyticSkyLightOnly(s.params, {0, 0, 1});
+  EXPECT_NEAR(lum(z), 123.0 + 8600.0 * 0.5, 1e-6 * lum(z));
+  EXPECT_NEAR(z.r / z.b, 1.0, 1e-3);
+  EXPECT_NEAR(z.g / z.b, 1.0, 1e-3);
+}
+
+// The solar disc carries the direct illuminance: radiance times its solid angle.
+TEST(AnalyticSky, SunDiscRadianceTimesSolidAngleIsDirectNormalIlluminance) {
+  const AnalyticSkyState s = makeAnalyticSky(SkyConditions{}, 0.5, 50.0 * kDeg);
+  const double omega = 2.0 * std::numbers::pi * (1.0 - s.params.cosSunRadius);
+  EXPECT_NEAR(lum(analyticSunDiscOnly(s.params, s.params.sunDirection)) * omega * std::sin(50.0 * kDeg),
+              lum(s.lighting.directHorizontal), 1e-6 * lum(s.lighting.directHorizontal));
+  // The disc outside the atmosphere is ~1.9e9 cd/m^2; through the air it is dimmer but close.
+  EXPECT_GT(lum(s.params.sunRadiance), 1.0e9);
+  EXPECT_LT(lum(s.params.sunRadiance), 1.9e9);
+}
+
+// Twilight dims the sky by orders of magnitude, continuously from sunset; at -18 deg the
+// sun's light is down to the level of a moonless night sky (~1e-4 cd/m^2).
+TEST(AnalyticSky, TwilightFallsContinuously) {
+  double previous = 1e30;
+  for (double h = 2.0; h >= -18.0; h -= 1.0) {
+    const AnalyticSkyState s = makeAnalyticSky(SkyConditions{}, 0.0, h * kDeg);
+    const double zenith = lum(analyticSkyLightOnly(s.params, {0, 0, 1}));
+    EXPECT_LT(zenith, previous) << h;
+    EXPECT_TRUE(std::isfinite(zenith));
+    previous = zenith;
+  }
+  EXPECT_LT(previous, 2e-4);
+}
+
+TEST(SkyState, RejectsBadInput) {
+  ObserverState o;
+  o.latitudeDeg = 91.0;
+  EXPECT_THROW(buildSkyState(o, SkyConditions{}), std::invalid_argument);
+  o = ObserverState{};
+  o.longitudeDeg = std::nan("");
+  EXPECT_THROW(buildSkyState(o, SkyConditions{}), std::invalid_argument);
+  o = ObserverState{};
+  o.utc.day = 31;
+  o.utc.month = 6;
+  EXPECT_THROW(buildSkyState(o, SkyConditions{}), std::invalid_argument);
+  SkyConditions c;
+  c.turbidity = 0.5;
+  EXPECT_THROW(buildSkyState(ObserverState{}, c), std::invalid_argument);
+  try {
+    ObserverState bad;
+    bad.latitudeDeg = 123.0;
+    buildSkyState(bad, SkyConditions{});
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("latitude 123"), std::string::npos) << e.what();
+  }
+}
+
+// Every state carries the extinction towards space at the observer's altitude, shared between
+// states of nearly the same altitude and rebuilt after a climb.
+TEST(SkyState, ExtinctionProfileFollowsTheAltitude) {
+  ObserverState o;
+  const SkyState a = buildSkyState(o, SkyConditions{});
+  o.heightM += 10.0;
+  const SkyState b = buildSkyState(o, SkyConditions{});
+  ASSERT_TRUE(a.extinction && b.extinction);
+  EXPECT_EQ(a.extinction, b.extinction);
+  o.heightM = 3000.0;
+  const SkyState c = buildSkyState(o, SkyConditions{});
+  EXPECT_NE(c.extinction, a.extinction);
+  EXPECT_NEAR(c.extinction->altitudeM(), 3000.0, 1e-9);
+  EXPECT_GT(c.extinction->rec709(std::numbers::pi / 2).g, a.extinction->rec709(std::numbers::pi / 2).g);
+}
+
+// The default state is the sun of the ephemeris: midsummer evening at Innsbruck, the sun in
+// the west-north-west about 20 deg up, and the eye adapted to a bright sky.
+TEST(SkyState, DefaultStateUsesTheEphemeris) {
+  const SkyState s = buildSkyState(ObserverState{}, SkyConditions{});
+  EXPECT_NEAR(s.sunAzimuth / kDeg, 283.6, 1.0);
+  EXPECT_NEAR(s.sunAltitude / kDeg, 19.7, 1.0);
+  EXPECT_GT(s.adaptationLuminance, 1000.0);
+}

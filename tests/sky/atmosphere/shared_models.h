@@ -1,0 +1,51 @@
+#pragma once
+// Models shared by the atmosphere tests. CTest runs every test in its own process, so the
+// tables go through the disk cache in the build tree: the first test to need a model
+// precomputes it (seconds), the others load it (milliseconds). The cache is itself tested in
+// cache_test.cpp.
+#include <filesystem>
+
+#include "sky/atmosphere/table_cache.h"
+
+namespace skyig::atmosphere::testing {
+
+inline std::filesystem::path testCacheDirectory() {
+  return std::filesystem::path(SKYIG_BINARY_DIR) / "atmosphere-test-cache";
+}
+
+// The Bruneton 2017 Earth at skyig's 16 wavelengths, small tables, 4 orders.
+inline ModelConfig smallEarthConfig() {
+  ModelConfig c;
+  c.sizes = TableSizes::small();
+  c.options.scattering_orders = 4;
+  return c;
+}
+
+// One group of four wavelengths (the paper's three and 830 nm), for tests that look at
+// spectral radiance only.
+inline ModelConfig oneGroupConfig() {
+  ModelConfig c = smallEarthConfig();
+  c.wavelengths_nm = {440.0, 550.0, 680.0, 830.0};
+  return c;
+}
+
+// Tables a few texels on a side: physics too coarse to compare with references, but computed
+// in well under a second, for tests of mechanisms (cache, updater, linearity).
+inline TableSizes tinySizes() {
+  TableSizes s;
+  s.transmittance_mu = 16;
+  s.transmittance_r = 8;
+  s.irradiance_mu_s = 8;
+  s.irradiance_r = 4;
+  s.scattering_r = 4;
+  s.scattering_mu = 8;
+  s.scattering_mu_s = 4;
+  s.scattering_nu = 2;
+  return s;
+}
+
+inline AtmosphereModel cachedModel(const ModelConfig& config) {
+  return loadOrPrecompute(config, testCacheDirectory());
+}
+
+}  // namespace skyig::atmosphere::testing

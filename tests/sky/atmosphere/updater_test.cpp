@@ -1,0 +1,105 @@
+// Background rebuilds: the previous model stays available, the latest request wins, a bad
+// request leaves the last good model in place.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <filesystem>
+#include <stdexcept>
+
+#include "sky/atmosphere/conditions.h"
+#include "sky/atmosphere/updater.h"
+#include "shared_models.h"
+
+namespace skyig::atmosphere {
+namespace {
+
+ModelConfig tinyConfig(double albedo) {
+  ModelConfig c = testing::oneGroupConfig();
+  c.sizes = testing::tinySizes();
+  c.options.scattering_orders = 2;
+  c.medium.ground_albedo = albedo;
+  return c;
+}
+
+TEST(AtmosphereUpdater, LatestRequestWinsAndTheOldModelServesMeanwhile) {
+  const auto dir = testing::testCacheDirectory() / "updater";
+  AtmosphereUpdater updater(tinyConfig(0.1), dir);
+  const auto first = updater.current();
+  ASSERT_TRUE(first);
+  EXPECT_EQ(updater.generation(), 0u);
+  updater.request(tinyConfig(0.2));
+  updater.request(tinyConfig(0.3));
+  // Whatever the worker is doing, current() answers with a complete model.
+  EXPECT_TRUE(updater.current());
+  updater.waitIdle();
+  const auto latest = updater.current();
+  EXPECT_DOUBLE_EQ(latest->config().medium.ground_albedo, 0.3);
+  EXPECT_GE(updater.generation(), 1u);
+  EXPECT_LE(updater.generation(), 2u);
+  // The snapshot handed out before is untouched and still usable.
+  EXPECT_DOUBLE_EQ(first->config().medium.ground_albedo, 0.1);
+  EXPECT_EQ(updater.lastError(), "");
+}
+
+TEST(AtmosphereUpdater, BadRequestKeepsTheLastGoodModel) {
+  const auto dir = testing::testCacheDirectory() / "updater";
+  AtmosphereUpdater updater(tinyConfig(0.1), dir);
+  ModelConfig bad = tinyConfig(0.1);
+  bad.medium.mie_phase_g = 1.5;
+  updater.request(bad);
+  updater.waitIdle();
+  EXPECT_NE(updater.lastError().find("mie_phase_g = 1.5"), std::string::npos) << updater.lastError();
+  EXPECT_DOUBLE_EQ(updater.current()->config().medium.mie_phase_g, 0.8);
+  EXPECT_EQ(updater.generation(), 0u);
+}
+
+// The builder computes what the cache lacks, on the calling thread for the initial model and
+// on the worker for requests; a cached model does not call it.
+TEST(AtmosphereUpdater, UsesItsBuilderForTablesMissingFromTheCache) {
+  const auto dir = testing::testCacheDirectory() / "updater-builder";
+  std::filesystem::remove_all(dir);
+  std::atomic<int> builds{0};
+  std::atomic<double> last_albedo{-1.0};
+  const TableBuilder counting = [&](const ModelConfig& c) {
+    ++builds;
+    last_albedo = c.medium.ground_albedo;
+    return precomputeTablesOnCpu(c);
+  };
+  {
+    AtmosphereUpdater updater(tinyConfig(0.1), dir, counting);
+    EXPECT_EQ(builds.load(), 1);
+    updater.request(tinyConfig(0.25));
+    updater.waitIdle();
+    EXPECT_EQ(builds.load(), 2);
+    EXPECT_DOUBLE_EQ(last_albedo.load(), 0.25);
+    EXPECT_DOUBLE_EQ(updater.current()->config().medium.ground_albedo, 0.25);
+    updater.request(tinyConfig(0.1));  // in the cache now
+    updater.waitIdle();
+    EXPECT_EQ(builds.load(), 2);
+    EXPECT_EQ(updater.generation(), 2u);
+  }
+  // An empty builder means the CPU precompute: the same tables as the reference.
+  std::filesystem::remove_all(dir);
+  AtmosphereUpdater updater(tinyConfig(0.1), dir, TableBuilder{});
+  std::vector<GroupTables> expected = precomputeTablesOnCpu(tinyConfig(0.1));
+  roundTablesToFloat(expected);
+  EXPECT_TRUE(updater.current()->tables(0).scattering.texels == expected[0].scattering.texels);
+}
+
+// A builder that fails leaves the last good model, with its reason.
+TEST(AtmosphereUpdater, AFailingBuilderKeepsTheLastGoodModel) {
+  const auto dir = testing::testCacheDirectory() / "updater-builder-fails";
+  std::filesystem::remove_all(dir);
+  const TableBuilder fails_above_half = [](const ModelConfig& c) -> std::vector<GroupTables> {
+    if (c.medium.ground_albedo > 0.5) throw std::runtime_error("no device for albedo above 0.5");
+    return precomputeTablesOnCpu(c);
+  };
+  AtmosphereUpdater updater(tinyConfig(0.1), dir, fails_above_half);
+  updater.request(tinyConfig(0.7));
+  updater.waitIdle();
+  EXPECT_EQ(updater.lastError(), "no device for albedo above 0.5");
+  EXPECT_DOUBLE_EQ(updater.current()->config().medium.ground_albedo, 0.1);
+}
+
+}  // namespace
+}  // namespace skyig::atmosphere

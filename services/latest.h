@@ -1,7 +1,7 @@
 #pragma once
 // Latest<T>: hands whole immutable snapshots between threads, latest value wins. Readers get
 // a shared_ptr to a snapshot that stays valid while they use it; no lock is held while either
-// side computes or renders (../shared/DESIGN.md, "Data flow and threads").
+// side computes or renders (docs/design.md, "Data flow and threads").
 #include <atomic>
 #include <cstdint>
 #include <memory>

@@ -1,5 +1,5 @@
 // skyig: the sky image generator of a helicopter flight simulator. One executable, one
-// subcommand per use (../shared/DESIGN.md, "Interfaces people and tests rely on").
+// subcommand per use (docs/design.md, "Interfaces people and tests rely on").
 #include "render/gl/gl_context.h"
 #include "render/gl/gl_program.h"
 #include "render/image_io.h"

@@ -1,7 +1,7 @@
 #pragma once
 // The IG node (`skyig serve`): receiver thread -> HostSnapshot -> worker thread (ephemeris,
 // sky conditions, adaptation) -> SkyState -> render loop on the calling thread, every channel
-// of this node per frame, then Start of Frame to the host (../shared/DESIGN.md).
+// of this node per frame, then Start of Frame to the host (docs/design.md).
 #include "services/node_config.h"
 #include "services/node_stats.h"
 #include "services/udp_socket.h"

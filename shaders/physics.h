@@ -1,6 +1,6 @@
 #pragma once
 // The physics of the sky, written once in GLSL under shaders/ and compiled here as C++ in
-// double precision (../shared/DESIGN.md, "One source for the physics"). The renderer embeds
+// double precision (docs/design.md, "One source for the physics"). The renderer embeds
 // the same files; tests and the CPU side of skyig (adaptation, probe) call them from here.
 //
 // The functions land in an anonymous namespace so every translation unit gets its own

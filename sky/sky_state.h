@@ -1,6 +1,6 @@
 #pragma once
 // SkyState: everything the renderer needs for a frame, computed once per host state on the
-// worker thread (../shared/DESIGN.md) and shared, immutable, by every channel. Adaptation
+// worker thread (docs/design.md) and shared, immutable, by every channel. Adaptation
 // comes from the sky model, never from a channel's pixels, so a dome shows no exposure seam.
 #include "ephemeris/ephemeris.h"
 #include "ephemeris/ephemeris_cache.h"

@@ -1,7 +1,7 @@
 #ifndef SKYIG_COMMON_UNIFORMS_H
 #define SKYIG_COMMON_UNIFORMS_H
 // Uniform-block layouts and binding points shared by C++ and GLSL: the one place both sides
-// read them from (../shared/DESIGN.md). std140, vec4/mat4 members only, so C++ needs no
+// read them from (docs/design.md). std140, vec4/mat4 members only, so C++ needs no
 // padding rules beyond sizeof(float[4]).
 #ifdef __cplusplus
 #include <glm/glm.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 // Rebuilds the atmosphere on a background thread when the conditions change, and hands out the
-// latest complete model as an immutable snapshot (../shared/DESIGN.md: latest value wins, no
+// latest complete model as an immutable snapshot (docs/design.md: latest value wins, no
 // lock held while computing). A caller never waits for a precomputation: until the new model
 // is ready it keeps getting the previous one. A request that fails (bad parameters) is
 // reported and the last good model stays.

@@ -1,4 +1,4 @@
-// Camera conventions (../shared/DESIGN.md "Frames"): ENU world, CIGI body axes, yaw/pitch/roll.
+// Camera conventions (docs/design.md "Frames"): ENU world, CIGI body axes, yaw/pitch/roll.
 #include "sky/camera.h"
 
 #include <gtest/gtest.h>

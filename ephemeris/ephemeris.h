@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 
+#include "ephemeris/refraction.h"
 #include "ephemeris/star_catalog.h"
 #include "ephemeris/time.h"
 #include "ephemeris/time_scales.h"
@@ -23,8 +24,8 @@ struct Observer {
   double latitudeRad = 0.0;   // geodetic (WGS84), [-pi/2, pi/2]
   double longitudeRad = 0.0;  // east positive
   double heightM = 0.0;       // above the WGS84 ellipsoid
-  double pressureHpa = 1010.0;
-  double temperatureC = 10.0;
+  double pressureHpa = kStandardPressureHpa;    // refraction (ephemeris/refraction.h)
+  double temperatureC = kStandardTemperatureC;
 };
 
 struct EphemerisOptions {

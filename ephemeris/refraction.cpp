@@ -7,20 +7,24 @@
 
 namespace skyig::ephemeris {
 
-double refractionSaemundsson(double altitudeRad, double pressureHpa, double temperatureC) {
-  if (!std::isfinite(altitudeRad))
-    throw std::invalid_argument("refraction: altitude " + std::to_string(altitudeRad) + " is not finite");
+double refractionScale(double pressureHpa, double temperatureC) {
   if (!(std::isfinite(pressureHpa) && pressureHpa >= 0.0 && pressureHpa < 2000.0))
     throw std::invalid_argument("refraction: pressure " + std::to_string(pressureHpa) +
                                 " hPa is outside [0, 2000)");
   if (!(std::isfinite(temperatureC) && temperatureC > -100.0 && temperatureC < 100.0))
     throw std::invalid_argument("refraction: temperature " + std::to_string(temperatureC) +
                                 " C is outside (-100, 100)");
+  return (pressureHpa / 1010.0) * (283.0 / (273.0 + temperatureC));
+}
+
+double refractionSaemundsson(double altitudeRad, double pressureHpa, double temperatureC) {
+  if (!std::isfinite(altitudeRad))
+    throw std::invalid_argument("refraction: altitude " + std::to_string(altitudeRad) + " is not finite");
+  const double scale = refractionScale(pressureHpa, temperatureC);
   constexpr double kDeg = 180.0 / 3.14159265358979323846;
   const double h = std::max(altitudeRad, kRefractionFloorRad) * kDeg;  // degrees
   if (h >= 90.0) return 0.0;
   const double arcmin = 1.02 / std::tan((h + 10.3 / (h + 5.11)) / kDeg) + 0.0019279;
-  const double scale = (pressureHpa / 1010.0) * (283.0 / (273.0 + temperatureC));
   const double fade = altitudeRad >= kRefractionFloorRad
                           ? 1.0
                           : std::max(0.0, (altitudeRad - kRefractionZeroRad) / (kRefractionFloorRad - kRefractionZeroRad));

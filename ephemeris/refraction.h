@@ -1,10 +1,21 @@
 #pragma once
 // Atmospheric refraction from the airless (true) altitude: Saemundsson (1986, Sky & Telescope 72,
 // 70), as given by Meeus, Astronomical Algorithms 2nd ed., eq. 16.4 with the +0.0019279 arcmin
-// term that makes it vanish at the zenith, scaled by (P / 1010 hPa) (283 K / T) (Meeus p. 107).
+// term that makes it vanish at the zenith, scaled by refractionScale below.
 // Accurate to about 0.1 arcmin above 5 degrees at standard conditions.
 
 namespace skyig::ephemeris {
+
+// The air at the observer when nobody says otherwise: the ICAO standard atmosphere at sea level
+// (ICAO Doc 7488, 1993), which is also CIGI's default for the Atmosphere Control. Every default
+// of skyig (the ephemeris observer, the host state, the sky's observer) is this one.
+inline constexpr double kStandardPressureHpa = 1013.25;
+inline constexpr double kStandardTemperatureC = 15.0;
+
+// Meeus' scaling of refraction from the 1010 hPa, 10 C it is tabulated for (Astronomical
+// Algorithms, 2nd ed., p. 107): (P / 1010 hPa) (283 K / T). Throws std::invalid_argument for a
+// pressure outside [0, 2000) hPa or a temperature outside (-100, 100) C, naming it.
+double refractionScale(double pressureHpa, double temperatureC);
 
 // Lowest true altitude the formula is used at. Below it the refraction at -2 degrees fades
 // linearly to zero at -5 degrees: apparent altitude stays continuous and monotonic, and a body

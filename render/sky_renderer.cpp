@@ -27,9 +27,9 @@ AnalyticSkyBlock toBlock(const skyig::sky::AnalyticSkyParams& p) {
   return b;
 }
 
-FrameBlock toBlock(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
+FrameBlock toBlock(const skyig::sky::Attitude& attitude, const skyig::sky::ChannelConfig& channel) {
   FrameBlock b{};
-  const glm::dmat3 m = skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(state.observer.attitude, channel.offset), channel.frustum);
+  const glm::dmat3 m = skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(attitude, channel.offset), channel.frustum);
   b.ndcToWorld = glm::mat4(glm::mat3(m));
   b.viewport = glm::vec4(static_cast<float>(channel.width), static_cast<float>(channel.height),
                          1.0f / static_cast<float>(channel.width), 1.0f / static_cast<float>(channel.height));
@@ -63,9 +63,10 @@ void SkyRenderer::ensureTargets(int width, int height) {
   display_ = std::make_unique<RenderTarget>(width, height, GL_RGBA8);
 }
 
-void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
+void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                              const skyig::sky::ChannelConfig& channel) {
   ensureTargets(channel.width, channel.height);
-  frameBlock_.upload(toBlock(state, channel));
+  frameBlock_.upload(toBlock(attitude, channel));
   skyBlock_.upload(toBlock(state.sky.params));
   frameBlock_.bind();
   skyBlock_.bind();
@@ -87,12 +88,13 @@ void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sk
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void SkyRenderer::draw(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
-  drawSkyPass(state, channel);
-  if (state.ephemeris) (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, channel);
+void SkyRenderer::draw(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                       const skyig::sky::ChannelConfig& channel) {
+  drawSkyPass(state, attitude, channel);
+  if (state.ephemeris) (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, channel);
   if (state.ephemeris) (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
   if (!stars_) stars_ = std::make_unique<StarPass>();
-  stars_->draw(state.starField, skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(state.observer.attitude, channel.offset), channel.frustum));
+  stars_->draw(state.starField, skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(attitude, channel.offset), channel.frustum));
   glBindVertexArray(emptyVao_);
   toneBlock_.upload(toToneBlock(state, channel));
   toneBlock_.bind();

@@ -21,10 +21,21 @@ class SkyRenderer {
   SkyRenderer();
   ~SkyRenderer();
 
-  // Draws both passes; the targets stay bound to the renderer until the next call.
-  void draw(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel);
+  // Draws every pass of `channel` for the ownship's `attitude` at the frame's instant (the node
+  // predicts it per frame; the state was built at the worker's instant and is never patched);
+  // the targets stay bound to the renderer until the next call.
+  void draw(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+            const skyig::sky::ChannelConfig& channel);
+  // The same with the state's own observer's attitude (single renders, tests).
+  void draw(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
+    draw(state, state.observer.attitude, channel);
+  }
   // Draws only the sky pass (for benchmarks of the pass itself).
-  void drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel);
+  void drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                   const skyig::sky::ChannelConfig& channel);
+  void drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
+    drawSkyPass(state, state.observer.attitude, channel);
+  }
 
   // Copies the last tone-reproduced frame to the window's back buffer (windowed channels).
   void presentToDefaultFramebuffer(int windowWidth, int windowHeight) const;

@@ -1,5 +1,7 @@
 #include "services/atmosphere_loader.h"
 
+#include "services/host_atmosphere.h"
+
 #include "sky/atmosphere/table_cache.h"
 #include "render/passes/atmosphere_gpu_precompute.h"
 
@@ -103,6 +105,12 @@ std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const Atmosphe
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), cache.reason.c_str(),
                  cache.path.string().c_str());
   return loaded;
+}
+
+std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config) {
+  if (config.sky.model != sky::SkyModel::Physical) return nullptr;
+  return std::make_unique<atmosphere::AtmosphereUpdater>(nodeModelConfig(config, {}),
+                                                         cacheDirectory(config.atmosphere), atmosphereTableBuilder());
 }
 
 void loadAtmosphereIfNeeded(NodeConfig& config) {

@@ -5,6 +5,7 @@
 #include "sky/atmosphere/conditions.h"
 #include "sky/atmosphere/model.h"
 #include "sky/atmosphere/table_cache.h"
+#include "sky/atmosphere/updater.h"
 #include "services/node_config.h"
 
 #include <filesystem>
@@ -45,5 +46,11 @@ std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const Atmosphe
 // Sets config.sky.atmosphere when config.sky.model is physical; prints to stderr when it has
 // to precompute.
 void loadAtmosphereIfNeeded(NodeConfig& config);
+
+// The background updater the sky worker (services/sky_worker.h) follows the host's visibility
+// and humidity with, in `serve` and `replay` alike: its first model is the configuration's
+// (from the cache loadAtmosphereIfNeeded filled), later ones are built by
+// atmosphereTableBuilder. Null unless the sky is physical.
+std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config);
 
 }  // namespace skyig::services

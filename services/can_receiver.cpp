@@ -67,7 +67,7 @@ void CanReceiver::handle(const can::CanFrame& frame, Clock::time_point arrival) 
   if (r.status != can::FeedStatus::applied) return;
   const can::HostState& c = decoder_.state();
   if (c.has(can::kLatitude | can::kLongitude | can::kAltitude | can::kHeading | can::kPitch | can::kRoll)) {
-    const Ownship o{c.latitudeDeg, c.longitudeDeg, c.altitudeM, c.headingDeg, c.pitchDeg, c.rollDeg};
+    const sky::Ownship o{c.latitudeDeg, c.longitudeDeg, c.altitudeM, {c.headingDeg, c.pitchDeg, c.rollDeg}};
     // Each parameter comes in its own frame, so consecutive states differ in one field only
     // and their difference is no velocity: the view holds the latest state (CANaerospace
     // hosts send attitude at the IG's rate or faster).

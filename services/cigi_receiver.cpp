@@ -61,7 +61,7 @@ void CigiReceiver::handle(std::span<const std::uint8_t> datagram, const sockaddr
   const HostState& s = tracker_.state();
   if (s.ownshipValid && s.ownshipTime == arrival) predictor_.addSample(s.ownship, arrival, s.rates);
   // The sender travels with the state, so a frame answers the host whose state it shows.
-  out_.publish(HostSnapshot{s, predictor_, tracker_, from, Clock::now()});
+  out_.publish(HostSnapshot{s, predictor_, tracker_.clock(), from, Clock::now()});
   stats_.arrivalToVisible.add(std::chrono::duration<double, std::micro>(Clock::now() - arrival).count());
 }
 

@@ -31,15 +31,11 @@ ViewOverride& HostState::view(std::uint16_t id) {
   return views.back();
 }
 
-double CigiStateTracker::continuousTime(Clock::time_point arrival) const {
+double HostClock::continuousAt(Clock::time_point t) const {
   // With host timestamps, the host's own clock (smooth, immune to network jitter); without,
   // the arrival time.
-  if (haveTimestamp_) return timestampBaseS_ + seconds(arrival - lastTimestampArrival_);
-  return seconds(arrival.time_since_epoch());
-}
-
-std::optional<ephemeris::UtcTime> CigiStateTracker::utcAt(Clock::time_point t) const {
-  return clock_.at(continuousTime(t));
+  if (haveTimestamp) return timestampBaseS + seconds(t - timestampArrival);
+  return seconds(t.time_since_epoch());
 }
 
 int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_point arrival) {
@@ -63,11 +59,11 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
             state_.hostFrame = p.hostFrameNumber;
             if (p.timestampValid) {
               // 32-bit 10 us ticks wrap every 11.9 hours: unwrap by the difference.
-              const double step = haveTimestamp_ ? static_cast<std::uint32_t>(p.timestamp - lastTimestamp_) * 1e-5 : 0.0;
-              timestampBaseS_ = haveTimestamp_ ? timestampBaseS_ + step : p.timestamp * 1e-5;
+              const double step = clock_.haveTimestamp ? static_cast<std::uint32_t>(p.timestamp - lastTimestamp_) * 1e-5 : 0.0;
+              clock_.timestampBaseS = clock_.haveTimestamp ? clock_.timestampBaseS + step : p.timestamp * 1e-5;
               lastTimestamp_ = p.timestamp;
-              lastTimestampArrival_ = arrival;
-              haveTimestamp_ = true;
+              clock_.timestampArrival = arrival;
+              clock_.haveTimestamp = true;
             }
             changed = true;
           } else if constexpr (std::is_same_v<T, cigi::EntityControl>) {
@@ -76,7 +72,7 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
               ++rejected;
               return;
             }
-            state_.ownship = {p.latitudeDeg, p.longitudeDeg, p.altitudeM, p.yawDeg, p.pitchDeg, p.rollDeg};
+            state_.ownship = {p.latitudeDeg, p.longitudeDeg, p.altitudeM, {p.yawDeg, p.pitchDeg, p.rollDeg}};
             state_.ownshipValid = true;
             state_.ownshipTime = arrival;
             changed = true;
@@ -108,8 +104,8 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
             }
             state_.timeValid = true;
             // The continuous time is taken after any IG Control of this message was applied.
-            clock_.observe({date->year, date->month, date->day, p.hour * 3600.0 + p.minute * 60.0},
-                           continuousTime(arrival));
+            clock_.clock.observe({date->year, date->month, date->day, p.hour * 3600.0 + p.minute * 60.0},
+                                 clock_.continuousAt(arrival));
             changed = true;
           } else if constexpr (std::is_same_v<T, cigi::AtmosphereControl>) {
             if (!std::isfinite(p.visibilityRangeM) || p.visibilityRangeM < 0.0f || !std::isfinite(p.airTemperatureC) ||
@@ -168,7 +164,7 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
   if (changed) {
     ++state_.updates;
     state_.received = arrival;
-    if (const auto utc = utcAt(arrival)) {
+    if (const auto utc = clock_.utcAt(arrival)) {
       state_.utc = *utc;
       state_.utcTime = arrival;
     }

@@ -6,6 +6,22 @@
 
 namespace skyig::services {
 
+// The host's clock as the receiver last knew it: the minutes the host stated (SimClock) and the
+// map from a local instant to the host's continuous time (its IG Control timestamps, or the
+// arrival times when it sends none). A small value, so every snapshot carries its own copy and
+// the worker and render threads evaluate the host's time at any instant without the tracker.
+struct HostClock {
+  SimClock clock;
+  bool haveTimestamp = false;
+  double timestampBaseS = 0.0;              // unwrapped timestamp seconds at timestampArrival
+  Clock::time_point timestampArrival{};
+
+  // The host's continuous time at a local instant, seconds.
+  double continuousAt(Clock::time_point t) const;
+  // UTC at a local instant, refined below the minute; nullopt before the host gave a time.
+  std::optional<ephemeris::UtcTime> utcAt(Clock::time_point t) const { return clock.at(continuousAt(t)); }
+};
+
 class CigiStateTracker {
  public:
   // Applies every well-formed packet of a message received at `arrival`. Invalid values
@@ -17,20 +33,14 @@ class CigiStateTracker {
   std::uint64_t staleMessages() const { return stale_; }
 
   const HostState& state() const { return state_; }
-  // The host's UTC at a local instant, refined below the minute (SimClock).
-  std::optional<ephemeris::UtcTime> utcAt(Clock::time_point t) const;
+  const HostClock& clock() const { return clock_; }
 
  private:
-  double continuousTime(Clock::time_point arrival) const;
-
   HostState state_;
-  SimClock clock_;
+  HostClock clock_;
   std::uint64_t stale_ = 0;
   bool haveHostFrame_ = false;
-  bool haveTimestamp_ = false;
   std::uint32_t lastTimestamp_ = 0;   // IG Control timestamp, 10 us ticks
-  Clock::time_point lastTimestampArrival_{};
-  double timestampBaseS_ = 0.0;       // unwrapped timestamp seconds of lastTimestamp_
 };
 
 }  // namespace skyig::services

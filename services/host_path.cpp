@@ -32,18 +32,18 @@ HostPath HostPath::parse(const std::string& text, const std::string& sourceName)
     std::replace(line.begin(), line.end(), ',', ' ');
     std::istringstream fields(line);
     Waypoint w;
-    Ownship& p = w.pose;
+    sky::Ownship& p = w.pose;
     std::string extra;
     auto fail = [&](const std::string& why) {
       throw ConfigError(sourceName + ":" + std::to_string(lineNumber) + ": " + why);
     };
-    if (!(fields >> w.timeS >> p.latitudeDeg >> p.longitudeDeg >> p.altitudeM >> p.yawDeg >> p.pitchDeg >> p.rollDeg) ||
+    if (!(fields >> w.timeS >> p.latitudeDeg >> p.longitudeDeg >> p.heightM >> p.attitude.yawDeg >> p.attitude.pitchDeg >> p.attitude.rollDeg) ||
         (fields >> extra))
       fail("expected 7 numbers: time_s, latitude, longitude, altitude_m, yaw, pitch, roll");
-    const double all[7] = {w.timeS, p.latitudeDeg, p.longitudeDeg, p.altitudeM, p.yawDeg, p.pitchDeg, p.rollDeg};
+    const double all[7] = {w.timeS, p.latitudeDeg, p.longitudeDeg, p.heightM, p.attitude.yawDeg, p.attitude.pitchDeg, p.attitude.rollDeg};
     for (double v : all)
       if (!std::isfinite(v)) fail("a value is not a finite number");
-    if (std::abs(p.latitudeDeg) > 90.0 || std::abs(p.pitchDeg) > 90.0) fail("latitude or pitch outside [-90, 90]");
+    if (std::abs(p.latitudeDeg) > 90.0 || std::abs(p.attitude.pitchDeg) > 90.0) fail("latitude or pitch outside [-90, 90]");
     if (!path.waypoints_.empty() && w.timeS <= path.waypoints_.back().timeS) fail("times must increase");
     path.waypoints_.push_back(w);
   }
@@ -59,7 +59,7 @@ HostPath HostPath::load(const std::string& file) {
   return parse(text.str(), file);
 }
 
-Ownship HostPath::at(double t) const {
+sky::Ownship HostPath::at(double t) const {
   t = std::clamp(t, waypoints_.front().timeS, waypoints_.back().timeS);
   auto next = std::upper_bound(waypoints_.begin(), waypoints_.end(), t, [](double v, const Waypoint& w) { return v < w.timeS; });
   if (next == waypoints_.end()) return waypoints_.back().pose;
@@ -67,28 +67,28 @@ Ownship HostPath::at(double t) const {
   const Waypoint& a = *(next - 1);
   const double k = (t - a.timeS) / (b.timeS - a.timeS);
   auto lerp = [k](double x, double y) { return x + (y - x) * k; };
-  Ownship o;
+  sky::Ownship o;
   o.latitudeDeg = lerp(a.pose.latitudeDeg, b.pose.latitudeDeg);
   o.longitudeDeg = a.pose.longitudeDeg + wrap180(b.pose.longitudeDeg - a.pose.longitudeDeg) * k;
-  o.altitudeM = lerp(a.pose.altitudeM, b.pose.altitudeM);
-  o.yawDeg = std::fmod(a.pose.yawDeg + wrap180(b.pose.yawDeg - a.pose.yawDeg) * k + 360.0, 360.0);
-  o.pitchDeg = lerp(a.pose.pitchDeg, b.pose.pitchDeg);
-  o.rollDeg = wrap180(a.pose.rollDeg + wrap180(b.pose.rollDeg - a.pose.rollDeg) * k);
+  o.heightM = lerp(a.pose.heightM, b.pose.heightM);
+  o.attitude.yawDeg = std::fmod(a.pose.attitude.yawDeg + wrap180(b.pose.attitude.yawDeg - a.pose.attitude.yawDeg) * k + 360.0, 360.0);
+  o.attitude.pitchDeg = lerp(a.pose.attitude.pitchDeg, b.pose.attitude.pitchDeg);
+  o.attitude.rollDeg = wrap180(a.pose.attitude.rollDeg + wrap180(b.pose.attitude.rollDeg - a.pose.attitude.rollDeg) * k);
   return o;
 }
 
 OwnshipRates HostPath::ratesAt(double t) const {
   const double dt = 0.01;
   const double t0 = std::clamp(t, waypoints_.front().timeS, waypoints_.back().timeS - dt);
-  const Ownship a = at(t0), b = at(t0 + dt);
+  const sky::Ownship a = at(t0), b = at(t0 + dt);
   OwnshipRates r;
   r.valid = true;
   r.x = (b.latitudeDeg - a.latitudeDeg) * kDeg * kEarthRadius / dt;
   r.y = wrap180(b.longitudeDeg - a.longitudeDeg) * kDeg * kEarthRadius * std::cos(a.latitudeDeg * kDeg) / dt;
-  r.z = -(b.altitudeM - a.altitudeM) / dt;
-  r.yawRate = wrap180(b.yawDeg - a.yawDeg) / dt;
-  r.pitchRate = (b.pitchDeg - a.pitchDeg) / dt;
-  r.rollRate = wrap180(b.rollDeg - a.rollDeg) / dt;
+  r.z = -(b.heightM - a.heightM) / dt;
+  r.yawRate = wrap180(b.attitude.yawDeg - a.attitude.yawDeg) / dt;
+  r.pitchRate = (b.attitude.pitchDeg - a.attitude.pitchDeg) / dt;
+  r.rollRate = wrap180(b.attitude.rollDeg - a.attitude.rollDeg) / dt;
   return r;
 }
 

@@ -13,7 +13,7 @@ namespace skyig::services {
 
 struct Waypoint {
   double timeS = 0.0;
-  Ownship pose;
+  sky::Ownship pose;
 };
 
 class HostPath {
@@ -23,7 +23,7 @@ class HostPath {
   static HostPath parse(const std::string& text, const std::string& sourceName);
 
   double durationS() const { return waypoints_.back().timeS; }
-  Ownship at(double timeS) const;          // clamped to the path's ends
+  sky::Ownship at(double timeS) const;          // clamped to the path's ends
   OwnshipRates ratesAt(double timeS) const;  // NED m/s and deg/s of the segment at timeS
 
  private:

@@ -5,7 +5,7 @@
 namespace skyig::services {
 
 std::optional<ephemeris::UtcTime> HostSnapshot::utcAt(Clock::time_point t) const {
-  if (cigi) return cigi->utcAt(t);
+  if (cigiClock) return cigiClock->utcAt(t);
   if (!state.timeValid) return std::nullopt;
   ephemeris::UtcTime u = state.utc;
   // Within a day of the last statement; a day rollover is left to the host's next message.

@@ -1,7 +1,9 @@
 #pragma once
 // HostState: what the host last told this IG, as one immutable snapshot handed from the
 // receiver thread to the worker and render threads (latest value wins).
+#include "ephemeris/refraction.h"
 #include "ephemeris/time.h"
+#include "sky/observer.h"
 
 #include <chrono>
 #include <cstdint>
@@ -11,15 +13,6 @@
 namespace skyig::services {
 
 using Clock = std::chrono::steady_clock;
-
-struct Ownship {
-  double latitudeDeg = 47.2603;
-  double longitudeDeg = 11.3439;
-  double altitudeM = 581.0;
-  double yawDeg = 0.0;
-  double pitchDeg = 0.0;
-  double rollDeg = 0.0;
-};
 
 // CIGI Rate Control of the ownship: linear rates (m/s) and angular rates (deg/s).
 struct OwnshipRates {
@@ -41,7 +34,7 @@ struct HostState {
   std::uint64_t updates = 0;          // host messages applied so far (0: nothing yet)
   std::uint32_t hostFrame = 0;        // IG Control host frame number of the last message
   bool ownshipValid = false;
-  Ownship ownship;
+  sky::Ownship ownship;
   Clock::time_point ownshipTime{};    // arrival of the message that last set the ownship
   OwnshipRates rates;
   bool timeValid = false;             // a date and time has been received
@@ -49,8 +42,8 @@ struct HostState {
   Clock::time_point utcTime{};        // the local instant utc refers to
   double visibilityM = 50000.0;
   double humidityPct = 0.0;
-  double temperatureC = 15.0;
-  double pressureHpa = 1013.25;
+  double temperatureC = ephemeris::kStandardTemperatureC;  // CIGI Atmosphere Control: refraction
+  double pressureHpa = ephemeris::kStandardPressureHpa;
   // CIGI Celestial Sphere Control: star field intensity / 100, 0 while the field is disabled.
   double starFieldIntensity = 1.0;
   Clock::time_point received{};       // arrival of the last applied message

@@ -8,7 +8,7 @@
 #include "services/atmosphere_loader.h"
 #include "services/can_receiver.h"
 #include "services/cigi_receiver.h"
-#include "services/host_atmosphere.h"
+#include "services/sky_worker.h"
 #include "services/recorder.h"
 #include "services/state_dump.h"
 
@@ -26,96 +26,22 @@ namespace {
 
 using namespace std::chrono_literals;
 
-// The observer a frame shows: the host's state evaluated at `t`, or the configuration's
-// observer until the host has said anything.
-sky::ObserverState observerAt(const NodeConfig& config, const HostSnapshot* host, Clock::time_point t) {
-  sky::ObserverState o = config.observer;
-  if (!host) return o;
-  if (host->state.ownshipValid) {
-    const Ownship s = host->predictor.at(t);
-    o.latitudeDeg = s.latitudeDeg;
-    o.longitudeDeg = s.longitudeDeg;
-    o.heightM = s.altitudeM;
-    o.attitude = {s.yawDeg, s.pitchDeg, s.rollDeg};
-  }
-  if (const auto utc = host->utcAt(t)) o.utc = *utc;
-  return o;
-}
-
-// The configured sky with what the host sets of it (the star field intensity).
-// The sky's conditions with the host's star-field intensity (CIGI Celestial Sphere Control).
-sky::SkyConditions withHostStars(sky::SkyConditions c, const HostSnapshot* host) {
-  if (host) c.starFieldIntensity = host->state.starFieldIntensity;
-  return c;
-}
-
-// The node's channels with the host's view overrides applied.
-std::vector<sky::ChannelConfig> channelsFor(const std::vector<sky::ChannelConfig>& base, const HostSnapshot* host) {
-  std::vector<sky::ChannelConfig> channels = base;
-  if (!host) return channels;
-  for (const ViewOverride& v : host->state.views) {
-    if (v.viewId >= channels.size()) continue;
-    sky::ChannelConfig& c = channels[v.viewId];
-    if (v.yawDeg) c.offset.yawDeg = *v.yawDeg;
-    if (v.pitchDeg) c.offset.pitchDeg = *v.pitchDeg;
-    if (v.rollDeg) c.offset.rollDeg = *v.rollDeg;
-    if (v.leftDeg) c.frustum.leftDeg = *v.leftDeg;
-    if (v.rightDeg) c.frustum.rightDeg = *v.rightDeg;
-    if (v.upDeg) c.frustum.upDeg = *v.upDeg;
-    if (v.downDeg) c.frustum.downDeg = *v.downDeg;
-  }
-  return channels;
-}
-
-// The physical sky's half of the worker: the host's visibility and humidity -> (debounced,
-// validated) a request to the background updater -> its newest model in the next SkyStates
-// (the renderer uploads it across frames, render/passes/physical_sky_pass.h).
-class AtmosphereFollower {
- public:
-  AtmosphereFollower(const NodeConfig& config, atmosphere::AtmosphereUpdater* updater)
-      : config_(config),
-        updater_(updater),
-        host_(updater ? updater->current()->config().medium : atmosphere::Medium{}, config.sky.groundAlbedo) {}
-
-  // Returns true when the sky's model changed (the conditions then carry the new one).
-  bool update(const HostSnapshot* snapshot, sky::SkyConditions& conditions, NodeStats& stats, Clock::time_point now) {
-    if (!updater_) return false;
-    if (snapshot) {
-      try {
-        if (const auto c = host_.observe(snapshot->state.visibilityM, snapshot->state.humidityPct, now)) {
-          spdlog::info("physical sky: visibility {:.0f} m, humidity {:.0f} %: new tables requested",
-                       snapshot->state.visibilityM, snapshot->state.humidityPct);
-          updater_->request(nodeModelConfig(config_, *c));
-        }
-      } catch (const std::invalid_argument& e) {
-        stats.rejectedValues.fetch_add(1, std::memory_order_relaxed);
-        spdlog::warn("host atmosphere not usable, keeping the last one: {}", e.what());
-      }
-    }
-    const std::uint64_t generation = updater_->generation();
-    if (generation == generation_) return false;
-    generation_ = generation;
-    conditions.atmosphere = updater_->current();
-    return true;
-  }
-
- private:
-  const NodeConfig& config_;
-  atmosphere::AtmosphereUpdater* updater_;
-  HostAtmosphere host_;
-  std::uint64_t generation_ = 0;  // the updater's initial model is the configuration's
+// What the worker hands the render thread: an immutable SkyState and the host snapshot it was
+// built from, so a frame's attitude, views, Start of Frame and state dump all come from the
+// same host frame as its sky (never a newer snapshot's attitude over an older one's sky).
+struct BuiltSky {
+  sky::SkyState state;
+  std::shared_ptr<const HostSnapshot> host;  // null before the host said anything
+  std::uint64_t hostVersion = 0;             // Latest<HostSnapshot>::version() of `host`
 };
 
-// The worker: ephemeris, sky conditions and adaptation for the latest host state, published
-// as an immutable SkyState. It never waits for the renderer, and a state it cannot use (a
-// bad value that passed the decoder) is counted and the last good sky kept.
-void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& host,
-                Latest<sky::SkyState>& sky, atmosphere::AtmosphereUpdater* updater, const std::atomic<bool>& stop) {
-  sky::SkyConditions conditions = opt.config.sky;
-  AtmosphereFollower follower(opt.config, updater);
+// The worker thread: the latest host state -> SkyWorker -> a BuiltSky. It never waits for the
+// renderer, and a state it cannot use (a bad value that passed the decoder) is counted and the
+// last good sky kept.
+void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& host, Latest<BuiltSky>& sky,
+                SkyWorker& worker, const std::atomic<bool>& stop) {
   std::shared_ptr<const HostSnapshot> snapshot;
   std::uint64_t seen = ~0ull;
-  ephemeris::EphemerisCache ephemerisCache;  // the worker's own: frame-to-frame interpolation
   auto lastSky = Clock::now() - 1h;
   auto lastStats = Clock::now();
   while (!stop.load(std::memory_order_relaxed)) {
@@ -125,12 +51,11 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
       seen = host.version();
       snapshot = host.get();
     }
-    const bool newAtmosphere = follower.update(snapshot.get(), conditions, stats, now);
+    const bool newAtmosphere = worker.followAtmosphere(snapshot.get(), now);
     // A new host state or atmosphere, or at least every 100 ms so the sun follows the clock.
     if (newHost || newAtmosphere || now - lastSky > 100ms) {
       try {
-        sky.publish(sky::buildSkyState(observerAt(opt.config, snapshot.get(), now),
-                                          withHostStars(conditions, snapshot.get()), std::nullopt, &ephemerisCache));
+        sky.publish(BuiltSky{worker.build(snapshot.get(), now), snapshot, seen});
         stats.skyStates.fetch_add(1, std::memory_order_relaxed);
       } catch (const std::exception& e) {
         stats.rejectedValues.fetch_add(1, std::memory_order_relaxed);
@@ -174,14 +99,15 @@ class Display {
     return false;
   }
 
-  void draw(const sky::SkyState& state, const std::vector<sky::ChannelConfig>& channels) {
+  void draw(const sky::SkyState& state, const FramePose& pose) {
+    const auto& channels = pose.channels;
     for (std::size_t i = 0; i < channels.size(); ++i) {
       if (headless_) {
-        renderers_.front()->draw(state, channels[i]);
+        renderers_.front()->draw(state, pose.attitude, channels[i]);
         continue;
       }
       windows_[i]->makeCurrent();
-      renderers_[i]->draw(state, channels[i]);
+      renderers_[i]->draw(state, pose.attitude, channels[i]);
       renderers_[i]->presentToDefaultFramebuffer(channels[i].width, channels[i].height);
       windows_[i]->swapBuffers();
     }
@@ -233,7 +159,7 @@ struct OwnedFd {
 int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& externalStop) {
   std::atomic<bool> stop{false};
   Latest<HostSnapshot> host;
-  Latest<sky::SkyState> sky;
+  Latest<BuiltSky> sky;
   const auto start = Clock::now();
 
   // Everything that can fail (sockets, SocketCAN, the recording file, the first sky) is set
@@ -258,22 +184,15 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   if (canFd >= 0) can = std::make_unique<CanReceiver>(canFd, opt.config.canIdentifiers, stats, host);
   // The physical sky follows the host's visibility and humidity through a background updater
   // (from the cache the configuration's tables were just loaded from).
-  std::unique_ptr<atmosphere::AtmosphereUpdater> updater;
-  NodeConfig config = opt.config;
-  if (config.sky.model == sky::SkyModel::Physical) {
-    updater = std::make_unique<atmosphere::AtmosphereUpdater>(nodeModelConfig(config, {}),
-                                                              cacheDirectory(config.atmosphere));
-    if (!config.sky.atmosphere) config.sky.atmosphere = updater->current();
-  }
-  NodeOptions workerOptions = opt;
-  workerOptions.config = config;
-  sky.publish(sky::buildSkyState(config.observer, config.sky));  // frame 0 already has a sky
+  const std::unique_ptr<atmosphere::AtmosphereUpdater> updater = makeAtmosphereUpdater(opt.config);
+  SkyWorker worker(opt.config, updater.get(), stats);  // the worker thread's: its caches are its own
+  sky.publish(BuiltSky{worker.build(nullptr, Clock::now()), nullptr, 0});  // frame 0 already has a sky
 
   {
     ThreadGroup threads(stop);  // inside what the threads use: joined before any of it goes
     threads.start([&] { cigi.run(udp, stop); });
     if (can) threads.start([&] { can->run(stop); });
-    threads.start([&] { workerLoop(workerOptions, stats, host, sky, updater.get(), stop); });
+    threads.start([&] { workerLoop(opt, stats, host, sky, worker, stop); });
 
     const auto baseChannels = opt.config.channelsOf(opt.config.nodeName);
     if (baseChannels.empty()) throw ConfigError("node \"" + opt.config.nodeName + "\" has no channels in the configuration");
@@ -287,22 +206,24 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
     std::vector<std::uint8_t> sof;
     for (std::uint64_t frame = 0; !externalStop && (opt.frames == 0 || frame < opt.frames); ++frame) {
       if (opt.synchronous) {
-        // Frame N follows the host's frame N; a silent host does not freeze the IG.
+        // Frame N follows the host's frame N (its sky built from it); a silent host does not
+        // freeze the IG.
         const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(opt.syncTimeoutS));
-        while (host.version() == hostVersionShown && Clock::now() < deadline && !externalStop)
+        while (sky.get()->hostVersion == hostVersionShown && Clock::now() < deadline && !externalStop)
           std::this_thread::sleep_for(50us);
-        if (host.version() == hostVersionShown) stats.syncTimeouts.fetch_add(1, std::memory_order_relaxed);
+        if (sky.get()->hostVersion == hostVersionShown) stats.syncTimeouts.fetch_add(1, std::memory_order_relaxed);
       } else if (opt.headless) {
         std::this_thread::sleep_until(next);
         next = std::max(next + period, Clock::now() - period);
       }
-      hostVersionShown = host.version();
-      const auto snapshot = host.get();
+      const std::shared_ptr<const BuiltSky> built = sky.get();
+      hostVersionShown = built->hostVersion;
+      const HostSnapshot* snapshot = built->host.get();
       const auto frameStart = Clock::now();
-      sky::SkyState state = *sky.get();
-      state.observer = observerAt(opt.config, snapshot.get(), frameStart);  // attitude of this frame
-      const auto channels = channelsFor(baseChannels, snapshot.get());
-      display.draw(state, channels);
+      // The state as the worker built it, seen with the attitude and views of this frame's
+      // instant predicted from the same host snapshot.
+      const FramePose pose = worker.poseAt(snapshot, frameStart, baseChannels);
+      display.draw(built->state, pose);
       const auto frameEnd = Clock::now();
       stats.frames.fetch_add(1, std::memory_order_relaxed);
       stats.frameTime.add(std::chrono::duration<double, std::micro>(frameEnd - frameStart).count());
@@ -328,7 +249,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
         if (protocol::cigi::encodeMessage(packets, protocol::ByteOrder::big, sof).empty() && udp.sendTo(sof, *to))
           stats.startOfFrameSent.fetch_add(1, std::memory_order_relaxed);
       }
-      if (dump) dump->write(frame, snapshot.get(), state);
+      if (dump) dump->write(frame, snapshot, built->state, pose);
       if (!opt.headless && display.closeRequested()) break;
     }
   }  // the threads are joined here

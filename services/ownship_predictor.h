@@ -13,14 +13,14 @@ class OwnshipPredictor {
   explicit OwnshipPredictor(double maxAheadS = 0.25) : maxAheadS_(maxAheadS) {}
 
   // A new host sample (ignored when it is not newer than the last one).
-  void addSample(const Ownship& ownship, Clock::time_point time, const OwnshipRates& rates);
+  void addSample(const sky::Ownship& ownship, Clock::time_point time, const OwnshipRates& rates);
   bool valid() const { return count_ > 0; }
-  Ownship at(Clock::time_point t) const;
+  sky::Ownship at(Clock::time_point t) const;
 
  private:
   double maxAheadS_;
   int count_ = 0;
-  Ownship last_, previous_;
+  sky::Ownship last_, previous_;
   Clock::time_point lastTime_{}, previousTime_{};
   OwnshipRates rates_;
 };

@@ -6,7 +6,9 @@
 #include "services/can_receiver.h"
 #include "services/cigi_receiver.h"
 #include "services/recording_source.h"
+#include "services/sky_worker.h"
 #include "services/state_dump.h"
+#include "services/atmosphere_loader.h"
 
 #include <glad/gl.h>
 #include <spdlog/spdlog.h>
@@ -64,20 +66,26 @@ std::string frameStem(const std::string& dir, std::uint64_t frame, const ephemer
       .string();
 }
 
-// Decodes every event up to `untilNs` and evaluates the host state at that instant: the work
-// of one frame that does not need the GPU.
+// Decodes every event up to the frame's instant and runs the sky worker there: the work of one
+// frame that does not need the GPU, the same as the node's worker and render threads do.
 struct Frame {
   std::uint64_t number = 0;
   std::int64_t timeNs = 0;
   std::shared_ptr<const HostSnapshot> host;
   std::optional<sky::SkyState> sky;
+  FramePose pose;
   std::string error;  // a host state the sky could not use (kept: the previous sky is shown)
 };
 
 class Feeder {
  public:
-  Feeder(const ReplayOptions& o, RecordingSource& source)
-      : options_(o), source_(source), cigi_(stats_, latest_), can_(-1, o.config.canIdentifiers, stats_, latest_) {
+  Feeder(const ReplayOptions& o, RecordingSource& source, atmosphere::AtmosphereUpdater* updater)
+      : options_(o),
+        source_(source),
+        cigi_(stats_, latest_),
+        can_(-1, o.config.canIdentifiers, stats_, latest_),
+        worker_(o.config, updater, stats_),
+        channels_(o.config.channelsOf(o.config.nodeName)) {
     haveEvent_ = source_.next(event_);
     firstNs_ = haveEvent_ ? event_.timeNs : 0;
   }
@@ -99,22 +107,16 @@ class Feeder {
       haveEvent_ = source_.next(event_);
     }
     f.host = latest_.get();
-    sky::ObserverState o = options_.config.observer;
-    if (f.host) {
-      if (f.host->state.ownshipValid) {
-        const Ownship s = f.host->predictor.at(at(f.timeNs));
-        o.latitudeDeg = s.latitudeDeg;
-        o.longitudeDeg = s.longitudeDeg;
-        o.heightM = s.altitudeM;
-        o.attitude = {s.yawDeg, s.pitchDeg, s.rollDeg};
-      }
-      if (const auto utc = f.host->utcAt(at(f.timeNs))) o.utc = *utc;
-    }
+    const Clock::time_point t = at(f.timeNs);
+    // New tables for the host's visibility are waited for: the frame shows what the node shows
+    // once they are built, whatever this machine's speed.
+    worker_.followAtmosphere(f.host.get(), t, /*wait=*/true);
     try {
-      f.sky = sky::buildSkyState(o, options_.config.sky, std::nullopt, &ephemerisCache_);
+      f.sky = worker_.build(f.host.get(), t);
     } catch (const std::exception& e) {
       f.error = e.what();
     }
+    f.pose = worker_.poseAt(f.host.get(), t, channels_);
     return f;
   }
 
@@ -129,7 +131,8 @@ class Feeder {
   bool haveEvent_ = false;
   std::int64_t firstNs_ = 0;
   std::uint64_t events_ = 0;
-  ephemeris::EphemerisCache ephemerisCache_;
+  SkyWorker worker_;
+  const std::vector<sky::ChannelConfig> channels_;  // the node's: view n of the host is the n-th
 };
 
 class Progress {
@@ -182,13 +185,17 @@ ReplayResult sendRecording(const ReplayOptions& o) {
 ReplayResult replay(const ReplayOptions& o) {
   if (o.sendTo) return sendRecording(o);
   const Bound from = parseBound(o.from, "--from"), to = parseBound(o.to, "--to");
-  std::vector<sky::ChannelConfig> channels = o.config.channelsOf(o.config.nodeName);
+  // Which of the node's channels are written (the host's views apply to all of them first).
+  const std::vector<sky::ChannelConfig> nodeChannels = o.config.channelsOf(o.config.nodeName);
+  std::vector<bool> wanted(nodeChannels.size(), o.allChannels);
   if (!o.channel.empty()) {
-    std::erase_if(channels, [&](const sky::ChannelConfig& c) { return c.name != o.channel; });
-    if (channels.empty()) throw ConfigError("--channel: no channel named \"" + o.channel + "\"");
-  } else if (!o.allChannels) {
-    channels.resize(1);
+    for (std::size_t i = 0; i < nodeChannels.size(); ++i) wanted[i] = nodeChannels[i].name == o.channel;
+    if (std::find(wanted.begin(), wanted.end(), true) == wanted.end())
+      throw ConfigError("--channel: no channel named \"" + o.channel + "\"");
+  } else if (!wanted.empty()) {
+    wanted[0] = true;
   }
+  const std::size_t written = static_cast<std::size_t>(std::count(wanted.begin(), wanted.end(), true));
   if (!o.outDir.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(o.outDir, ec);
@@ -209,7 +216,8 @@ ReplayResult replay(const ReplayOptions& o) {
       lastNs = std::max(lastNs, e.timeNs);
     }
   }
-  Feeder feeder(o, source);
+  const std::unique_ptr<atmosphere::AtmosphereUpdater> updater = makeAtmosphereUpdater(o.config);
+  Feeder feeder(o, source, updater.get());
   const auto context = render::createHeadlessContext();
   render::SkyRenderer renderer;
   std::unique_ptr<StateDump> dump = o.dumpStatePath.empty() ? nullptr : std::make_unique<StateDump>(o.dumpStatePath);
@@ -217,6 +225,7 @@ ReplayResult replay(const ReplayOptions& o) {
   ReplayResult result;
   const auto wallStart = std::chrono::steady_clock::now();
   std::optional<sky::SkyState> lastSky;
+  FramePose lastPose;
 
   std::future<Frame> next = std::async(std::launch::async, [&] { return feeder.prepare(0); });
   for (std::uint64_t k = 0;; ++k) {
@@ -224,7 +233,7 @@ ReplayResult replay(const ReplayOptions& o) {
     const bool last = feeder.exhausted() && frame.timeNs >= lastNs;
     // The next frame's decoding and ephemeris run while this one renders.
     if (!last) next = std::async(std::launch::async, [&feeder, k] { return feeder.prepare(k + 1); });
-    if (frame.sky) lastSky = frame.sky;
+    if (frame.sky) lastSky = frame.sky, lastPose = frame.pose;
     else spdlog::warn("frame {}: host state not usable, keeping the last sky: {}", k, frame.error);
     ++result.frames;
     const bool afterFrom = (!from.frame || k >= *from.frame) && (!from.utc || !lastSky || !before(lastSky->observer.utc, *from.utc));
@@ -236,10 +245,12 @@ ReplayResult replay(const ReplayOptions& o) {
     if (afterFrom && lastSky) {
       if (o.realtime) std::this_thread::sleep_until(wallStart + Ns(frame.timeNs - feeder.firstNs()));
       const bool write = !o.outDir.empty() && k % static_cast<std::uint64_t>(o.every) == 0;
-      for (const auto& c : channels) {
-        renderer.draw(*lastSky, c);
+      for (std::size_t i = 0; i < lastPose.channels.size(); ++i) {
+        if (!wanted[i]) continue;
+        const sky::ChannelConfig& c = lastPose.channels[i];
+        renderer.draw(*lastSky, lastPose.attitude, c);
         if (!write) continue;
-        const std::string stem = frameStem(o.outDir, k, lastSky->observer.utc, channels.size() > 1 ? c.name : "");
+        const std::string stem = frameStem(o.outDir, k, lastSky->observer.utc, written > 1 ? c.name : "");
         if (o.writeExr) {
           render::writeExr(stem + ".exr", renderer.readHdr(),
                            {{"skyig:utc", ephemeris::formatIso8601Utc(lastSky->observer.utc)},
@@ -254,7 +265,7 @@ ReplayResult replay(const ReplayOptions& o) {
         }
       }
       glFinish();  // the frame is done when its pixels are, written or not
-      if (dump) dump->write(k, frame.host.get(), *lastSky);
+      if (dump) dump->write(k, frame.host.get(), *lastSky, lastPose);
     }
     progress.update(lastNs > firstNs ? static_cast<double>(frame.timeNs - firstNs) / static_cast<double>(lastNs - firstNs) : 1.0, k);
     if (last) break;

@@ -1,5 +1,7 @@
 #include "services/state_dump.h"
 
+#include "sky/atmosphere/parameter_hash.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cerrno>
@@ -16,10 +18,11 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 nlohmann::json hostJson(const HostState& h) {
-  nlohmann::json j = {{"visibility_m", h.visibilityM}, {"humidity_pct", h.humidityPct}};
+  nlohmann::json j = {{"visibility_m", h.visibilityM}, {"humidity_pct", h.humidityPct}, {"pressure_hpa", h.pressureHpa},
+                      {"temperature_c", h.temperatureC}, {"star_field_intensity", h.starFieldIntensity}};
   if (h.ownshipValid)
-    j.update({{"lat", h.ownship.latitudeDeg}, {"lon", h.ownship.longitudeDeg}, {"alt", h.ownship.altitudeM},
-              {"yaw", h.ownship.yawDeg}, {"pitch", h.ownship.pitchDeg}, {"roll", h.ownship.rollDeg}});
+    j.update({{"lat", h.ownship.latitudeDeg}, {"lon", h.ownship.longitudeDeg}, {"alt", h.ownship.heightM},
+              {"yaw", h.ownship.attitude.yawDeg}, {"pitch", h.ownship.attitude.pitchDeg}, {"roll", h.ownship.attitude.rollDeg}});
   if (h.timeValid) j["utc"] = ephemeris::formatIso8601Utc(h.utc);
   return j;
 }
@@ -35,16 +38,29 @@ StateDump::~StateDump() {
   if (file_) std::fclose(file_);
 }
 
-void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const sky::SkyState& used) {
+void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const sky::SkyState& used,
+                      const FramePose& pose) {
   const auto& o = used.observer;
+  nlohmann::json views = nlohmann::json::array();
+  for (const sky::ChannelConfig& c : pose.channels)
+    views.push_back({{"channel", c.name},
+                     {"yaw", c.offset.yawDeg}, {"pitch", c.offset.pitchDeg}, {"roll", c.offset.rollDeg},
+                     {"left", c.frustum.leftDeg}, {"right", c.frustum.rightDeg},
+                     {"down", c.frustum.downDeg}, {"up", c.frustum.upDeg}});
   nlohmann::json line = {
       {"ig_frame", igFrame},
       {"host_frame", host ? nlohmann::json(host->state.hostFrame) : nlohmann::json(nullptr)},
       {"host", host ? hostJson(host->state) : nlohmann::json(nullptr)},
       {"used",
-       {{"lat", o.latitudeDeg}, {"lon", o.longitudeDeg}, {"alt", o.heightM}, {"yaw", o.attitude.yawDeg},
-        {"pitch", o.attitude.pitchDeg}, {"roll", o.attitude.rollDeg}, {"utc", ephemeris::formatIso8601Utc(o.utc)},
-        {"visibility_m", host ? host->state.visibilityM : 50000.0}}},
+       {{"lat", o.latitudeDeg}, {"lon", o.longitudeDeg}, {"alt", o.heightM}, {"yaw", pose.attitude.yawDeg},
+        {"pitch", pose.attitude.pitchDeg}, {"roll", pose.attitude.rollDeg}, {"utc", ephemeris::formatIso8601Utc(o.utc)},
+        {"pressure_hpa", o.pressureHpa}, {"temperature_c", o.temperatureC},
+        {"star_field_intensity", used.conditions.starFieldIntensity},
+        {"atmosphere", used.conditions.atmosphere
+                           ? nlohmann::json(atmosphere::hexHash(atmosphere::parameterHash(used.conditions.atmosphere->config())))
+                           : nlohmann::json(nullptr)},
+        {"adaptation_cd_m2", used.adaptationLuminance},
+        {"views", views}}},
       {"sun", {{"azimuth_deg", used.sunAzimuth / kDeg}, {"altitude_deg", used.sunAltitude / kDeg},
                {"altitude_refracted_deg", used.sunApparentAltitude / kDeg}}},
   };

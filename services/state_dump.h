@@ -1,10 +1,13 @@
 #pragma once
 // `--dump-state FILE.jsonl`: one JSON line per rendered frame — the IG frame, the last host
-// frame, the host's values as last received, the values the frame used after extrapolation,
-// and the sun — for debugging, support and tests.
+// frame, the host's values as last received, what the frame used (the state's observer, air,
+// star field, atmosphere tables and adaptation; the frame's own attitude and channel views),
+// and the sun and moon — for debugging, support and tests. `serve` and `replay` write the same
+// lines, so a replay can be compared with the flight line by line.
 #include "sky/sky_state.h"
 #include "services/host_snapshot.h"
 #include "services/node_stats.h"
+#include "services/sky_worker.h"
 
 #include <cstdio>
 #include <string>
@@ -17,7 +20,7 @@ class StateDump {
   ~StateDump();
   StateDump(const StateDump&) = delete;
   StateDump& operator=(const StateDump&) = delete;
-  void write(std::uint64_t igFrame, const HostSnapshot* host, const sky::SkyState& used);
+  void write(std::uint64_t igFrame, const HostSnapshot* host, const sky::SkyState& used, const FramePose& pose);
 
  private:
   std::FILE* file_ = nullptr;

@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -45,6 +44,10 @@ void validate(const ObserverState& o, const SkyConditions& c) {
           "turbidity " + num(c.turbidity) + " is outside [1.7, 10]");
   require(std::isfinite(c.groundAlbedo) && c.groundAlbedo >= 0.0 && c.groundAlbedo <= 1.0,
           "ground albedo " + num(c.groundAlbedo) + " is outside [0, 1]");
+  require(std::isfinite(o.pressureHpa) && o.pressureHpa > 0.0 && o.pressureHpa < 2000.0,
+          "pressure " + num(o.pressureHpa) + " hPa is outside (0, 2000)");
+  require(std::isfinite(o.temperatureC) && o.temperatureC > -100.0 && o.temperatureC < 100.0,
+          "temperature " + num(o.temperatureC) + " C is outside (-100, 100)");
   require(c.cieType >= 1 && c.cieType <= 15, "CIE sky type " + std::to_string(c.cieType) + " is outside 1..15");
 }
 
@@ -60,21 +63,15 @@ double physicalMeanSkyLuminance(const atmosphere::AtmosphereModel& model, double
   return sum / (kMu * kPhi);
 }
 
-// The extinction profile costs tens of milliseconds: states reuse the last one while the
-// observer stays within max(25 m, 2%) of its altitude and the medium is unchanged (a climbing
-// helicopter rebuilds it every few seconds, on the worker, never on the render thread).
-std::shared_ptr<const atmosphere::ExtinctionProfile> sharedExtinction(const atmosphere::Medium& medium,
-                                                                      double heightM) {
-  static std::mutex mutex;
-  static std::shared_ptr<const atmosphere::ExtinctionProfile> last;
-  static atmosphere::Medium lastMedium;
-  const double top = medium.top_radius_m - medium.bottom_radius_m;
-  const double h = std::clamp(heightM, 0.0, top - 1.0);  // above the top nothing changes
-  std::lock_guard lock(mutex);
-  if (last && lastMedium == medium && std::abs(last->altitudeM() - h) <= std::max(25.0, 0.02 * h)) return last;
-  last = std::make_shared<const atmosphere::ExtinctionProfile>(medium, h);
-  lastMedium = medium;
-  return last;
+// The ephemeris' observer: the place, and the air that refracts what is seen from it.
+ephemeris::Observer ephemerisObserver(const ObserverState& o) {
+  ephemeris::Observer where;
+  where.latitudeRad = o.latitudeDeg * kDeg;
+  where.longitudeRad = o.longitudeDeg * kDeg;
+  where.heightM = std::min(o.heightM, 1e5);  // parallax beyond 100 km changes nothing seen
+  where.pressureHpa = o.pressureHpa;
+  where.temperatureC = o.temperatureC;
+  return where;
 }
 
 // Stars and planets of a state: the ephemeris of the state, or of its time and place when the
@@ -85,11 +82,7 @@ std::shared_ptr<const night::StarField> starFieldOf(const SkyState& s) {
           "star field intensity " + num(c.starFieldIntensity) + " is outside [0, 1]");
   std::optional<ephemeris::SkyEphemeris> own;
   if (!s.ephemeris) {
-    ephemeris::Observer where;
-    where.latitudeRad = s.observer.latitudeDeg * kDeg;
-    where.longitudeRad = s.observer.longitudeDeg * kDeg;
-    where.heightM = std::min(s.observer.heightM, 1e5);
-    own = ephemeris::computeEphemeris(s.observer.utc, where);
+    own = ephemeris::computeEphemeris(s.observer.utc, ephemerisObserver(s.observer));
   }
   night::StarFieldOptions options;
   options.intensity = c.starFieldIntensity;
@@ -103,6 +96,17 @@ double meanNightLuminance(const SkyState& s) {
 }
 
 }  // namespace
+
+std::shared_ptr<const atmosphere::ExtinctionProfile> SkyStateCaches::extinction(const atmosphere::Medium& medium,
+                                                                               double heightM) {
+  const double top = medium.top_radius_m - medium.bottom_radius_m;
+  const double h = std::clamp(heightM, 0.0, top - 1.0);  // above the top nothing changes
+  if (lastExtinction_ && lastMedium_ == medium && std::abs(lastExtinction_->altitudeM() - h) <= std::max(25.0, 0.02 * h))
+    return lastExtinction_;
+  lastExtinction_ = std::make_shared<const atmosphere::ExtinctionProfile>(medium, h);
+  lastMedium_ = medium;
+  return lastExtinction_;
+}
 
 double moonIlluminanceLux(const SkyState& state) {
   return state.moonDisc ? night::moonIlluminanceLux(*state.moonDisc) : 0.0;
@@ -119,7 +123,7 @@ std::optional<night::NightDiffuseSky> nightDiffuseSky(const SkyState& state) {
 }
 
 SkyState buildSkyState(const ObserverState& observer, const SkyConditions& conditions,
-                       const std::optional<SunOverride>& sun, ephemeris::EphemerisCache* cache) {
+                       const std::optional<SunOverride>& sun, SkyStateCaches* caches) {
   validate(observer, conditions);
   SkyState s;
   s.observer = observer;
@@ -132,11 +136,8 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
     s.sunAltitude = sun->altitudeDeg * kDeg;
     s.sunApparentAltitude = s.sunAltitude;
   } else {
-    ephemeris::Observer where;
-    where.latitudeRad = observer.latitudeDeg * kDeg;
-    where.longitudeRad = observer.longitudeDeg * kDeg;
-    where.heightM = std::min(observer.heightM, 1e5);  // parallax beyond 100 km changes nothing seen
-    s.ephemeris = cache ? cache->compute(observer.utc, where) : ephemeris::computeEphemeris(observer.utc, where);
+    const ephemeris::Observer where = ephemerisObserver(observer);
+    s.ephemeris = caches ? caches->ephemeris.compute(observer.utc, where) : ephemeris::computeEphemeris(observer.utc, where);
     s.sunAzimuth = s.ephemeris->sun.azimuthRad;
     s.sunAltitude = s.ephemeris->sun.altitudeRad;
     s.sunApparentAltitude = s.ephemeris->sun.altitudeRefractedRad;
@@ -147,9 +148,9 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
   }
   if (s.conditions.model == SkyModel::Physical)
     require(s.conditions.atmosphere != nullptr, "the physical sky model needs its precomputed atmosphere");
-  s.extinction = sharedExtinction(s.conditions.atmosphere ? s.conditions.atmosphere->config().medium
-                                                          : atmosphere::Medium{},
-                                  observer.heightM);
+  const atmosphere::Medium medium = s.conditions.atmosphere ? s.conditions.atmosphere->config().medium : atmosphere::Medium{};
+  SkyStateCaches own;
+  s.extinction = (caches ? *caches : own).extinction(medium, observer.heightM);
   s.starField = starFieldOf(s);
   if (s.ephemeris)
     s.moonDisc = std::make_shared<const night::MoonDisc>(night::makeMoonDisc(night::moonPlacement(*s.ephemeris), s.extinction));

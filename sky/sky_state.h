@@ -8,6 +8,7 @@
 #include "sky/analytic/analytic_sky.h"
 #include "sky/atmosphere/extinction_profile.h"
 #include "sky/camera.h"
+#include "sky/observer.h"
 #include "sky/atmosphere/model.h"
 #include "sky/night/moon_disc.h"
 #include "sky/night/moon_light.h"
@@ -19,15 +20,6 @@
 #include <optional>
 
 namespace skyig::sky {
-
-// Where the ownship is, how it is oriented, and when: the host's state, as used for a frame.
-struct ObserverState {
-  double latitudeDeg = 47.2603;   // Innsbruck airport (LOWI), a valley the sky is framed by
-  double longitudeDeg = 11.3439;
-  double heightM = 581.0;         // above the WGS84 ellipsoid
-  Attitude attitude{180.0, 5.0, 0.0};
-  ephemeris::UtcTime utc{2026, 6, 21, 17 * 3600.0};  // 19:00 CEST on midsummer's day
-};
 
 // Overrides the ephemeris (degrees), for tests and for rendering a given sun.
 struct SunOverride {
@@ -61,10 +53,6 @@ struct SkyState {
   std::shared_ptr<const night::MoonDisc> moonDisc;
 };
 
-// Throws std::invalid_argument naming the bad value (latitude out of range, NaN, a date
-// outside the ephemeris' 1900-2100). The ephemeris is the precise one (ephemeris/ephemeris.h).
-// `cache`: a per-thread ephemeris cache for frame-to-frame use (the worker's, 3 us instead of
-// 28 us an update); without it every series is evaluated.
 // The night's sources of a state, for the probe, the passes and tests: the moon's illuminance on
 // the ground (0 without a moon), the moonlit sky along a view, and the diffuse night light
 // (none without an ephemeris, when the sun was overridden).
@@ -73,8 +61,26 @@ night::MoonRadiance moonlitSkyRadiance(const atmosphere::AtmosphereModel& model,
                                        const glm::dvec3& viewEnu);
 std::optional<night::NightDiffuseSky> nightDiffuseSky(const SkyState& state);
 
+// What consecutive states of one observer share, owned by whoever builds them (the sky worker,
+// services/sky_worker.h): the ephemeris' frame-to-frame interpolation (3 us instead of 28 us an
+// update) and the extinction profile (tens of milliseconds), which states reuse while the
+// observer stays within max(25 m, 2%) of its height and the medium is unchanged. Not shared
+// between threads.
+class SkyStateCaches {
+ public:
+  ephemeris::EphemerisCache ephemeris;
+  std::shared_ptr<const atmosphere::ExtinctionProfile> extinction(const atmosphere::Medium& medium, double heightM);
+
+ private:
+  std::shared_ptr<const atmosphere::ExtinctionProfile> lastExtinction_;
+  atmosphere::Medium lastMedium_;
+};
+
+// The state of `observer` under `conditions`. Throws std::invalid_argument naming the bad value
+// (latitude out of range, NaN, a pressure or temperature refraction cannot use, a date outside
+// the ephemeris' 1900-2100). The ephemeris is the precise one (ephemeris/ephemeris.h), at the
+// observer's pressure and temperature. Without `caches` everything is computed afresh.
 SkyState buildSkyState(const ObserverState& observer, const SkyConditions& conditions,
-                       const std::optional<SunOverride>& sun = std::nullopt,
-                       ephemeris::EphemerisCache* cache = nullptr);
+                       const std::optional<SunOverride>& sun = std::nullopt, SkyStateCaches* caches = nullptr);
 
 }  // namespace skyig::sky

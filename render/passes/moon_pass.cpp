@@ -50,12 +50,13 @@ MoonPass::~MoonPass() {
   glDeleteVertexArrays(1, &emptyVao_);
 }
 
-void MoonPass::draw(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
+void MoonPass::draw(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                    const skyig::sky::ChannelConfig& channel) {
   // Well below the horizon (more than the largest dip of the horizon, 5 deg at 25 km) nothing
   // of it can be seen: skip the pass.
   const skyig::sky::night::MoonDisc* d = state.moonDisc.get();
   if (!d || d->centreSeen.z < -std::sin(5.5 * std::numbers::pi / 180.0)) return;
-  draw(*d, skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(state.observer.attitude, channel.offset), channel.frustum), channel);
+  draw(*d, skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(attitude, channel.offset), channel.frustum), channel);
 }
 
 void MoonPass::draw(const skyig::sky::night::MoonDisc& d, const glm::dmat3& ndcToWorldMatrix, const skyig::sky::ChannelConfig& channel) {
@@ -82,8 +83,8 @@ void MoonPass::draw(const skyig::sky::night::MoonDisc& d, const glm::dmat3& ndcT
   set3(p, "moonEast", d.east);
   set3(p, "sunlitScale", d.sunlitScale);
   set3(p, "earthshineScale", d.earthshineScale);
-  glProgramUniform2f(p, glGetUniformLocation(p, "refraction"), static_cast<float>(d.refractionScale),
-                     static_cast<float>(d.refractionOffsetRad));
+  const glm::vec4 refraction(d.refraction);
+  glProgramUniform4fv(p, glGetUniformLocation(p, "refraction"), 1, &refraction[0]);
   glBindTextureUnit(kAlbedoUnit, albedoTexture_);
   extinction_.bind(kExtinctionUnit);
   glBindVertexArray(emptyVao_);

@@ -26,7 +26,8 @@ class MoonPass {
 
   // Adds the state's moon (skyig::sky::SkyState::moonDisc) to the bound target; nothing without one. The frame block
   // (shaders/common/uniforms.h) of `channel` must be bound.
-  void draw(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel);
+  void draw(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+            const skyig::sky::ChannelConfig& channel);
   // The same for a given disc and the channel's eq. 22 matrix (ndcToWorld).
   void draw(const skyig::sky::night::MoonDisc& disc, const glm::dmat3& ndcToWorld, const skyig::sky::ChannelConfig& channel);
 

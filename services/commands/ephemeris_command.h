@@ -2,6 +2,8 @@
 // `skyig ephemeris`: apparent topocentric positions of the sun, moon, planets (and optionally the
 // brightest stars) for a place and a UTC instant, as JSON. Degrees at the interface; every field
 // is documented in docs/ephemeris.md.
+#include "ephemeris/refraction.h"
+
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -20,8 +22,8 @@ struct EphemerisRequest {
   double longitudeDeg = 0.0;
   double altitudeM = 0.0;
   std::string utc;  // ISO 8601, e.g. 2024-06-21T12:00:00Z
-  double pressureHpa = 1010.0;
-  double temperatureC = 10.0;
+  double pressureHpa = ephemeris::kStandardPressureHpa;
+  double temperatureC = ephemeris::kStandardTemperatureC;
   std::optional<double> ttMinusUtcS;
   std::optional<double> dut1S;
   std::size_t stars = 0;        // the N brightest stars

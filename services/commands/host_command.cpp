@@ -54,15 +54,15 @@ std::vector<std::uint8_t> message(std::uint32_t frame, double pathTime, const Ho
   ig.hostFrameNumber = frame;
   ig.timestamp = static_cast<std::uint32_t>(std::llround(simElapsed * 1e5));  // the sim clock, 10 us ticks
   ig.timestampValid = true;
-  const Ownship p = path.at(pathTime);
+  const sky::Ownship p = path.at(pathTime);
   cigi::EntityControl e;
   e.entityId = 0;
   e.latitudeDeg = p.latitudeDeg;
   e.longitudeDeg = p.longitudeDeg;
-  e.altitudeM = p.altitudeM;
-  e.yawDeg = static_cast<float>(p.yawDeg);
-  e.pitchDeg = static_cast<float>(p.pitchDeg);
-  e.rollDeg = static_cast<float>(p.rollDeg);
+  e.altitudeM = p.heightM;
+  e.yawDeg = static_cast<float>(p.attitude.yawDeg);
+  e.pitchDeg = static_cast<float>(p.attitude.pitchDeg);
+  e.rollDeg = static_cast<float>(p.attitude.rollDeg);
   const OwnshipRates r = path.ratesAt(pathTime);
   cigi::RateControl rc;
   rc.xRateMps = static_cast<float>(r.x);

@@ -55,21 +55,18 @@ vec3 moonSurfaceRadiance(IN(vec3) n, IN(vec3) towardObserver, IN(vec3) towardSun
   return albedo * (sunlitScale * lommelSeeliger(dot(n, towardSun), mu) + earthshineScale * earthshine);
 }
 
-// Refraction for an apparent altitude h (Bennett 1982; Meeus, Astronomical Algorithms, eq.
-// 16.4), radians; held at its -1 degree value below, where the formula diverges.
-Float bennettRefraction(Float h) {
-  Float hd = max(h / DEG, -1.0);
-  return max((DEG / 60.0) / tan((hd + 7.31 / (hd + 4.4)) * DEG), 0.0);
-}
-
-// The airless direction of a seen view: refraction lifts every point by scale * R(h); `offset`
-// makes the moon's centre land exactly where the ephemeris (Saemundsson) puts it. Flattens the
-// disc near the horizon as the real one is.
-vec3 unrefractView(IN(vec3) view, Float scale, Float offset) {
+// The airless direction of a seen view. Refraction lifts a point seen at apparent altitude h by
+// R(h) = r.y + r.z (h - r.x) + r.w (h - r.x)^2: the ephemeris' own refraction (Saemundsson, at
+// the observer's pressure and temperature, ephemeris/refraction.h) expanded to second order about
+// the disc's apparent centre r.x (sky/night/moon_disc.cpp), so the disc sits where the ephemeris
+// puts it and is flattened near the horizon as the real one is. Over the disc's half degree the
+// third-order term is below 0.01 arcmin.
+vec3 unrefractView(IN(vec3) view, IN(vec4) r) {
   Float horizontal = sqrt(view.x * view.x + view.y * view.y);
   if (horizontal < 1e-6) return view;
   Float h = asin(clamp(view.z, -1.0, 1.0));
-  Float airless = h - (scale * bennettRefraction(h) + offset);
+  Float dh = h - r.x;
+  Float airless = h - (r.y + r.z * dh + r.w * dh * dh);
   return vec3(view.x / horizontal * cos(airless), view.y / horizontal * cos(airless), sin(airless));
 }
 

@@ -11,7 +11,7 @@ uniform vec3 moonNorth;         // selenographic axes, ENU
 uniform vec3 moonEast;
 uniform vec3 sunlitScale;       // cd/m^2 (sky/night/moon_disc.h)
 uniform vec3 earthshineScale;
-uniform vec2 refraction;        // scale, offset (radians)
+uniform vec4 refraction;        // apparent centre altitude, R, dR/dh, d2R/dh2 / 2 (radians)
 layout(binding = 20) uniform sampler2D moonAlbedo;     // relative albedo, mean 1 on the near side
 layout(binding = 21) uniform sampler1D extinctionTable;  // ExtinctionProfile::rec709Table
 
@@ -22,7 +22,7 @@ void main() {
   vec3 seen = normalize(mat3(ndcToWorld) * vec3(ndc, 1.0));
   // The pixel's angular size, for the limb's coverage ramp.
   Float pixel = sqrt(length(dFdx(seen)) * length(dFdy(seen)));
-  vec3 view = unrefractView(seen, refraction.x, refraction.y);
+  vec3 view = unrefractView(seen, refraction);
   vec3 q = moonDiscOffset(view, moonCentre, moonSinRadius);
   Float inside = (1.0 - length(q)) * moonSinRadius;
   Float coverage = moonLimbCoverage(inside, pixel);

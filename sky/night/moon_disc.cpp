@@ -51,8 +51,7 @@ void validate(const MoonPlacement& p) {
   require(finite(p.brightLimbAngleRad), "moon bright-limb angle " + std::to_string(p.brightLimbAngleRad) + " is not finite");
   require(finite(p.sunMoonDistanceKm) && p.sunMoonDistanceKm > 1.0e8 && p.sunMoonDistanceKm < 2.0e8,
           "sun-moon distance " + std::to_string(p.sunMoonDistanceKm) + " km is outside (1e8, 2e8)");
-  require(finite(p.refractionScale) && p.refractionScale >= 0.0 && p.refractionScale < 3.0,
-          "refraction scale " + std::to_string(p.refractionScale) + " is outside [0, 3)");
+  ephemeris::refractionScale(p.pressureHpa, p.temperatureC);  // throws naming a bad pressure or temperature
   const double l = glm::length(p.eclipticPoleEnu);
   require(std::isfinite(l) && std::abs(l - 1.0) < 1e-6, "ecliptic pole is not a unit vector");
 }
@@ -110,6 +109,25 @@ double cachedAlbedoNormalisation(const MoonDisc& d, const MoonAlbedo& albedo) {
   return cache.value;
 }
 
+// Refraction as a function of the apparent altitude h, from the ephemeris' function of the
+// airless altitude a (h = a + R(a)), inverted by fixed-point iteration: |dR/da| < 0.3 wherever
+// R is defined, so eight steps leave well under a micro-arcsecond.
+double refractionAtApparent(double h, const MoonPlacement& p) {
+  double a = h;
+  for (int i = 0; i < 8; ++i) a = h - ephemeris::refractionSaemundsson(a, p.pressureHpa, p.temperatureC);
+  return h - a;
+}
+
+// The second-order expansion of refractionAtApparent about the disc's apparent centre, by
+// central differences over the disc's radius (shaders/night/moon.glsl, unrefractView). At the
+// centre itself it is the ephemeris' own lift, so the disc is drawn where the ephemeris says.
+glm::dvec4 refractionNear(const MoonPlacement& p) {
+  const double h0 = p.altitudeRefractedRad, step = 0.0045;  // ~ the moon's angular radius
+  const double r0 = p.altitudeRefractedRad - p.altitudeRad;
+  const double up = refractionAtApparent(h0 + step, p), down = refractionAtApparent(h0 - step, p);
+  return {h0, r0, (up - down) / (2.0 * step), (up - 2.0 * refractionAtApparent(h0, p) + down) / (2.0 * step * step)};
+}
+
 }  // namespace
 
 MoonPlacement moonPlacement(const ephemeris::SkyEphemeris& sky) {
@@ -124,7 +142,8 @@ MoonPlacement moonPlacement(const ephemeris::SkyEphemeris& sky) {
   // The ecliptic's north pole in J2000 (obliquity 23.4393 deg, IAU 2006), carried to the horizon.
   const double eps = 23.4392794 * std::numbers::pi / 180.0;
   p.eclipticPoleEnu = glm::normalize(fromVec3(sky.j2000ToEnu * ephemeris::Vec3{0.0, -std::sin(eps), std::cos(eps)}));
-  p.refractionScale = (sky.observer.pressureHpa / 1010.0) * (283.0 / (273.0 + sky.observer.temperatureC));
+  p.pressureHpa = sky.observer.pressureHpa;
+  p.temperatureC = sky.observer.temperatureC;
   return p;
 }
 
@@ -144,9 +163,7 @@ MoonDisc makeMoonDisc(const MoonPlacement& p, std::shared_ptr<const atmosphere::
   d.towardSun = std::cos(p.phaseAngleRad) * -d.centre + std::sin(p.phaseAngleRad) * limb;
   d.north = skyPlaneDirection(p.eclipticPoleEnu, d.centre, up);
   d.east = glm::cross(d.north, -d.centre);  // selenographic east is the observer's west limb
-  d.refractionScale = p.refractionScale;
-  const double seenLift = p.altitudeRefractedRad - p.altitudeRad;
-  d.refractionOffsetRad = seenLift - p.refractionScale * shader::bennettRefraction(p.altitudeRefractedRad);
+  d.refraction = refractionNear(p);
   d.extinction = std::move(extinction);
   d.albedo = &albedo;
 
@@ -169,7 +186,7 @@ MoonDisc makeMoonDisc(const MoonPlacement& p, std::shared_ptr<const atmosphere::
 MoonRadiance moonDiscRadiance(const MoonDisc& d, const glm::dvec3& viewEnu) {
   const double l = glm::length(viewEnu);
   if (!(l > 0.0) || !std::isfinite(l)) throw std::invalid_argument("moon view direction has length " + std::to_string(l));
-  const glm::dvec3 view = shader::unrefractView(viewEnu / l, d.refractionScale, d.refractionOffsetRad);
+  const glm::dvec3 view = shader::unrefractView(viewEnu / l, d.refraction);
   const double sinRadius = std::sin(d.angularRadiusRad);
   if (glm::dot(view, d.centre) <= 0.0) return {};
   const glm::dvec3 q = shader::moonDiscOffset(view, d.centre, sinRadius);

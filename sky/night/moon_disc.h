@@ -4,11 +4,13 @@
 // The disc's irradiance above the atmosphere is paper 000's eq. 9 (corrected, Jensen et al. 2001)
 // for the sunlit part at every phase; the earthshine adds its own, physically lit, share.
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <memory>
 #include <optional>
 
 #include "ephemeris/ephemeris.h"
+#include "ephemeris/refraction.h"
 #include "sky/atmosphere/extinction_profile.h"
 #include "sky/night/moon_albedo.h"
 
@@ -32,7 +34,8 @@ struct MoonPlacement {
   // Orients the albedo map: the moon's axis stays within 1.5 deg of the ecliptic pole (Cassini's
   // laws); libration (up to 8 deg) is neglected. Unit vector, ENU.
   glm::dvec3 eclipticPoleEnu{0.0, 0.0, 1.0};
-  double refractionScale = 1.0;       // (P / 1010 hPa) (283 K / T), as the ephemeris scales it
+  double pressureHpa = ephemeris::kStandardPressureHpa;  // the air at the observer, for refraction
+  double temperatureC = ephemeris::kStandardTemperatureC;
 };
 
 // Everything the disc needs per frame; the GL pass uploads the same numbers.
@@ -45,8 +48,9 @@ struct MoonDisc {
   glm::dvec3 east{1.0, 0.0, 0.0};        // selenographic longitude +90 deg, ENU
   glm::dvec3 sunlitScale{0.0};           // cd/m^2 per unit albedo x Lommel-Seeliger factor
   glm::dvec3 earthshineScale{0.0};       // cd/m^2 per unit albedo x 1/2
-  double refractionScale = 1.0;
-  double refractionOffsetRad = 0.0;
+  // Refraction near the disc as a function of apparent altitude h: (h0, R(h0), R'(h0), R''(h0)/2),
+  // radians, for shaders/night/moon.glsl's unrefractView.
+  glm::dvec4 refraction{0.0};
   glm::dvec3 irradianceRec709{0.0};      // the disc's irradiance above the atmosphere, lux per channel
   std::shared_ptr<const atmosphere::ExtinctionProfile> extinction;  // null: no atmosphere
   const MoonAlbedo* albedo = nullptr;

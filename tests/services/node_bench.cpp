@@ -35,7 +35,7 @@ static void BM_DatagramToVisible(benchmark::State& state) {
     state.ResumeTiming();
     receiver.handle(bytes, from, Clock::now());
     const auto seen = latest.get();  // what the render thread does at the start of a frame
-    benchmark::DoNotOptimize(seen->state.ownship.yawDeg);
+    benchmark::DoNotOptimize(seen->state.ownship.attitude.yawDeg);
   }
   state.SetItemsProcessed(state.iterations());
 }

@@ -119,13 +119,13 @@ class NodeIntegration : public ::testing::Test {
       const long k = line["host_frame"].get<long>();
       EXPECT_GE(k, lastHostFrame) << "host frames went backwards";
       lastHostFrame = k;
-      const Ownship expected = path.at(static_cast<double>(k) / 30.0);
+      const skyig::sky::Ownship expected = path.at(static_cast<double>(k) / 30.0);
       const auto& h = line["host"];
       EXPECT_NEAR(h["lat"].get<double>(), expected.latitudeDeg, 1e-9);
       EXPECT_NEAR(h["lon"].get<double>(), expected.longitudeDeg, 1e-9);
-      EXPECT_NEAR(h["alt"].get<double>(), expected.altitudeM, 1e-6);
-      EXPECT_NEAR(h["yaw"].get<double>(), expected.yawDeg, 1e-4);
-      EXPECT_NEAR(h["pitch"].get<double>(), expected.pitchDeg, 1e-5);
+      EXPECT_NEAR(h["alt"].get<double>(), expected.heightM, 1e-6);
+      EXPECT_NEAR(h["yaw"].get<double>(), expected.attitude.yawDeg, 1e-4);
+      EXPECT_NEAR(h["pitch"].get<double>(), expected.attitude.pitchDeg, 1e-5);
       const auto& u = line["used"];
       EXPECT_NEAR(u["lat"].get<double>(), h["lat"].get<double>(), 2e-5);  // < ~2 m: at most 0.25 s of flight
       EXPECT_NEAR(u["alt"].get<double>(), h["alt"].get<double>(), 3.0);

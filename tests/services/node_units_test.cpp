@@ -71,12 +71,12 @@ TEST(OwnshipPredictor, DeadReckonsWithHostRates) {
   r.valid = true;
   r.x = 50.0;        // 50 m/s north
   r.yawRate = 6.0;   // deg/s
-  p.addSample({45.0, 7.0, 1000.0, 350.0, 0.0, 0.0}, t0, r);
-  const Ownship o = p.at(t0 + std::chrono::microseconds(16667));
+  p.addSample({45.0, 7.0, 1000.0, {350.0, 0.0, 0.0}}, t0, r);
+  const skyig::sky::Ownship o = p.at(t0 + std::chrono::microseconds(16667));
   EXPECT_NEAR((o.latitudeDeg - 45.0) * 111132.0, 50.0 * 0.016667, 0.01);  // metres of latitude at 45 deg
-  EXPECT_NEAR(o.yawDeg, 350.1, 1e-3);
+  EXPECT_NEAR(o.attitude.yawDeg, 350.1, 1e-3);
   // Across north the heading wraps.
-  EXPECT_NEAR(p.at(t0 + 200ms).yawDeg, 351.2, 1e-3);
+  EXPECT_NEAR(p.at(t0 + 200ms).attitude.yawDeg, 351.2, 1e-3);
   // A silent host: prediction stops after 0.25 s.
   EXPECT_NEAR(p.at(t0 + 10s).latitudeDeg, p.at(t0 + 250ms).latitudeDeg, 1e-12);
 }
@@ -84,15 +84,15 @@ TEST(OwnshipPredictor, DeadReckonsWithHostRates) {
 TEST(OwnshipPredictor, ExtrapolatesFromTwoSamplesWithoutRates) {
   OwnshipPredictor p;
   const auto t0 = Clock::now();
-  p.addSample({45.0, 7.0, 1000.0, 359.0, 0.0, 10.0}, t0, {});
-  p.addSample({45.0, 7.0, 1003.0, 1.0, 0.0, 12.0}, t0 + 100ms, {});
-  const Ownship o = p.at(t0 + 150ms);
-  EXPECT_NEAR(o.altitudeM, 1004.5, 1e-9);
-  EXPECT_NEAR(o.yawDeg, 2.0, 1e-9);  // 359 -> 1 is +2 deg, not -358
-  EXPECT_NEAR(o.rollDeg, 13.0, 1e-9);
+  p.addSample({45.0, 7.0, 1000.0, {359.0, 0.0, 10.0}}, t0, {});
+  p.addSample({45.0, 7.0, 1003.0, {1.0, 0.0, 12.0}}, t0 + 100ms, {});
+  const skyig::sky::Ownship o = p.at(t0 + 150ms);
+  EXPECT_NEAR(o.heightM, 1004.5, 1e-9);
+  EXPECT_NEAR(o.attitude.yawDeg, 2.0, 1e-9);  // 359 -> 1 is +2 deg, not -358
+  EXPECT_NEAR(o.attitude.rollDeg, 13.0, 1e-9);
   // An older sample is ignored.
-  p.addSample({0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, t0 + 50ms, {});
-  EXPECT_NEAR(p.at(t0 + 100ms).altitudeM, 1003.0, 1e-9);
+  p.addSample({0.0, 0.0, 0.0, {0.0, 0.0, 0.0}}, t0 + 50ms, {});
+  EXPECT_NEAR(p.at(t0 + 100ms).heightM, 1003.0, 1e-9);
 }
 
 namespace {
@@ -124,7 +124,7 @@ TEST(CigiState, OwnshipIsEntityZeroAndBadValuesKeepTheLastGood) {
   bad.latitudeDeg = 91.0;
   EXPECT_EQ(t.apply(messageOf(4, bad), Clock::now()), 1);
   EXPECT_EQ(t.state().ownship.latitudeDeg, 47.0);
-  EXPECT_EQ(t.state().ownship.yawDeg, 90.0);
+  EXPECT_EQ(t.state().ownship.attitude.yawDeg, 90.0);
 }
 
 TEST(CigiState, ReorderedOlderFramesAreDropped) {
@@ -167,7 +167,7 @@ TEST(CigiState, CelestialDateAndViewsApply) {
   ASSERT_TRUE(t.state().timeValid);
   EXPECT_EQ(t.state().utc.day, 21);
   EXPECT_NEAR(t.state().utc.secondsOfDay, 19 * 3600.0 + 30 * 60.0, 1e-3);
-  EXPECT_NEAR(secondsOf(t.utcAt(now + 2s)), 19 * 3600.0 + 30 * 60.0 + 2.0, 1e-3);
+  EXPECT_NEAR(secondsOf(t.clock().utcAt(now + 2s)), 19 * 3600.0 + 30 * 60.0 + 2.0, 1e-3);
   ASSERT_EQ(t.state().views.size(), 1u);
   EXPECT_EQ(*t.state().views[0].leftDeg, 20.0);
   EXPECT_EQ(*t.state().views[0].rightDeg, 35.0);
@@ -180,8 +180,8 @@ TEST(CigiState, CelestialDateAndViewsApply) {
 
 TEST(HostPath, InterpolatesHeadingTheShortWayAndNamesBadLines) {
   const HostPath p = HostPath::parse("time,lat,lon,alt,yaw,pitch,roll\n0,47,11,600,350,0,0\n10,47.1,11,700,10,0,0\n", "p.csv");
-  EXPECT_NEAR(p.at(5.0).yawDeg, 0.0, 1e-9);
-  EXPECT_NEAR(p.at(5.0).altitudeM, 650.0, 1e-9);
+  EXPECT_NEAR(p.at(5.0).attitude.yawDeg, 0.0, 1e-9);
+  EXPECT_NEAR(p.at(5.0).heightM, 650.0, 1e-9);
   EXPECT_NEAR(p.ratesAt(5.0).yawRate, 2.0, 1e-6);
   EXPECT_NEAR(p.ratesAt(5.0).x, 0.1 * 3.14159265 / 180.0 * 6371008.8 / 10.0, 0.01);
   try {

@@ -125,16 +125,19 @@ TEST(SkyState, RejectsBadInput) {
 }
 
 // Every state carries the extinction towards space at the observer's altitude, shared between
-// states of nearly the same altitude and rebuilt after a climb.
+// the states of one builder's caches at nearly the same altitude and rebuilt after a climb;
+// another builder's caches are its own (no process-wide state).
 TEST(SkyState, ExtinctionProfileFollowsTheAltitude) {
   ObserverState o;
-  const SkyState a = buildSkyState(o, SkyConditions{});
+  SkyStateCaches caches, others;
+  const SkyState a = buildSkyState(o, SkyConditions{}, std::nullopt, &caches);
   o.heightM += 10.0;
-  const SkyState b = buildSkyState(o, SkyConditions{});
+  const SkyState b = buildSkyState(o, SkyConditions{}, std::nullopt, &caches);
   ASSERT_TRUE(a.extinction && b.extinction);
   EXPECT_EQ(a.extinction, b.extinction);
+  EXPECT_NE(buildSkyState(o, SkyConditions{}, std::nullopt, &others).extinction, a.extinction);
   o.heightM = 3000.0;
-  const SkyState c = buildSkyState(o, SkyConditions{});
+  const SkyState c = buildSkyState(o, SkyConditions{}, std::nullopt, &caches);
   EXPECT_NE(c.extinction, a.extinction);
   EXPECT_NEAR(c.extinction->altitudeM(), 3000.0, 1e-9);
   EXPECT_GT(c.extinction->rec709(std::numbers::pi / 2).g, a.extinction->rec709(std::numbers::pi / 2).g);

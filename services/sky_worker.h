@@ -1,0 +1,62 @@
+#pragma once
+// The sky worker: the host's state -> what a frame shows. The one piece of code `skyig serve`
+// (services/node.cpp, on its worker and render threads) and `skyig replay` (services/replay.cpp,
+// on the recording's clock) both run, so a replay re-renders the flight the node showed: the
+// host's ownship, clock, air (pressure and temperature refract the sun, moon and stars), star
+// field intensity, view overrides and visibility/humidity (a new physical atmosphere).
+//
+// It owns what consecutive states share: the ephemeris and extinction caches and the follower
+// of the host's atmosphere. One SkyWorker per thread that builds states.
+#include "sky/atmosphere/updater.h"
+#include "sky/sky_state.h"
+#include "services/host_atmosphere.h"
+#include "services/host_snapshot.h"
+#include "services/node_config.h"
+#include "services/node_stats.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace skyig::services {
+
+// What a frame is drawn with besides the SkyState: the ownship's attitude at the frame's own
+// instant (the state was built at the worker's) and the channels as the host last set them.
+struct FramePose {
+  sky::Attitude attitude;
+  std::vector<sky::ChannelConfig> channels;
+};
+
+class SkyWorker {
+ public:
+  // `config.sky` is the configured sky; with the physical model, `updater` rebuilds it for the
+  // host's visibility and humidity (null: the configured atmosphere stays). `stats` counts what
+  // the host sent that the sky cannot use.
+  SkyWorker(const NodeConfig& config, atmosphere::AtmosphereUpdater* updater, NodeStats& stats);
+
+  // Follows the host's visibility and humidity at `now` (debounced, validated, sent to the
+  // updater as a request) and takes the updater's newest model. Returns true when the model
+  // changed since the last call. With `wait`, a request is waited for (replay: the tables for
+  // the host's visibility are in the next state, whatever the machine's speed).
+  bool followAtmosphere(const HostSnapshot* host, Clock::time_point now, bool wait = false);
+
+  // The state at local instant `t` (the worker's step). Throws std::invalid_argument for a host
+  // state the sky cannot use: the caller counts it and keeps its last state.
+  sky::SkyState build(const HostSnapshot* host, Clock::time_point t);
+
+  // The observer at `t`: the host's ownship predicted to `t`, its clock and its air; the
+  // configuration's observer for what the host has not said.
+  sky::ObserverState observerAt(const HostSnapshot* host, Clock::time_point t) const;
+  // The frame drawn at `t` (the render thread's step): `channels` with the host's view overrides.
+  FramePose poseAt(const HostSnapshot* host, Clock::time_point t, const std::vector<sky::ChannelConfig>& channels) const;
+
+ private:
+  const NodeConfig& config_;
+  NodeStats& stats_;
+  atmosphere::AtmosphereUpdater* updater_;
+  HostAtmosphere hostAtmosphere_;
+  sky::SkyConditions conditions_;  // the configured sky with the newest atmosphere
+  std::uint64_t generation_ = 0;   // the updater's initial model is the configuration's
+  sky::SkyStateCaches caches_;
+};
+
+}  // namespace skyig::services

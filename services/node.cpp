@@ -8,6 +8,7 @@
 #include "services/atmosphere_loader.h"
 #include "services/can_receiver.h"
 #include "services/cigi_receiver.h"
+#include "services/frame_files.h"
 #include "services/sky_worker.h"
 #include "services/recorder.h"
 #include "services/state_dump.h"
@@ -15,7 +16,9 @@
 #include <glad/gl.h>
 #include <spdlog/spdlog.h>
 
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <thread>
 #include <unistd.h>
@@ -99,15 +102,19 @@ class Display {
     return false;
   }
 
-  void draw(const sky::SkyState& state, const FramePose& pose) {
+  // Draws every channel; `drawn` sees each channel's renderer right after its frame (to save it).
+  void draw(const sky::SkyState& state, const FramePose& pose,
+            const std::function<void(const render::SkyRenderer&, const sky::ChannelConfig&)>& drawn = {}) {
     const auto& channels = pose.channels;
     for (std::size_t i = 0; i < channels.size(); ++i) {
       if (headless_) {
         renderers_.front()->draw(state, pose.attitude, channels[i]);
+        if (drawn) drawn(*renderers_.front(), channels[i]);
         continue;
       }
       windows_[i]->makeCurrent();
       renderers_[i]->draw(state, pose.attitude, channels[i]);
+      if (drawn) drawn(*renderers_[i], channels[i]);
       renderers_[i]->presentToDefaultFramebuffer(channels[i].width, channels[i].height);
       windows_[i]->swapBuffers();
     }
@@ -177,6 +184,12 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
     cigi.setRecorder(recorder.get());
     spdlog::info("recording the host's datagrams to {}", opt.recordPath);
   }
+  if (!opt.saveFramesDir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(opt.saveFramesDir, ec);
+    if (ec) throw ConfigError("--save-frames: cannot create " + opt.saveFramesDir + ": " + ec.message());
+    render::checkWritable((std::filesystem::path(opt.saveFramesDir) / "probe").string());
+  }
   OwnedFd ownedCan;
   if (opt.canInterface) ownedCan.fd = openSocketCan(*opt.canInterface);
   const int canFd = opt.canInterface ? ownedCan.fd : opt.canFd;
@@ -223,7 +236,18 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
       // The state as the worker built it, seen with the attitude and views of this frame's
       // instant predicted from the same host snapshot.
       const FramePose pose = worker.poseAt(snapshot, frameStart, baseChannels);
-      display.draw(built->state, pose);
+      if (!opt.saveFramesDir.empty() && frame % std::max<std::uint64_t>(opt.saveEvery, 1) == 0) {
+        display.draw(built->state, pose, [&](const render::SkyRenderer& r, const sky::ChannelConfig& c) {
+          const std::string stem = frameStem(opt.saveFramesDir, frame, built->state.observer.utc,
+                                             pose.channels.size() > 1 ? c.name : "");
+          writeFrameFiles(r, stem, c, true, true,
+                          {{"skyig:utc", ephemeris::formatIso8601Utc(built->state.observer.utc)},
+                           {"skyig:channel", c.name},
+                           {"skyig:frame", std::to_string(frame)}});
+        });
+      } else {
+        display.draw(built->state, pose);
+      }
       const auto frameEnd = Clock::now();
       stats.frames.fetch_add(1, std::memory_order_relaxed);
       stats.frameTime.add(std::chrono::duration<double, std::micro>(frameEnd - frameStart).count());

@@ -27,6 +27,8 @@ struct NodeOptions {
   std::string dumpStatePath;                        // JSON lines, one per frame
   std::string statsPath;                            // JSON, every statsIntervalS and on exit
   std::string recordPath;                           // pcap of every datagram received
+  std::string saveFramesDir;                        // every saveEvery-th frame of each channel, EXR + PNG
+  std::uint64_t saveEvery = 30;
   double statsIntervalS = 2.0;
   std::optional<std::string> canInterface;          // SocketCAN interface (CANaerospace host)
   int canFd = -1;                                   // an already open CAN frame stream (tests)

@@ -6,6 +6,7 @@
 #include "services/can_receiver.h"
 #include "services/cigi_receiver.h"
 #include "services/recording_source.h"
+#include "services/frame_files.h"
 #include "services/sky_worker.h"
 #include "services/state_dump.h"
 #include "services/atmosphere_loader.h"
@@ -53,18 +54,6 @@ Bound parseBound(const std::optional<std::string>& text, const char* flag) {
 double julian(const ephemeris::UtcTime& t) { return ephemeris::julianDateUtc(t); }
 
 bool before(const ephemeris::UtcTime& a, const ephemeris::UtcTime& b) { return julian(a) < julian(b); }
-
-// DIR/frame_000123_2026-06-21T19-00-04.123Z[_channel]: frame number and sim time, no colons.
-std::string frameStem(const std::string& dir, std::uint64_t frame, const ephemeris::UtcTime& t,
-                      const std::string& channel) {
-  std::string time = ephemeris::formatIso8601Utc(t);
-  for (char& c : time)
-    if (c == ':') c = '-';
-  char number[24];
-  std::snprintf(number, sizeof number, "%06llu", static_cast<unsigned long long>(frame));
-  return (std::filesystem::path(dir) / ("frame_" + std::string(number) + "_" + time + (channel.empty() ? "" : "_" + channel)))
-      .string();
-}
 
 // Decodes every event up to the frame's instant and runs the sky worker there: the work of one
 // frame that does not need the GPU, the same as the node's worker and render threads do.
@@ -251,18 +240,12 @@ ReplayResult replay(const ReplayOptions& o) {
         renderer.draw(*lastSky, lastPose.attitude, c);
         if (!write) continue;
         const std::string stem = frameStem(o.outDir, k, lastSky->observer.utc, written > 1 ? c.name : "");
-        if (o.writeExr) {
-          render::writeExr(stem + ".exr", renderer.readHdr(),
-                           {{"skyig:utc", ephemeris::formatIso8601Utc(lastSky->observer.utc)},
-                            {"skyig:channel", c.name},
-                            {"skyig:frame", std::to_string(k)},
-                            {"skyig:recording", std::filesystem::path(o.recording).filename().string()}});
-          ++result.imagesWritten;
-        }
-        if (o.writePng) {
-          render::writePng(stem + ".png", renderer.readDisplay(), c.display.gamma);
-          ++result.imagesWritten;
-        }
+        result.imagesWritten += static_cast<std::uint64_t>(writeFrameFiles(
+            renderer, stem, c, o.writeExr, o.writePng,
+            {{"skyig:utc", ephemeris::formatIso8601Utc(lastSky->observer.utc)},
+             {"skyig:channel", c.name},
+             {"skyig:frame", std::to_string(k)},
+             {"skyig:recording", std::filesystem::path(o.recording).filename().string()}}));
       }
       glFinish();  // the frame is done when its pixels are, written or not
       if (dump) dump->write(k, frame.host.get(), *lastSky, lastPose);

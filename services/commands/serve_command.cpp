@@ -20,7 +20,8 @@ struct ServeOptions {
   std::string configPath;
   std::string node;
   bool headless = false;
-  std::string listen, replyTo, dumpState, statsJson, canInterface, record;
+  std::string listen, replyTo, dumpState, statsJson, canInterface, record, saveFrames;
+  std::uint64_t saveEvery = 30;
   std::uint64_t frames = 0;
   bool synchronous = false;
   double frameRate = 0.0;
@@ -48,6 +49,8 @@ int run(const ServeOptions& o) {
   opt.dumpStatePath = o.dumpState;
   opt.statsPath = o.statsJson;
   opt.recordPath = o.record;
+  opt.saveFramesDir = o.saveFrames;
+  opt.saveEvery = o.saveEvery;
   // Output files are checked before anything starts: a bad path is a usage error (exit 2).
   for (const std::string* path : {&o.dumpState, &o.statsJson, &o.record})
     if (!path->empty()) render::checkWritable(*path);
@@ -80,6 +83,9 @@ void registerServeCommand(CLI::App& app, int& exitCode) {
   c->add_option("--frame-rate", o->frameRate, "Headless frame rate, Hz (default: host.frame_rate, 60)")->check(CLI::Range(1.0, 1000.0));
   c->add_option("--dump-state", o->dumpState, "Write one JSON line per frame: host values, values used, sun");
   c->add_option("--record", o->record, "Record every datagram received to this pcap file while serving");
+  c->add_option("--save-frames", o->saveFrames,
+                "Write every channel's frame (EXR in cd/m^2, PNG as displayed) to this directory, as replay names them");
+  c->add_option("--save-every", o->saveEvery, "With --save-frames: every Nth frame (30)")->check(CLI::PositiveNumber);
   c->add_option("--stats-json", o->statsJson, "Write counters and latency percentiles every few seconds and on exit");
   c->callback([o, &exitCode] { exitCode = run(*o); });
 }

@@ -151,3 +151,26 @@ TEST(SkyState, DefaultStateUsesTheEphemeris) {
   EXPECT_NEAR(s.sunAltitude / kDeg, 19.7, 1.0);
   EXPECT_GT(s.adaptationLuminance, 1000.0);
 }
+
+// The air at the observer refracts what is seen (Saemundsson, scaled by Meeus' P/T factor): a
+// cold high-pressure air mass lifts the setting sun by the ratio of the two scales, and the one
+// default is the ICAO standard atmosphere.
+TEST(SkyState, RefractionUsesTheObserversPressureAndTemperature) {
+  ObserverState o;
+  EXPECT_EQ(o.pressureHpa, 1013.25);
+  EXPECT_EQ(o.temperatureC, 15.0);
+  o.utc = {2026, 6, 21, 19 * 3600.0 + 20 * 60.0};  // Innsbruck, the sun about a degree up
+  const SkyState standard = buildSkyState(o, SkyConditions{});
+  ObserverState cold = o;
+  cold.pressureHpa = 1040.0;
+  cold.temperatureC = -12.0;
+  const SkyState dense = buildSkyState(cold, SkyConditions{});
+  const double liftStandard = standard.sunApparentAltitude - standard.sunAltitude;
+  const double liftDense = dense.sunApparentAltitude - dense.sunAltitude;
+  ASSERT_GT(liftStandard, 0.0);
+  EXPECT_NEAR(liftDense / liftStandard,
+              skyig::ephemeris::refractionScale(1040.0, -12.0) / skyig::ephemeris::refractionScale(1013.25, 15.0), 1e-9);
+  EXPECT_NEAR(liftDense / liftStandard, (1040.0 / 1013.25) * (288.0 / 261.0), 1e-9);
+  cold.pressureHpa = std::nan("");
+  EXPECT_THROW(buildSkyState(cold, SkyConditions{}), std::invalid_argument);
+}

@@ -1,0 +1,24 @@
+#pragma once
+// The files of one rendered frame, as `skyig replay DIR` and `skyig serve --save-frames DIR`
+// write them (one piece of code, so a replay's frames and the node's compare file by file):
+// DIR/frame_000123_2026-06-21T19-00-04.123Z[_channel].exr (cd/m^2) and .png (as displayed).
+#include "ephemeris/time.h"
+#include "render/image_io.h"
+#include "render/sky_renderer.h"
+#include "sky/channel.h"
+
+#include <cstdint>
+#include <string>
+
+namespace skyig::services {
+
+// DIR/frame_NNNNNN_<sim time, no colons>[_channel]: frame number and sim time.
+std::string frameStem(const std::string& dir, std::uint64_t frame, const ephemeris::UtcTime& t,
+                      const std::string& channel);
+
+// Writes the renderer's last frame of `channel` (its HDR target as EXR, its display target as
+// PNG for the channel's display gamma) to stem.exr / stem.png; returns how many files it wrote.
+int writeFrameFiles(const render::SkyRenderer& renderer, const std::string& stem, const sky::ChannelConfig& channel,
+                    bool exr, bool png, const render::ImageAttributes& attributes);
+
+}  // namespace skyig::services

@@ -2,7 +2,10 @@
 
 #include <ImfChromaticitiesAttribute.h>
 #include <ImfHeader.h>
-#include <ImfRgbaFile.h>
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
 #include <ImfStandardAttributes.h>
 #include <ImfStringAttribute.h>
 #include <png.h>
@@ -54,11 +57,19 @@ void writeExr(const std::string& path, const HdrImage& image, const ImageAttribu
     Imf::addChromaticities(header, Imf::Chromaticities());  // Rec.709 primaries, D65 white
     Imf::addWhiteLuminance(header, 1.0f);                  // one unit = 1 cd/m^2
     for (const auto& [key, value] : attributes) header.insert(key, Imf::StringAttribute(value));
-    std::vector<Imf::Rgba> pixels(static_cast<size_t>(image.width) * static_cast<size_t>(image.height));
-    for (size_t i = 0; i < pixels.size(); ++i)
-      pixels[i] = Imf::Rgba(image.rgba[4 * i], image.rgba[4 * i + 1], image.rgba[4 * i + 2], image.rgba[4 * i + 3]);
-    Imf::RgbaOutputFile file(tmp.c_str(), header, Imf::WRITE_RGBA);
-    file.setFrameBuffer(pixels.data(), 1, static_cast<size_t>(image.width));
+    // 32-bit float: the sun's disc (1.6e9 cd/m^2) and a moonless sky (1e-4) both keep their
+    // values; half float overflows at 65504 and turned the sun into +Inf.
+    const char* names[] = {"R", "G", "B", "A"};
+    Imf::FrameBuffer frame;
+    const std::size_t pixelBytes = 4 * sizeof(float), rowBytes = pixelBytes * static_cast<std::size_t>(image.width);
+    for (int c = 0; c < 4; ++c) {
+      header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+      // OpenEXR's slices take a char* base even for writing.
+      char* base = const_cast<char*>(reinterpret_cast<const char*>(image.rgba.data() + c));  // NOLINT
+      frame.insert(names[c], Imf::Slice(Imf::FLOAT, base, pixelBytes, rowBytes));
+    }
+    Imf::OutputFile file(tmp.c_str(), header);
+    file.setFrameBuffer(frame);
     file.writePixels(image.height);
   } catch (const std::exception& e) {
     std::error_code ec;
@@ -70,18 +81,23 @@ void writeExr(const std::string& path, const HdrImage& image, const ImageAttribu
 
 ExrFile readExr(const std::string& path) {
   try {
-    Imf::RgbaInputFile file(path.c_str());
-    const Imath::Box2i dw = file.dataWindow();
+    Imf::InputFile file(path.c_str());  // half or float channels, read as float
+    const Imath::Box2i dw = file.header().dataWindow();
     ExrFile out;
     out.image.width = dw.max.x - dw.min.x + 1;
     out.image.height = dw.max.y - dw.min.y + 1;
-    std::vector<Imf::Rgba> pixels(static_cast<size_t>(out.image.width) * static_cast<size_t>(out.image.height));
-    file.setFrameBuffer(pixels.data() - dw.min.x - static_cast<ptrdiff_t>(dw.min.y) * out.image.width, 1,
-                        static_cast<size_t>(out.image.width));
+    out.image.rgba.assign(static_cast<std::size_t>(out.image.width) * static_cast<std::size_t>(out.image.height) * 4, 0.0f);
+    const std::size_t pixelBytes = 4 * sizeof(float), rowBytes = pixelBytes * static_cast<std::size_t>(out.image.width);
+    char* origin = reinterpret_cast<char*>(out.image.rgba.data()) -
+                   static_cast<std::ptrdiff_t>(dw.min.x) * static_cast<std::ptrdiff_t>(pixelBytes) -
+                   static_cast<std::ptrdiff_t>(dw.min.y) * static_cast<std::ptrdiff_t>(rowBytes);
+    Imf::FrameBuffer frame;
+    const char* names[] = {"R", "G", "B", "A"};
+    for (int c = 0; c < 4; ++c)
+      frame.insert(names[c], Imf::Slice(Imf::FLOAT, origin + c * static_cast<std::ptrdiff_t>(sizeof(float)), pixelBytes,
+                                        rowBytes, 1, 1, c == 3 ? 1.0 : 0.0));
+    file.setFrameBuffer(frame);
     file.readPixels(dw.min.y, dw.max.y);
-    out.image.rgba.reserve(pixels.size() * 4);
-    for (const Imf::Rgba& p : pixels)
-      for (const half h : {p.r, p.g, p.b, p.a}) out.image.rgba.push_back(static_cast<float>(h));
     if (Imf::hasWhiteLuminance(file.header())) out.whiteLuminance = Imf::whiteLuminance(file.header());
     for (auto it = file.header().begin(); it != file.header().end(); ++it)
       if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))

@@ -411,3 +411,39 @@ TEST_F(GlRender, PhysicalTablesSwapAfterTheAnnouncedFrames) {
   EXPECT_EQ(pass->lastUploadBytes(), 0u);
   EXPECT_EQ(fresh.readHdr().rgba, hazyFrame.rgba);
 }
+
+// Every value is kept: the sun's disc (~1.6e9 cd/m^2 at noon) reaches the EXR in 32-bit float
+// with the model's luminance, at noon, at sunset and in haze with its aureole, and no pixel of
+// the frame or of the file is infinite or NaN (half float overflowed at 65504).
+TEST_F(GlRender, SunDiscKeepsItsLuminanceInTheExr) {
+  const std::filesystem::path exr = std::filesystem::temp_directory_path() / "skyig_sun_disc.exr";
+  struct Case {
+    double sunAltitude, visibilityKm;
+  };
+  for (const Case k : {Case{60.0, 0.0}, Case{2.0, 0.0}, Case{30.0, 8.0}}) {
+    const auto model = smallModel(k.visibilityKm);
+    const SkyState s = state(0.0, 200.0, k.sunAltitude, physicalConditions(model));
+    // A 2-degree channel on the sun: its disc (0.53 deg) is ~30 pixels across.
+    ChannelConfig c = channel(0.0, Frustum{1, 1, 0.75, 0.75});
+    c.offset = {200.0, s.sunApparentAltitude / kDeg, 0.0};
+    renderer_->draw(s, c);
+    while (renderer_->physicalPass()->current() != model.get()) renderer_->draw(s, c);  // a new model uploads over frames
+    writeExr(exr.string(), renderer_->readHdr(), {});
+    const HdrImage im = readExr(exr.string()).image;
+    double peak = 0.0;
+    for (std::size_t i = 0; i < im.rgba.size(); ++i) {
+      ASSERT_TRUE(std::isfinite(im.rgba[i])) << "sun at " << k.sunAltitude << ": value " << i;
+      if (i % 4 == 1) peak = std::max(peak, static_cast<double>(im.rgba[i]));  // G ~ luminance at the disc
+    }
+    const glm::dvec3 centre = rgb(im, kW / 2, kH / 2);
+    const glm::dvec3 camera = physicalCamera(*model, s.observer.heightM);
+    const glm::dvec3 sun = enuDirection(s.sunAzimuth, s.sunAltitude);
+    const glm::dvec3 view = ray(s, c, kW / 2, kH / 2);
+    const glm::dvec3 expected = spectralView(*model, camera, view, sun);
+    EXPECT_NEAR(shader::rec709Luminance(centre) / shader::rec709Luminance(expected), 1.0, 0.05)
+        << "sun at " << k.sunAltitude << " deg, visibility " << k.visibilityKm << " km";
+    EXPECT_GT(shader::rec709Luminance(centre), k.sunAltitude > 10.0 ? 1e8 : 1e6);
+    EXPECT_GT(peak, 65504.0);  // what half float could not hold
+  }
+  std::filesystem::remove(exr);
+}

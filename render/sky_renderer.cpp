@@ -1,5 +1,6 @@
 #include "render/sky_renderer.h"
 
+#include "shaders/common/bindings.h"
 #include "shaders/common/uniforms.h"
 
 #include <algorithm>

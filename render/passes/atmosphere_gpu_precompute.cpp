@@ -15,6 +15,7 @@
 #include "render/passes/atmosphere_uniforms.h"
 #include "render/gl/gl_program.h"
 #include "render/gl/shader_source.h"
+#include "shaders/common/bindings.h"
 
 namespace skyig::render {
 
@@ -200,44 +201,44 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
     density_params.scattering_r_size = density_sizes.scattering_r;
     density_params.scattering_mu_size = density_sizes.scattering_mu;
     for (GLuint program : {p.slices, p.density, p.multiple}) setAtmosphereUniforms(program, "atm_density", density_params);
-    for (GLuint unit = 0; unit < 8; ++unit) glBindTextureUnit(unit, 0);
+    for (GLuint unit = 0; unit < SKYIG_PRECOMPUTE_UNIT_COUNT; ++unit) glBindTextureUnit(unit, 0);
 
-    image(0, x.transmittance, GL_WRITE_ONLY);
+    image(SKYIG_IMAGE_TRANSMITTANCE, x.transmittance, GL_WRITE_ONLY);
     run(p.transmittance, s.transmittance_mu, s.transmittance_r, 1, t.transmittance);
-    glBindTextureUnit(0, x.transmittance);
-    image(0, x.delta_irradiance, GL_WRITE_ONLY);
-    image(1, x.irradiance, GL_WRITE_ONLY);
+    glBindTextureUnit(SKYIG_UNIT_TRANSMITTANCE, x.transmittance);
+    image(SKYIG_IMAGE_DELTA_IRRADIANCE, x.delta_irradiance, GL_WRITE_ONLY);
+    image(SKYIG_IMAGE_IRRADIANCE, x.irradiance, GL_WRITE_ONLY);
     run(p.direct, s.irradiance_mu_s, s.irradiance_r, 1, t.direct_irradiance);
-    image(0, x.delta_rayleigh, GL_WRITE_ONLY);
-    image(1, x.delta_mie, GL_WRITE_ONLY);
-    image(2, x.scattering, GL_WRITE_ONLY);
-    image(3, x.single_mie, GL_WRITE_ONLY);
+    image(SKYIG_IMAGE_DELTA_RAYLEIGH, x.delta_rayleigh, GL_WRITE_ONLY);
+    image(SKYIG_IMAGE_DELTA_MIE, x.delta_mie, GL_WRITE_ONLY);
+    image(SKYIG_IMAGE_SCATTERING, x.scattering, GL_WRITE_ONLY);
+    image(SKYIG_IMAGE_SINGLE_MIE, x.single_mie, GL_WRITE_ONLY);
     run(p.single, sw, sh, sd, t.single_scattering);
     for (int order = 2; order <= orders; ++order) {
-      glBindTextureUnit(1, x.delta_rayleigh);
-      glBindTextureUnit(2, x.delta_mie);
-      glBindTextureUnit(3, x.delta_multiple);
-      glBindTextureUnit(4, x.delta_irradiance);
-      image(0, x.slices_a, GL_WRITE_ONLY);
-      image(1, x.slices_b, GL_WRITE_ONLY);
+      glBindTextureUnit(SKYIG_UNIT_DELTA_RAYLEIGH, x.delta_rayleigh);
+      glBindTextureUnit(SKYIG_UNIT_DELTA_MIE, x.delta_mie);
+      glBindTextureUnit(SKYIG_UNIT_DELTA_MULTIPLE, x.delta_multiple);
+      glBindTextureUnit(SKYIG_UNIT_DELTA_IRRADIANCE, x.delta_irradiance);
+      image(SKYIG_IMAGE_NU_SLICES_A, x.slices_a, GL_WRITE_ONLY);
+      image(SKYIG_IMAGE_NU_SLICES_B, x.slices_b, GL_WRITE_ONLY);
       setOrder(p.slices, order);
       run(p.slices, s.scattering_nu + 1, kDensityThetaSamples * s.scattering_mu_s, density_sizes.scattering_r,
           t.nu_slices);
-      glBindTextureUnit(6, x.slices_a);
-      glBindTextureUnit(7, x.slices_b);
-      image(0, x.delta_density, GL_WRITE_ONLY);
+      glBindTextureUnit(SKYIG_UNIT_NU_SLICES_A, x.slices_a);
+      glBindTextureUnit(SKYIG_UNIT_NU_SLICES_B, x.slices_b);
+      image(SKYIG_IMAGE_DELTA_DENSITY, x.delta_density, GL_WRITE_ONLY);
       setOrder(p.density, order);
       run(p.density, sw, density_sizes.scattering_mu, density_sizes.scattering_r, t.scattering_density);
       // delta_irradiance and delta_multiple are rewritten next: unbind them as samplers.
-      glBindTextureUnit(4, 0);
-      image(0, x.delta_irradiance, GL_WRITE_ONLY);
-      image(1, x.irradiance, GL_READ_WRITE);
+      glBindTextureUnit(SKYIG_UNIT_DELTA_IRRADIANCE, 0);
+      image(SKYIG_IMAGE_DELTA_IRRADIANCE, x.delta_irradiance, GL_WRITE_ONLY);
+      image(SKYIG_IMAGE_IRRADIANCE, x.irradiance, GL_READ_WRITE);
       setOrder(p.indirect, order);
       run(p.indirect, s.irradiance_mu_s, s.irradiance_r, 1, t.indirect_irradiance);
-      glBindTextureUnit(3, 0);
-      glBindTextureUnit(5, x.delta_density);
-      image(0, x.delta_multiple, GL_WRITE_ONLY);
-      image(2, x.scattering, GL_READ_WRITE);
+      glBindTextureUnit(SKYIG_UNIT_DELTA_MULTIPLE, 0);
+      glBindTextureUnit(SKYIG_UNIT_DELTA_DENSITY, x.delta_density);
+      image(SKYIG_IMAGE_DELTA_MULTIPLE, x.delta_multiple, GL_WRITE_ONLY);
+      image(SKYIG_IMAGE_SCATTERING, x.scattering, GL_READ_WRITE);
       run(p.multiple, sw, sh, sd, t.multiple_scattering);
     }
 
@@ -258,8 +259,8 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
       options.progress(line);
     }
   }
-  for (GLuint unit = 0; unit < 8; ++unit) glBindTextureUnit(unit, 0);
-  for (GLuint unit = 0; unit < 4; ++unit) glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+  for (GLuint unit = 0; unit < SKYIG_PRECOMPUTE_UNIT_COUNT; ++unit) glBindTextureUnit(unit, 0);
+  for (GLuint unit = 0; unit < SKYIG_PRECOMPUTE_IMAGE_COUNT; ++unit) glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
   glUseProgram(0);
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
     char code[16];

@@ -3,6 +3,7 @@
 #include "sky/camera.h"
 #include "render/gl/mip_chain.h"
 #include "sky/sky_state.h"
+#include "shaders/common/bindings.h"
 
 #include <glm/glm.hpp>
 
@@ -14,9 +15,6 @@
 namespace skyig::render {
 
 namespace {
-
-constexpr GLuint kAlbedoUnit = 20;
-constexpr GLuint kExtinctionUnit = 21;
 
 void set3(GLuint p, const char* name, const glm::dvec3& v) {
   glProgramUniform3f(p, glGetUniformLocation(p, name), static_cast<float>(v.x), static_cast<float>(v.y),
@@ -85,8 +83,8 @@ void MoonPass::draw(const skyig::sky::night::MoonDisc& d, const glm::dmat3& ndcT
   set3(p, "earthshineScale", d.earthshineScale);
   const glm::vec4 refraction(d.refraction);
   glProgramUniform4fv(p, glGetUniformLocation(p, "refraction"), 1, &refraction[0]);
-  glBindTextureUnit(kAlbedoUnit, albedoTexture_);
-  extinction_.bind(kExtinctionUnit);
+  glBindTextureUnit(SKYIG_UNIT_MOON_ALBEDO, albedoTexture_);
+  extinction_.bind(SKYIG_UNIT_MOON_EXTINCTION);
   glBindVertexArray(emptyVao_);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);  // light adds: the moon in front of the sky's scattered light

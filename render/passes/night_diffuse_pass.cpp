@@ -3,6 +3,7 @@
 #include "render/gl/mip_chain.h"
 #include "sky/night/zodiacal_light.h"
 #include "sky/sky_state.h"
+#include "shaders/common/bindings.h"
 
 #include <glm/gtc/packing.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -80,9 +81,9 @@ void NightDiffusePass::draw(const skyig::sky::night::NightDiffuseSky& sky) {
   const glm::vec3 sun(sky.sunJ2000), airglow(sky.airglowZenith);
   glProgramUniform3fv(p, sunLocation_, 1, glm::value_ptr(sun));
   glProgramUniform3fv(p, airglowLocation_, 1, glm::value_ptr(airglow));
-  glBindTextureUnit(0, milkyWay_);
-  glBindTextureUnit(1, zodiacal_);
-  extinction_.bind(2);
+  glBindTextureUnit(SKYIG_UNIT_MILKY_WAY, milkyWay_);
+  glBindTextureUnit(SKYIG_UNIT_ZODIACAL, zodiacal_);
+  extinction_.bind(SKYIG_UNIT_NIGHT_EXTINCTION);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   program_.use();

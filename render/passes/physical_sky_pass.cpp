@@ -1,6 +1,7 @@
 #include "render/passes/physical_sky_pass.h"
 
 #include "render/gl/gl_context.h"
+#include "shaders/common/bindings.h"
 #include "shaders/atmosphere_physics.h"
 
 #include <algorithm>
@@ -136,9 +137,9 @@ void PhysicalSkyPass::ensureSlices() {
     s->singleMie = createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(s->singleMie, 1, GL_RGBA32F, width, height);
     glCreateFramebuffers(1, &s->framebuffer);
-    glNamedFramebufferTexture(s->framebuffer, GL_COLOR_ATTACHMENT0, s->scattering, 0);
-    glNamedFramebufferTexture(s->framebuffer, GL_COLOR_ATTACHMENT1, s->singleMie, 0);
-    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferTexture(s->framebuffer, GL_COLOR_ATTACHMENT0 + SKYIG_OUTPUT_SLICE_SCATTERING, s->scattering, 0);
+    glNamedFramebufferTexture(s->framebuffer, GL_COLOR_ATTACHMENT0 + SKYIG_OUTPUT_SLICE_SINGLE_MIE, s->singleMie, 0);
+    const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};  // fragment output i -> attachment i
     glNamedFramebufferDrawBuffers(s->framebuffer, 2, buffers);
   }
   sliceWidth_ = width;
@@ -210,8 +211,8 @@ void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   const Program& program = r <= a.top_radius ? inside_ : space_;
   const GLuint p = program.program.id();
   const bool moon = moonlightScale != glm::dvec3(0.0);
-  glBindTextureUnit(1, current_.scattering);
-  glBindTextureUnit(2, current_.singleMie);
+  glBindTextureUnit(SKYIG_UNIT_SCATTERING, current_.scattering);
+  glBindTextureUnit(SKYIG_UNIT_SINGLE_MIE, current_.singleMie);
   if (&program == &inside_) {
     const glm::dvec4 sunUvwz = shader::scatteringUvwzFromRMuMuSNu(a, r, 1.0, std::clamp(glm::dot(camera, sunDirection) / r, -1.0, 1.0), 0.0, false);
     const glm::dvec4 moonUvwz = shader::scatteringUvwzFromRMuMuSNu(a, r, 1.0, std::clamp(glm::dot(camera, moonDirection) / r, -1.0, 1.0), 0.0, false);
@@ -232,10 +233,10 @@ void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
     if (moon) drawSlice(moonSlice_, moonUvwz.y, moonUvwz.w);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    glBindTextureUnit(4, sunSlice_.scattering);
-    glBindTextureUnit(5, sunSlice_.singleMie);
-    glBindTextureUnit(6, moonSlice_.scattering);
-    glBindTextureUnit(7, moonSlice_.singleMie);
+    glBindTextureUnit(SKYIG_UNIT_SUN_SLICE_SCATTERING, sunSlice_.scattering);
+    glBindTextureUnit(SKYIG_UNIT_SUN_SLICE_SINGLE_MIE, sunSlice_.singleMie);
+    glBindTextureUnit(SKYIG_UNIT_MOON_SLICE_SCATTERING, moonSlice_.scattering);
+    glBindTextureUnit(SKYIG_UNIT_MOON_SLICE_SINGLE_MIE, moonSlice_.singleMie);
   }
   glProgramUniform3fv(p, program.camera, 1, &f3(camera)[0]);
   glProgramUniform3fv(p, program.sun, 1, &f3(sunDirection)[0]);
@@ -244,8 +245,8 @@ void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
     glProgramUniform3fv(p, program.moonDirection, 1, &f3(moonDirection)[0]);
     glProgramUniform3fv(p, program.moonScale, 1, &f3(moonlightScale)[0]);
   }
-  glBindTextureUnit(0, current_.transmittance);
-  glBindTextureUnit(3, current_.irradiance);
+  glBindTextureUnit(SKYIG_UNIT_TRANSMITTANCE, current_.transmittance);
+  glBindTextureUnit(SKYIG_UNIT_IRRADIANCE, current_.irradiance);
   program.program.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

@@ -1,5 +1,7 @@
 #include "render/passes/star_pass.h"
 
+#include "shaders/common/bindings.h"
+
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -13,10 +15,12 @@ StarPass::StarPass() : program_("passes/star.vert", "passes/star.frag") {
   glCreateBuffers(1, &buffer_);
   glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, 6 * sizeof(float));
   glVertexArrayBindingDivisor(vao_, 0, 1);  // one source per instance of the quad
-  for (GLuint a : {0u, 1u}) {
-    glEnableVertexArrayAttrib(vao_, a);
-    glVertexArrayAttribFormat(vao_, a, 3, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
-    glVertexArrayAttribBinding(vao_, a, 0);
+  // Per source: direction (3 floats), then illuminance (3 floats); see upload().
+  const GLuint attributes[][2] = {{SKYIG_ATTRIB_STAR_DIRECTION, 0}, {SKYIG_ATTRIB_STAR_REC709_LUX, 3 * sizeof(float)}};
+  for (const auto& [location, offset] : attributes) {
+    glEnableVertexArrayAttrib(vao_, location);
+    glVertexArrayAttribFormat(vao_, location, 3, GL_FLOAT, GL_FALSE, offset);
+    glVertexArrayAttribBinding(vao_, location, 0);
   }
 }
 

@@ -3,15 +3,16 @@
 // (paper section 4, "Angular precision": C* = S_R[L0] + S[L+] / P_R). The integral is
 // computeMultipleScattering's (multiple_scattering.glsl), with the density table read at its
 // own sizes (atm_density), which may be coarser than the others.
+#include "common/bindings.h"
 #include "atmosphere/multiple_scattering.glsl"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 uniform AtmosphereParameters atm;
 // atm with the density table's sizes (GpuPrecomputeOptions::density_divisor; = atm by default).
 uniform AtmosphereParameters atm_density;
-layout(binding = 0) uniform sampler2D transmittance_texture;
-layout(binding = 5) uniform sampler3D scattering_density_texture;
-layout(binding = 0, rgba32f) uniform writeonly image3D delta_multiple_out;
-layout(binding = 2, rgba32f) uniform image3D scattering_accumulated;
+layout(binding = SKYIG_UNIT_TRANSMITTANCE) uniform sampler2D transmittance_texture;
+layout(binding = SKYIG_UNIT_DELTA_DENSITY) uniform sampler3D scattering_density_texture;
+layout(binding = SKYIG_IMAGE_DELTA_MULTIPLE, rgba32f) uniform writeonly image3D delta_multiple_out;
+layout(binding = SKYIG_IMAGE_SCATTERING, rgba32f) uniform image3D scattering_accumulated;
 
 // computeMultipleScattering's integral, with the density looked up at its own table sizes.
 vec4 integrand(Float r, Float mu, Float mu_s, Float nu, Float d, bool ray_r_mu_intersects_ground) {

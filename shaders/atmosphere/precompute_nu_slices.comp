@@ -9,17 +9,18 @@
 // fetches once, for k = 0..nu_size: texel (k, theta_index * mu_s_size + mu_s_index, r_index).
 // The density then reads two texels per direction (texelFetch, no filtering) and blends them
 // as lookupScatteringUvwz does: same values, a fraction of the work.
+#include "common/bindings.h"
 #include "atmosphere/multiple_scattering.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 uniform AtmosphereParameters atm;
 // atm with the density table's sizes (GpuPrecomputeOptions::density_divisor; = atm by default).
 uniform AtmosphereParameters atm_density;
 uniform int scattering_order;  // n: the slices are of the radiance of order n - 1
-layout(binding = 1) uniform sampler3D single_rayleigh_texture;
-layout(binding = 2) uniform sampler3D single_mie_texture;
-layout(binding = 3) uniform sampler3D multiple_texture;
-layout(binding = 0, rgba32f) uniform writeonly image3D slices_a_out;  // Rayleigh or delta S
-layout(binding = 1, rgba32f) uniform writeonly image3D slices_b_out;  // Mie (order 1)
+layout(binding = SKYIG_UNIT_DELTA_RAYLEIGH) uniform sampler3D single_rayleigh_texture;
+layout(binding = SKYIG_UNIT_DELTA_MIE) uniform sampler3D single_mie_texture;
+layout(binding = SKYIG_UNIT_DELTA_MULTIPLE) uniform sampler3D multiple_texture;
+layout(binding = SKYIG_IMAGE_NU_SLICES_A, rgba32f) uniform writeonly image3D slices_a_out;  // Rayleigh or delta S
+layout(binding = SKYIG_IMAGE_NU_SLICES_B, rgba32f) uniform writeonly image3D slices_b_out;  // Mie (order 1)
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
   if (any(greaterThanEqual(texel, imageSize(slices_a_out)))) {

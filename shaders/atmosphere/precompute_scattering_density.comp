@@ -9,6 +9,7 @@
 // trilinear fetches (four at order 2); the ground's sun cosine is in closed form and its
 // irradiance a row of the table read by hand; the directions turn by a rotation instead of a
 // cos and a sin each; phi and 2 pi - phi share their phase functions.
+#include "common/bindings.h"
 #include "atmosphere/multiple_scattering.glsl"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 uniform AtmosphereParameters atm;
@@ -16,11 +17,11 @@ uniform AtmosphereParameters atm;
 // its texels' (r, mu, mu_s, nu); the other tables are read through atm.
 uniform AtmosphereParameters atm_density;
 uniform int scattering_order;
-layout(binding = 0) uniform sampler2D transmittance_texture;
-layout(binding = 4) uniform sampler2D irradiance_texture;
-layout(binding = 6) uniform sampler3D slices_a;  // precompute_nu_slices.comp
-layout(binding = 7) uniform sampler3D slices_b;
-layout(binding = 0, rgba32f) uniform writeonly image3D density_out;
+layout(binding = SKYIG_UNIT_TRANSMITTANCE) uniform sampler2D transmittance_texture;
+layout(binding = SKYIG_UNIT_DELTA_IRRADIANCE) uniform sampler2D irradiance_texture;
+layout(binding = SKYIG_UNIT_NU_SLICES_A) uniform sampler3D slices_a;  // precompute_nu_slices.comp
+layout(binding = SKYIG_UNIT_NU_SLICES_B) uniform sampler3D slices_b;
+layout(binding = SKYIG_IMAGE_DELTA_DENSITY, rgba32f) uniform writeonly image3D density_out;
 
 // The radiance of order n-1 arriving from a direction whose cosine with the sun is
 // nu1_unclamped: from the nu slices (lookupScatteringUvwz's blend of two of them, and

@@ -1,13 +1,14 @@
 // GPU precomputation, step 3: single Rayleigh and Mie scattering into the delta tables, and
 // the accumulated tables initialised with them (C* = S_R[L0], C_M = S_M[L0]).
+#include "common/bindings.h"
 #include "atmosphere/single_scattering.glsl"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 uniform AtmosphereParameters atm;
-layout(binding = 0) uniform sampler2D transmittance_texture;
-layout(binding = 0, rgba32f) uniform writeonly image3D delta_rayleigh_out;
-layout(binding = 1, rgba32f) uniform writeonly image3D delta_mie_out;
-layout(binding = 2, rgba32f) uniform writeonly image3D scattering_out;
-layout(binding = 3, rgba32f) uniform writeonly image3D single_mie_out;
+layout(binding = SKYIG_UNIT_TRANSMITTANCE) uniform sampler2D transmittance_texture;
+layout(binding = SKYIG_IMAGE_DELTA_RAYLEIGH, rgba32f) uniform writeonly image3D delta_rayleigh_out;
+layout(binding = SKYIG_IMAGE_DELTA_MIE, rgba32f) uniform writeonly image3D delta_mie_out;
+layout(binding = SKYIG_IMAGE_SCATTERING, rgba32f) uniform writeonly image3D scattering_out;
+layout(binding = SKYIG_IMAGE_SINGLE_MIE, rgba32f) uniform writeonly image3D single_mie_out;
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID);
   if (any(greaterThanEqual(texel, imageSize(delta_rayleigh_out)))) {

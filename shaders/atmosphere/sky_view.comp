@@ -2,16 +2,17 @@
 // equirectangular view (azimuth across, zenith 0..180 deg down): spectral radiance, the
 // sum of skyRadiance, sunDiscRadiance and the attenuated ground reflection. Used to time the
 // per-pixel cost and to check a full panorama, horizon included, for NaN and Inf on the GPU.
+#include "common/bindings.h"
 #include "atmosphere/rendering.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 uniform AtmosphereParameters atm;
 uniform vec3 camera;         // metres from the planet's centre
 uniform vec3 sun_direction;  // unit
-layout(binding = 0) uniform sampler2D transmittance_texture;
-layout(binding = 1) uniform sampler3D scattering_texture;
-layout(binding = 2) uniform sampler3D single_mie_texture;
-layout(binding = 3) uniform sampler2D irradiance_texture;
-layout(binding = 0, rgba32f) uniform writeonly image2D radiance_out;
+layout(binding = SKYIG_UNIT_TRANSMITTANCE) uniform sampler2D transmittance_texture;
+layout(binding = SKYIG_UNIT_SCATTERING) uniform sampler3D scattering_texture;
+layout(binding = SKYIG_UNIT_SINGLE_MIE) uniform sampler3D single_mie_texture;
+layout(binding = SKYIG_UNIT_IRRADIANCE) uniform sampler2D irradiance_texture;
+layout(binding = SKYIG_IMAGE_SKY_VIEW, rgba32f) uniform writeonly image2D radiance_out;
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(radiance_out);

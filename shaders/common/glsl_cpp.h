@@ -1,7 +1,8 @@
 #pragma once
 // Lets the physics in shaders/*.glsl compile as C++ against GLM, in double precision, so the
 // tests check the very code the GPU runs (the pattern of Bruneton's 2017 reference code,
-// which uses IN/OUT the same way). Included only by shaders/physics.h.
+// which uses IN/OUT the same way). Included by common/glsl_cpp_begin.h, the prologue of the
+// headers that do so (and by shaders/atmosphere_physics.h for its parameter struct).
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>
 

@@ -4,7 +4,7 @@
 #include "sky/analytic_sky.glsl"
 
 in vec3 vViewRay;
-layout(location = 0) out vec4 outRadiance;
+layout(location = SKYIG_OUTPUT_COLOR) out vec4 outRadiance;
 
 void main() {
   AnalyticSky sky = AnalyticSky(perezA.xyz, perezB.xyz, perezC.xyz, perezD.xyz, perezE.xyz,

@@ -12,10 +12,10 @@ uniform vec3 moonEast;
 uniform vec3 sunlitScale;       // cd/m^2 (sky/night/moon_disc.h)
 uniform vec3 earthshineScale;
 uniform vec4 refraction;        // apparent centre altitude, R, dR/dh, d2R/dh2 / 2 (radians)
-layout(binding = 20) uniform sampler2D moonAlbedo;     // relative albedo, mean 1 on the near side
-layout(binding = 21) uniform sampler1D extinctionTable;  // ExtinctionProfile::rec709Table
+layout(binding = SKYIG_UNIT_MOON_ALBEDO) uniform sampler2D moonAlbedo;  // relative albedo, mean 1 on the near side
+layout(binding = SKYIG_UNIT_MOON_EXTINCTION) uniform sampler1D extinctionTable;  // ExtinctionProfile::rec709Table
 
-layout(location = 0) out vec4 outRadiance;
+layout(location = SKYIG_OUTPUT_COLOR) out vec4 outRadiance;
 
 void main() {
   vec2 ndc = gl_FragCoord.xy * viewport.zw * 2.0 - 1.0;

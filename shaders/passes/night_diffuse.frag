@@ -2,6 +2,7 @@
 // the unresolved stars (a calibrated panorama, S10 per channel), the zodiacal light (Leinert et
 // al. 1998 table 17, S10) and the airglow (van Rhijn), all dimmed by the transmittance to space
 // along the view. The CPU twin is sky/night/night_diffuse.h.
+#include "common/bindings.h"
 #include "night/units.glsl"
 #include "night/milky_way.glsl"
 #include "night/zodiacal.glsl"
@@ -11,12 +12,12 @@ uniform mat3 enuToJ2000;
 uniform vec3 sunJ2000;
 uniform vec3 sunlightRec709;   // luminance 1
 uniform vec3 airglowZenith;    // linear Rec.709, cd/m^2
-layout(binding = 0) uniform sampler2D milkyWayS10;
-layout(binding = 1) uniform sampler2D zodiacalS10;
-layout(binding = 2) uniform sampler1D extinctionRec709;
+layout(binding = SKYIG_UNIT_MILKY_WAY) uniform sampler2D milkyWayS10;
+layout(binding = SKYIG_UNIT_ZODIACAL) uniform sampler2D zodiacalS10;
+layout(binding = SKYIG_UNIT_NIGHT_EXTINCTION) uniform sampler1D extinctionRec709;
 
 in vec3 vViewRay;
-layout(location = 0) out vec4 outRadiance;
+layout(location = SKYIG_OUTPUT_COLOR) out vec4 outRadiance;
 
 // sky/atmosphere/extinction_profile.h: u = (1 + sign(e) sqrt(|e| / 90 deg)) / 2.
 float extinctionTexCoord(float elevation) {

@@ -16,10 +16,10 @@
 
 // This frame's 2D slices of the scattering tables (physical_sky_slice.frag) for the sun and
 // the moon: x = nu texel, y = u_mu.
-layout(binding = 4) uniform sampler2D sunSliceScattering;
-layout(binding = 5) uniform sampler2D sunSliceSingleMie;
-layout(binding = 6) uniform sampler2D moonSliceScattering;
-layout(binding = 7) uniform sampler2D moonSliceSingleMie;
+layout(binding = SKYIG_UNIT_SUN_SLICE_SCATTERING) uniform sampler2D sunSliceScattering;
+layout(binding = SKYIG_UNIT_SUN_SLICE_SINGLE_MIE) uniform sampler2D sunSliceSingleMie;
+layout(binding = SKYIG_UNIT_MOON_SLICE_SCATTERING) uniform sampler2D moonSliceScattering;
+layout(binding = SKYIG_UNIT_MOON_SLICE_SINGLE_MIE) uniform sampler2D moonSliceSingleMie;
 
 // packedScatteredRec709 from a slice: GL's bilinear filter does the blend in nu by hand of
 // lookupScatteringUvwz (the same weights: texel centres at (i + 0.5) / nu_size).

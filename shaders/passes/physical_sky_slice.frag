@@ -4,12 +4,14 @@
 // lookup per table instead of two trilinear 3D ones and a blend by hand. The result is the
 // same: multilinear interpolation is separable, and texel (i, j) holds exactly what the 3D
 // lookup blends at nu index i and mu row j (Bruneton & Neyret 2008, section 4 parameterisation).
-layout(binding = 1) uniform sampler3D scatteringPacked;
-layout(binding = 2) uniform sampler3D singleMieRG;
+#include "common/bindings.h"
+
+layout(binding = SKYIG_UNIT_SCATTERING) uniform sampler3D scatteringPacked;
+layout(binding = SKYIG_UNIT_SINGLE_MIE) uniform sampler3D singleMieRG;
 uniform vec3 sliceCoords;  // u_mu_s, u_r, number of nu texels
 
-layout(location = 0) out vec4 outScattering;
-layout(location = 1) out vec4 outSingleMie;
+layout(location = SKYIG_OUTPUT_SLICE_SCATTERING) out vec4 outScattering;
+layout(location = SKYIG_OUTPUT_SLICE_SINGLE_MIE) out vec4 outSingleMie;
 
 void main() {
   vec3 uvw = vec3((floor(gl_FragCoord.x) + sliceCoords.x) / sliceCoords.z,

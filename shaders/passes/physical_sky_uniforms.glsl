@@ -2,6 +2,7 @@
 // atmosphere; physical_sky_space.frag, camera above it): PhysicalSkyPass sets both.
 #ifndef SKYIG_PASSES_PHYSICAL_SKY_UNIFORMS_GLSL
 #define SKYIG_PASSES_PHYSICAL_SKY_UNIFORMS_GLSL
+#include "common/bindings.h"
 #include "atmosphere/rendering_rec709.glsl"
 
 uniform AtmosphereParameters atm;
@@ -17,12 +18,12 @@ uniform vec3 moonlightScale;  // Rec.709, the moon's irradiance relative to the 
 // and the moon's u_mu_s (scatteringUvwzFromRMuMuSNu), cos of the sun's angular radius.
 uniform vec4 frameRadii;     // r, rho, H, u_r
 uniform vec3 frameAngles;    // sun u_mu_s, moon u_mu_s, cos(sun angular radius)
-layout(binding = 0) uniform sampler2D transmittanceXyz;
-layout(binding = 1) uniform sampler3D scatteringPacked;
-layout(binding = 2) uniform sampler3D singleMieRG;
-layout(binding = 3) uniform sampler2D irradianceXyz;
+layout(binding = SKYIG_UNIT_TRANSMITTANCE) uniform sampler2D transmittanceXyz;
+layout(binding = SKYIG_UNIT_SCATTERING) uniform sampler3D scatteringPacked;
+layout(binding = SKYIG_UNIT_SINGLE_MIE) uniform sampler3D singleMieRG;
+layout(binding = SKYIG_UNIT_IRRADIANCE) uniform sampler2D irradianceXyz;
 
 in vec3 vViewRay;
-layout(location = 0) out vec4 outRadiance;
+layout(location = SKYIG_OUTPUT_COLOR) out vec4 outRadiance;
 
 #endif

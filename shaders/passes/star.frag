@@ -1,10 +1,11 @@
 // Star and planet pass: the PSF weight of this pixel times the source's radiance per weight,
 // added (blending ONE, ONE) to the sky's absolute radiance in cd/m^2.
+#include "common/bindings.h"
 #include "night/star_psf.glsl"
 
 flat in vec2 vCentrePx;
 flat in vec3 vRadiancePerWeight;
-layout(location = 0) out vec4 outRadiance;
+layout(location = SKYIG_OUTPUT_COLOR) out vec4 outRadiance;
 
 void main() {
   outRadiance = vec4(vRadiancePerWeight * starPsfWeight(gl_FragCoord.xy - vCentrePx, kStarPsfSigmaPx), 0.0);

@@ -6,8 +6,8 @@
 #include "common/uniforms.h"
 #include "night/star_psf.glsl"
 
-layout(location = 0) in vec3 aDirection;  // per instance: apparent ENU unit vector
-layout(location = 1) in vec3 aRec709Lux;  // per instance: illuminance per channel at the eye
+layout(location = SKYIG_ATTRIB_STAR_DIRECTION) in vec3 aDirection;  // per instance: apparent ENU unit vector
+layout(location = SKYIG_ATTRIB_STAR_REC709_LUX) in vec3 aRec709Lux;  // per instance: illuminance per channel at the eye
 
 uniform mat3 uWorldToNdc;  // the inverse of ndcToWorld
 

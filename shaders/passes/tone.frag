@@ -4,9 +4,9 @@
 #include "common/uniforms.h"
 #include "tone/tone_reproduction.glsl"
 
-layout(binding = 0) uniform sampler2D hdrImage;
+layout(binding = SKYIG_UNIT_HDR_IMAGE) uniform sampler2D hdrImage;
 in vec2 vTexCoord;
-layout(location = 0) out vec4 outDisplay;
+layout(location = SKYIG_OUTPUT_COLOR) out vec4 outDisplay;
 
 float hash12(vec2 p) {  // Hoskins, "Hash without sine" (2014), hash12
   vec3 p3 = fract(vec3(p.xyx) * 0.1031);

@@ -8,6 +8,7 @@
 #include "render/gl/gl_context.h"
 #include "render/gl/gl_program.h"
 #include "render/passes/physical_sky_pass.h"
+#include "shaders/common/bindings.h"
 
 #include <gtest/gtest.h>
 
@@ -224,16 +225,16 @@ TEST(AtmosphereGpu, SkyPanoramaIsFiniteAndMatchesTheCpu) {
   const AtmosphereParameters& atm = model.parameters(0);
   const GroupTables& t = model.tables(0);
   const Medium& m = model.config().medium;
-  glBindTextureUnit(0, upload2D(t.transmittance));
-  glBindTextureUnit(1, upload3D(t.scattering));
-  glBindTextureUnit(2, upload3D(t.single_mie));
-  glBindTextureUnit(3, upload2D(t.irradiance));
+  glBindTextureUnit(SKYIG_UNIT_TRANSMITTANCE, upload2D(t.transmittance));
+  glBindTextureUnit(SKYIG_UNIT_SCATTERING, upload3D(t.scattering));
+  glBindTextureUnit(SKYIG_UNIT_SINGLE_MIE, upload3D(t.single_mie));
+  glBindTextureUnit(SKYIG_UNIT_IRRADIANCE, upload2D(t.irradiance));
   const GLuint program = computeProgram("sky_view.comp");
   setParameters(program, atm);
   const int width = 1920;
   const int height = 1200;
   const GLuint out = texture2D(width, height);
-  image(0, out, GL_WRITE_ONLY);
+  image(SKYIG_IMAGE_SKY_VIEW, out, GL_WRITE_ONLY);
 
   struct Case {
     double altitude, sun_zenith_deg;

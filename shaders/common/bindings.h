@@ -1,0 +1,89 @@
+#ifndef SKYIG_COMMON_BINDINGS_H
+#define SKYIG_COMMON_BINDINGS_H
+// Every number that C++ and GLSL must agree on to connect a resource to a shader: uniform-block
+// binding points, texture units, image units, vertex-attribute and fragment-output locations.
+// Plain #defines of integer literals, which both preprocessors read the same way: the shaders
+// write `layout(binding = SKYIG_UNIT_MOON_ALBEDO)`, the passes `glBindTextureUnit(
+// SKYIG_UNIT_MOON_ALBEDO, ...)`, and neither side holds a bare number.
+// tests/render/bindings_test.cpp (ctest Bindings.*) links every program and checks what GL
+// reports for each sampler, image, block, input and output against these names, and that no
+// shader or pass source binds by a bare number.
+
+// Uniform blocks (layouts in common/uniforms.h). SkyRenderer binds them once per channel and
+// every pass reads them from there, so each block has its own binding point.
+#define SKYIG_BINDING_FRAME 0  // FrameBlock: view rays and viewport
+#define SKYIG_BINDING_SKY 1    // AnalyticSkyBlock
+#define SKYIG_BINDING_TONE 2   // ToneBlock
+
+// Texture units. Every pass binds its textures right before it draws, so units may repeat
+// between passes; within a program they must differ.
+
+// The physical sky (passes/physical_sky*.frag, PhysicalSkyPass) and atmosphere/sky_view.comp:
+// the four tables in the order of Bruneton's rendering functions. The slice program
+// (physical_sky_slice.frag) reads the 3D tables at the same units as the sky programs, so
+// PhysicalSkyPass::draw binds them once for both; this frame's 2D slices come after.
+#define SKYIG_UNIT_TRANSMITTANCE 0
+#define SKYIG_UNIT_SCATTERING 1
+#define SKYIG_UNIT_SINGLE_MIE 2
+#define SKYIG_UNIT_IRRADIANCE 3
+#define SKYIG_UNIT_SUN_SLICE_SCATTERING 4
+#define SKYIG_UNIT_SUN_SLICE_SINGLE_MIE 5
+#define SKYIG_UNIT_MOON_SLICE_SCATTERING 6
+#define SKYIG_UNIT_MOON_SLICE_SINGLE_MIE 7
+
+// The GPU precompute (atmosphere/precompute_*.comp, AtmosphereGpuPrecompute): one unit per
+// table for all seven programs, so each scattering order binds every table once and the passes
+// run back to back; a table is unbound only while a pass rewrites it as an image. The
+// transmittance is read at SKYIG_UNIT_TRANSMITTANCE, as by the sky.
+#define SKYIG_UNIT_DELTA_RAYLEIGH 1    // single Rayleigh (order 1)
+#define SKYIG_UNIT_DELTA_MIE 2         // single Mie (order 1)
+#define SKYIG_UNIT_DELTA_MULTIPLE 3    // multiple scattering of the last order
+#define SKYIG_UNIT_DELTA_IRRADIANCE 4  // ground irradiance of the last order
+#define SKYIG_UNIT_DELTA_DENSITY 5     // scattering density
+#define SKYIG_UNIT_NU_SLICES_A 6       // precompute_nu_slices.comp's two outputs
+#define SKYIG_UNIT_NU_SLICES_B 7
+#define SKYIG_PRECOMPUTE_UNIT_COUNT 8  // units 0 to 7, unbound before and after
+
+// The diffuse night sky (passes/night_diffuse.frag, NightDiffusePass).
+#define SKYIG_UNIT_MILKY_WAY 0
+#define SKYIG_UNIT_ZODIACAL 1
+#define SKYIG_UNIT_NIGHT_EXTINCTION 2  // ExtinctionTexture
+
+// The moon (passes/moon.frag, MoonPass). Kept apart from the sky pass's 0 to 7 as they always
+// were; nothing needs it (see above), and any GL 4.5 driver has far more units than 22.
+#define SKYIG_UNIT_MOON_ALBEDO 20
+#define SKYIG_UNIT_MOON_EXTINCTION 21  // ExtinctionTexture
+
+// Tone reproduction (passes/tone.frag, SkyRenderer): the HDR target, its only texture.
+#define SKYIG_UNIT_HDR_IMAGE 0
+
+// Image units of the GPU precompute (atmosphere/*.comp): each program numbers what it writes
+// from 0 (at most four tables), and a table written by two programs keeps one unit in both
+// (irradiance: direct and indirect irradiance; scattering: single and multiple scattering).
+#define SKYIG_IMAGE_TRANSMITTANCE 0
+#define SKYIG_IMAGE_DELTA_IRRADIANCE 0
+#define SKYIG_IMAGE_IRRADIANCE 1
+#define SKYIG_IMAGE_DELTA_RAYLEIGH 0
+#define SKYIG_IMAGE_DELTA_MIE 1
+#define SKYIG_IMAGE_SCATTERING 2
+#define SKYIG_IMAGE_SINGLE_MIE 3
+#define SKYIG_IMAGE_NU_SLICES_A 0
+#define SKYIG_IMAGE_NU_SLICES_B 1
+#define SKYIG_IMAGE_DELTA_DENSITY 0
+#define SKYIG_IMAGE_DELTA_MULTIPLE 0
+#define SKYIG_IMAGE_SKY_VIEW 0  // atmosphere/sky_view.comp's panorama
+#define SKYIG_PRECOMPUTE_IMAGE_COUNT 4  // image units 0 to 3, unbound after
+
+// Vertex attributes of the star pass (passes/star.vert, StarPass): the two vec3 of a source,
+// in the order one instance stores them in the interleaved buffer.
+#define SKYIG_ATTRIB_STAR_DIRECTION 0
+#define SKYIG_ATTRIB_STAR_REC709_LUX 1
+
+// Fragment outputs. A pass with one output writes draw buffer 0: colour attachment 0 of its
+// RenderTarget. The slice program writes the two colour attachments of PhysicalSkyPass's
+// slice framebuffer.
+#define SKYIG_OUTPUT_COLOR 0
+#define SKYIG_OUTPUT_SLICE_SCATTERING 0
+#define SKYIG_OUTPUT_SLICE_SINGLE_MIE 1
+
+#endif

@@ -1,0 +1,334 @@
+// The numbers that tie a pass's C++ to its GLSL (uniform-block bindings, texture and image units,
+// attribute and output locations) are named once, in shaders/common/bindings.h. These tests
+// check that both sides use those names and agree: every program the renderer links reports,
+// for each of its samplers, images, blocks, inputs and outputs, the number the header gives
+// the C++ that binds it; and neither the shaders nor the renderer's C++ binds by a bare number.
+#include "render/gl/embedded_shaders.h"
+#include "render/gl/gl_context.h"
+#include "render/gl/gl_program.h"
+#include "shaders/common/bindings.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+using namespace skyig::render;
+
+namespace {
+
+// What a program should report, by kind and GLSL name. `mayBeInactive`: the compiler may drop
+// it from this program (declared in a shared include, or read only by a vertex-stage output
+// that the fragment stage ignores); when it is active its number must still match.
+struct Expect {
+  std::string kind;
+  std::string name;
+  GLint value;
+  bool mayBeInactive = false;
+};
+
+Expect sampler(const char* name, GLint unit) { return {"sampler", name, unit}; }
+Expect image(const char* name, GLint unit) { return {"image", name, unit}; }
+Expect block(const char* name, GLint binding) { return {"uniform block", name, binding}; }
+Expect input(const char* name, GLint location) { return {"input", name, location}; }
+Expect output(const char* name, GLint location) { return {"output", name, location}; }
+Expect optional(Expect e) {
+  e.mayBeInactive = true;
+  return e;
+}
+
+// Every program the renderer links, with the units its C++ binds (render/sky_renderer.cpp,
+// render/passes/*.cpp). One file: a compute program.
+struct ProgramCase {
+  std::vector<std::string> files;
+  std::vector<Expect> expect;
+};
+
+std::vector<ProgramCase> programs() {
+  const Expect frame = block("FrameBlock", SKYIG_BINDING_FRAME);
+  const Expect radiance = output("outRadiance", SKYIG_OUTPUT_COLOR);
+  std::vector<ProgramCase> cases = {
+      // SkyRenderer: the analytic sky and the tone pass.
+      {{"passes/fullscreen.vert", "passes/analytic_sky.frag"},
+       {frame, block("AnalyticSkyBlock", SKYIG_BINDING_SKY), radiance}},
+      {{"passes/fullscreen.vert", "passes/tone.frag"},
+       {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
+        output("outDisplay", SKYIG_OUTPUT_COLOR)}},
+      // PhysicalSkyPass: inside the atmosphere, from space, and this frame's slices.
+      {{"passes/fullscreen.vert", "passes/physical_sky.frag"},
+       {frame, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE),
+        optional(sampler("scatteringPacked", SKYIG_UNIT_SCATTERING)),
+        optional(sampler("singleMieRG", SKYIG_UNIT_SINGLE_MIE)), sampler("irradianceXyz", SKYIG_UNIT_IRRADIANCE),
+        sampler("sunSliceScattering", SKYIG_UNIT_SUN_SLICE_SCATTERING),
+        sampler("sunSliceSingleMie", SKYIG_UNIT_SUN_SLICE_SINGLE_MIE),
+        sampler("moonSliceScattering", SKYIG_UNIT_MOON_SLICE_SCATTERING),
+        sampler("moonSliceSingleMie", SKYIG_UNIT_MOON_SLICE_SINGLE_MIE), radiance}},
+      {{"passes/fullscreen.vert", "passes/physical_sky_space.frag"},
+       {frame, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE), sampler("scatteringPacked", SKYIG_UNIT_SCATTERING),
+        sampler("singleMieRG", SKYIG_UNIT_SINGLE_MIE), sampler("irradianceXyz", SKYIG_UNIT_IRRADIANCE), radiance}},
+      {{"passes/fullscreen.vert", "passes/physical_sky_slice.frag"},
+       {optional(frame), sampler("scatteringPacked", SKYIG_UNIT_SCATTERING),
+        sampler("singleMieRG", SKYIG_UNIT_SINGLE_MIE), output("outScattering", SKYIG_OUTPUT_SLICE_SCATTERING),
+        output("outSingleMie", SKYIG_OUTPUT_SLICE_SINGLE_MIE)}},
+      // MoonPass, NightDiffusePass, StarPass.
+      {{"passes/moon.vert", "passes/moon.frag"},
+       {frame, sampler("moonAlbedo", SKYIG_UNIT_MOON_ALBEDO), sampler("extinctionTable", SKYIG_UNIT_MOON_EXTINCTION),
+        radiance}},
+      {{"passes/fullscreen.vert", "passes/night_diffuse.frag"},
+       {frame, sampler("milkyWayS10", SKYIG_UNIT_MILKY_WAY), sampler("zodiacalS10", SKYIG_UNIT_ZODIACAL),
+        sampler("extinctionRec709", SKYIG_UNIT_NIGHT_EXTINCTION), radiance}},
+      {{"passes/star.vert", "passes/star.frag"},
+       {frame, input("aDirection", SKYIG_ATTRIB_STAR_DIRECTION), input("aRec709Lux", SKYIG_ATTRIB_STAR_REC709_LUX),
+        radiance}},
+      // AtmosphereGpuPrecompute, in the order it runs them.
+      {{"atmosphere/precompute_transmittance.comp"}, {image("transmittance_out", SKYIG_IMAGE_TRANSMITTANCE)}},
+      {{"atmosphere/precompute_direct_irradiance.comp"},
+       {sampler("transmittance_texture", SKYIG_UNIT_TRANSMITTANCE),
+        image("delta_irradiance_out", SKYIG_IMAGE_DELTA_IRRADIANCE), image("irradiance_out", SKYIG_IMAGE_IRRADIANCE)}},
+      {{"atmosphere/precompute_single_scattering.comp"},
+       {sampler("transmittance_texture", SKYIG_UNIT_TRANSMITTANCE),
+        image("delta_rayleigh_out", SKYIG_IMAGE_DELTA_RAYLEIGH), image("delta_mie_out", SKYIG_IMAGE_DELTA_MIE),
+        image("scattering_out", SKYIG_IMAGE_SCATTERING), image("single_mie_out", SKYIG_IMAGE_SINGLE_MIE)}},
+      {{"atmosphere/precompute_nu_slices.comp"},
+       {sampler("single_rayleigh_texture", SKYIG_UNIT_DELTA_RAYLEIGH),
+        sampler("single_mie_texture", SKYIG_UNIT_DELTA_MIE), sampler("multiple_texture", SKYIG_UNIT_DELTA_MULTIPLE),
+        image("slices_a_out", SKYIG_IMAGE_NU_SLICES_A), image("slices_b_out", SKYIG_IMAGE_NU_SLICES_B)}},
+      {{"atmosphere/precompute_scattering_density.comp"},
+       {sampler("transmittance_texture", SKYIG_UNIT_TRANSMITTANCE),
+        sampler("irradiance_texture", SKYIG_UNIT_DELTA_IRRADIANCE), sampler("slices_a", SKYIG_UNIT_NU_SLICES_A),
+        sampler("slices_b", SKYIG_UNIT_NU_SLICES_B), image("density_out", SKYIG_IMAGE_DELTA_DENSITY)}},
+      {{"atmosphere/precompute_indirect_irradiance.comp"},
+       {sampler("single_rayleigh_texture", SKYIG_UNIT_DELTA_RAYLEIGH),
+        sampler("single_mie_texture", SKYIG_UNIT_DELTA_MIE), sampler("multiple_texture", SKYIG_UNIT_DELTA_MULTIPLE),
+        image("delta_irradiance_out", SKYIG_IMAGE_DELTA_IRRADIANCE),
+        image("irradiance_accumulated", SKYIG_IMAGE_IRRADIANCE)}},
+      {{"atmosphere/precompute_multiple_scattering.comp"},
+       {sampler("transmittance_texture", SKYIG_UNIT_TRANSMITTANCE),
+        sampler("scattering_density_texture", SKYIG_UNIT_DELTA_DENSITY),
+        image("delta_multiple_out", SKYIG_IMAGE_DELTA_MULTIPLE),
+        image("scattering_accumulated", SKYIG_IMAGE_SCATTERING)}},
+      // The panorama check of tests/sky/atmosphere/gpu_precompute_test.cpp.
+      {{"atmosphere/sky_view.comp"},
+       {sampler("transmittance_texture", SKYIG_UNIT_TRANSMITTANCE),
+        sampler("scattering_texture", SKYIG_UNIT_SCATTERING), sampler("single_mie_texture", SKYIG_UNIT_SINGLE_MIE),
+        sampler("irradiance_texture", SKYIG_UNIT_IRRADIANCE), image("radiance_out", SKYIG_IMAGE_SKY_VIEW)}},
+  };
+  // A std140 block may stay active wherever common/uniforms.h declares it, read or not (Mesa
+  // keeps them all): the blocks a program does not list above are optional in it.
+  for (ProgramCase& c : cases) {
+    if (c.files.size() == 1) continue;
+    for (const Expect& b : {frame, block("AnalyticSkyBlock", SKYIG_BINDING_SKY), block("ToneBlock", SKYIG_BINDING_TONE)}) {
+      bool listed = false;
+      for (const Expect& e : c.expect) listed = listed || (e.kind == b.kind && e.name == b.name);
+      if (!listed) c.expect.push_back(optional(b));
+    }
+  }
+  return cases;
+}
+
+bool isSampler(GLint type) {
+  switch (type) {
+    case GL_SAMPLER_1D: case GL_SAMPLER_2D: case GL_SAMPLER_3D: case GL_SAMPLER_CUBE:
+    case GL_SAMPLER_1D_ARRAY: case GL_SAMPLER_2D_ARRAY: case GL_SAMPLER_CUBE_MAP_ARRAY:
+    case GL_SAMPLER_1D_SHADOW: case GL_SAMPLER_2D_SHADOW: case GL_SAMPLER_2D_RECT:
+    case GL_SAMPLER_BUFFER: case GL_SAMPLER_2D_MULTISAMPLE:
+    case GL_INT_SAMPLER_1D: case GL_INT_SAMPLER_2D: case GL_INT_SAMPLER_3D:
+    case GL_UNSIGNED_INT_SAMPLER_1D: case GL_UNSIGNED_INT_SAMPLER_2D: case GL_UNSIGNED_INT_SAMPLER_3D:
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool isImage(GLint type) {
+  switch (type) {
+    case GL_IMAGE_1D: case GL_IMAGE_2D: case GL_IMAGE_3D: case GL_IMAGE_CUBE: case GL_IMAGE_2D_RECT:
+    case GL_IMAGE_1D_ARRAY: case GL_IMAGE_2D_ARRAY: case GL_IMAGE_BUFFER:
+    case GL_INT_IMAGE_2D: case GL_INT_IMAGE_3D: case GL_UNSIGNED_INT_IMAGE_2D: case GL_UNSIGNED_INT_IMAGE_3D:
+      return true;
+    default:
+      return false;
+  }
+}
+
+GLint property(GLuint program, GLenum interface, GLuint index, GLenum prop) {
+  GLint value = -1;
+  glGetProgramResourceiv(program, interface, index, 1, &prop, 1, nullptr, &value);
+  return value;
+}
+
+std::string resourceName(GLuint program, GLenum interface, GLuint index) {
+  const GLint length = property(program, interface, index, GL_NAME_LENGTH);
+  std::string name(static_cast<std::size_t>(std::max(length, 1)), '\0');
+  glGetProgramResourceName(program, interface, index, static_cast<GLsizei>(name.size()), nullptr, name.data());
+  name.resize(std::strlen(name.c_str()));
+  return name;
+}
+
+struct Resource {
+  std::string kind, name;
+  GLint value;
+};
+
+// What GL reports for every active resource that a binding or a location connects.
+std::vector<Resource> activeBindings(GLuint program) {
+  std::vector<Resource> out;
+  auto each = [&](GLenum interface, auto&& f) {
+    GLint count = 0;
+    glGetProgramInterfaceiv(program, interface, GL_ACTIVE_RESOURCES, &count);
+    for (GLuint i = 0; i < static_cast<GLuint>(count); ++i) f(i, resourceName(program, interface, i));
+  };
+  each(GL_UNIFORM, [&](GLuint i, const std::string& name) {
+    const GLint type = property(program, GL_UNIFORM, i, GL_TYPE);
+    if (!isSampler(type) && !isImage(type)) return;
+    GLint unit = -1;
+    glGetUniformiv(program, property(program, GL_UNIFORM, i, GL_LOCATION), &unit);
+    out.push_back({isSampler(type) ? "sampler" : "image", name, unit});
+  });
+  each(GL_UNIFORM_BLOCK, [&](GLuint i, const std::string& name) {
+    out.push_back({"uniform block", name, property(program, GL_UNIFORM_BLOCK, i, GL_BUFFER_BINDING)});
+  });
+  each(GL_SHADER_STORAGE_BLOCK, [&](GLuint i, const std::string& name) {
+    out.push_back({"storage block", name, property(program, GL_SHADER_STORAGE_BLOCK, i, GL_BUFFER_BINDING)});
+  });
+  each(GL_PROGRAM_INPUT, [&](GLuint i, const std::string& name) {
+    if (name.rfind("gl_", 0) == 0) return;  // built-ins have no location
+    out.push_back({"input", name, property(program, GL_PROGRAM_INPUT, i, GL_LOCATION)});
+  });
+  each(GL_PROGRAM_OUTPUT, [&](GLuint i, const std::string& name) {
+    if (name.rfind("gl_", 0) == 0) return;
+    out.push_back({"output", name, property(program, GL_PROGRAM_OUTPUT, i, GL_LOCATION)});
+  });
+  return out;
+}
+
+GLuint link(const std::vector<std::string>& files) {
+  if (files.size() == 1) return linkProgram({compileShaderStage(GL_COMPUTE_SHADER, files[0])}, files[0]);
+  return linkProgram({compileShaderStage(GL_VERTEX_SHADER, files[0]), compileShaderStage(GL_FRAGMENT_SHADER, files[1])},
+                     files[0] + " + " + files[1]);
+}
+
+std::unique_ptr<GlContext> makeContext() {
+  try {
+    return createHeadlessContext();
+  } catch (const GlContextError&) {
+    return nullptr;
+  }
+}
+
+bool isPassFile(std::string_view path) {
+  for (std::string_view ext : {".vert", ".frag", ".comp"})
+    if (path.size() > ext.size() && path.substr(path.size() - ext.size()) == ext) return true;
+  return false;
+}
+
+}  // namespace
+
+// Links every program of the renderer and the GPU precompute and compares what GL reports for
+// each sampler, image, uniform/storage block, vertex input and fragment output with the
+// shaders/common/bindings.h name that the C++ binds it by. A GLSL declaration with another
+// number, or a new resource without a name, fails here.
+TEST(Bindings, EveryPassUsesTheSharedUnits) {
+  const auto gl = makeContext();
+  if (!gl) GTEST_SKIP() << "no OpenGL 4.5 context through EGL";
+  const std::vector<ProgramCase> cases = programs();
+
+  // Every pass file of the embedded shaders is in a program above.
+  for (const EmbeddedShader& s : embeddedShaders()) {
+    if (!isPassFile(s.path)) continue;
+    bool listed = false;
+    for (const ProgramCase& c : cases)
+      for (const std::string& f : c.files) listed = listed || f == s.path;
+    EXPECT_TRUE(listed) << s.path << " is in no program of this test: add the program and its bindings";
+  }
+
+  for (const ProgramCase& c : cases) {
+    std::string what = c.files[0];
+    if (c.files.size() > 1) what += " + " + c.files[1];
+    SCOPED_TRACE(what);
+    const GLuint program = link(c.files);
+    const std::vector<Resource> active = activeBindings(program);
+    const bool compute = c.files.size() == 1;
+    std::map<std::string, std::map<GLint, std::string>> taken;  // kind -> number -> name
+    for (const Resource& r : active) {
+      const Expect* e = nullptr;
+      for (const Expect& x : c.expect)
+        if (x.kind == r.kind && x.name == r.name) e = &x;
+      if (!e) {
+        ADD_FAILURE() << r.kind << " " << r.name << " (at " << r.value
+                      << ") is not in this test: bind it by a shaders/common/bindings.h name and list it here";
+        continue;
+      }
+      EXPECT_EQ(r.value, e->value) << r.kind << " " << r.name << ": the GLSL says " << r.value
+                                   << ", shaders/common/bindings.h (what the C++ binds) " << e->value;
+      // Two resources of one kind on one number would read the same texture or buffer.
+      const auto [it, fresh] = taken[r.kind].emplace(r.value, r.name);
+      EXPECT_TRUE(fresh) << r.kind << "s " << it->second << " and " << r.name << " share " << r.value;
+      // The precompute unbinds units and images up to these counts.
+      if (compute && r.kind == "sampler") {
+        EXPECT_LT(r.value, SKYIG_PRECOMPUTE_UNIT_COUNT) << r.name;
+      }
+      if (compute && r.kind == "image") {
+        EXPECT_LT(r.value, SKYIG_PRECOMPUTE_IMAGE_COUNT) << r.name;
+      }
+    }
+    for (const Expect& e : c.expect) {
+      if (e.mayBeInactive) continue;
+      bool found = false;
+      for (const Resource& r : active) found = found || (r.kind == e.kind && r.name == e.name);
+      EXPECT_TRUE(found) << e.kind << " " << e.name << " is not active in the linked program";
+    }
+    glDeleteProgram(program);
+  }
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+// The GLSL side, as text: no embedded shader file (passes, physics, shared headers) gives a
+// binding or a location as a bare number.
+TEST(Bindings, NoShaderSourceHasABareBindingNumber) {
+  const std::regex bare(R"(\b(binding|location)\s*=\s*[0-9])");
+  int files = 0;
+  for (const EmbeddedShader& s : embeddedShaders()) {
+    ++files;
+    std::istringstream in{std::string(s.source)};
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n)
+      EXPECT_FALSE(std::regex_search(line, bare))
+          << s.path << ":" << n << ": a bare number; name it in shaders/common/bindings.h\n  " << line;
+  }
+  EXPECT_GT(files, 20);
+}
+
+// The C++ side, as text: no source of the renderer binds a texture unit, image unit, uniform
+// buffer or vertex attribute by a bare number, nor keeps its own constant for one.
+TEST(Bindings, NoRendererSourceBindsByNumber) {
+  const std::filesystem::path root = std::filesystem::path(SKYIG_SOURCE_DIR) / "render";
+  ASSERT_TRUE(std::filesystem::is_directory(root)) << root;
+  const std::regex bare(
+      R"((glBindTextureUnit|glBindImageTexture|\bimage|\bbind|UniformBuffer\s*\w*|Block_)\(\s*[0-9])"
+      R"(|glBindBufferBase\([^,]*,\s*[0-9])"
+      R"(|VertexArrayAttrib\w*\([^,]*,\s*[0-9])"
+      R"(|\bk\w*(Unit|Binding|Location)\s*=\s*[0-9])");  // a local constant instead of the shared name
+  int files = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+    const std::string ext = entry.path().extension().string();
+    if (ext != ".cpp" && ext != ".h") continue;
+    ++files;
+    std::ifstream in(entry.path());
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n)
+      EXPECT_FALSE(std::regex_search(line, bare))
+          << entry.path().string() << ":" << n << ": a bare number; use its shaders/common/bindings.h name\n  "
+          << line;
+  }
+  EXPECT_GT(files, 10);
+}

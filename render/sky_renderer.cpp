@@ -41,7 +41,14 @@ ToneBlock toToneBlock(const skyig::sky::SkyState& state, const skyig::sky::Chann
   ToneBlock b{};
   const skyig::sky::DisplayParams& d = channel.display;
   b.display = glm::vec4(glm::dvec4(d.maxLuminance, d.ambientLuminance, d.gamma, d.adaptationLuminance));
-  b.adaptation = glm::vec4(static_cast<float>(state.adaptationLuminance), 1.0f, 0.0f, 0.0f);
+  const bool histogram = d.toneOperator == skyig::sky::ToneOperator::Histogram;
+  b.adaptation = glm::vec4(static_cast<float>(state.adaptationLuminance), 1.0f, histogram ? 0.0f : 1.0f, 0.0f);
+  if (histogram) {
+    const skyig::sky::eye::ToneCurve curve = skyig::sky::toneCurveFor(state, d);
+    b.curveRange = glm::vec4(static_cast<float>(curve.minLog10), static_cast<float>(curve.maxLog10), 0.0f, 0.0f);
+    for (int i = 0; i < skyig::sky::eye::ToneCurve::kPoints; ++i)
+      b.curve[i / 4][i % 4] = curve.displayLog10[static_cast<std::size_t>(i)];
+  }
   return b;
 }
 

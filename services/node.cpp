@@ -45,7 +45,7 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
                 SkyWorker& worker, const std::atomic<bool>& stop) {
   std::shared_ptr<const HostSnapshot> snapshot;
   std::uint64_t seen = ~0ull;
-  auto lastSky = Clock::now() - 1h;
+  auto lastWarning = Clock::now() - 1h;
   auto lastStats = Clock::now();
   while (!stop.load(std::memory_order_relaxed)) {
     const auto now = Clock::now();
@@ -56,15 +56,17 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
     }
     const bool newAtmosphere = worker.followAtmosphere(snapshot.get(), now);
     // A new host state or atmosphere, or at least every 100 ms so the sun follows the clock.
-    if (newHost || newAtmosphere || now - lastSky > 100ms) {
-      try {
-        sky.publish(BuiltSky{worker.build(snapshot.get(), now), snapshot, seen});
+    try {
+      if (auto state = worker.step(snapshot.get(), now, newAtmosphere)) {
+        sky.publish(BuiltSky{std::move(*state), snapshot, seen});
         stats.skyStates.fetch_add(1, std::memory_order_relaxed);
-      } catch (const std::exception& e) {
-        stats.rejectedValues.fetch_add(1, std::memory_order_relaxed);
-        spdlog::warn("host state not usable, keeping the last sky: {}", e.what());
       }
-      lastSky = now;
+    } catch (const std::exception& e) {
+      stats.rejectedValues.fetch_add(1, std::memory_order_relaxed);
+      if (now - lastWarning > 1s) {
+        spdlog::warn("host state not usable, keeping the last sky: {}", e.what());
+        lastWarning = now;
+      }
     }
     if (!opt.statsPath.empty() && now - lastStats > std::chrono::duration<double>(opt.statsIntervalS)) {
       writeStatsFile(opt.statsPath, stats);

@@ -208,6 +208,10 @@ sky::ChannelConfig readChannel(TableReader& r, size_t index, std::string& node) 
     c.display.maxLuminance = d.number("max_luminance", c.display.maxLuminance, 1.0, 1e5);
     c.display.ambientLuminance = d.number("ambient_luminance", c.display.ambientLuminance, 0.0, 1e3);
     c.display.gamma = d.number("gamma", c.display.gamma, 1.0, 3.0);
+    const std::string tone = d.string("tone_operator", "tumblin_rushmeier", "\"histogram\" or \"tumblin_rushmeier\"");
+    if (tone == "histogram") c.display.toneOperator = sky::ToneOperator::Histogram;
+    else if (tone == "tumblin_rushmeier") c.display.toneOperator = sky::ToneOperator::TumblinRushmeier;
+    else d.fail(d.find("tone_operator"), "tone_operator", "expected \"histogram\" or \"tumblin_rushmeier\", got \"" + tone + "\"");
     c.display.adaptationLuminance =
         d.number("adaptation_luminance", c.display.maxLuminance / 10.0, 0.01, 1e5);
     d.rejectUnknownKeys();
@@ -245,6 +249,14 @@ NodeConfig parseNodeConfig(const std::string& text, const std::string& sourceNam
   if (const toml::table* t = subTable(r, "observer")) {
     TableReader o(*t, "observer.", sourceName);
     readObserver(o, config.observer);
+  }
+  if (const toml::table* t = subTable(r, "eye")) {
+    TableReader e(*t, "eye.", sourceName);
+    const std::string mode = e.string("adaptation", "temporal", "\"temporal\" or \"instant\"");
+    if (mode != "temporal" && mode != "instant")
+      e.fail(e.find("adaptation"), "adaptation", "expected \"temporal\" or \"instant\", got \"" + mode + "\"");
+    config.temporalAdaptation = mode == "temporal";
+    e.rejectUnknownKeys();
   }
   if (const toml::table* t = subTable(r, "host")) {
     TableReader h(*t, "host.", sourceName);

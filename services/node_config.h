@@ -56,6 +56,9 @@ struct NodeConfig {
   // "" = the bundled one, "none" = planets only.
   std::string starCataloguePath;
   protocol::canaerospace::IdentifierMap canIdentifiers;
+  // [eye] adaptation = "temporal": the pilot's eye adapts in time on the host's clock
+  // (sky/eye/adaptation.h); "instant": adapted at once to every scene (single-frame renders).
+  bool temporalAdaptation = true;
 
   // The channels node `name` renders: those assigned to it, and those assigned to none.
   std::vector<sky::ChannelConfig> channelsOf(const std::string& name) const;

@@ -61,7 +61,7 @@ struct Frame {
   std::uint64_t number = 0;
   std::int64_t timeNs = 0;
   std::shared_ptr<const HostSnapshot> host;
-  std::optional<sky::SkyState> sky;
+  std::optional<sky::SkyState> sky;  // none: the last one stays (no new host state, or a bad one)
   FramePose pose;
   std::string error;  // a host state the sky could not use (kept: the previous sky is shown)
 };
@@ -99,9 +99,9 @@ class Feeder {
     const Clock::time_point t = at(f.timeNs);
     // New tables for the host's visibility are waited for: the frame shows what the node shows
     // once they are built, whatever this machine's speed.
-    worker_.followAtmosphere(f.host.get(), t, /*wait=*/true);
+    const bool newAtmosphere = worker_.followAtmosphere(f.host.get(), t, /*wait=*/true);
     try {
-      f.sky = worker_.build(f.host.get(), t);
+      f.sky = worker_.step(f.host.get(), t, newAtmosphere || number == 0);
     } catch (const std::exception& e) {
       f.error = e.what();
     }
@@ -222,8 +222,9 @@ ReplayResult replay(const ReplayOptions& o) {
     const bool last = feeder.exhausted() && frame.timeNs >= lastNs;
     // The next frame's decoding and ephemeris run while this one renders.
     if (!last) next = std::async(std::launch::async, [&feeder, k] { return feeder.prepare(k + 1); });
-    if (frame.sky) lastSky = frame.sky, lastPose = frame.pose;
-    else spdlog::warn("frame {}: host state not usable, keeping the last sky: {}", k, frame.error);
+    if (frame.sky) lastSky = frame.sky;
+    lastPose = frame.pose;
+    if (!frame.error.empty()) spdlog::warn("frame {}: host state not usable, keeping the last sky: {}", k, frame.error);
     ++result.frames;
     const bool afterFrom = (!from.frame || k >= *from.frame) && (!from.utc || !lastSky || !before(lastSky->observer.utc, *from.utc));
     const bool pastTo = (to.frame && k > *to.frame) || (to.utc && lastSky && before(*to.utc, lastSky->observer.utc));

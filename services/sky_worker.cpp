@@ -13,6 +13,7 @@ SkyWorker::SkyWorker(const NodeConfig& config, atmosphere::AtmosphereUpdater* up
       hostAtmosphere_(updater ? updater->current()->config().medium : atmosphere::Medium{}, config.sky.groundAlbedo),
       conditions_(config.sky) {
   if (updater_ && !conditions_.atmosphere) conditions_.atmosphere = updater_->current();
+  for (const sky::ChannelConfig& c : config.channelsOf(config.nodeName)) displays_.push_back(c.display);
 }
 
 bool SkyWorker::followAtmosphere(const HostSnapshot* host, Clock::time_point now, bool wait) {
@@ -51,7 +52,59 @@ sky::SkyState SkyWorker::build(const HostSnapshot* host, Clock::time_point t) {
   sky::SkyConditions c = conditions_;
   // CIGI Celestial Sphere Control: the host dims or hides the star field.
   if (host) c.starFieldIntensity = host->state.starFieldIntensity;
-  return sky::buildSkyState(observerAt(host, t), c, std::nullopt, &caches_);
+  sky::SkyState s = sky::buildSkyState(observerAt(host, t), c, std::nullopt, &caches_);
+  if (config_.temporalAdaptation && eye_.started()) {
+    s.adaptationLuminance = eye_.level();
+    s.adaptationGain = eye_.gain(s.sceneLuminance);
+  }
+  sky::mapForDisplays(s, displays_);
+  return s;
+}
+
+namespace {
+
+// The host's own clock at a message: its IG Control timestamps when it sends them (the same on
+// every node and in a replay), else the message's arrival.
+double hostSeconds(const HostSnapshot& host) {
+  if (host.cigiClock && host.cigiClock->haveTimestamp) return host.cigiClock->continuousAt(host.state.received);
+  return std::chrono::duration<double>(host.state.received.time_since_epoch()).count();
+}
+
+// A new scene rather than the next moment of the same one: the sim clock jumped by more than
+// ten minutes, or the ownship by more than 20 km (a scenario reset or a reposition). The eye
+// then starts adapted to it, as a pilot would be.
+bool isJump(const sky::ObserverState& a, const sky::ObserverState& b) {
+  const double minutes = std::abs(ephemeris::julianDateUtc(a.utc) - ephemeris::julianDateUtc(b.utc)) * 1440.0;
+  constexpr double kDeg = 3.14159265358979323846 / 180.0, kEarthM = 6371000.0;
+  const double dLat = (b.latitudeDeg - a.latitudeDeg) * kDeg, dLon = (b.longitudeDeg - a.longitudeDeg) * kDeg;
+  const double h = std::sin(dLat / 2) * std::sin(dLat / 2) +
+                   std::cos(a.latitudeDeg * kDeg) * std::cos(b.latitudeDeg * kDeg) * std::sin(dLon / 2) * std::sin(dLon / 2);
+  const double metres = 2.0 * kEarthM * std::asin(std::min(1.0, std::sqrt(h)));
+  return minutes > 10.0 || metres > 20000.0 || std::abs(a.heightM - b.heightM) > 20000.0;
+}
+
+}  // namespace
+
+std::optional<sky::SkyState> SkyWorker::step(const HostSnapshot* host, Clock::time_point now, bool force,
+                                             Clock::duration refresh) {
+  const bool newHost = host && host->state.updates > 0 && (!lastHostMessage_ || host->state.received != *lastHostMessage_);
+  if (!newHost && !force && lastBuild_ && now - *lastBuild_ < refresh) return std::nullopt;
+  const Clock::time_point t = newHost ? host->state.received : now;
+  sky::SkyState s = build(host, t);
+  lastBuild_ = std::max(t, lastBuild_.value_or(t));
+  if (newHost && config_.temporalAdaptation) {
+    const double hostTime = hostSeconds(*host);
+    if (lastHostObserver_ && isJump(*lastHostObserver_, s.observer)) eye_.reset(s.sceneLuminance, hostTime);
+    else eye_.step(s.sceneLuminance, hostTime);
+    s.adaptationLuminance = eye_.level();
+    s.adaptationGain = eye_.gain(s.sceneLuminance);
+    sky::mapForDisplays(s, displays_);
+  }
+  if (newHost) {
+    lastHostMessage_ = host->state.received;
+    lastHostObserver_ = s.observer;
+  }
+  return s;
 }
 
 FramePose SkyWorker::poseAt(const HostSnapshot* host, Clock::time_point t,

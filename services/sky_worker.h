@@ -8,13 +8,16 @@
 // It owns what consecutive states share: the ephemeris and extinction caches and the follower
 // of the host's atmosphere. One SkyWorker per thread that builds states.
 #include "sky/atmosphere/updater.h"
+#include "sky/eye/adaptation.h"
 #include "sky/sky_state.h"
 #include "services/host_atmosphere.h"
 #include "services/host_snapshot.h"
 #include "services/node_config.h"
 #include "services/node_stats.h"
 
+#include <chrono>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace skyig::services {
@@ -39,8 +42,16 @@ class SkyWorker {
   // the host's visibility are in the next state, whatever the machine's speed).
   bool followAtmosphere(const HostSnapshot* host, Clock::time_point now, bool wait = false);
 
-  // The state at local instant `t` (the worker's step). Throws std::invalid_argument for a host
-  // state the sky cannot use: the caller counts it and keeps its last state.
+  // The state due at local instant `now`, if one is: for a host message not seen before, the
+  // state at the message's own instant, with the eye's adaptation stepped on the host's clock
+  // (so two nodes and a replay of one stream adapt alike); otherwise, when the host has been
+  // silent for `refresh` or `force` is set (new tables), the state at `now` with the eye as it
+  // is. Throws std::invalid_argument for a host state the sky cannot use: the caller counts it
+  // and keeps its last state.
+  std::optional<sky::SkyState> step(const HostSnapshot* host, Clock::time_point now, bool force = false,
+                                    Clock::duration refresh = std::chrono::milliseconds(100));
+
+  // The state at local instant `t` with the eye as it is now (no step in time).
   sky::SkyState build(const HostSnapshot* host, Clock::time_point t);
 
   // The observer at `t`: the host's ownship predicted to `t`, its clock and its air; the
@@ -57,6 +68,11 @@ class SkyWorker {
   sky::SkyConditions conditions_;  // the configured sky with the newest atmosphere
   std::uint64_t generation_ = 0;   // the updater's initial model is the configuration's
   sky::SkyStateCaches caches_;
+  std::vector<sky::DisplayParams> displays_;  // of the node's channels: their tone curves
+  sky::eye::EyeAdaptation eye_;
+  std::optional<Clock::time_point> lastBuild_;
+  std::optional<Clock::time_point> lastHostMessage_;  // `received` of the last host state stepped to
+  std::optional<sky::ObserverState> lastHostObserver_;
 };
 
 }  // namespace skyig::services

@@ -59,7 +59,8 @@ void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const sky
         {"atmosphere", used.conditions.atmosphere
                            ? nlohmann::json(atmosphere::hexHash(atmosphere::parameterHash(used.conditions.atmosphere->config())))
                            : nlohmann::json(nullptr)},
-        {"adaptation_cd_m2", used.adaptationLuminance},
+        {"adaptation_cd_m2", used.adaptationLuminance}, {"scene_cd_m2", used.sceneLuminance},
+        {"adaptation_gain", used.adaptationGain},
         {"views", views}}},
       {"sun", {{"azimuth_deg", used.sunAzimuth / kDeg}, {"altitude_deg", used.sunAltitude / kDeg},
                {"altitude_refracted_deg", used.sunApparentAltitude / kDeg}}},

@@ -7,8 +7,15 @@
 
 namespace skyig::sky {
 
+// How world luminance becomes display luminance (docs/tone-reproduction.md).
+enum class ToneOperator {
+  Histogram,         // Ward Larson, Rushmeier & Piatko 1997: visibility matching (the default)
+  TumblinRushmeier,  // Tumblin & Rushmeier 1993: brightness matching
+};
+
 // Paper 000 eq. 17: L_d = L_amb + L_dmax n^gamma, and the viewer's adaptation to the display.
 struct DisplayParams {
+  ToneOperator toneOperator = ToneOperator::TumblinRushmeier;
   double maxLuminance = 100.0;        // L_dmax, cd/m^2
   double ambientLuminance = 0.1;      // L_amb, cd/m^2
   double gamma = 2.2;
@@ -16,6 +23,7 @@ struct DisplayParams {
   // peak for projected sky scenes; with L_a(d) = L_dmax / 2 the Tumblin-Rushmeier operator puts
   // the mean daylight sky above L_dmax (docs/tone-reproduction.md).
   double adaptationLuminance = 10.0;
+  bool operator==(const DisplayParams&) const = default;
 };
 
 struct ChannelConfig {

@@ -1,5 +1,7 @@
 #include "sky/sky_state.h"
 
+#include "sky/view_sphere.h"
+
 #include "ephemeris/ephemeris.h"
 #include "sky/atmosphere/model.h"
 #include "sky/common/hemisphere_grid.h"
@@ -51,18 +53,6 @@ void validate(const ObserverState& o, const SkyConditions& c) {
   require(c.cieType >= 1 && c.cieType <= 15, "CIE sky type " + std::to_string(c.cieType) + " is outside 1..15");
 }
 
-// The physical sky's mean luminance over the upper hemisphere (midpoint rule in cos theta and
-// azimuth, 12 x 24: the adaptation level varies slowly, and this runs per state on the CPU).
-double physicalMeanSkyLuminance(const atmosphere::AtmosphereModel& model, double heightM, const glm::dvec3& sun) {
-  constexpr int kMu = 12, kPhi = 24;
-  const glm::dvec3 camera = physicalCamera(model, heightM);
-  double sum = 0.0;
-  forEachHemisphereDirection(kMu, kPhi, [&](const glm::dvec3& view) {
-    sum += model.converter().luminance(model.skyRadiance(camera, view, sun));
-  });
-  return sum / (kMu * kPhi);
-}
-
 // The ephemeris' observer: the place, and the air that refracts what is seen from it.
 ephemeris::Observer ephemerisObserver(const ObserverState& o) {
   ephemeris::Observer where;
@@ -91,9 +81,6 @@ std::shared_ptr<const night::StarField> starFieldOf(const SkyState& s) {
       night::buildStarField(c.starCatalogue.get(), s.ephemeris ? *s.ephemeris : *own, *s.extinction, options));
 }
 
-double meanNightLuminance(const SkyState& s) {
-  return s.ephemeris ? night::meanNightDiffuseLuminance(*s.ephemeris, s.extinction) : 0.0;
-}
 
 }  // namespace
 
@@ -115,6 +102,28 @@ double moonIlluminanceLux(const SkyState& state) {
 night::MoonRadiance moonlitSkyRadiance(const atmosphere::AtmosphereModel& model, const SkyState& state,
                                        const glm::dvec3& viewEnu) {
   return night::moonlitSkyRadiance(model, state.observer.heightM, state.moonDirection, state.moonlightScale, viewEnu);
+}
+
+eye::ToneCurve toneCurveFor(const SkyState& state, const DisplayParams& display) {
+  if (display.toneOperator != ToneOperator::Histogram) return {};
+  for (const auto& [d, curve] : state.toneCurves)
+    if (d == display) return curve;
+  // The display's black is its ambient luminance, at least a thousandth of its white (no
+  // projector in a lit room does better).
+  const double black = std::max(display.ambientLuminance, 1e-3 * display.maxLuminance);
+  return eye::histogramAdjustment(state.histogram,
+                                  {black, display.ambientLuminance + display.maxLuminance, display.adaptationLuminance},
+                                  state.adaptationGain);
+}
+
+void mapForDisplays(SkyState& state, const std::vector<DisplayParams>& displays) {
+  state.toneCurves.clear();
+  for (const DisplayParams& d : displays) {
+    if (d.toneOperator != ToneOperator::Histogram) continue;
+    bool seen = false;
+    for (const auto& [e, curve] : state.toneCurves) seen = seen || e == d;
+    if (!seen) state.toneCurves.emplace_back(d, toneCurveFor(state, d));
+  }
 }
 
 std::optional<night::NightDiffuseSky> nightDiffuseSky(const SkyState& state) {
@@ -154,16 +163,13 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
   s.starField = starFieldOf(s);
   if (s.ephemeris)
     s.moonDisc = std::make_shared<const night::MoonDisc>(night::makeMoonDisc(night::moonPlacement(*s.ephemeris), s.extinction));
-  if (s.conditions.model == SkyModel::Physical) {
-    s.adaptationLuminance = physicalMeanSkyLuminance(*s.conditions.atmosphere, observer.heightM,
-                                                     enuDirection(s.sunAzimuth, s.sunAltitude));
-    s.adaptationLuminance += meanNightLuminance(s);  // the night's own light
-    return s;
-  }
-  s.sky = makeAnalyticSky(s.conditions, s.sunAzimuth, s.sunAltitude, s.sunApparentAltitude);
-  // The eye adapts to the sky it sees: the solid-angle mean luminance of the upper hemisphere.
-  s.adaptationLuminance = s.sky.lighting.meanSkyLuminance;
-  s.adaptationLuminance += meanNightLuminance(s);  // the night's own light
+  if (s.conditions.model != SkyModel::Physical)
+    s.sky = makeAnalyticSky(s.conditions, s.sunAzimuth, s.sunAltitude, s.sunApparentAltitude);
+  // The eye adapts to what it sees over the whole view sphere: sky and terrain, sunlit and
+  // moonlit, with the night's own light (sky/view_sphere.h); its log-mean is the scene's level.
+  const ViewSphere sphere = viewSphere(s);
+  s.histogram = sphere.histogram;
+  s.sceneLuminance = s.adaptationLuminance = sphere.meanLuminance;
   return s;
 }
 

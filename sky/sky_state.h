@@ -8,6 +8,8 @@
 #include "sky/analytic/analytic_sky.h"
 #include "sky/atmosphere/extinction_profile.h"
 #include "sky/camera.h"
+#include "sky/channel.h"
+#include "sky/eye/tone_curve.h"
 #include "sky/observer.h"
 #include "sky/atmosphere/model.h"
 #include "sky/night/moon_disc.h"
@@ -18,6 +20,8 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace skyig::sky {
 
@@ -35,7 +39,17 @@ struct SkyState {
   double sunApparentAltitude = 0.0;  // radians, refracted: where the disc is seen
   std::optional<ephemeris::SkyEphemeris> ephemeris;  // absent when the sun was overridden
   AnalyticSkyState sky;
+  // What the pilot can see over the whole view sphere (sky, terrain, sun and moon), and the eye:
+  // the scene's own level (its solid-angle mean luminance without the discs), the level the eye is adapted to now (the
+  // same unless the sky worker follows adaptation in time, sky/eye/adaptation.h) and the
+  // display gain of the mismatch (1 when adapted).
+  eye::LuminanceHistogram histogram;
+  double sceneLuminance = 1.0;       // cd/m^2
   double adaptationLuminance = 1.0;  // the eye's world adaptation, cd/m^2
+  double adaptationGain = 1.0;
+  // The display mapping for each display the state will be shown on, computed with the state
+  // (toneCurveFor); a display without one is mapped on demand.
+  std::vector<std::pair<DisplayParams, eye::ToneCurve>> toneCurves;
   // Transmittance to space by elevation at the observer, for everything beyond the atmosphere
   // (moon, planets, stars, Milky Way, zodiacal light): the physical model's medium, or the
   // default medium under an analytic sky. Shared between states of nearly the same altitude.
@@ -80,6 +94,12 @@ class SkyStateCaches {
 // (latitude out of range, NaN, a pressure or temperature refraction cannot use, a date outside
 // the ephemeris' 1900-2100). The ephemeris is the precise one (ephemeris/ephemeris.h), at the
 // observer's pressure and temperature. Without `caches` everything is computed afresh.
+// The tone curve of `state` for `display` (Tumblin-Rushmeier displays get none: an empty curve).
+eye::ToneCurve toneCurveFor(const SkyState& state, const DisplayParams& display);
+// Computes state.toneCurves for each distinct display of `displays` (the sky worker does, for the
+// node's channels).
+void mapForDisplays(SkyState& state, const std::vector<DisplayParams>& displays);
+
 SkyState buildSkyState(const ObserverState& observer, const SkyConditions& conditions,
                        const std::optional<SunOverride>& sun = std::nullopt, SkyStateCaches* caches = nullptr);
 

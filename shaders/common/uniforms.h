@@ -42,7 +42,10 @@ SKYIG_UBO_END(AnalyticSkyBlock)
 // Tone reproduction of a channel (shaders/tone/tone_reproduction.glsl).
 SKYIG_UBO_BEGIN(ToneBlock, SKYIG_BINDING_TONE)
   SKYIG_VEC4 display;      // L_dmax, L_amb, gamma, L_a(d)
-  SKYIG_VEC4 adaptation;   // x: world adaptation luminance (cd/m^2); y: dither amplitude in LSB
+  SKYIG_VEC4 adaptation;   // x: world adaptation luminance (cd/m^2); y: dither amplitude in LSB;
+                           // z: 0 the histogram curve below, 1 Tumblin-Rushmeier
+  SKYIG_VEC4 curveRange;   // x, y: log10 world luminance of the curve's first and last point
+  SKYIG_VEC4 curve[16];    // 64 display log10 luminances (sky/eye/tone_curve.h), 4 a vec4
 SKYIG_UBO_END(ToneBlock)
 
 #endif

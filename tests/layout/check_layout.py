@@ -18,11 +18,12 @@ ALLOWED = {
     "sky/common": set(),
     "sky/atmosphere": {"shaders"},
     "sky/analytic": {"sky/common", "shaders"},
+    "sky/eye": {"shaders"},
     "sky/night": {"sky/atmosphere", "sky/common", "ephemeris", "shaders"},
-    "sky": {"sky/atmosphere", "sky/common", "sky/analytic", "sky/night", "ephemeris", "shaders"},
+    "sky": {"sky/atmosphere", "sky/common", "sky/analytic", "sky/eye", "sky/night", "ephemeris", "shaders"},
     "render/gl": {"shaders"},
-    "render/passes": {"render/gl", "sky", "sky/atmosphere", "sky/night", "sky/common", "ephemeris", "shaders"},
-    "render": {"render/gl", "render/passes", "sky", "sky/atmosphere", "sky/night", "sky/analytic", "sky/common",
+    "render/passes": {"render/gl", "sky", "sky/atmosphere", "sky/eye", "sky/night", "sky/common", "ephemeris", "shaders"},
+    "render": {"render/gl", "render/passes", "sky", "sky/atmosphere", "sky/eye", "sky/night", "sky/analytic", "sky/common",
                "ephemeris", "shaders"},
 }
 # services/ is the executable: it may include every library, and nothing includes it.

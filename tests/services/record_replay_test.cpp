@@ -132,10 +132,10 @@ TEST_F(RecordReplay, TwoReplaysWriteByteIdenticalFrames) {
     ++compared;
   }
   EXPECT_EQ(compared, 4);  // frames 0, 20, 40, 60
-  // Named by frame number and sim time. Frame 20 is 0.667 s into the recording: the host's
-  // frame 13 (0.65 s, timestamp 58.5 s of a 90x time-lapse from 18:30) plus 16.7 ms since it
-  // arrived, on the IG's own clock.
-  EXPECT_TRUE(fs::exists(dir_ / "a" / "frame_000020_2026-06-21T18-30-58.516Z.exr"));
+  // Named by frame number and the sim time it shows. Frame 20 is 0.667 s into the recording and
+  // shows the state of the host's last message, frame 13 (0.65 s, timestamp 58.5 s of a 90x
+  // time-lapse from 18:30), at that message's own instant, as the node does.
+  EXPECT_TRUE(fs::exists(dir_ / "a" / "frame_000020_2026-06-21T18-30-58.500Z.exr"));
 }
 
 TEST_F(RecordReplay, FromAndToSelectAPart) {

@@ -111,3 +111,22 @@ TEST(ToneReproduction, DimSkySlidesToRodBlue) {
   EXPECT_GT(distanceToRodBlue(0.3), distanceToRodBlue(0.03));
   EXPECT_LT(distanceToRodBlue(1e-3), 1e-6);
 }
+
+// A colour too bright in one channel for the display is desaturated towards white along its
+// own hue, keeping its luminance, instead of clipping that channel alone (the cyan fringe of a
+// pale-blue horizon).
+TEST(ToneReproduction, HighlightsCompressAlongTheirHue) {
+  const glm::dvec3 paleBlue(60.0, 95.0, 150.0);  // cd/m^2 (Y = 91.5) on a display whose white is 100.1
+  const double ld = skyig::shader::rec709Luminance(paleBlue);
+  const glm::dvec3 shown = skyig::shader::compressToDisplay(paleBlue, ld, 100.1);
+  EXPECT_LE(std::max(shown.r, std::max(shown.g, shown.b)), 100.1 + 1e-9);
+  EXPECT_NEAR(skyig::shader::rec709Luminance(shown), ld, 1e-4);  // Rec.709 weights to 4 digits
+  // Same hue: the channel differences from the luminance keep their ratios.
+  EXPECT_NEAR((shown.b - ld) / (shown.r - ld), (paleBlue.b - ld) / (paleBlue.r - ld), 1e-9);
+  EXPECT_GT(shown.b, shown.g);
+  EXPECT_GT(shown.g, shown.r);
+  // Brighter than white is white; a colour that fits is untouched.
+  EXPECT_EQ(skyig::shader::compressToDisplay(paleBlue * 2.0, 2.0 * ld, 100.1), glm::dvec3(100.1));
+  const glm::dvec3 dim = paleBlue * 0.5;
+  EXPECT_EQ(skyig::shader::compressToDisplay(dim, 0.5 * ld, 100.1), dim);
+}

@@ -1,0 +1,79 @@
+#include "sky/view_sphere.h"
+
+#include "sky/atmosphere/physical_camera.h"
+#include "sky/sky_state.h"
+#include "shaders/physics.h"
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+namespace skyig::sky {
+
+namespace {
+
+constexpr int kMu = 16, kPhi = 32;  // cells over the whole sphere, equal solid angle each
+constexpr double kPi = std::numbers::pi;
+
+// Luminance the physical model gives along `view` for a light of the sun's brightness in
+// direction `light`: the sky, or the ground with its aerial perspective.
+double physicalLuminance(const atmosphere::AtmosphereModel& model, const glm::dvec3& camera, const glm::dvec3& view,
+                         const glm::dvec3& light) {
+  const double r = glm::length(camera), rmu = glm::dot(camera, view);
+  const double bottom = model.parameters(0).bottom_radius;
+  const double discriminant = rmu * rmu - r * r + bottom * bottom;
+  if (rmu < 0.0 && discriminant >= 0.0) {
+    const glm::dvec3 ground = camera + view * (-rmu - std::sqrt(discriminant));
+    return model.converter().luminance(model.groundRadiance(camera, ground, light));
+  }
+  return model.converter().luminance(model.skyRadiance(camera, view, light));
+}
+
+}  // namespace
+
+ViewSphere viewSphere(const SkyState& s) {
+  ViewSphere out;
+  eye::LuminanceHistogram& h = out.histogram;
+  double sum = 0.0;
+  const double cell = 4.0 * kPi / (kMu * kPhi);
+  const atmosphere::AtmosphereModel* model =
+      s.conditions.model == SkyModel::Physical ? s.conditions.atmosphere.get() : nullptr;
+  const glm::dvec3 sun = enuDirection(s.sunAzimuth, s.sunAltitude);
+  const glm::dvec3 camera = model ? atmosphere::physicalCamera(*model, s.observer.heightM) : glm::dvec3(0.0);
+  const double moonScale = shader::rec709Luminance(s.moonlightScale);
+  // The night's diffuse light (airglow, zodiacal light; the Milky Way is a few percent of it and
+  // left out here), with the unresolved starlight's floor at the poles.
+  std::optional<night::NightDiffuseSky> night;
+  if (s.ephemeris) night = night::makeNightDiffuseSky(*s.ephemeris, s.extinction, false);
+  for (int i = 0; i < kMu; ++i) {
+    const double mu = -1.0 + 2.0 * (i + 0.5) / kMu;
+    const double sinTheta = std::sqrt(1.0 - mu * mu);
+    for (int j = 0; j < kPhi; ++j) {
+      const double phi = 2.0 * kPi * (j + 0.5) / kPhi;
+      const glm::dvec3 view(sinTheta * std::sin(phi), sinTheta * std::cos(phi), mu);
+      double l = 0.0;
+      if (model) {
+        l = physicalLuminance(*model, camera, view, sun);
+        if (moonScale > 0.0) l += moonScale * physicalLuminance(*model, camera, view, s.moonDirection);
+      } else {
+        l = shader::rec709Luminance(analyticSkyLightOnly(s.sky.params, view));
+      }
+      if (night && view.z > 0.0) l += shader::rec709Luminance(night::nightDiffuseRadiance(*night, view).total());
+      h.add(l, cell);
+      sum += l;
+    }
+  }
+  out.meanLuminance = sum / (kMu * kPhi);
+  // The discs: their luminance over their solid angle (a part of a cell each).
+  const double sunRadius = model ? model->parameters(0).sun_angular_radius : 0.2666 * kPi / 180.0;
+  const double sunDisc = model ? model->converter().luminance(model->sunDiscRadiance(camera, sun, sun))
+                               : shader::rec709Luminance(s.sky.params.sunRadiance);
+  h.add(sunDisc, kPi * sunRadius * sunRadius);
+  if (s.moonDisc) {
+    const night::MoonRadiance m = night::moonDiscRadiance(*s.moonDisc, s.moonDisc->centreSeen);
+    h.add(m.luminanceCdM2, kPi * s.moonDisc->angularRadiusRad * s.moonDisc->angularRadiusRad);
+  }
+  return out;
+}
+
+}  // namespace skyig::sky

@@ -68,7 +68,7 @@ std::shared_ptr<const atmosphere::ExtinctionProfile> sharedExtinction(const atmo
   static std::mutex mutex;
   static std::shared_ptr<const atmosphere::ExtinctionProfile> last;
   static atmosphere::Medium lastMedium;
-  const double top = medium.top_radius_m - medium.bottom_radius_m;
+  const double top = medium.topRadiusM - medium.bottomRadiusM;
   const double h = std::clamp(heightM, 0.0, top - 1.0);  // above the top nothing changes
   std::lock_guard lock(mutex);
   if (last && lastMedium == medium && std::abs(last->altitudeM() - h) <= std::max(25.0, 0.02 * h)) return last;

@@ -81,14 +81,14 @@ int run(const ProbeCli& cli) {
   if (!cli.configPath.empty()) {
     const NodeConfig node = loadNodeConfig(cli.configPath);
     settings = node.atmosphere;
-    conditions.ground_albedo = node.sky.groundAlbedo;
+    conditions.groundAlbedo = node.sky.groundAlbedo;
   }
   if (cli.tables) settings.tables = *cli.tables;
   if (cli.cacheDir) settings.cacheDir = *cli.cacheDir;
   if (cli.orders) settings.scatteringOrders = *cli.orders;
-  conditions.visibility_km = cli.visibilityKm;
-  if (cli.humidityPct) conditions.relative_humidity = *cli.humidityPct / 100.0;
-  if (cli.groundAlbedo) conditions.ground_albedo = cli.groundAlbedo;
+  conditions.visibilityKm = cli.visibilityKm;
+  if (cli.humidityPct) conditions.relativeHumidity = *cli.humidityPct / 100.0;
+  if (cli.groundAlbedo) conditions.groundAlbedo = cli.groundAlbedo;
   const auto model = loadAtmosphere(settings, conditions);
   if (!place) {
     std::printf("%s\n", probeJson(atmosphere::probe(*model, request)).dump(2).c_str());

@@ -68,7 +68,7 @@ ProbeResult probe(const AtmosphereModel& model, const ProbeRequest& request) {
     // (the light scattered in on the way is part of "sky").
     const double radius = glm::length(camera);
     const double rmu = glm::dot(camera, view);
-    const double discGround = rmu * rmu - radius * radius + m.bottom_radius_m * m.bottom_radius_m;
+    const double discGround = rmu * rmu - radius * radius + m.bottomRadiusM * m.bottomRadiusM;
     if (rmu < 0.0 && discGround >= 0.0) {
       const glm::dvec3 point = camera + view * (-rmu - std::sqrt(discGround));
       Spectrum tGround;

@@ -83,11 +83,11 @@ TEST(AtmosphereRec709Tables, FoldedTablesGiveTheSpectralSkyExactly) {
   int checked = 0;
   for (double altitude : {0.0, 3000.0, 100e3}) {
     const glm::dvec3 camera = observerPosition(m, altitude);
-    for (double sun_zenith : {20.0, 89.0, 100.0}) {
-      const glm::dvec3 sun = directionFromAngles(sun_zenith * kDegree, 0.0);
-      for (double view_zenith : {0.0, 45.0, 85.0, 95.0, 110.0}) {
+    for (double sunZenith : {20.0, 89.0, 100.0}) {
+      const glm::dvec3 sun = directionFromAngles(sunZenith * kDegree, 0.0);
+      for (double viewZenith : {0.0, 45.0, 85.0, 95.0, 110.0}) {
         for (double azimuth : {0.0, 2.0}) {
-          const glm::dvec3 view = directionFromAngles(view_zenith * kDegree, azimuth);
+          const glm::dvec3 view = directionFromAngles(viewZenith * kDegree, azimuth);
           const glm::dvec3 folded = skyRec709(model, tables, camera, view, sun);
           const glm::dvec3 spectral = model.converter().toRec709(model.skyRadiance(camera, view, sun));
           for (int c = 0; c < 3; ++c) {

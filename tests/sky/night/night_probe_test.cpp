@@ -27,7 +27,7 @@ std::shared_ptr<const atmosphere::AtmosphereModel> model() {
   static const auto m = [] {
     atmosphere::ModelConfig c = atmosphere::testing::smallEarthConfig();
     c.sizes = atmosphere::testing::tinySizes();
-    c.options.scattering_orders = 2;
+    c.options.scatteringOrders = 2;
     return std::make_shared<const atmosphere::AtmosphereModel>(atmosphere::testing::cachedModel(c));
   }();
   return m;

@@ -12,7 +12,7 @@
 #include <optional>
 #include <string>
 
-#include "ephemeris/star_catalog.h"
+#include "ephemeris/star_catalogue.h"
 #include "ephemeris/time.h"
 #include "ephemeris/time_scales.h"
 #include "ephemeris/vec3.h"

@@ -6,7 +6,7 @@
 
 #include "ephemeris/night_irradiance.h"
 
-namespace skyig::commands {
+namespace skyig::services {
 
 namespace {
 using namespace skyig::ephemeris;
@@ -126,4 +126,4 @@ void registerEphemerisCommand(CLI::App& app, int& exitCode, std::ostream& out, s
 
 void registerEphemerisCommand(CLI::App& app, int& exitCode) { registerEphemerisCommand(app, exitCode, std::cout, std::cerr); }
 
-}  // namespace skyig::commands
+}  // namespace skyig::services

@@ -13,7 +13,7 @@
 
 #include "ephemeris/ephemeris.h"
 
-namespace skyig::commands {
+namespace skyig::services {
 
 struct EphemerisRequest {
   double latitudeDeg = 0.0;
@@ -40,4 +40,4 @@ nlohmann::json ephemerisToJson(const ephemeris::SkyEphemeris& sky, const std::ve
 void registerEphemerisCommand(CLI::App& app, int& exitCode, std::ostream& out, std::ostream& err);
 void registerEphemerisCommand(CLI::App& app, int& exitCode);  // std::cout / std::cerr
 
-}  // namespace skyig::commands
+}  // namespace skyig::services

@@ -21,7 +21,7 @@ CommandRun run(std::vector<std::string> args) {
   CLI::App app("skyig");
   CommandRun r;
   std::ostringstream out, err;
-  commands::registerEphemerisCommand(app, r.exitCode, out, err);
+  services::registerEphemerisCommand(app, r.exitCode, out, err);
   args.insert(args.begin(), "ephemeris");
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 wants them reversed
   app.parse(reversed);

@@ -130,7 +130,7 @@ void readAtmosphere(TableReader& r, AtmosphereSettings& a) {
   m.mieScaleHeightM = r.number("mie_scale_height", m.mieScaleHeightM, 10.0, 100000.0);
   m.miePhaseG = r.number("mie_phase_g", m.miePhaseG, -0.99, 0.99);
   m.ozoneColumnDu = r.number("ozone_column_du", m.ozoneColumnDu, 0.0, 1000.0);
-  m.ozoneCenterAltitudeM = r.number("ozone_center_altitude", m.ozoneCenterAltitudeM, 0.0, 100000.0);
+  m.ozoneCentreAltitudeM = r.number("ozone_center_altitude", m.ozoneCentreAltitudeM, 0.0, 100000.0);
   m.ozoneHalfWidthM = r.number("ozone_half_width", m.ozoneHalfWidthM, 100.0, 100000.0);
   m.sunAngularRadiusRad =
       atmosphere::kDegree * r.number("sun_angular_radius_deg", m.sunAngularRadiusRad / atmosphere::kDegree, 0.01, 5.0);

@@ -42,9 +42,9 @@ void validate(const Medium& m) {
   require(m.ozoneColumnDu >= 0.0 && m.ozoneColumnDu <= 1000.0, "ozone_column_du",
           m.ozoneColumnDu, "in [0, 1000]");
   require(m.ozoneHalfWidthM > 0.0, "ozone_half_width_m", m.ozoneHalfWidthM, "> 0");
-  require(m.ozoneCenterAltitudeM >= 0.0 &&
-              m.ozoneCenterAltitudeM < m.topRadiusM - m.bottomRadiusM,
-          "ozone_center_altitude_m", m.ozoneCenterAltitudeM, "inside the atmosphere");
+  require(m.ozoneCentreAltitudeM >= 0.0 &&
+              m.ozoneCentreAltitudeM < m.topRadiusM - m.bottomRadiusM,
+          "ozone_center_altitude_m", m.ozoneCentreAltitudeM, "inside the atmosphere");
   require(m.groundAlbedo >= 0.0 && m.groundAlbedo <= 1.0, "ground_albedo", m.groundAlbedo,
           "in [0, 1]");
   require(m.sunAngularRadiusRad > 0.0 && m.sunAngularRadiusRad < 0.1,

@@ -28,7 +28,7 @@ struct Medium {
   // Ozone: column in Dobson units in a tent profile (zero at centre -/+ half width),
   // cross-sections at 233 K (spectral_data.h).
   double ozoneColumnDu = 300.0;
-  double ozoneCenterAltitudeM = 25000.0;
+  double ozoneCentreAltitudeM = 25000.0;
   double ozoneHalfWidthM = 15000.0;
   // Lambertian ground, grey.
   double groundAlbedo = 0.1;

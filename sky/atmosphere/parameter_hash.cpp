@@ -33,7 +33,7 @@ std::uint64_t parameterHash(const ModelConfig& c) {
   for (double v : {m.bottomRadiusM, m.topRadiusM, m.rayleighScatteringAt1umPerM,
                    m.rayleighScaleHeightM, m.mieExtinctionPerM,
                    m.mieSingleScatteringAlbedo, m.mieAngstromExponent, m.mieScaleHeightM,
-                   m.miePhaseG, m.ozoneColumnDu, m.ozoneCenterAltitudeM,
+                   m.miePhaseG, m.ozoneColumnDu, m.ozoneCentreAltitudeM,
                    m.ozoneHalfWidthM, m.groundAlbedo, m.sunAngularRadiusRad,
                    m.solarIrradianceScale, m.maxSunZenithRad}) {
     h.f64(v);

@@ -36,7 +36,7 @@ AtmosphereParameters makeParameters(const Medium& medium,
   atm.rayleigh_scale_height = medium.rayleighScaleHeightM;
   atm.mie_scale_height = medium.mieScaleHeightM;
   atm.mie_phase_g = medium.miePhaseG;
-  atm.ozone_center_altitude = medium.ozoneCenterAltitudeM;
+  atm.ozone_center_altitude = medium.ozoneCentreAltitudeM;
   atm.ozone_half_width = medium.ozoneHalfWidthM;
   atm.mu_s_min = std::cos(medium.maxSunZenithRad);
   atm.transmittance_width = sizes.transmittanceMu;

@@ -171,8 +171,8 @@ double ozoneCrossSection(double wavelengthNm) {
   return interpolate(kOzoneCrossSection, 1, 0, 365.0, 10.0, wavelengthNm);
 }
 
-glm::dvec3 cie1931ColorMatching(double wavelengthNm) {
-  checkRange(wavelengthNm, "cie1931ColorMatching");
+glm::dvec3 cie1931ColourMatching(double wavelengthNm) {
+  checkRange(wavelengthNm, "cie1931ColourMatching");
   return {interpolate(kCie1931, 3, 0, 360.0, 5.0, wavelengthNm),
           interpolate(kCie1931, 3, 1, 360.0, 5.0, wavelengthNm),
           interpolate(kCie1931, 3, 2, 360.0, 5.0, wavelengthNm)};

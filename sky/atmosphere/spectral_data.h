@@ -21,6 +21,6 @@ double ozoneCrossSection(double wavelengthNm);
 
 // CIE 1931 2-degree colour matching functions xbar, ybar, zbar (dimensionless, ybar peaks at 1
 // at 555 nm).
-glm::dvec3 cie1931ColorMatching(double wavelengthNm);
+glm::dvec3 cie1931ColourMatching(double wavelengthNm);
 
 }  // namespace skyig::atmosphere

@@ -48,7 +48,7 @@ SpectralConverter::SpectralConverter(std::vector<double> wavelengthsNm)
     for (double w = kSpectralDataMinNm + 0.5; w < kSpectralDataMaxNm; w += 1.0) {
       const double h = hat(wavelengths_, i, w);
       if (h == 0.0) continue;
-      weights_[i] += cie1931ColorMatching(w) * (h * solarIrradiance(w) / sunI);
+      weights_[i] += cie1931ColourMatching(w) * (h * solarIrradiance(w) / sunI);
     }
     weights_[i] *= kMaxLuminousEfficacy;
   }

@@ -63,7 +63,7 @@ TEST(AtmosphereHash, EveryParameterChangesTheHash) {
   variants[7].medium.mieScaleHeightM += 1.0;
   variants[8].medium.miePhaseG = 0.76;
   variants[9].medium.ozoneColumnDu = 301.0;
-  variants[10].medium.ozoneCenterAltitudeM += 1.0;
+  variants[10].medium.ozoneCentreAltitudeM += 1.0;
   variants[11].medium.ozoneHalfWidthM += 1.0;
   variants[12].medium.groundAlbedo = 0.3;
   variants[13].medium.sunAngularRadiusRad *= 1.01;

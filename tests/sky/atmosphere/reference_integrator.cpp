@@ -11,7 +11,7 @@ LocalMedium localMedium(const Medium& m, const SpectralCoefficients& c, const gl
   const double rayleigh = std::exp(-h / m.rayleighScaleHeightM);
   const double mie = std::exp(-h / m.mieScaleHeightM);
   const double ozone =
-      std::max(0.0, 1.0 - std::abs(h - m.ozoneCenterAltitudeM) / m.ozoneHalfWidthM);
+      std::max(0.0, 1.0 - std::abs(h - m.ozoneCentreAltitudeM) / m.ozoneHalfWidthM);
   return {c.rayleighScattering * rayleigh + c.mieExtinction * mie + c.ozoneAbsorption * ozone,
           c.rayleighScattering * rayleigh, c.mieScattering * mie};
 }

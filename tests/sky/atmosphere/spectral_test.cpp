@@ -34,12 +34,12 @@ TEST(AtmosphereSpectral, ColourMatchingFunctionIntegrals) {
   // Integral of ybar over 360-830 nm = 106.857 (CIE 1931, 1 nm data); x and z integrals are
   // equal to it within 0.1% by construction of the equal-energy white point.
   glm::dvec3 sum(0.0);
-  for (double w = 360.0; w <= 830.0; w += 1.0) sum += cie1931ColorMatching(w);
+  for (double w = 360.0; w <= 830.0; w += 1.0) sum += cie1931ColourMatching(w);
   EXPECT_NEAR(sum.y, 106.857, 0.15);
   EXPECT_NEAR(sum.x / sum.y, 1.0, 0.002);
   EXPECT_NEAR(sum.z / sum.y, 1.0, 0.002);
-  EXPECT_DOUBLE_EQ(cie1931ColorMatching(555.0).y, 1.0);
-  EXPECT_THROW(cie1931ColorMatching(300.0), std::out_of_range);
+  EXPECT_DOUBLE_EQ(cie1931ColourMatching(555.0).y, 1.0);
+  EXPECT_THROW(cie1931ColourMatching(300.0), std::out_of_range);
 }
 
 TEST(AtmosphereSpectral, D65WhiteIsRec709White) {

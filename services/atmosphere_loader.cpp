@@ -32,15 +32,15 @@ std::vector<atmosphere::GroupTables> onGpu(const atmosphere::ModelConfig& config
 std::vector<atmosphere::GroupTables> onCpu(const atmosphere::ModelConfig& config) {
   const auto start = std::chrono::steady_clock::now();
   // The CPU path has no per-group progress of its own: the groups one by one give it.
-  if (config.wavelengths_nm.empty()) throw std::invalid_argument("atmosphere precompute: no wavelengths");
+  if (config.wavelengthsNm.empty()) throw std::invalid_argument("atmosphere precompute: no wavelengths");
   std::vector<atmosphere::GroupTables> tables;
-  const std::size_t groups = (config.wavelengths_nm.size() + 3) / 4;
+  const std::size_t groups = (config.wavelengthsNm.size() + 3) / 4;
   for (std::size_t g = 0; g < groups; ++g) {
     const auto group_start = std::chrono::steady_clock::now();
     // As AtmosphereModel: the last group padded by repeating the last wavelength.
     std::array<double, 4> wavelengths{};
     for (std::size_t i = 0; i < 4; ++i)
-      wavelengths[i] = config.wavelengths_nm[std::min(g * 4 + i, config.wavelengths_nm.size() - 1)];
+      wavelengths[i] = config.wavelengthsNm[std::min(g * 4 + i, config.wavelengthsNm.size() - 1)];
     tables.push_back(atmosphere::precomputeGroup(atmosphere::makeParameters(config.medium, wavelengths, config.sizes),
                                                  config.options));
     std::fprintf(stderr, "physical sky: CPU precompute group %zu/%zu done (%.1f s)\n", g + 1, groups, since(group_start));
@@ -65,7 +65,7 @@ PrecomputeDevice precomputeDeviceFromEnvironment() {
 
 atmosphere::TableBuilder atmosphereTableBuilder(PrecomputeDevice device) {
   return [device](const atmosphere::ModelConfig& config) {
-    (void)atmosphere::SpectralConverter(config.wavelengths_nm);  // bad wavelengths throw before any work
+    (void)atmosphere::SpectralConverter(config.wavelengthsNm);  // bad wavelengths throw before any work
     if (device == PrecomputeDevice::kCpu) return onCpu(config);
     if (device == PrecomputeDevice::kGpu) return onGpu(config);
     try {
@@ -89,7 +89,7 @@ std::filesystem::path cacheDirectory(const AtmosphereSettings& settings) {
 atmosphere::ModelConfig modelConfig(const AtmosphereSettings& settings, const atmosphere::Conditions& conditions) {
   atmosphere::ModelConfig model;
   model.sizes = atmosphere::TableSizes::named(settings.tables);
-  model.options.scattering_orders = settings.scatteringOrders;
+  model.options.scatteringOrders = settings.scatteringOrders;
   model.medium = atmosphere::applyConditions(settings.medium, conditions);
   return model;
 }
@@ -116,7 +116,7 @@ std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeC
 void loadAtmosphereIfNeeded(NodeConfig& config) {
   if (config.sky.model != sky::SkyModel::Physical || config.sky.atmosphere) return;
   atmosphere::Conditions conditions;
-  conditions.ground_albedo = config.sky.groundAlbedo;
+  conditions.groundAlbedo = config.sky.groundAlbedo;
   config.sky.atmosphere = loadAtmosphere(config.atmosphere, conditions);
 }
 

@@ -65,7 +65,7 @@ void CanReceiver::handle(const can::CanFrame& frame, Clock::time_point arrival) 
   const can::FeedResult r = decoder_.feed(frame);
   stats_.canStatus[static_cast<std::size_t>(r.status)].fetch_add(1, std::memory_order_relaxed);
   if (r.status != can::FeedStatus::applied) return;
-  const can::HostState& c = decoder_.state();
+  const can::CanAerospaceState& c = decoder_.state();
   if (c.has(can::kLatitude | can::kLongitude | can::kAltitude | can::kHeading | can::kPitch | can::kRoll)) {
     const sky::Ownship o{c.latitudeDeg, c.longitudeDeg, c.altitudeM, {c.headingDeg, c.pitchDeg, c.rollDeg}};
     // Each parameter comes in its own frame, so consecutive states differ in one field only

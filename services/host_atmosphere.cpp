@@ -22,7 +22,7 @@ std::optional<atmosphere::Conditions> HostAtmosphere::observe(double visibilityM
   if (v == requested_ && v == candidate_) return std::nullopt;
   if (rejected_ && *rejected_ == v) return std::nullopt;  // already counted
   atmosphere::Conditions c;
-  c.ground_albedo = groundAlbedo_;
+  c.groundAlbedo = groundAlbedo_;
   try {
     if (!std::isfinite(humidityPct) || humidityPct < 0.0 || humidityPct > 100.0)
       throw std::invalid_argument("host humidity " + std::to_string(humidityPct) + " % must be in [0, 100]");
@@ -42,15 +42,15 @@ std::optional<atmosphere::Conditions> HostAtmosphere::observe(double visibilityM
   }
   if (now - candidateSince_ < debounce_ || v == requested_) return std::nullopt;
   requested_ = v;
-  c.visibility_km = visibilityM / 1000.0;
+  c.visibilityKm = visibilityM / 1000.0;
   // With a visibility the humidity changes nothing (conditions.h); kept within its range.
-  c.relative_humidity = std::min(humidityPct / 100.0, 0.99);
+  c.relativeHumidity = std::min(humidityPct / 100.0, 0.99);
   return c;
 }
 
 atmosphere::ModelConfig nodeModelConfig(const NodeConfig& config, const atmosphere::Conditions& conditions) {
   atmosphere::Conditions c = conditions;
-  if (!c.ground_albedo) c.ground_albedo = config.sky.groundAlbedo;
+  if (!c.groundAlbedo) c.groundAlbedo = config.sky.groundAlbedo;
   return modelConfig(config.atmosphere, c);
 }
 

@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
   int exitCode = 0;
   registerRenderCommand(app, exitCode);
   registerBenchCommand(app, exitCode);
-  skyig::commands::registerEphemerisCommand(app, exitCode);
+  registerEphemerisCommand(app, exitCode);
   registerServeCommand(app, exitCode);
   registerHostCommand(app, exitCode);
   registerRecordCommand(app, exitCode);

@@ -120,21 +120,21 @@ void readSky(TableReader& r, skyig::sky::SkyConditions& sky, AtmosphereSettings&
 // units a meteorologist writes (km, m, per metre, Dobson units, degrees).
 void readAtmosphere(TableReader& r, AtmosphereSettings& a) {
   atmosphere::Medium& m = a.medium;
-  m.bottom_radius_m = 1e3 * r.number("ground_radius_km", m.bottom_radius_m / 1e3, 1000.0, 100000.0);
-  m.top_radius_m = 1e3 * r.number("top_radius_km", m.top_radius_m / 1e3, 1000.0, 100000.0);
-  m.rayleigh_scattering_at_1um_per_m = r.number("rayleigh_scattering_1um", m.rayleigh_scattering_at_1um_per_m, 0.0, 1e-3);
-  m.rayleigh_scale_height_m = r.number("rayleigh_scale_height", m.rayleigh_scale_height_m, 100.0, 100000.0);
-  m.mie_extinction_per_m = r.number("mie_extinction", m.mie_extinction_per_m, 0.0, 1e-2);
-  m.mie_single_scattering_albedo = r.number("mie_single_scattering_albedo", m.mie_single_scattering_albedo, 0.0, 1.0);
-  m.mie_angstrom_exponent = r.number("mie_angstrom_exponent", m.mie_angstrom_exponent, -1.0, 4.0);
-  m.mie_scale_height_m = r.number("mie_scale_height", m.mie_scale_height_m, 10.0, 100000.0);
-  m.mie_phase_g = r.number("mie_phase_g", m.mie_phase_g, -0.99, 0.99);
-  m.ozone_column_du = r.number("ozone_column_du", m.ozone_column_du, 0.0, 1000.0);
-  m.ozone_center_altitude_m = r.number("ozone_center_altitude", m.ozone_center_altitude_m, 0.0, 100000.0);
-  m.ozone_half_width_m = r.number("ozone_half_width", m.ozone_half_width_m, 100.0, 100000.0);
-  m.sun_angular_radius_rad =
-      atmosphere::kDegree * r.number("sun_angular_radius_deg", m.sun_angular_radius_rad / atmosphere::kDegree, 0.01, 5.0);
-  m.solar_irradiance_scale = r.number("solar_irradiance_scale", m.solar_irradiance_scale, 0.0, 100.0);
+  m.bottomRadiusM = 1e3 * r.number("ground_radius_km", m.bottomRadiusM / 1e3, 1000.0, 100000.0);
+  m.topRadiusM = 1e3 * r.number("top_radius_km", m.topRadiusM / 1e3, 1000.0, 100000.0);
+  m.rayleighScatteringAt1umPerM = r.number("rayleigh_scattering_1um", m.rayleighScatteringAt1umPerM, 0.0, 1e-3);
+  m.rayleighScaleHeightM = r.number("rayleigh_scale_height", m.rayleighScaleHeightM, 100.0, 100000.0);
+  m.mieExtinctionPerM = r.number("mie_extinction", m.mieExtinctionPerM, 0.0, 1e-2);
+  m.mieSingleScatteringAlbedo = r.number("mie_single_scattering_albedo", m.mieSingleScatteringAlbedo, 0.0, 1.0);
+  m.mieAngstromExponent = r.number("mie_angstrom_exponent", m.mieAngstromExponent, -1.0, 4.0);
+  m.mieScaleHeightM = r.number("mie_scale_height", m.mieScaleHeightM, 10.0, 100000.0);
+  m.miePhaseG = r.number("mie_phase_g", m.miePhaseG, -0.99, 0.99);
+  m.ozoneColumnDu = r.number("ozone_column_du", m.ozoneColumnDu, 0.0, 1000.0);
+  m.ozoneCentreAltitudeM = r.number("ozone_center_altitude", m.ozoneCentreAltitudeM, 0.0, 100000.0);
+  m.ozoneHalfWidthM = r.number("ozone_half_width", m.ozoneHalfWidthM, 100.0, 100000.0);
+  m.sunAngularRadiusRad =
+      atmosphere::kDegree * r.number("sun_angular_radius_deg", m.sunAngularRadiusRad / atmosphere::kDegree, 0.01, 5.0);
+  m.solarIrradianceScale = r.number("solar_irradiance_scale", m.solarIrradianceScale, 0.0, 100.0);
   a.scatteringOrders = r.integer("scattering_orders", a.scatteringOrders, 1, 10);
   r.rejectUnknownKeys();
   try {

@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <exception>
 
-#ifndef SKYIG_DEFAULT_STAR_CATALOG
-#error "SKYIG_DEFAULT_STAR_CATALOG must name ephemeris/data/bsc5.csv (services/CMakeLists.txt)"
+#ifndef SKYIG_DEFAULT_STAR_CATALOGUE
+#error "SKYIG_DEFAULT_STAR_CATALOGUE must name ephemeris/data/bsc5.csv (services/CMakeLists.txt)"
 #endif
 
 namespace skyig::services {
@@ -14,7 +14,7 @@ namespace skyig::services {
 std::string starCataloguePath(const std::string& configured) {
   if (!configured.empty()) return configured;
   const char* dir = std::getenv("SKYIG_DATA_DIR");
-  return dir && *dir ? std::string(dir) + "/bsc5.csv" : std::string(SKYIG_DEFAULT_STAR_CATALOG);
+  return dir && *dir ? std::string(dir) + "/bsc5.csv" : std::string(SKYIG_DEFAULT_STAR_CATALOGUE);
 }
 
 std::shared_ptr<const sky::night::StarCatalogue> loadConfiguredStarCatalogue(const std::string& configured,

@@ -17,17 +17,13 @@ namespace {
 
 double rec709Luminance(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
-glm::dvec3 rgbOf(const nlohmann::json& light) {
-  if (light.is_null()) return glm::dvec3(0.0);
-  const auto& rgb = light.at("rgb_cd_m2");
-  return {rgb.at(0).get<double>(), rgb.at(1).get<double>(), rgb.at(2).get<double>()};
+glm::dvec3 rec709Of(const std::optional<atmosphere::SpectralProbeLight>& light) {
+  return light ? light->rec709 : glm::dvec3(0.0);
 }
 
 }  // namespace
 
-nlohmann::json lightJson(const glm::dvec3& rec709) {
-  return {{"luminance_cd_m2", rec709Luminance(rec709)}, {"rgb_cd_m2", {rec709.r, rec709.g, rec709.b}}};
-}
+atmosphere::ProbeLight rec709Light(const glm::dvec3& rec709) { return {rec709Luminance(rec709), rec709}; }
 
 std::vector<ProbeComponent> nightProbeComponents(const atmosphere::AtmosphereModel& model, const SkyState& state) {
   auto diffuse = nightDiffuseSky(state);
@@ -45,39 +41,40 @@ std::vector<ProbeComponent> nightProbeComponents(const atmosphere::AtmosphereMod
   return c;
 }
 
-nlohmann::json nightProbe(const atmosphere::AtmosphereModel& model, const SkyState& state,
-                          atmosphere::ProbeRequest request) {
+NightProbeResult nightProbe(const atmosphere::AtmosphereModel& model, const SkyState& state,
+                            atmosphere::ProbeRequest request) {
   constexpr double kDeg = 180.0 / std::numbers::pi;
-  request.sun_zenith_deg = 90.0 - state.sunAltitude * kDeg;
-  request.sun_azimuth_deg = state.sunAzimuth * kDeg;
-  nlohmann::json out = atmosphere::probe(model, request);
+  request.sunZenithDeg = 90.0 - state.sunAltitude * kDeg;
+  request.sunAzimuthDeg = state.sunAzimuth * kDeg;
+  NightProbeResult out;
+  out.day = atmosphere::probe(model, request);
   const std::vector<ProbeComponent> components = nightProbeComponents(model, state);
-  for (nlohmann::json& view : out["views"]) {
-    const glm::dvec3 v =
-        atmosphere::localDirection(view.at("zenith_deg").get<double>(), view.at("azimuth_deg").get<double>());
-    // The sunlit sky is the day output's "sky", under the name that pairs it with the moonlit one.
-    view["sunlit_sky"] = lightJson(rgbOf(view.at("sky")));
-    glm::dvec3 total = rgbOf(view.at("sky")) + rgbOf(view.at("sun")) + rgbOf(view.at("ground"));
+  for (const atmosphere::ProbeViewResult& day : out.day.views) {
+    const glm::dvec3 v = atmosphere::localDirection(day.view.zenithDeg, day.view.azimuthDeg);
+    NightProbeView night;
+    // The sunlit sky is the day output's sky, under the name that pairs it with the moonlit one.
+    night.lights.push_back({"sunlit_sky", rec709Light(day.sky.rec709)});
+    glm::dvec3 total = day.sky.rec709 + rec709Of(day.sun) + rec709Of(day.ground);
     for (const ProbeComponent& c : components) {
       const glm::dvec3 rgb = c.radiance(v);
-      view[c.key] = lightJson(rgb);
+      night.lights.push_back({c.name, rec709Light(rgb)});
       total += rgb;
     }
-    view["total"] = lightJson(total);
+    night.total = rec709Light(total);
+    out.views.push_back(std::move(night));
   }
-  if (out.contains("irradiance")) {
+  if (out.day.irradiance) {
     // The moon beside the sun: its disc after extinction, and the sky it lights (the sunlit
     // sky's irradiance lit from the moon's direction, scaled as the moonlit sky).
     const glm::dvec3 camera = atmosphere::observerPosition(model.config().medium, std::max(state.observer.heightM, 0.0));
     const glm::dvec3 moonlitSky =
         model.converter().toRec709(model.skyIrradiance(camera, glm::dvec3(0.0, 0.0, 1.0), state.moonDirection)) *
         state.moonlightScale;
-    out["irradiance"]["moon_lux"] = moonIlluminanceLux(state);
-    out["irradiance"]["moonlit_sky_lux"] = rec709Luminance(moonlitSky);
+    out.irradiance = NightProbeIrradiance{moonIlluminanceLux(state), rec709Luminance(moonlitSky)};
   }
-  out["utc"] = ephemeris::formatIso8601Utc(state.observer.utc);
-  out["latitude_deg"] = state.observer.latitudeDeg;
-  out["longitude_deg"] = state.observer.longitudeDeg;
+  out.utc = state.observer.utc;
+  out.latitudeDeg = state.observer.latitudeDeg;
+  out.longitudeDeg = state.observer.longitudeDeg;
   return out;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // `skyig probe` at night (issue 6, item 7): for a time and place, every view reports each light
-// source separately and their sum, each as {"luminance_cd_m2", "rgb_cd_m2"} (linear Rec.709
-// scaled so that Y is cd/m^2):
-//   sunlit_sky      the physical atmosphere's sky lit by the sun (a copy of the day probe's "sky")
+// source separately and their sum, each as luminance and linear Rec.709 (scaled so that Y is
+// cd/m^2), under these names:
+//   sunlit_sky      the physical atmosphere's sky lit by the sun (the day probe's "sky")
 //   moonlit_sky     the same sky lit by the moon (Jensen et al. 2001)
 //   moon            the moon's disc after extinction; present when the moon is known
 //   stars_planets   the mean luminance of the stars and planets within 0.5 degrees of the view
@@ -10,18 +10,18 @@
 //   milky_way       the Milky Way and the unresolved stars, after extinction
 //   zodiacal_light  after extinction
 //   airglow         after extinction
-//   total           all the components, plus the day probe's "sun" disc and "ground" where the
-//                   view has them
-// With --irradiance, "irradiance" gains "moon_lux" (the disc, after extinction) and
-// "moonlit_sky_lux" on a horizontal surface, beside the sun's and the sky's.
-#include <nlohmann/json.hpp>
-
+// and the total: all of them, plus the day probe's sun disc and ground where the view has them.
+// With irradiance, the moon's disc (after extinction) and the moonlit sky on a horizontal
+// surface, beside the sun's and the sky's. Plain values: services/commands/probe_json.h prints
+// them as JSON, the names as its keys.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "ephemeris/time.h"
 #include "sky/atmosphere/model.h"
 #include "sky/atmosphere/probe.h"
 
@@ -31,10 +31,10 @@ struct SkyState;
 
 namespace skyig::sky {
 
-// One source of light: its JSON key and its radiance along an ENU view direction (unit
-// vector), linear Rec.709, cd/m^2 per channel.
+// One source of light: its name and its radiance along an ENU view direction (unit vector),
+// linear Rec.709, cd/m^2 per channel.
 struct ProbeComponent {
-  std::string key;
+  std::string name;
   std::function<glm::dvec3(const glm::dvec3& viewEnu)> radiance;
 };
 
@@ -43,14 +43,41 @@ struct ProbeComponent {
 // references to `model` and `state`.
 std::vector<ProbeComponent> nightProbeComponents(const atmosphere::AtmosphereModel& model, const SkyState& state);
 
-// {"luminance_cd_m2": Y, "rgb_cd_m2": [r, g, b]}.
-nlohmann::json lightJson(const glm::dvec3& rec709);
+// A linear Rec.709 light with its luminance (Rec.709 weights).
+atmosphere::ProbeLight rec709Light(const glm::dvec3& rec709);
 
-// atmosphere::probe's output for `request` (its sun replaced by the state's), each view with
-// the night components and "total" added; request.altitude_m is the observer's height above
-// the model's ground. Throws std::invalid_argument when the state has no ephemeris, or for the
+struct NamedProbeLight {
+  std::string name;
+  atmosphere::ProbeLight light;
+};
+
+struct NightProbeView {
+  // "sunlit_sky" (the day view's sky), then nightProbeComponents' in their order.
+  std::vector<NamedProbeLight> lights;
+  // The lights plus the day view's sun disc and ground.
+  atmosphere::ProbeLight total;
+};
+
+// On a horizontal surface at the observer, lux.
+struct NightProbeIrradiance {
+  double moonLux = 0.0;         // the disc, after extinction
+  double moonlitSkyLux = 0.0;   // the sky the moon lights
+};
+
+struct NightProbeResult {
+  atmosphere::ProbeResult day;                     // for the state's sun
+  std::vector<NightProbeView> views;               // one per day.views, in the same order
+  std::optional<NightProbeIrradiance> irradiance;  // when day.irradiance is there
+  ephemeris::UtcTime utc;
+  double latitudeDeg = 0.0;
+  double longitudeDeg = 0.0;
+};
+
+// atmosphere::probe's result for `request` (its sun replaced by the state's), each view with
+// the night's lights and their total; request.altitudeM is the observer's height above the
+// model's ground. Throws std::invalid_argument when the state has no ephemeris, or for the
 // probe's own bad values.
-nlohmann::json nightProbe(const atmosphere::AtmosphereModel& model, const SkyState& state,
-                          atmosphere::ProbeRequest request);
+NightProbeResult nightProbe(const atmosphere::AtmosphereModel& model, const SkyState& state,
+                            atmosphere::ProbeRequest request);
 
 }  // namespace skyig::sky

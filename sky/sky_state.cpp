@@ -86,7 +86,7 @@ std::shared_ptr<const night::StarField> starFieldOf(const SkyState& s) {
 
 std::shared_ptr<const atmosphere::ExtinctionProfile> SkyStateCaches::extinction(const atmosphere::Medium& medium,
                                                                                double heightM) {
-  const double top = medium.top_radius_m - medium.bottom_radius_m;
+  const double top = medium.topRadiusM - medium.bottomRadiusM;
   const double h = std::clamp(heightM, 0.0, top - 1.0);  // above the top nothing changes
   if (lastExtinction_ && lastMedium_ == medium && std::abs(lastExtinction_->altitudeM() - h) <= std::max(25.0, 0.02 * h))
     return lastExtinction_;

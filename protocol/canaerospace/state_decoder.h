@@ -23,7 +23,9 @@ enum Field : std::uint32_t {
   kDate = 1u << 7,
 };
 
-struct HostState {
+// The host's state as CANaerospace carries it (services/host_state.h's HostState, what the node
+// renders from, is built from it and from CIGI).
+struct CanAerospaceState {
   double latitudeDeg = 0.0;
   double longitudeDeg = 0.0;
   double altitudeM = 0.0;
@@ -61,7 +63,7 @@ class StateDecoder {
   explicit StateDecoder(IdentifierMap map = {}) : map_(map) {}
 
   FeedResult feed(const CanFrame& frame);
-  const HostState& state() const { return state_; }
+  const CanAerospaceState& state() const { return state_; }
   const IdentifierMap& map() const { return map_; }
   std::uint64_t count(FeedStatus s) const { return counts_[static_cast<std::size_t>(s)]; }
 
@@ -76,7 +78,7 @@ class StateDecoder {
   FeedResult latLon(const Message& m, PendingHalf& pending, double& target, std::uint32_t field, double limit);
 
   IdentifierMap map_;
-  HostState state_;
+  CanAerospaceState state_;
   PendingHalf latPending_, lonPending_;
   std::array<std::uint64_t, kFeedStatusCount> counts_{};
 };

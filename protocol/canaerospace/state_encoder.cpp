@@ -11,7 +11,7 @@ std::uint8_t StateEncoder::nextCode(std::uint32_t id, std::uint8_t step) {
   return now;
 }
 
-std::vector<CanFrame> StateEncoder::encode(const HostState& s, std::uint32_t fields) {
+std::vector<CanFrame> StateEncoder::encode(const CanAerospaceState& s, std::uint32_t fields) {
   std::vector<CanFrame> out;
   auto latLon = [&](std::uint32_t id, double v) {
     switch (latLon_) {

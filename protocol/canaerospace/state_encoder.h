@@ -19,7 +19,7 @@ class StateEncoder {
       : map_(map), nodeId_(nodeId), latLon_(latLon) {}
 
   // Frames for the fields of `s` named by `fields` (Field bits). Heading goes out in +-180.
-  std::vector<CanFrame> encode(const HostState& s, std::uint32_t fields = 0xFF);
+  std::vector<CanFrame> encode(const CanAerospaceState& s, std::uint32_t fields = 0xFF);
 
  private:
   std::uint8_t nextCode(std::uint32_t id, std::uint8_t step = 1);

@@ -47,10 +47,10 @@ class EglContext final : public GlContext {
   // display stays initialised (eglTerminate would take every context of the display with it).
   explicit EglContext(bool worker = false) : worker_(worker) {
     if (worker_) {
-      previous_display_ = eglGetCurrentDisplay();
-      previous_context_ = eglGetCurrentContext();
-      previous_draw_ = eglGetCurrentSurface(EGL_DRAW);
-      previous_read_ = eglGetCurrentSurface(EGL_READ);
+      previousDisplay_ = eglGetCurrentDisplay();
+      previousContext_ = eglGetCurrentContext();
+      previousDraw_ = eglGetCurrentSurface(EGL_DRAW);
+      previousRead_ = eglGetCurrentSurface(EGL_READ);
     }
     std::string platform;
     display_ = openDisplay(platform);
@@ -81,8 +81,8 @@ class EglContext final : public GlContext {
     if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
     if (!worker_) {
       eglTerminate(display_);
-    } else if (previous_context_ != EGL_NO_CONTEXT) {
-      eglMakeCurrent(previous_display_, previous_draw_, previous_read_, previous_context_);
+    } else if (previousContext_ != EGL_NO_CONTEXT) {
+      eglMakeCurrent(previousDisplay_, previousDraw_, previousRead_, previousContext_);
     }
   }
 
@@ -131,10 +131,10 @@ class EglContext final : public GlContext {
   }
 
   bool worker_ = false;
-  EGLDisplay previous_display_ = EGL_NO_DISPLAY;
-  EGLContext previous_context_ = EGL_NO_CONTEXT;
-  EGLSurface previous_draw_ = EGL_NO_SURFACE;
-  EGLSurface previous_read_ = EGL_NO_SURFACE;
+  EGLDisplay previousDisplay_ = EGL_NO_DISPLAY;
+  EGLContext previousContext_ = EGL_NO_CONTEXT;
+  EGLSurface previousDraw_ = EGL_NO_SURFACE;
+  EGLSurface previousRead_ = EGL_NO_SURFACE;
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
 };

@@ -117,16 +117,16 @@ struct Textures {
   GLuint transmittance, delta_irradiance, irradiance, delta_rayleigh, delta_mie, scattering, single_mie,
       delta_multiple, delta_density, slices_a, slices_b;
   Textures(const atmosphere::TableSizes& s, const atmosphere::TableSizes& density) {
-    const int sw = s.scattering_nu * s.scattering_mu_s;
-    transmittance = texture2D(s.transmittance_mu, s.transmittance_r);
-    delta_irradiance = texture2D(s.irradiance_mu_s, s.irradiance_r);
-    irradiance = texture2D(s.irradiance_mu_s, s.irradiance_r);
+    const int sw = s.scatteringNu * s.scatteringMuS;
+    transmittance = texture2D(s.transmittanceMu, s.transmittanceR);
+    delta_irradiance = texture2D(s.irradianceMuS, s.irradianceR);
+    irradiance = texture2D(s.irradianceMuS, s.irradianceR);
     for (GLuint* t : {&delta_rayleigh, &delta_mie, &scattering, &single_mie, &delta_multiple})
-      *t = texture3D(sw, s.scattering_mu, s.scattering_r);
-    delta_density = texture3D(sw, density.scattering_mu, density.scattering_r);
+      *t = texture3D(sw, s.scatteringMu, s.scatteringR);
+    delta_density = texture3D(sw, density.scatteringMu, density.scatteringR);
     // precompute_nu_slices.comp: (nu + 1) x (theta samples x mu_s) x r of the density.
     for (GLuint* t : {&slices_a, &slices_b})
-      *t = texture3D(s.scattering_nu + 1, kDensityThetaSamples * s.scattering_mu_s, density.scattering_r);
+      *t = texture3D(s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS, density.scatteringR);
   }
   ~Textures() {
     const GLuint all[] = {transmittance, delta_irradiance, irradiance, delta_rayleigh, delta_mie,
@@ -142,12 +142,12 @@ struct Textures {
 std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfig& config,
                                                                 const GpuPrecomputeOptions& options,
                                                                 GpuPrecomputeTiming* timing) {
-  const int orders = config.options.scattering_orders;
+  const int orders = config.options.scatteringOrders;
   if (orders < 1 || orders > 32) {
     throw std::invalid_argument("atmosphere GPU precompute: scattering_orders = " + std::to_string(orders) +
                                 " is invalid (expected 1 to 32)");
   }
-  const std::vector<double>& w = config.wavelengths_nm;
+  const std::vector<double>& w = config.wavelengthsNm;
   (void)atmosphere::SpectralConverter(w);  // throws std::invalid_argument on bad wavelengths
   // As AtmosphereModel: groups of four, the last padded by repeating the last wavelength;
   // makeParameters validates the medium and the sizes.
@@ -165,15 +165,15 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
   // The density table: its view angles divided (mu stays even: half of it for the rays that
   // hit the ground).
   atmosphere::TableSizes density_sizes = config.sizes;
-  density_sizes.scattering_mu = std::max(2, config.sizes.scattering_mu / options.density_divisor / 2 * 2);
+  density_sizes.scatteringMu = std::max(2, config.sizes.scatteringMu / options.density_divisor / 2 * 2);
 
   const auto start = Clock::now();
   GpuPrecomputeTiming t;
   t.compile = compile_seconds_;
   const atmosphere::TableSizes& s = config.sizes;
-  const int sw = s.scattering_nu * s.scattering_mu_s;
-  const int sh = s.scattering_mu;
-  const int sd = s.scattering_r;
+  const int sw = s.scatteringNu * s.scatteringMuS;
+  const int sh = s.scatteringMu;
+  const int sd = s.scatteringR;
   const Programs& p = *programs_;
   Textures x(s, density_sizes);
 
@@ -198,17 +198,17 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
     const auto group_start = Clock::now();
     for (GLuint program : p.all()) setAtmosphereUniforms(program, "atm", params[g]);
     AtmosphereParameters density_params = params[g];
-    density_params.scattering_r_size = density_sizes.scattering_r;
-    density_params.scattering_mu_size = density_sizes.scattering_mu;
+    density_params.scattering_r_size = density_sizes.scatteringR;
+    density_params.scattering_mu_size = density_sizes.scatteringMu;
     for (GLuint program : {p.slices, p.density, p.multiple}) setAtmosphereUniforms(program, "atm_density", density_params);
     for (GLuint unit = 0; unit < SKYIG_PRECOMPUTE_UNIT_COUNT; ++unit) glBindTextureUnit(unit, 0);
 
     image(SKYIG_IMAGE_TRANSMITTANCE, x.transmittance, GL_WRITE_ONLY);
-    run(p.transmittance, s.transmittance_mu, s.transmittance_r, 1, t.transmittance);
+    run(p.transmittance, s.transmittanceMu, s.transmittanceR, 1, t.transmittance);
     glBindTextureUnit(SKYIG_UNIT_TRANSMITTANCE, x.transmittance);
     image(SKYIG_IMAGE_DELTA_IRRADIANCE, x.delta_irradiance, GL_WRITE_ONLY);
     image(SKYIG_IMAGE_IRRADIANCE, x.irradiance, GL_WRITE_ONLY);
-    run(p.direct, s.irradiance_mu_s, s.irradiance_r, 1, t.direct_irradiance);
+    run(p.direct, s.irradianceMuS, s.irradianceR, 1, t.direct_irradiance);
     image(SKYIG_IMAGE_DELTA_RAYLEIGH, x.delta_rayleigh, GL_WRITE_ONLY);
     image(SKYIG_IMAGE_DELTA_MIE, x.delta_mie, GL_WRITE_ONLY);
     image(SKYIG_IMAGE_SCATTERING, x.scattering, GL_WRITE_ONLY);
@@ -222,19 +222,19 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
       image(SKYIG_IMAGE_NU_SLICES_A, x.slices_a, GL_WRITE_ONLY);
       image(SKYIG_IMAGE_NU_SLICES_B, x.slices_b, GL_WRITE_ONLY);
       setOrder(p.slices, order);
-      run(p.slices, s.scattering_nu + 1, kDensityThetaSamples * s.scattering_mu_s, density_sizes.scattering_r,
+      run(p.slices, s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS, density_sizes.scatteringR,
           t.nu_slices);
       glBindTextureUnit(SKYIG_UNIT_NU_SLICES_A, x.slices_a);
       glBindTextureUnit(SKYIG_UNIT_NU_SLICES_B, x.slices_b);
       image(SKYIG_IMAGE_DELTA_DENSITY, x.delta_density, GL_WRITE_ONLY);
       setOrder(p.density, order);
-      run(p.density, sw, density_sizes.scattering_mu, density_sizes.scattering_r, t.scattering_density);
+      run(p.density, sw, density_sizes.scatteringMu, density_sizes.scatteringR, t.scattering_density);
       // delta_irradiance and delta_multiple are rewritten next: unbind them as samplers.
       glBindTextureUnit(SKYIG_UNIT_DELTA_IRRADIANCE, 0);
       image(SKYIG_IMAGE_DELTA_IRRADIANCE, x.delta_irradiance, GL_WRITE_ONLY);
       image(SKYIG_IMAGE_IRRADIANCE, x.irradiance, GL_READ_WRITE);
       setOrder(p.indirect, order);
-      run(p.indirect, s.irradiance_mu_s, s.irradiance_r, 1, t.indirect_irradiance);
+      run(p.indirect, s.irradianceMuS, s.irradianceR, 1, t.indirect_irradiance);
       glBindTextureUnit(SKYIG_UNIT_DELTA_MULTIPLE, 0);
       glBindTextureUnit(SKYIG_UNIT_DELTA_DENSITY, x.delta_density);
       image(SKYIG_IMAGE_DELTA_MULTIPLE, x.delta_multiple, GL_WRITE_ONLY);
@@ -244,14 +244,14 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
 
     const auto read_start = Clock::now();
     GroupTables& tables = out[g];
-    tables.transmittance = shader::cpu_texture::sampler2D(s.transmittance_mu, s.transmittance_r);
-    tables.irradiance = shader::cpu_texture::sampler2D(s.irradiance_mu_s, s.irradiance_r);
+    tables.transmittance = shader::cpu_texture::sampler2D(s.transmittanceMu, s.transmittanceR);
+    tables.irradiance = shader::cpu_texture::sampler2D(s.irradianceMuS, s.irradianceR);
     tables.scattering = shader::cpu_texture::sampler3D(sw, sh, sd);
-    tables.single_mie = shader::cpu_texture::sampler3D(sw, sh, sd);
+    tables.singleMie = shader::cpu_texture::sampler3D(sw, sh, sd);
     download(x.transmittance, tables.transmittance.texels);
     download(x.irradiance, tables.irradiance.texels);
     download(x.scattering, tables.scattering.texels);
-    download(x.single_mie, tables.single_mie.texels);
+    download(x.single_mie, tables.singleMie.texels);
     t.readback += since(read_start);
     if (options.progress) {
       char line[96];

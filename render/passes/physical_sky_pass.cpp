@@ -69,15 +69,15 @@ PhysicalSkyPass::TableSet PhysicalSkyPass::createSet(std::shared_ptr<const atmos
   TableSet set;
   set.model = std::move(model);
   set.small = packer.packSmallTables();
-  set.transmittance = upload2D(set.small.transmittance_xyz);
-  set.irradiance = upload2D(set.small.irradiance_xyz);
+  set.transmittance = upload2D(set.small.transmittanceXyz);
+  set.irradiance = upload2D(set.small.irradianceXyz);
   const auto& s = set.model->tables(0).scattering;
   set.scattering = createTexture(GL_TEXTURE_3D);
   glTextureStorage3D(set.scattering, 1, GL_RGBA16F, s.width, s.height, s.depth);
   set.singleMie = createTexture(GL_TEXTURE_3D);
   glTextureStorage3D(set.singleMie, 1, GL_RG16F, s.width, s.height, s.depth);
   const std::size_t texels3 = s.texels.size();
-  set.bytes = 16 * (set.small.transmittance_xyz.texels.size() + set.small.irradiance_xyz.texels.size()) + 8 * texels3 + 4 * texels3;
+  set.bytes = 16 * (set.small.transmittanceXyz.texels.size() + set.small.irradianceXyz.texels.size()) + 8 * texels3 + 4 * texels3;
   return set;
 }
 
@@ -108,9 +108,9 @@ void PhysicalSkyPass::makeCurrent(TableSet set) {
   for (const Program* program : {&inside_, &space_}) {
     const GLuint p = program->program.id();
     setAtmosphereUniforms(p, "atm", current_.model->parameters(0));
-    glProgramUniform3fv(p, glGetUniformLocation(p, "solarIrradianceXyz"), 1, &f3(current_.small.solar_irradiance_xyz)[0]);
-    glProgramUniform3fv(p, glGetUniformLocation(p, "limbDarkeningXyz"), 1, &f3(current_.small.limb_darkening_xyz)[0]);
-    glProgramUniform1f(p, glGetUniformLocation(p, "groundAlbedo"), static_cast<float>(current_.small.ground_albedo));
+    glProgramUniform3fv(p, glGetUniformLocation(p, "solarIrradianceXyz"), 1, &f3(current_.small.solarIrradianceXyz)[0]);
+    glProgramUniform3fv(p, glGetUniformLocation(p, "limbDarkeningXyz"), 1, &f3(current_.small.limbDarkeningXyz)[0]);
+    glProgramUniform1f(p, glGetUniformLocation(p, "groundAlbedo"), static_cast<float>(current_.small.groundAlbedo));
   }
 }
 

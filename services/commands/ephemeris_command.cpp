@@ -6,7 +6,7 @@
 
 #include "ephemeris/night_irradiance.h"
 
-namespace skyig::commands {
+namespace skyig::services {
 
 namespace {
 using namespace skyig::ephemeris;
@@ -86,7 +86,7 @@ nlohmann::json ephemerisToJson(const EphemerisRequest& r) {
   options.dut1S = r.dut1S;
   const SkyEphemeris sky = computeEphemeris(*utc, o, options);
   std::vector<Star> stars;
-  if (r.stars > 0) stars = brightestStars(loadStarCatalog(r.catalogPath), r.stars);
+  if (r.stars > 0) stars = brightestStars(loadStarCatalogue(r.cataloguePath), r.stars);
   nlohmann::json j = ephemerisToJson(sky, stars);
   j["utc"] = formatIso8601Utc(*utc);
   j["observer"] = {{"latitude_deg", r.latitudeDeg},   {"longitude_deg", r.longitudeDeg},
@@ -97,8 +97,8 @@ nlohmann::json ephemerisToJson(const EphemerisRequest& r) {
 
 void registerEphemerisCommand(CLI::App& app, int& exitCode, std::ostream& out, std::ostream& err) {
   auto request = std::make_shared<EphemerisRequest>();
-#ifdef SKYIG_DEFAULT_STAR_CATALOG
-  request->catalogPath = SKYIG_DEFAULT_STAR_CATALOG;
+#ifdef SKYIG_DEFAULT_STAR_CATALOGUE
+  request->cataloguePath = SKYIG_DEFAULT_STAR_CATALOGUE;
 #endif
   CLI::App* cmd = app.add_subcommand(
       "ephemeris", "Apparent topocentric sun, moon, planets (and brightest stars) as JSON");
@@ -111,7 +111,7 @@ void registerEphemerisCommand(CLI::App& app, int& exitCode, std::ostream& out, s
   cmd->add_option("--tt-minus-utc", request->ttMinusUtcS, "Override TT - UTC, seconds");
   cmd->add_option("--dut1", request->dut1S, "UT1 - UTC, seconds (default 0)");
   cmd->add_option("--stars", request->stars, "Also list the N brightest stars (default 0)");
-  cmd->add_option("--catalog", request->catalogPath, "Bright Star Catalogue CSV for --stars")
+  cmd->add_option("--catalogue,--catalog", request->cataloguePath, "Bright Star Catalogue CSV for --stars (--catalog: the former spelling)")
       ->capture_default_str();
   cmd->callback([request, &exitCode, &out, &err]() {
     try {
@@ -126,4 +126,4 @@ void registerEphemerisCommand(CLI::App& app, int& exitCode, std::ostream& out, s
 
 void registerEphemerisCommand(CLI::App& app, int& exitCode) { registerEphemerisCommand(app, exitCode, std::cout, std::cerr); }
 
-}  // namespace skyig::commands
+}  // namespace skyig::services

@@ -15,7 +15,7 @@
 
 #include "ephemeris/ephemeris.h"
 
-namespace skyig::commands {
+namespace skyig::services {
 
 struct EphemerisRequest {
   double latitudeDeg = 0.0;
@@ -27,7 +27,7 @@ struct EphemerisRequest {
   std::optional<double> ttMinusUtcS;
   std::optional<double> dut1S;
   std::size_t stars = 0;        // the N brightest stars
-  std::string catalogPath;      // Bright Star Catalogue CSV (for stars > 0)
+  std::string cataloguePath;    // Bright Star Catalogue CSV (for stars > 0)
 };
 
 // The JSON document of a request. Throws std::invalid_argument (bad value, named) or
@@ -42,4 +42,4 @@ nlohmann::json ephemerisToJson(const ephemeris::SkyEphemeris& sky, const std::ve
 void registerEphemerisCommand(CLI::App& app, int& exitCode, std::ostream& out, std::ostream& err);
 void registerEphemerisCommand(CLI::App& app, int& exitCode);  // std::cout / std::cerr
 
-}  // namespace skyig::commands
+}  // namespace skyig::services

@@ -1,6 +1,7 @@
 #include "services/commands/probe_command.h"
 
 #include "ephemeris/ephemeris.h"
+#include "services/commands/probe_json.h"
 #include "sky/atmosphere/probe.h"
 #include "sky/night_probe.h"
 #include "sky/sky_state.h"
@@ -42,12 +43,12 @@ atmosphere::ProbeView parseView(const std::string& text, const std::string& wher
 
 int run(const ProbeCli& cli) {
   atmosphere::ProbeRequest request;
-  request.altitude_m = cli.altitudeM;
+  request.altitudeM = cli.altitudeM;
   request.irradiance = cli.irradiance;
   if (cli.sunZenith || cli.sunAzimuth) {
     if (!cli.sunZenith || !cli.sunAzimuth) throw ConfigError("--sun-zenith and --sun-azimuth: give both, or a place and time");
-    request.sun_zenith_deg = *cli.sunZenith;
-    request.sun_azimuth_deg = *cli.sunAzimuth;
+    request.sunZenithDeg = *cli.sunZenith;
+    request.sunAzimuthDeg = *cli.sunAzimuth;
   }
   std::optional<sky::ObserverState> place;  // a time and place: the night components too
   if (!cli.sunZenith && !cli.sunAzimuth) {
@@ -80,17 +81,17 @@ int run(const ProbeCli& cli) {
   if (!cli.configPath.empty()) {
     const NodeConfig node = loadNodeConfig(cli.configPath);
     settings = node.atmosphere;
-    conditions.ground_albedo = node.sky.groundAlbedo;
+    conditions.groundAlbedo = node.sky.groundAlbedo;
   }
   if (cli.tables) settings.tables = *cli.tables;
   if (cli.cacheDir) settings.cacheDir = *cli.cacheDir;
   if (cli.orders) settings.scatteringOrders = *cli.orders;
-  conditions.visibility_km = cli.visibilityKm;
-  if (cli.humidityPct) conditions.relative_humidity = *cli.humidityPct / 100.0;
-  if (cli.groundAlbedo) conditions.ground_albedo = cli.groundAlbedo;
+  conditions.visibilityKm = cli.visibilityKm;
+  if (cli.humidityPct) conditions.relativeHumidity = *cli.humidityPct / 100.0;
+  if (cli.groundAlbedo) conditions.groundAlbedo = cli.groundAlbedo;
   const auto model = loadAtmosphere(settings, conditions);
   if (!place) {
-    std::printf("%s\n", atmosphere::probe(*model, request).dump(2).c_str());
+    std::printf("%s\n", probeJson(atmosphere::probe(*model, request)).dump(2).c_str());
     return 0;
   }
   sky::SkyConditions sky;
@@ -98,7 +99,7 @@ int run(const ProbeCli& cli) {
   sky.atmosphere = model;
   sky.starCatalogue = loadConfiguredStarCatalogue(cli.starCatalogue, place->utc);
   const sky::SkyState state = sky::buildSkyState(*place, sky);
-  std::printf("%s\n", sky::nightProbe(*model, state, request).dump(2).c_str());
+  std::printf("%s\n", nightProbeJson(sky::nightProbe(*model, state, request)).dump(2).c_str());
   return 0;
 }
 

@@ -17,22 +17,22 @@ namespace {
 
 }  // namespace
 
-double mieExtinctionForVisibility(const Medium& medium, double visibility_km) {
-  const double rayleigh = coefficientsAt(medium, 550.0).rayleigh_scattering;
-  const double limit_km = kKoschmiederConstant / rayleigh / 1000.0;
-  if (!(visibility_km > 0.0) || !(visibility_km < limit_km)) {
+double mieExtinctionForVisibility(const Medium& medium, double visibilityKm) {
+  const double rayleigh = coefficientsAt(medium, 550.0).rayleighScattering;
+  const double limitKm = kKoschmiederConstant / rayleigh / 1000.0;
+  if (!(visibilityKm > 0.0) || !(visibilityKm < limitKm)) {
     std::ostringstream expected;
-    expected << "in (0, " << limit_km << ") km, the clean-air limit";
-    bad("visibility_km", visibility_km, expected.str().c_str());
+    expected << "in (0, " << limitKm << ") km, the clean-air limit";
+    bad("visibility_km", visibilityKm, expected.str().c_str());
   }
-  const double total = kKoschmiederConstant / (visibility_km * 1000.0);
+  const double total = kKoschmiederConstant / (visibilityKm * 1000.0);
   // The Angstrom law of coefficientsAt is referred to 550 nm, so this is the 550 nm value.
   return total - rayleigh;
 }
 
 double visibilityOf(const Medium& medium) {
   const SpectralCoefficients c = coefficientsAt(medium, 550.0);
-  return kKoschmiederConstant / (c.rayleigh_scattering + c.mie_extinction) / 1000.0;
+  return kKoschmiederConstant / (c.rayleighScattering + c.mieExtinction) / 1000.0;
 }
 
 double humidityGrowthFactor(double rh) {
@@ -42,17 +42,17 @@ double humidityGrowthFactor(double rh) {
 
 Medium applyConditions(const Medium& base, const Conditions& c) {
   Medium m = base;
-  if (c.ground_albedo) {
-    if (!(*c.ground_albedo >= 0.0 && *c.ground_albedo <= 1.0)) {
-      bad("ground_albedo", *c.ground_albedo, "in [0, 1]");
+  if (c.groundAlbedo) {
+    if (!(*c.groundAlbedo >= 0.0 && *c.groundAlbedo <= 1.0)) {
+      bad("ground_albedo", *c.groundAlbedo, "in [0, 1]");
     }
-    m.ground_albedo = *c.ground_albedo;
+    m.groundAlbedo = *c.groundAlbedo;
   }
-  if (c.visibility_km) {
-    if (c.relative_humidity) humidityGrowthFactor(*c.relative_humidity);  // still validated
-    m.mie_extinction_per_m = mieExtinctionForVisibility(base, *c.visibility_km);
-  } else if (c.relative_humidity) {
-    m.mie_extinction_per_m = base.mie_extinction_per_m * humidityGrowthFactor(*c.relative_humidity);
+  if (c.visibilityKm) {
+    if (c.relativeHumidity) humidityGrowthFactor(*c.relativeHumidity);  // still validated
+    m.mieExtinctionPerM = mieExtinctionForVisibility(base, *c.visibilityKm);
+  } else if (c.relativeHumidity) {
+    m.mieExtinctionPerM = base.mieExtinctionPerM * humidityGrowthFactor(*c.relativeHumidity);
   }
   validate(m);
   return m;

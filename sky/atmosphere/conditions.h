@@ -10,11 +10,11 @@ namespace skyig::atmosphere {
 
 struct Conditions {
   // Meteorological visibility at the ground, km. Unset: the medium's own aerosol density.
-  std::optional<double> visibility_km;
+  std::optional<double> visibilityKm;
   // Relative humidity in [0, 0.99]; unset: the medium's aerosols as given.
-  std::optional<double> relative_humidity;
+  std::optional<double> relativeHumidity;
   // Lambertian ground albedo in [0, 1]; unset: the medium's.
-  std::optional<double> ground_albedo;
+  std::optional<double> groundAlbedo;
 };
 
 // Koschmieder's relation (Koschmieder 1924; WMO No. 8): an object is just visible at the
@@ -25,7 +25,7 @@ inline constexpr double kKoschmiederConstant = 3.912;
 // Aerosol extinction at 550 nm at the ground (m^-1) giving the visibility with the medium's
 // molecules; throws std::invalid_argument if the visibility is not positive or exceeds what
 // clean air alone allows (about 288 km).
-double mieExtinctionForVisibility(const Medium& medium, double visibility_km);
+double mieExtinctionForVisibility(const Medium& medium, double visibilityKm);
 
 // Visibility (km) of a medium by the same relation.
 double visibilityOf(const Medium& medium);
@@ -35,7 +35,7 @@ double visibilityOf(const Medium& medium);
 // f = ((1 - RH) / (1 - RH_ref))^-gamma, gamma = 0.25 for continental aerosol).
 inline constexpr double kReferenceHumidity = 0.5;
 inline constexpr double kHanelGamma = 0.25;
-double humidityGrowthFactor(double relative_humidity);
+double humidityGrowthFactor(double relativeHumidity);
 
 // The medium under the conditions; visibility, when given, fixes the aerosol extinction
 // (it is measured on the humid aerosol, so humidity then changes nothing); otherwise

@@ -27,31 +27,31 @@ struct Bracket {
   double f;
 };
 
-Bracket bracket(double elevation_rad) {
-  const double x = ExtinctionProfile::textureCoordinate(elevation_rad) * ExtinctionProfile::kSamples - 0.5;
+Bracket bracket(double elevationRad) {
+  const double x = ExtinctionProfile::textureCoordinate(elevationRad) * ExtinctionProfile::kSamples - 0.5;
   const int i0 = std::clamp(static_cast<int>(std::floor(x)), 0, ExtinctionProfile::kSamples - 1);
   return {i0, std::min(i0 + 1, ExtinctionProfile::kSamples - 1), std::clamp(x - i0, 0.0, 1.0)};
 }
 
 }  // namespace
 
-double ExtinctionProfile::textureCoordinate(double elevation_rad) {
-  const double e = std::clamp(elevation_rad, -kHalfPi, kHalfPi);
+double ExtinctionProfile::textureCoordinate(double elevationRad) {
+  const double e = std::clamp(elevationRad, -kHalfPi, kHalfPi);
   return 0.5 * (1.0 + std::copysign(std::sqrt(std::abs(e) / kHalfPi), e));
 }
 
-ExtinctionProfile::ExtinctionProfile(const Medium& medium, double altitude_m,
-                                     const std::vector<double>& wavelengths_nm)
-    : altitude_m_(altitude_m), wavelengths_(wavelengths_nm) {
+ExtinctionProfile::ExtinctionProfile(const Medium& medium, double altitudeM,
+                                     const std::vector<double>& wavelengthsNm)
+    : altitudeM_(altitudeM), wavelengths_(wavelengthsNm) {
   validate(medium);
-  const double top = medium.top_radius_m - medium.bottom_radius_m;
-  if (!std::isfinite(altitude_m) || altitude_m < -1000.0 || altitude_m >= top)
-    throw std::invalid_argument("extinction profile: altitude " + std::to_string(altitude_m) +
+  const double top = medium.topRadiusM - medium.bottomRadiusM;
+  if (!std::isfinite(altitudeM) || altitudeM < -1000.0 || altitudeM >= top)
+    throw std::invalid_argument("extinction profile: altitude " + std::to_string(altitudeM) +
                                 " m is outside [-1000, " + std::to_string(top) + ") m");
-  const SpectralConverter converter(wavelengths_nm);  // validates the wavelengths
+  const SpectralConverter converter(wavelengthsNm);  // validates the wavelengths
   // The optical depth is the shader's (eq. 5 by the trapezoid rule); a camera below the ground
   // is taken at the ground, where the medium's profiles are defined.
-  const double r = medium.bottom_radius_m + std::max(altitude_m, 0.0);
+  const double r = medium.bottomRadiusM + std::max(altitudeM, 0.0);
   spectral_.assign(kSamples, std::vector<double>(wavelengths_.size(), 0.0));
   for (std::size_t g = 0; g * 4 < wavelengths_.size(); ++g) {
     std::array<double, 4> w{};
@@ -68,20 +68,20 @@ ExtinctionProfile::ExtinctionProfile(const Medium& medium, double altitude_m,
   // of ones is the sun's colour.
   const std::vector<double> ones(wavelengths_.size(), 1.0);
   const glm::dvec3 sun = converter.toRec709(ones);
-  rec709_table_.resize(kSamples);
-  for (int s = 0; s < kSamples; ++s) rec709_table_[s] = glm::vec3(converter.toRec709(spectral_[s]) / sun);
+  rec709Table_.resize(kSamples);
+  for (int s = 0; s < kSamples; ++s) rec709Table_[s] = glm::vec3(converter.toRec709(spectral_[s]) / sun);
 }
 
-std::vector<double> ExtinctionProfile::spectral(double elevation_rad) const {
-  const auto [i0, i1, f] = bracket(elevation_rad);
+std::vector<double> ExtinctionProfile::spectral(double elevationRad) const {
+  const auto [i0, i1, f] = bracket(elevationRad);
   std::vector<double> out(wavelengths_.size());
   for (std::size_t k = 0; k < out.size(); ++k) out[k] = spectral_[i0][k] * (1.0 - f) + spectral_[i1][k] * f;
   return out;
 }
 
-glm::dvec3 ExtinctionProfile::rec709(double elevation_rad) const {
-  const auto [i0, i1, f] = bracket(elevation_rad);
-  return glm::dvec3(rec709_table_[i0]) * (1.0 - f) + glm::dvec3(rec709_table_[i1]) * f;
+glm::dvec3 ExtinctionProfile::rec709(double elevationRad) const {
+  const auto [i0, i1, f] = bracket(elevationRad);
+  return glm::dvec3(rec709Table_[i0]) * (1.0 - f) + glm::dvec3(rec709Table_[i1]) * f;
 }
 
 }  // namespace skyig::atmosphere

@@ -17,34 +17,34 @@ class ExtinctionProfile {
   // Samples over the elevation, dense near the horizon: u = (1 + sign(e) sqrt(|e| / 90 deg)) / 2.
   static constexpr int kSamples = 512;
 
-  // Observer `altitude_m` above the ground of `medium`. Costs ~10-40 ms (kSamples x 16
+  // Observer `altitudeM` above the ground of `medium`. Costs ~10-40 ms (kSamples x 16
   // wavelengths of a 500-step quadrature): build once per altitude band, not per frame.
   // Throws std::invalid_argument for a bad medium or an altitude outside [−1 km, top).
-  ExtinctionProfile(const Medium& medium, double altitude_m,
-                    const std::vector<double>& wavelengths_nm = defaultWavelengths());
+  ExtinctionProfile(const Medium& medium, double altitudeM,
+                    const std::vector<double>& wavelengthsNm = defaultWavelengths());
 
-  double altitudeM() const { return altitude_m_; }
+  double altitudeM() const { return altitudeM_; }
   const std::vector<double>& wavelengths() const { return wavelengths_; }
 
   // Spectral transmittance to space at an elevation (radians, airless; 0 where the ray meets
   // the ground), interpolated linearly between samples.
-  std::vector<double> spectral(double elevation_rad) const;
+  std::vector<double> spectral(double elevationRad) const;
   // The same for a source with the sun's spectrum, as a factor on each linear Rec.709 channel:
   // a sunlike source of colour c is seen as c * rec709(e). Good to a few per cent for stars of
   // other colours too (the transmittance is smooth across each channel's band).
-  glm::dvec3 rec709(double elevation_rad) const;
+  glm::dvec3 rec709(double elevationRad) const;
 
   // The Rec.709 factors at the kSamples sample points, for a 1D texture (GL_LINEAR,
   // CLAMP_TO_EDGE): texel i holds u = (i + 0.5) / kSamples.
-  const std::vector<glm::vec3>& rec709Table() const { return rec709_table_; }
+  const std::vector<glm::vec3>& rec709Table() const { return rec709Table_; }
   // Texture coordinate of an elevation, matching rec709Table().
-  static double textureCoordinate(double elevation_rad);
+  static double textureCoordinate(double elevationRad);
 
  private:
-  double altitude_m_;
+  double altitudeM_;
   std::vector<double> wavelengths_;
   std::vector<std::vector<double>> spectral_;  // [sample][wavelength]
-  std::vector<glm::vec3> rec709_table_;
+  std::vector<glm::vec3> rec709Table_;
 };
 
 }  // namespace skyig::atmosphere

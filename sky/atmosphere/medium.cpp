@@ -21,59 +21,59 @@ void require(bool ok, const char* name, double value, const char* expected) {
 }  // namespace
 
 void validate(const Medium& m) {
-  require(m.bottom_radius_m > 0.0 && std::isfinite(m.bottom_radius_m), "bottom_radius_m",
-          m.bottom_radius_m, "> 0");
-  require(m.top_radius_m > m.bottom_radius_m && std::isfinite(m.top_radius_m), "top_radius_m",
-          m.top_radius_m, "> bottom_radius_m");
-  require(m.rayleigh_scattering_at_1um_per_m >= 0.0 &&
-              std::isfinite(m.rayleigh_scattering_at_1um_per_m),
-          "rayleigh_scattering_at_1um_per_m", m.rayleigh_scattering_at_1um_per_m, ">= 0");
-  require(m.rayleigh_scale_height_m > 0.0, "rayleigh_scale_height_m", m.rayleigh_scale_height_m,
+  require(m.bottomRadiusM > 0.0 && std::isfinite(m.bottomRadiusM), "bottom_radius_m",
+          m.bottomRadiusM, "> 0");
+  require(m.topRadiusM > m.bottomRadiusM && std::isfinite(m.topRadiusM), "top_radius_m",
+          m.topRadiusM, "> bottom_radius_m");
+  require(m.rayleighScatteringAt1umPerM >= 0.0 &&
+              std::isfinite(m.rayleighScatteringAt1umPerM),
+          "rayleigh_scattering_at_1um_per_m", m.rayleighScatteringAt1umPerM, ">= 0");
+  require(m.rayleighScaleHeightM > 0.0, "rayleigh_scale_height_m", m.rayleighScaleHeightM,
           "> 0");
-  require(m.mie_extinction_per_m >= 0.0 && std::isfinite(m.mie_extinction_per_m),
-          "mie_extinction_per_m", m.mie_extinction_per_m, ">= 0");
-  require(m.mie_single_scattering_albedo >= 0.0 && m.mie_single_scattering_albedo <= 1.0,
-          "mie_single_scattering_albedo", m.mie_single_scattering_albedo, "in [0, 1]");
-  require(std::isfinite(m.mie_angstrom_exponent) && std::abs(m.mie_angstrom_exponent) <= 4.0,
-          "mie_angstrom_exponent", m.mie_angstrom_exponent, "in [-4, 4]");
-  require(m.mie_scale_height_m > 0.0, "mie_scale_height_m", m.mie_scale_height_m, "> 0");
-  require(m.mie_phase_g > -1.0 && m.mie_phase_g < 1.0, "mie_phase_g", m.mie_phase_g,
+  require(m.mieExtinctionPerM >= 0.0 && std::isfinite(m.mieExtinctionPerM),
+          "mie_extinction_per_m", m.mieExtinctionPerM, ">= 0");
+  require(m.mieSingleScatteringAlbedo >= 0.0 && m.mieSingleScatteringAlbedo <= 1.0,
+          "mie_single_scattering_albedo", m.mieSingleScatteringAlbedo, "in [0, 1]");
+  require(std::isfinite(m.mieAngstromExponent) && std::abs(m.mieAngstromExponent) <= 4.0,
+          "mie_angstrom_exponent", m.mieAngstromExponent, "in [-4, 4]");
+  require(m.mieScaleHeightM > 0.0, "mie_scale_height_m", m.mieScaleHeightM, "> 0");
+  require(m.miePhaseG > -1.0 && m.miePhaseG < 1.0, "mie_phase_g", m.miePhaseG,
           "in (-1, 1)");
-  require(m.ozone_column_du >= 0.0 && m.ozone_column_du <= 1000.0, "ozone_column_du",
-          m.ozone_column_du, "in [0, 1000]");
-  require(m.ozone_half_width_m > 0.0, "ozone_half_width_m", m.ozone_half_width_m, "> 0");
-  require(m.ozone_center_altitude_m >= 0.0 &&
-              m.ozone_center_altitude_m < m.top_radius_m - m.bottom_radius_m,
-          "ozone_center_altitude_m", m.ozone_center_altitude_m, "inside the atmosphere");
-  require(m.ground_albedo >= 0.0 && m.ground_albedo <= 1.0, "ground_albedo", m.ground_albedo,
+  require(m.ozoneColumnDu >= 0.0 && m.ozoneColumnDu <= 1000.0, "ozone_column_du",
+          m.ozoneColumnDu, "in [0, 1000]");
+  require(m.ozoneHalfWidthM > 0.0, "ozone_half_width_m", m.ozoneHalfWidthM, "> 0");
+  require(m.ozoneCentreAltitudeM >= 0.0 &&
+              m.ozoneCentreAltitudeM < m.topRadiusM - m.bottomRadiusM,
+          "ozone_center_altitude_m", m.ozoneCentreAltitudeM, "inside the atmosphere");
+  require(m.groundAlbedo >= 0.0 && m.groundAlbedo <= 1.0, "ground_albedo", m.groundAlbedo,
           "in [0, 1]");
-  require(m.sun_angular_radius_rad > 0.0 && m.sun_angular_radius_rad < 0.1,
-          "sun_angular_radius_rad", m.sun_angular_radius_rad, "in (0, 0.1)");
-  require(m.solar_irradiance_scale >= 0.0 && std::isfinite(m.solar_irradiance_scale),
-          "solar_irradiance_scale", m.solar_irradiance_scale, ">= 0");
-  require(m.max_sun_zenith_rad > kPi / 2.0 && m.max_sun_zenith_rad < kPi,
-          "max_sun_zenith_rad", m.max_sun_zenith_rad, "in (pi/2, pi)");
+  require(m.sunAngularRadiusRad > 0.0 && m.sunAngularRadiusRad < 0.1,
+          "sun_angular_radius_rad", m.sunAngularRadiusRad, "in (0, 0.1)");
+  require(m.solarIrradianceScale >= 0.0 && std::isfinite(m.solarIrradianceScale),
+          "solar_irradiance_scale", m.solarIrradianceScale, ">= 0");
+  require(m.maxSunZenithRad > kPi / 2.0 && m.maxSunZenithRad < kPi,
+          "max_sun_zenith_rad", m.maxSunZenithRad, "in (pi/2, pi)");
 }
 
 double ozonePeakNumberDensity(const Medium& m) {
   // The tent profile integrates to its half width (peak density 1).
-  return m.ozone_column_du * kDobsonUnitPerM2 / m.ozone_half_width_m;
+  return m.ozoneColumnDu * kDobsonUnitPerM2 / m.ozoneHalfWidthM;
 }
 
-SpectralCoefficients coefficientsAt(const Medium& m, double wavelength_nm) {
-  const double lambda_um = wavelength_nm * 1e-3;
+SpectralCoefficients coefficientsAt(const Medium& m, double wavelengthNm) {
+  const double lambdaUm = wavelengthNm * 1e-3;
   SpectralCoefficients c{};
-  c.rayleigh_scattering = m.rayleigh_scattering_at_1um_per_m * std::pow(lambda_um, -4.0);
+  c.rayleighScattering = m.rayleighScatteringAt1umPerM * std::pow(lambdaUm, -4.0);
   // Angstrom's law, referred to 550 nm so the default (alpha = 0) is grey at every wavelength.
-  c.mie_extinction = m.mie_extinction_per_m * std::pow(wavelength_nm / 550.0, -m.mie_angstrom_exponent);
-  c.mie_scattering = c.mie_extinction * m.mie_single_scattering_albedo;
-  c.ozone_absorption = ozonePeakNumberDensity(m) * ozoneCrossSection(wavelength_nm);
-  c.solar_irradiance = solarIrradiance(wavelength_nm) * m.solar_irradiance_scale;
+  c.mieExtinction = m.mieExtinctionPerM * std::pow(wavelengthNm / 550.0, -m.mieAngstromExponent);
+  c.mieScattering = c.mieExtinction * m.mieSingleScatteringAlbedo;
+  c.ozoneAbsorption = ozonePeakNumberDensity(m) * ozoneCrossSection(wavelengthNm);
+  c.solarIrradiance = solarIrradiance(wavelengthNm) * m.solarIrradianceScale;
   return c;
 }
 
-double limbDarkeningExponent(double wavelength_nm) {
-  return -0.023 + 0.292 / (wavelength_nm * 1e-3);
+double limbDarkeningExponent(double wavelengthNm) {
+  return -0.023 + 0.292 / (wavelengthNm * 1e-3);
 }
 
 std::vector<double> defaultWavelengths() {

@@ -32,7 +32,7 @@ bool sameSize(const shader::cpu_texture::sampler3D& t, const AtmosphereParameter
 }  // namespace
 
 AtmosphereModel::AtmosphereModel(const ModelConfig& config)
-    : config_(config), converter_(config.wavelengths_nm) {
+    : config_(config), converter_(config.wavelengthsNm) {
   setUp();
   tables_.resize(params_.size());
   for (std::size_t g = 0; g < params_.size(); ++g) {
@@ -41,7 +41,7 @@ AtmosphereModel::AtmosphereModel(const ModelConfig& config)
 }
 
 AtmosphereModel::AtmosphereModel(const ModelConfig& config, std::vector<GroupTables> tables)
-    : config_(config), converter_(config.wavelengths_nm), tables_(std::move(tables)) {
+    : config_(config), converter_(config.wavelengthsNm), tables_(std::move(tables)) {
   setUp();
   if (tables_.size() != params_.size()) {
     throw std::invalid_argument("AtmosphereModel: " + std::to_string(tables_.size()) +
@@ -53,7 +53,7 @@ AtmosphereModel::AtmosphereModel(const ModelConfig& config, std::vector<GroupTab
     const auto& t = tables_[g];
     if (!sameSize(t.transmittance, a.transmittance_width, a.transmittance_height) ||
         !sameSize(t.irradiance, a.irradiance_width, a.irradiance_height) ||
-        !sameSize(t.scattering, a) || !sameSize(t.single_mie, a)) {
+        !sameSize(t.scattering, a) || !sameSize(t.singleMie, a)) {
       throw std::invalid_argument("AtmosphereModel: tables of group " + std::to_string(g) +
                                   " do not match the configured table sizes");
     }
@@ -63,7 +63,7 @@ AtmosphereModel::AtmosphereModel(const ModelConfig& config, std::vector<GroupTab
 void AtmosphereModel::setUp() {
   validate(config_.medium);
   validate(config_.sizes);
-  const auto& w = config_.wavelengths_nm;
+  const auto& w = config_.wavelengthsNm;
   const std::size_t groups = (w.size() + 3) / 4;
   params_.clear();
   for (std::size_t g = 0; g < groups; ++g) {
@@ -73,7 +73,7 @@ void AtmosphereModel::setUp() {
 
 template <typename Fn>
 Spectrum AtmosphereModel::perGroup(Fn fn, Spectrum* second) const {
-  const std::size_t n = config_.wavelengths_nm.size();
+  const std::size_t n = config_.wavelengthsNm.size();
   Spectrum out(n);
   if (second) second->assign(n, 0.0);
   for (std::size_t g = 0; g < params_.size(); ++g) {
@@ -91,7 +91,7 @@ Spectrum AtmosphereModel::skyRadiance(const glm::dvec3& camera, const glm::dvec3
                                       const glm::dvec3& sun, Spectrum* transmittance) const {
   return perGroup(
       [&](const AtmosphereParameters& a, const GroupTables& t, glm::dvec4& tr) {
-        return shader::skyRadiance(a, t.transmittance, t.scattering, t.single_mie, camera, view,
+        return shader::skyRadiance(a, t.transmittance, t.scattering, t.singleMie, camera, view,
                                    sun, tr);
       },
       transmittance);
@@ -102,18 +102,18 @@ Spectrum AtmosphereModel::skyRadianceToPoint(const glm::dvec3& camera, const glm
                                              Spectrum* transmittance) const {
   return perGroup(
       [&](const AtmosphereParameters& a, const GroupTables& t, glm::dvec4& tr) {
-        return shader::skyRadianceToPoint(a, t.transmittance, t.scattering, t.single_mie, camera,
+        return shader::skyRadianceToPoint(a, t.transmittance, t.scattering, t.singleMie, camera,
                                           point, sun, tr);
       },
       transmittance);
 }
 
-Spectrum AtmosphereModel::groundRadiance(const glm::dvec3& camera, const glm::dvec3& ground_point,
+Spectrum AtmosphereModel::groundRadiance(const glm::dvec3& camera, const glm::dvec3& groundPoint,
                                          const glm::dvec3& sun, Spectrum* transmittance) const {
   return perGroup(
       [&](const AtmosphereParameters& a, const GroupTables& t, glm::dvec4& tr) {
-        return shader::groundRadiance(a, t.transmittance, t.scattering, t.single_mie,
-                                      t.irradiance, camera, ground_point, a.ground_albedo, sun,
+        return shader::groundRadiance(a, t.transmittance, t.scattering, t.singleMie,
+                                      t.irradiance, camera, groundPoint, a.ground_albedo, sun,
                                       tr);
       },
       transmittance);
@@ -156,13 +156,13 @@ Spectrum AtmosphereModel::sunDiscRadiance(const glm::dvec3& camera, const glm::d
   });
 }
 
-glm::dvec3 observerPosition(const Medium& medium, double altitude_m) {
-  return {0.0, 0.0, medium.bottom_radius_m + altitude_m};
+glm::dvec3 observerPosition(const Medium& medium, double altitudeM) {
+  return {0.0, 0.0, medium.bottomRadiusM + altitudeM};
 }
 
-glm::dvec3 directionFromAngles(double zenith_rad, double azimuth_rad) {
-  return {std::sin(zenith_rad) * std::cos(azimuth_rad),
-          std::sin(zenith_rad) * std::sin(azimuth_rad), std::cos(zenith_rad)};
+glm::dvec3 directionFromAngles(double zenithRad, double azimuthRad) {
+  return {std::sin(zenithRad) * std::cos(azimuthRad),
+          std::sin(zenithRad) * std::sin(azimuthRad), std::cos(zenithRad)};
 }
 
 }  // namespace skyig::atmosphere

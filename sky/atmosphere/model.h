@@ -3,6 +3,14 @@
 // tables of every group of four wavelengths, and spectral evaluation of the rendering
 // functions on the CPU (probe, eye adaptation, tests). Positions are metres from the planet's
 // centre; directions are unit vectors.
+//
+// Names in sky/atmosphere follow skyig's C++ style (UpperCamel types, lowerCamel functions,
+// variables and members: Medium::topRadiusM, TableSizes::scatteringMu). The exception is what
+// comes from the GLSL compiled as C++ (shaders/atmosphere/*.glsl through
+// shaders/atmosphere_physics.h): AtmosphereParameters' members (top_radius, mie_phase_g, ...)
+// and the shader code keep the snake_case of Bruneton's 2017 implementation, because one source
+// serves the GPU and the CPU. Text for outside keeps snake_case too: TOML keys, the probe's JSON
+// keys, and the names error messages give bad values.
 #include <glm/vec3.hpp>
 
 #include <vector>
@@ -16,7 +24,7 @@ using Spectrum = std::vector<double>;  // one value per wavelength of the model
 
 struct ModelConfig {
   Medium medium;
-  std::vector<double> wavelengths_nm = defaultWavelengths();
+  std::vector<double> wavelengthsNm = defaultWavelengths();
   TableSizes sizes;
   PrecomputeOptions options;
 };
@@ -29,7 +37,7 @@ class AtmosphereModel {
   AtmosphereModel(const ModelConfig& config, std::vector<GroupTables> tables);
 
   const ModelConfig& config() const { return config_; }
-  const std::vector<double>& wavelengths() const { return config_.wavelengths_nm; }
+  const std::vector<double>& wavelengths() const { return config_.wavelengthsNm; }
   const SpectralConverter& converter() const { return converter_; }
   std::size_t groupCount() const { return tables_.size(); }
   const GroupTables& tables(std::size_t group) const { return tables_.at(group); }
@@ -43,7 +51,7 @@ class AtmosphereModel {
   Spectrum skyRadianceToPoint(const glm::dvec3& camera, const glm::dvec3& point,
                               const glm::dvec3& sun, Spectrum* transmittance = nullptr) const;
   // Radiance of the ground point seen from the camera, with its aerial perspective.
-  Spectrum groundRadiance(const glm::dvec3& camera, const glm::dvec3& ground_point,
+  Spectrum groundRadiance(const glm::dvec3& camera, const glm::dvec3& groundPoint,
                           const glm::dvec3& sun, Spectrum* transmittance = nullptr) const;
   // Direct sun and sky irradiance on a surface at `point` with the given normal.
   Spectrum sunIrradiance(const glm::dvec3& point, const glm::dvec3& normal,
@@ -69,9 +77,9 @@ class AtmosphereModel {
   std::vector<GroupTables> tables_;
 };
 
-// Position of an observer at `altitude_m` above the ground on the +z axis, and directions
+// Position of an observer at `altitudeM` above the ground on the +z axis, and directions
 // from zenith and azimuth angles in radians (azimuth from +x towards +y).
-glm::dvec3 observerPosition(const Medium& medium, double altitude_m);
-glm::dvec3 directionFromAngles(double zenith_rad, double azimuth_rad);
+glm::dvec3 observerPosition(const Medium& medium, double altitudeM);
+glm::dvec3 directionFromAngles(double zenithRad, double azimuthRad);
 
 }  // namespace skyig::atmosphere

@@ -30,22 +30,22 @@ std::uint64_t parameterHash(const ModelConfig& c) {
   Fnv1a64 h;
   h.i64(kPhysicsRevision);
   const Medium& m = c.medium;
-  for (double v : {m.bottom_radius_m, m.top_radius_m, m.rayleigh_scattering_at_1um_per_m,
-                   m.rayleigh_scale_height_m, m.mie_extinction_per_m,
-                   m.mie_single_scattering_albedo, m.mie_angstrom_exponent, m.mie_scale_height_m,
-                   m.mie_phase_g, m.ozone_column_du, m.ozone_center_altitude_m,
-                   m.ozone_half_width_m, m.ground_albedo, m.sun_angular_radius_rad,
-                   m.solar_irradiance_scale, m.max_sun_zenith_rad}) {
+  for (double v : {m.bottomRadiusM, m.topRadiusM, m.rayleighScatteringAt1umPerM,
+                   m.rayleighScaleHeightM, m.mieExtinctionPerM,
+                   m.mieSingleScatteringAlbedo, m.mieAngstromExponent, m.mieScaleHeightM,
+                   m.miePhaseG, m.ozoneColumnDu, m.ozoneCentreAltitudeM,
+                   m.ozoneHalfWidthM, m.groundAlbedo, m.sunAngularRadiusRad,
+                   m.solarIrradianceScale, m.maxSunZenithRad}) {
     h.f64(v);
   }
-  h.i64(static_cast<std::int64_t>(c.wavelengths_nm.size()));
-  for (double w : c.wavelengths_nm) h.f64(w);
+  h.i64(static_cast<std::int64_t>(c.wavelengthsNm.size()));
+  for (double w : c.wavelengthsNm) h.f64(w);
   const TableSizes& s = c.sizes;
-  for (int v : {s.transmittance_mu, s.transmittance_r, s.irradiance_mu_s, s.irradiance_r,
-                s.scattering_r, s.scattering_mu, s.scattering_mu_s, s.scattering_nu}) {
+  for (int v : {s.transmittanceMu, s.transmittanceR, s.irradianceMuS, s.irradianceR,
+                s.scatteringR, s.scatteringMu, s.scatteringMuS, s.scatteringNu}) {
     h.i64(v);
   }
-  h.i64(c.options.scattering_orders);  // the thread count does not change the tables
+  h.i64(c.options.scatteringOrders);  // the thread count does not change the tables
   return h.value();
 }
 

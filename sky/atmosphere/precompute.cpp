@@ -15,38 +15,38 @@ using shader::cpu_texture::sampler2D;
 using shader::cpu_texture::sampler3D;
 
 AtmosphereParameters makeParameters(const Medium& medium,
-                                    const std::array<double, 4>& wavelengths_nm,
+                                    const std::array<double, 4>& wavelengthsNm,
                                     const TableSizes& sizes) {
   validate(medium);
   validate(sizes);
   AtmosphereParameters atm{};
   for (int i = 0; i < 4; ++i) {
-    const SpectralCoefficients c = coefficientsAt(medium, wavelengths_nm[static_cast<std::size_t>(i)]);
-    atm.solar_irradiance[i] = c.solar_irradiance;
-    atm.rayleigh_scattering[i] = c.rayleigh_scattering;
-    atm.mie_scattering[i] = c.mie_scattering;
-    atm.mie_extinction[i] = c.mie_extinction;
-    atm.absorption_extinction[i] = c.ozone_absorption;
-    atm.ground_albedo[i] = medium.ground_albedo;
-    atm.limb_darkening_exponent[i] = limbDarkeningExponent(wavelengths_nm[static_cast<std::size_t>(i)]);
+    const SpectralCoefficients c = coefficientsAt(medium, wavelengthsNm[static_cast<std::size_t>(i)]);
+    atm.solar_irradiance[i] = c.solarIrradiance;
+    atm.rayleigh_scattering[i] = c.rayleighScattering;
+    atm.mie_scattering[i] = c.mieScattering;
+    atm.mie_extinction[i] = c.mieExtinction;
+    atm.absorption_extinction[i] = c.ozoneAbsorption;
+    atm.ground_albedo[i] = medium.groundAlbedo;
+    atm.limb_darkening_exponent[i] = limbDarkeningExponent(wavelengthsNm[static_cast<std::size_t>(i)]);
   }
-  atm.sun_angular_radius = medium.sun_angular_radius_rad;
-  atm.bottom_radius = medium.bottom_radius_m;
-  atm.top_radius = medium.top_radius_m;
-  atm.rayleigh_scale_height = medium.rayleigh_scale_height_m;
-  atm.mie_scale_height = medium.mie_scale_height_m;
-  atm.mie_phase_g = medium.mie_phase_g;
-  atm.ozone_center_altitude = medium.ozone_center_altitude_m;
-  atm.ozone_half_width = medium.ozone_half_width_m;
-  atm.mu_s_min = std::cos(medium.max_sun_zenith_rad);
-  atm.transmittance_width = sizes.transmittance_mu;
-  atm.transmittance_height = sizes.transmittance_r;
-  atm.irradiance_width = sizes.irradiance_mu_s;
-  atm.irradiance_height = sizes.irradiance_r;
-  atm.scattering_r_size = sizes.scattering_r;
-  atm.scattering_mu_size = sizes.scattering_mu;
-  atm.scattering_mu_s_size = sizes.scattering_mu_s;
-  atm.scattering_nu_size = sizes.scattering_nu;
+  atm.sun_angular_radius = medium.sunAngularRadiusRad;
+  atm.bottom_radius = medium.bottomRadiusM;
+  atm.top_radius = medium.topRadiusM;
+  atm.rayleigh_scale_height = medium.rayleighScaleHeightM;
+  atm.mie_scale_height = medium.mieScaleHeightM;
+  atm.mie_phase_g = medium.miePhaseG;
+  atm.ozone_center_altitude = medium.ozoneCentreAltitudeM;
+  atm.ozone_half_width = medium.ozoneHalfWidthM;
+  atm.mu_s_min = std::cos(medium.maxSunZenithRad);
+  atm.transmittance_width = sizes.transmittanceMu;
+  atm.transmittance_height = sizes.transmittanceR;
+  atm.irradiance_width = sizes.irradianceMuS;
+  atm.irradiance_height = sizes.irradianceR;
+  atm.scattering_r_size = sizes.scatteringR;
+  atm.scattering_mu_size = sizes.scatteringMu;
+  atm.scattering_mu_s_size = sizes.scatteringMuS;
+  atm.scattering_nu_size = sizes.scatteringNu;
   return atm;
 }
 
@@ -55,13 +55,13 @@ void parallelFor(int count, int threads, const std::function<void(int)>& fn) {
   n = std::max(1, std::min(n, count));
   std::atomic<int> next{0};
   std::exception_ptr error;
-  std::mutex error_mutex;
+  std::mutex errorMutex;
   auto worker = [&] {
     for (int i = next++; i < count; i = next++) {
       try {
         fn(i);
       } catch (...) {
-        std::lock_guard<std::mutex> lock(error_mutex);
+        std::lock_guard<std::mutex> lock(errorMutex);
         if (!error) error = std::current_exception();
       }
     }
@@ -105,9 +105,9 @@ void for3D(const sampler3D& t, int threads, Fn fn) {
 }  // namespace
 
 GroupTables precomputeGroup(const AtmosphereParameters& atm, const PrecomputeOptions& options) {
-  if (options.scattering_orders < 1 || options.scattering_orders > 32) {
+  if (options.scatteringOrders < 1 || options.scatteringOrders > 32) {
     throw std::invalid_argument("atmosphere precompute: scattering_orders = " +
-                                std::to_string(options.scattering_orders) +
+                                std::to_string(options.scatteringOrders) +
                                 " is invalid (expected 1 to 32)");
   }
   const int threads = options.threads;
@@ -121,46 +121,46 @@ GroupTables precomputeGroup(const AtmosphereParameters& atm, const PrecomputeOpt
   const sampler2D& transmittance = out.transmittance;
 
   // 2. Direct irradiance (order 0 on the ground): feeds order 2; not part of the sky table.
-  sampler2D delta_irradiance = make2D(atm.irradiance_width, atm.irradiance_height);
-  fill2D(delta_irradiance, threads, [&](const glm::dvec2& frag) {
+  sampler2D deltaIrradiance = make2D(atm.irradiance_width, atm.irradiance_height);
+  fill2D(deltaIrradiance, threads, [&](const glm::dvec2& frag) {
     return shader::computeDirectIrradianceTexel(atm, transmittance, frag);
   });
   out.irradiance = make2D(atm.irradiance_width, atm.irradiance_height);
 
   // 3. Single scattering, Rayleigh and Mie apart.
-  sampler3D delta_rayleigh = makeScattering(atm);
-  sampler3D delta_mie = makeScattering(atm);
-  for3D(delta_rayleigh, threads, [&](int x, int y, int z, const glm::dvec3& frag) {
+  sampler3D deltaRayleigh = makeScattering(atm);
+  sampler3D deltaMie = makeScattering(atm);
+  for3D(deltaRayleigh, threads, [&](int x, int y, int z, const glm::dvec3& frag) {
     glm::dvec4 rayleigh;
     glm::dvec4 mie;
     shader::computeSingleScatteringTexel(atm, transmittance, frag, rayleigh, mie);
-    delta_rayleigh.at(x, y, z) = rayleigh;
-    delta_mie.at(x, y, z) = mie;
+    deltaRayleigh.at(x, y, z) = rayleigh;
+    deltaMie.at(x, y, z) = mie;
   });
-  out.scattering = delta_rayleigh;
-  out.single_mie = delta_mie;
+  out.scattering = deltaRayleigh;
+  out.singleMie = deltaMie;
 
   // 4. Orders 2..N, each from the previous one.
-  sampler3D delta_multiple = makeScattering(atm);
-  sampler3D delta_density = makeScattering(atm);
-  for (int order = 2; order <= options.scattering_orders; ++order) {
-    for3D(delta_density, threads, [&](int x, int y, int z, const glm::dvec3& frag) {
-      delta_density.at(x, y, z) = shader::computeScatteringDensityTexel(
-          atm, transmittance, delta_rayleigh, delta_mie, delta_multiple, delta_irradiance, frag,
+  sampler3D deltaMultiple = makeScattering(atm);
+  sampler3D deltaDensity = makeScattering(atm);
+  for (int order = 2; order <= options.scatteringOrders; ++order) {
+    for3D(deltaDensity, threads, [&](int x, int y, int z, const glm::dvec3& frag) {
+      deltaDensity.at(x, y, z) = shader::computeScatteringDensityTexel(
+          atm, transmittance, deltaRayleigh, deltaMie, deltaMultiple, deltaIrradiance, frag,
           order);
     });
-    fill2D(delta_irradiance, threads, [&](const glm::dvec2& frag) {
-      return shader::computeIndirectIrradianceTexel(atm, delta_rayleigh, delta_mie,
-                                                    delta_multiple, frag, order - 1);
+    fill2D(deltaIrradiance, threads, [&](const glm::dvec2& frag) {
+      return shader::computeIndirectIrradianceTexel(atm, deltaRayleigh, deltaMie,
+                                                    deltaMultiple, frag, order - 1);
     });
     for (std::size_t i = 0; i < out.irradiance.texels.size(); ++i) {
-      out.irradiance.texels[i] += delta_irradiance.texels[i];
+      out.irradiance.texels[i] += deltaIrradiance.texels[i];
     }
-    for3D(delta_multiple, threads, [&](int x, int y, int z, const glm::dvec3& frag) {
+    for3D(deltaMultiple, threads, [&](int x, int y, int z, const glm::dvec3& frag) {
       double nu = 0.0;
       const glm::dvec4 radiance =
-          shader::computeMultipleScatteringTexel(atm, transmittance, delta_density, frag, nu);
-      delta_multiple.at(x, y, z) = radiance;
+          shader::computeMultipleScatteringTexel(atm, transmittance, deltaDensity, frag, nu);
+      deltaMultiple.at(x, y, z) = radiance;
       out.scattering.at(x, y, z) += radiance / shader::rayleighPhaseFunction(nu);
     });
   }

@@ -15,12 +15,12 @@ namespace skyig::atmosphere {
 using shader::atmosphere_types::AtmosphereParameters;
 
 struct PrecomputeOptions {
-  int scattering_orders = 4;  // 1 = single scattering only
+  int scatteringOrders = 4;  // 1 = single scattering only
   int threads = 0;            // 0: one per hardware thread
 };
 
 // The shader-side parameters of four wavelengths (nm) of the medium with tables of `sizes`.
-AtmosphereParameters makeParameters(const Medium& medium, const std::array<double, 4>& wavelengths_nm,
+AtmosphereParameters makeParameters(const Medium& medium, const std::array<double, 4>& wavelengthsNm,
                                     const TableSizes& sizes);
 
 // Runs fn(i) for i in [0, count) on `threads` threads (0 = hardware), rethrowing the first

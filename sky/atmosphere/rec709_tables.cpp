@@ -9,9 +9,9 @@ namespace skyig::atmosphere {
 
 Rec709Tables combineToRec709(const AtmosphereModel& model) {
   const std::size_t n = model.wavelengths().size();
-  Rec709Tables out{model.tables(0).scattering, model.tables(0).single_mie};
+  Rec709Tables out{model.tables(0).scattering, model.tables(0).singleMie};
   for (auto& t : out.scattering.texels) t = glm::dvec4(0.0);
-  for (auto& t : out.single_mie.texels) t = glm::dvec4(0.0);
+  for (auto& t : out.singleMie.texels) t = glm::dvec4(0.0);
   for (std::size_t g = 0; g < model.groupCount(); ++g) {
     // Rec.709 per unit spectral radiance of each of the group's wavelengths (padding: none).
     glm::dvec3 rgb[4];
@@ -23,7 +23,7 @@ Rec709Tables combineToRec709(const AtmosphereModel& model) {
       for (std::size_t i = 0; i < 4; ++i) {
         const auto c = static_cast<glm::length_t>(i);
         out.scattering.texels[k] += glm::dvec4(rgb[i] * t.scattering.texels[k][c], 0.0);
-        out.single_mie.texels[k] += glm::dvec4(rgb[i] * t.single_mie.texels[k][c], 0.0);
+        out.singleMie.texels[k] += glm::dvec4(rgb[i] * t.singleMie.texels[k][c], 0.0);
       }
     }
   }
@@ -32,14 +32,14 @@ Rec709Tables combineToRec709(const AtmosphereModel& model) {
 
 glm::dvec3 skyRec709(const AtmosphereModel& model, const Rec709Tables& tables,
                      const glm::dvec3& camera, const glm::dvec3& view, const glm::dvec3& sun) {
-  return shader::skyRec709(model.parameters(0), tables.scattering, tables.single_mie, camera,
+  return shader::skyRec709(model.parameters(0), tables.scattering, tables.singleMie, camera,
                            view, sun);
 }
 
 glm::dvec3 moonlitSkyRec709(const AtmosphereModel& model, const glm::dvec3& camera,
-                            const glm::dvec3& view, const glm::dvec3& moon_direction,
-                            const glm::dvec3& moonlight_scale) {
-  return model.converter().toRec709(model.skyRadiance(camera, view, moon_direction)) * moonlight_scale;
+                            const glm::dvec3& view, const glm::dvec3& moonDirection,
+                            const glm::dvec3& moonlightScale) {
+  return model.converter().toRec709(model.skyRadiance(camera, view, moonDirection)) * moonlightScale;
 }
 
 namespace {
@@ -76,41 +76,41 @@ PackedRec709Tables Rec709Packer::packSmallTables() const {
     sunXyz += xyzSun_[i];
     alpha += xyzSun_[i] * wavelengthValue(model_.parameters(i / 4).limb_darkening_exponent, i);
   }
-  out.solar_irradiance_xyz = sunXyz;
-  out.limb_darkening_xyz = alpha / sunXyz;
-  out.ground_albedo = model_.parameters(0).ground_albedo.x;
-  out.transmittance_xyz = model_.tables(0).transmittance;
-  out.irradiance_xyz = model_.tables(0).irradiance;
-  for (std::size_t k = 0; k < out.transmittance_xyz.texels.size(); ++k) {
+  out.solarIrradianceXyz = sunXyz;
+  out.limbDarkeningXyz = alpha / sunXyz;
+  out.groundAlbedo = model_.parameters(0).ground_albedo.x;
+  out.transmittanceXyz = model_.tables(0).transmittance;
+  out.irradianceXyz = model_.tables(0).irradiance;
+  for (std::size_t k = 0; k < out.transmittanceXyz.texels.size(); ++k) {
     glm::dvec3 t(0.0);
     for (std::size_t i = 0; i < n; ++i) t += xyzSun_[i] * wavelengthValue(model_.tables(i / 4).transmittance.texels[k], i);
     // Float, as uploaded.
-    out.transmittance_xyz.texels[k] = glm::dvec4(glm::dvec3(glm::vec3(t / sunXyz)), 1.0);
+    out.transmittanceXyz.texels[k] = glm::dvec4(glm::dvec3(glm::vec3(t / sunXyz)), 1.0);
   }
-  for (std::size_t k = 0; k < out.irradiance_xyz.texels.size(); ++k) {
+  for (std::size_t k = 0; k < out.irradianceXyz.texels.size(); ++k) {
     glm::dvec3 e(0.0);
     for (std::size_t i = 0; i < n; ++i)
       e += model_.converter().weight(i) * wavelengthValue(model_.tables(i / 4).irradiance.texels[k], i);
-    out.irradiance_xyz.texels[k] = glm::dvec4(glm::dvec3(glm::vec3(e)), 0.0);
+    out.irradianceXyz.texels[k] = glm::dvec4(glm::dvec3(glm::vec3(e)), 0.0);
   }
   return out;
 }
 
 void Rec709Packer::packSlice(int z, std::vector<std::uint16_t>& scattering,
-                             std::vector<std::uint16_t>& single_mie_rg) const {
+                             std::vector<std::uint16_t>& singleMieRg) const {
   const auto& first = model_.tables(0).scattering;
   if (z < 0 || z >= first.depth) throw std::invalid_argument("Rec709Packer: slice " + std::to_string(z) + " out of range");
   const std::size_t texels = static_cast<std::size_t>(first.width) * static_cast<std::size_t>(first.height);
   const std::size_t offset = static_cast<std::size_t>(z) * texels;
   scattering.resize(texels * 4);
-  single_mie_rg.resize(texels * 2);
+  singleMieRg.resize(texels * 2);
   const std::size_t n = rgb_.size();
   for (std::size_t k = 0; k < texels; ++k) {
     glm::dvec3 s(0.0), m(0.0);
     for (std::size_t i = 0; i < n; ++i) {
       const GroupTables& t = model_.tables(i / 4);
       s += rgb_[i] * wavelengthValue(t.scattering.texels[offset + k], i);
-      m += rgb_[i] * wavelengthValue(t.single_mie.texels[offset + k], i);
+      m += rgb_[i] * wavelengthValue(t.singleMie.texels[offset + k], i);
     }
     s *= kTableScale;
     m *= kTableScale;
@@ -118,8 +118,8 @@ void Rec709Packer::packSlice(int z, std::vector<std::uint16_t>& scattering,
     scattering[4 * k + 1] = half(s.y);
     scattering[4 * k + 2] = half(s.z);
     scattering[4 * k + 3] = half(m.z);
-    single_mie_rg[2 * k + 0] = half(m.x);
-    single_mie_rg[2 * k + 1] = half(m.y);
+    singleMieRg[2 * k + 0] = half(m.x);
+    singleMieRg[2 * k + 1] = half(m.y);
   }
 }
 
@@ -128,7 +128,7 @@ PackedRec709Tables packRec709(const AtmosphereModel& model) {
   PackedRec709Tables out = packer.packSmallTables();
   const auto& first = model.tables(0).scattering;
   out.scattering = shader::cpu_texture::sampler3D(first.width, first.height, first.depth);
-  out.single_mie_rg = out.scattering;
+  out.singleMieRg = out.scattering;
   std::vector<std::uint16_t> s, m;
   const std::size_t texels = static_cast<std::size_t>(first.width) * static_cast<std::size_t>(first.height);
   for (int z = 0; z < first.depth; ++z) {
@@ -136,7 +136,7 @@ PackedRec709Tables packRec709(const AtmosphereModel& model) {
     for (std::size_t k = 0; k < texels; ++k) {
       const std::size_t at = static_cast<std::size_t>(z) * texels + k;
       out.scattering.texels[at] = {fromHalf(s[4 * k]), fromHalf(s[4 * k + 1]), fromHalf(s[4 * k + 2]), fromHalf(s[4 * k + 3])};
-      out.single_mie_rg.texels[at] = {fromHalf(m[2 * k]), fromHalf(m[2 * k + 1]), 0.0, 1.0};
+      out.singleMieRg.texels[at] = {fromHalf(m[2 * k]), fromHalf(m[2 * k + 1]), 0.0, 1.0};
     }
   }
   return out;
@@ -144,14 +144,14 @@ PackedRec709Tables packRec709(const AtmosphereModel& model) {
 
 glm::dvec3 packedSkyRec709(const AtmosphereModel& model, const PackedRec709Tables& tables,
                            const glm::dvec3& camera, const glm::dvec3& view, const glm::dvec3& light) {
-  return shader::packedSkyRec709(model.parameters(0), tables.scattering, tables.single_mie_rg, camera, view, light);
+  return shader::packedSkyRec709(model.parameters(0), tables.scattering, tables.singleMieRg, camera, view, light);
 }
 
 glm::dvec3 packedRadianceRec709(const AtmosphereModel& model, const PackedRec709Tables& tables,
                                 const glm::dvec3& camera, const glm::dvec3& view, const glm::dvec3& sun) {
-  return shader::packedViewRec709(model.parameters(0), tables.transmittance_xyz, tables.scattering,
-                                  tables.single_mie_rg, tables.irradiance_xyz, tables.solar_irradiance_xyz,
-                                  tables.limb_darkening_xyz, tables.ground_albedo, camera, view, sun, true);
+  return shader::packedViewRec709(model.parameters(0), tables.transmittanceXyz, tables.scattering,
+                                  tables.singleMieRg, tables.irradianceXyz, tables.solarIrradianceXyz,
+                                  tables.limbDarkeningXyz, tables.groundAlbedo, camera, view, sun, true);
 }
 
 }  // namespace skyig::atmosphere

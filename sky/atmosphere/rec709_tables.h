@@ -14,7 +14,7 @@ namespace skyig::atmosphere {
 
 struct Rec709Tables {
   shader::cpu_texture::sampler3D scattering;  // rgb in x, y, z; w = 0
-  shader::cpu_texture::sampler3D single_mie;
+  shader::cpu_texture::sampler3D singleMie;
 };
 
 Rec709Tables combineToRec709(const AtmosphereModel& model);
@@ -27,23 +27,23 @@ glm::dvec3 skyRec709(const AtmosphereModel& model, const Rec709Tables& tables,
 // same scattering lit from the moon's direction, its spectrum taken as the sun's times a
 // Rec.709 scale (the moon's irradiance relative to the sun's, per channel).
 glm::dvec3 moonlitSkyRec709(const AtmosphereModel& model, const glm::dvec3& camera,
-                            const glm::dvec3& view, const glm::dvec3& moon_direction,
-                            const glm::dvec3& moonlight_scale);
+                            const glm::dvec3& view, const glm::dvec3& moonDirection,
+                            const glm::dvec3& moonlightScale);
 
 // What the renderer uploads: the tables of shaders/atmosphere/rendering_rec709.glsl ("packed
 // tables"), with the scattering pair rounded to half floats as on the GPU.
 //   scattering:    C*.rgb, C_M.b in w   (Rec.709 x REC709_TABLE_SCALE, RGBA16F on the GPU)
-//   single_mie_rg: C_M.rg in x, y       (RG16F)
-//   transmittance_xyz, irradiance_xyz: sun-weighted XYZ transmittance (w = 1), sky irradiance
+//   singleMieRg:   C_M.rg in x, y       (RG16F)
+//   transmittanceXyz, irradianceXyz: sun-weighted XYZ transmittance (w = 1), sky irradiance
 //   in XYZ (RGBA32F: the transmittance spans more than half floats hold)
 struct PackedRec709Tables {
-  shader::cpu_texture::sampler2D transmittance_xyz;
-  shader::cpu_texture::sampler2D irradiance_xyz;
+  shader::cpu_texture::sampler2D transmittanceXyz;
+  shader::cpu_texture::sampler2D irradianceXyz;
   shader::cpu_texture::sampler3D scattering;
-  shader::cpu_texture::sampler3D single_mie_rg;
-  glm::dvec3 solar_irradiance_xyz{0.0};  // at the top of the atmosphere (Y in lux)
-  glm::dvec3 limb_darkening_xyz{0.0};    // sun-weighted mean exponent per XYZ channel
-  double ground_albedo = 0.0;
+  shader::cpu_texture::sampler3D singleMieRg;
+  glm::dvec3 solarIrradianceXyz{0.0};  // at the top of the atmosphere (Y in lux)
+  glm::dvec3 limbDarkeningXyz{0.0};    // sun-weighted mean exponent per XYZ channel
+  double groundAlbedo = 0.0;
 };
 
 // Makes the packed tables of a model, one scattering slice (one radius, z) at a time so a
@@ -56,7 +56,7 @@ class Rec709Packer {
   // Every part of the packed tables except the scattering pair (small).
   PackedRec709Tables packSmallTables() const;
   // Half floats of slice z: scattering as RGBA (4 per texel) and single Mie as RG (2).
-  void packSlice(int z, std::vector<std::uint16_t>& scattering, std::vector<std::uint16_t>& single_mie_rg) const;
+  void packSlice(int z, std::vector<std::uint16_t>& scattering, std::vector<std::uint16_t>& singleMieRg) const;
 
  private:
   const AtmosphereModel& model_;

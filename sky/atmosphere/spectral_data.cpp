@@ -136,22 +136,22 @@ constexpr std::array<double, 95 * 3> kCie1931 = {
     0.000001251141, 0.000000451810, 0.000000000000,  // 830
 };
 
-void checkRange(double wavelength_nm, const char* what) {
-  if (!(wavelength_nm >= kSpectralDataMinNm && wavelength_nm <= kSpectralDataMaxNm)) {
+void checkRange(double wavelengthNm, const char* what) {
+  if (!(wavelengthNm >= kSpectralDataMinNm && wavelengthNm <= kSpectralDataMaxNm)) {
     std::ostringstream msg;
-    msg << what << ": wavelength " << wavelength_nm << " nm is outside the tabulated range ["
+    msg << what << ": wavelength " << wavelengthNm << " nm is outside the tabulated range ["
         << kSpectralDataMinNm << ", " << kSpectralDataMaxNm << "] nm";
     throw std::out_of_range(msg.str());
   }
 }
 
-// Linear interpolation in a table whose entry i sits at first_nm + i * step_nm; clamped to the
+// Linear interpolation in a table whose entry i sits at firstNm + i * stepNm; clamped to the
 // end values outside the grid (the 10 nm bin tables start at their first bin centre, 365 nm).
 template <std::size_t N>
 double interpolate(const std::array<double, N>& table, std::size_t stride, std::size_t channel,
-                   double first_nm, double step_nm, double wavelength_nm) {
+                   double firstNm, double stepNm, double wavelengthNm) {
   const std::size_t count = N / stride;
-  const double x = (wavelength_nm - first_nm) / step_nm;
+  const double x = (wavelengthNm - firstNm) / stepNm;
   if (x <= 0.0) return table[channel];
   if (x >= static_cast<double>(count - 1)) return table[(count - 1) * stride + channel];
   const auto i = static_cast<std::size_t>(std::floor(x));
@@ -161,21 +161,21 @@ double interpolate(const std::array<double, N>& table, std::size_t stride, std::
 
 }  // namespace
 
-double solarIrradiance(double wavelength_nm) {
-  checkRange(wavelength_nm, "solarIrradiance");
-  return interpolate(kSolarIrradiance, 1, 0, 365.0, 10.0, wavelength_nm);
+double solarIrradiance(double wavelengthNm) {
+  checkRange(wavelengthNm, "solarIrradiance");
+  return interpolate(kSolarIrradiance, 1, 0, 365.0, 10.0, wavelengthNm);
 }
 
-double ozoneCrossSection(double wavelength_nm) {
-  checkRange(wavelength_nm, "ozoneCrossSection");
-  return interpolate(kOzoneCrossSection, 1, 0, 365.0, 10.0, wavelength_nm);
+double ozoneCrossSection(double wavelengthNm) {
+  checkRange(wavelengthNm, "ozoneCrossSection");
+  return interpolate(kOzoneCrossSection, 1, 0, 365.0, 10.0, wavelengthNm);
 }
 
-glm::dvec3 cie1931ColorMatching(double wavelength_nm) {
-  checkRange(wavelength_nm, "cie1931ColorMatching");
-  return {interpolate(kCie1931, 3, 0, 360.0, 5.0, wavelength_nm),
-          interpolate(kCie1931, 3, 1, 360.0, 5.0, wavelength_nm),
-          interpolate(kCie1931, 3, 2, 360.0, 5.0, wavelength_nm)};
+glm::dvec3 cie1931ColourMatching(double wavelengthNm) {
+  checkRange(wavelengthNm, "cie1931ColourMatching");
+  return {interpolate(kCie1931, 3, 0, 360.0, 5.0, wavelengthNm),
+          interpolate(kCie1931, 3, 1, 360.0, 5.0, wavelengthNm),
+          interpolate(kCie1931, 3, 2, 360.0, 5.0, wavelengthNm)};
 }
 
 }  // namespace skyig::atmosphere

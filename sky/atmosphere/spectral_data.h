@@ -13,14 +13,14 @@ inline constexpr double kSpectralDataMaxNm = 830.0;
 
 // Solar spectral irradiance at the top of the atmosphere, W m^-2 nm^-1 (ASTM G-173 ETR,
 // averaged over 10 nm bins).
-double solarIrradiance(double wavelength_nm);
+double solarIrradiance(double wavelengthNm);
 
 // Ozone absorption cross-section at 233 K, m^2 per molecule (Serdyuchenko et al. 2014,
 // averaged over 10 nm bins).
-double ozoneCrossSection(double wavelength_nm);
+double ozoneCrossSection(double wavelengthNm);
 
 // CIE 1931 2-degree colour matching functions xbar, ybar, zbar (dimensionless, ybar peaks at 1
 // at 555 nm).
-glm::dvec3 cie1931ColorMatching(double wavelength_nm);
+glm::dvec3 cie1931ColourMatching(double wavelengthNm);
 
 }  // namespace skyig::atmosphere

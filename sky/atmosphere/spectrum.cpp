@@ -28,8 +28,8 @@ double hat(const std::vector<double>& s, std::size_t i, double w) {
 
 }  // namespace
 
-SpectralConverter::SpectralConverter(std::vector<double> wavelengths_nm)
-    : wavelengths_(std::move(wavelengths_nm)) {
+SpectralConverter::SpectralConverter(std::vector<double> wavelengthsNm)
+    : wavelengths_(std::move(wavelengthsNm)) {
   if (wavelengths_.empty()) throw std::invalid_argument("SpectralConverter: no wavelengths");
   for (std::size_t i = 0; i < wavelengths_.size(); ++i) {
     const double w = wavelengths_[i];
@@ -44,11 +44,11 @@ SpectralConverter::SpectralConverter(std::vector<double> wavelengths_nm)
   // 1 nm midpoint rule over 360-830 nm; the tables interpolate linearly in between.
   weights_.assign(wavelengths_.size(), glm::dvec3(0.0));
   for (std::size_t i = 0; i < wavelengths_.size(); ++i) {
-    const double sun_i = solarIrradiance(wavelengths_[i]);
+    const double sunI = solarIrradiance(wavelengths_[i]);
     for (double w = kSpectralDataMinNm + 0.5; w < kSpectralDataMaxNm; w += 1.0) {
       const double h = hat(wavelengths_, i, w);
       if (h == 0.0) continue;
-      weights_[i] += cie1931ColorMatching(w) * (h * solarIrradiance(w) / sun_i);
+      weights_[i] += cie1931ColourMatching(w) * (h * solarIrradiance(w) / sunI);
     }
     weights_[i] *= kMaxLuminousEfficacy;
   }
@@ -66,13 +66,13 @@ glm::dvec3 SpectralConverter::toXyz(const std::vector<double>& spectrum) const {
   return xyz;
 }
 
-double SpectralConverter::at(const std::vector<double>& spectrum, double wavelength_nm) const {
+double SpectralConverter::at(const std::vector<double>& spectrum, double wavelengthNm) const {
   if (spectrum.size() != wavelengths_.size()) {
     throw std::invalid_argument("SpectralConverter::at: spectrum size mismatch");
   }
   double v = 0.0;
   for (std::size_t i = 0; i < spectrum.size(); ++i) {
-    v += hat(wavelengths_, i, wavelength_nm) * spectrum[i];
+    v += hat(wavelengths_, i, wavelengthNm) * spectrum[i];
   }
   return v;
 }

@@ -20,7 +20,7 @@ glm::dvec3 xyzToRec709(const glm::dvec3& xyz);
 class SpectralConverter {
  public:
   // Wavelengths in nm, strictly increasing, inside [360, 830]; throws otherwise.
-  explicit SpectralConverter(std::vector<double> wavelengths_nm);
+  explicit SpectralConverter(std::vector<double> wavelengthsNm);
 
   const std::vector<double>& wavelengths() const { return wavelengths_; }
   // Spectral radiance (W m^-2 sr^-1 nm^-1) or irradiance (W m^-2 nm^-1) at the wavelengths to
@@ -33,7 +33,7 @@ class SpectralConverter {
   // XYZ (cd/m^2) contributed by one unit of spectral radiance at sample i.
   const glm::dvec3& weight(std::size_t i) const { return weights_.at(i); }
   // Linear interpolation of the sampled spectrum at one wavelength (nm).
-  double at(const std::vector<double>& spectrum, double wavelength_nm) const;
+  double at(const std::vector<double>& spectrum, double wavelengthNm) const;
 
  private:
   std::vector<double> wavelengths_;

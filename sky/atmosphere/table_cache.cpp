@@ -25,17 +25,17 @@ constexpr char kMagic[8] = {'S', 'K', 'Y', 'I', 'G', 'A', 'T', 'M'};
 constexpr std::uint32_t kFloat32 = 1;
 
 std::array<std::int32_t, 8> sizeArray(const TableSizes& s) {
-  return {s.transmittance_mu, s.transmittance_r, s.irradiance_mu_s, s.irradiance_r,
-          s.scattering_r,     s.scattering_mu,   s.scattering_mu_s, s.scattering_nu};
+  return {s.transmittanceMu, s.transmittanceR, s.irradianceMuS, s.irradianceR,
+          s.scatteringR,     s.scatteringMu,   s.scatteringMuS, s.scatteringNu};
 }
 
 std::size_t groupTexels(const TableSizes& s) {
-  return static_cast<std::size_t>(s.transmittance_mu) * static_cast<std::size_t>(s.transmittance_r) +
-         static_cast<std::size_t>(s.irradiance_mu_s) * static_cast<std::size_t>(s.irradiance_r) +
+  return static_cast<std::size_t>(s.transmittanceMu) * static_cast<std::size_t>(s.transmittanceR) +
+         static_cast<std::size_t>(s.irradianceMuS) * static_cast<std::size_t>(s.irradianceR) +
          2 * s.scatteringTexels();
 }
 
-std::size_t groupCount(const ModelConfig& c) { return (c.wavelengths_nm.size() + 3) / 4; }
+std::size_t groupCount(const ModelConfig& c) { return (c.wavelengthsNm.size() + 3) / 4; }
 
 template <typename T>
 void put(std::vector<unsigned char>& out, const T& v) {
@@ -56,7 +56,7 @@ void forEachTable(std::vector<GroupTables>& tables, Fn fn) {
     fn(g.transmittance.texels);
     fn(g.irradiance.texels);
     fn(g.scattering.texels);
-    fn(g.single_mie.texels);
+    fn(g.singleMie.texels);
   }
 }
 
@@ -140,8 +140,8 @@ std::optional<std::vector<GroupTables>> readTableCache(const std::filesystem::pa
   }
   if (get<std::uint32_t>(bytes, 60) != kFloat32) return fail("unknown scalar type");
   const std::size_t expected = groupTexels(config.sizes) * groups * 16;
-  const auto payload_size = get<std::uint64_t>(bytes, 64);
-  if (payload_size != expected || bytes.size() != kCacheHeaderBytes + expected) {
+  const auto payloadSize = get<std::uint64_t>(bytes, 64);
+  if (payloadSize != expected || bytes.size() != kCacheHeaderBytes + expected) {
     return fail("payload size " + std::to_string(bytes.size() - kCacheHeaderBytes) +
                 " bytes, expected " + std::to_string(expected));
   }
@@ -152,11 +152,11 @@ std::optional<std::vector<GroupTables>> readTableCache(const std::filesystem::pa
   const TableSizes& s = config.sizes;
   std::vector<GroupTables> tables(groups);
   for (auto& g : tables) {
-    g.transmittance = shader::cpu_texture::sampler2D(s.transmittance_mu, s.transmittance_r);
-    g.irradiance = shader::cpu_texture::sampler2D(s.irradiance_mu_s, s.irradiance_r);
-    g.scattering = shader::cpu_texture::sampler3D(s.scattering_nu * s.scattering_mu_s,
-                                                  s.scattering_mu, s.scattering_r);
-    g.single_mie = g.scattering;
+    g.transmittance = shader::cpu_texture::sampler2D(s.transmittanceMu, s.transmittanceR);
+    g.irradiance = shader::cpu_texture::sampler2D(s.irradianceMuS, s.irradianceR);
+    g.scattering = shader::cpu_texture::sampler3D(s.scatteringNu * s.scatteringMuS,
+                                                  s.scatteringMu, s.scatteringR);
+    g.singleMie = g.scattering;
   }
   std::size_t offset = kCacheHeaderBytes;
   bool finite = true;

@@ -7,21 +7,21 @@ namespace skyig::atmosphere {
 
 TableSizes TableSizes::small() {
   TableSizes s;
-  s.transmittance_mu = 128;
-  s.transmittance_r = 32;
-  s.irradiance_mu_s = 32;
-  s.irradiance_r = 8;
-  s.scattering_r = 8;
-  s.scattering_mu = 32;
-  s.scattering_mu_s = 16;
-  s.scattering_nu = 4;
+  s.transmittanceMu = 128;
+  s.transmittanceR = 32;
+  s.irradianceMuS = 32;
+  s.irradianceR = 8;
+  s.scatteringR = 8;
+  s.scatteringMu = 32;
+  s.scatteringMuS = 16;
+  s.scatteringNu = 4;
   return s;
 }
 
 TableSizes TableSizes::medium() {
   TableSizes s;
-  s.scattering_r = 16;
-  s.scattering_mu = 64;
+  s.scatteringR = 16;
+  s.scatteringMu = 64;
   return s;
 }
 
@@ -33,16 +33,16 @@ TableSizes TableSizes::named(const std::string& name) {
 }
 
 std::size_t TableSizes::scatteringTexels() const {
-  return static_cast<std::size_t>(scattering_r) * static_cast<std::size_t>(scattering_mu) *
-         static_cast<std::size_t>(scattering_mu_s) * static_cast<std::size_t>(scattering_nu);
+  return static_cast<std::size_t>(scatteringR) * static_cast<std::size_t>(scatteringMu) *
+         static_cast<std::size_t>(scatteringMuS) * static_cast<std::size_t>(scatteringNu);
 }
 
 std::size_t TableSizes::bytesAtHalfFloat() const {
   const std::size_t texel = 4 * 2;  // RGBA16F
-  const std::size_t t = static_cast<std::size_t>(transmittance_mu) *
-                        static_cast<std::size_t>(transmittance_r);
-  const std::size_t e = static_cast<std::size_t>(irradiance_mu_s) *
-                        static_cast<std::size_t>(irradiance_r);
+  const std::size_t t = static_cast<std::size_t>(transmittanceMu) *
+                        static_cast<std::size_t>(transmittanceR);
+  const std::size_t e = static_cast<std::size_t>(irradianceMuS) *
+                        static_cast<std::size_t>(irradianceR);
   return texel * (t + e + 2 * scatteringTexels());
 }
 
@@ -55,17 +55,17 @@ void validate(const TableSizes& s) {
       throw std::invalid_argument(msg.str());
     }
   };
-  require(s.transmittance_mu, 2, "transmittance_mu");
-  require(s.transmittance_r, 2, "transmittance_r");
-  require(s.irradiance_mu_s, 2, "irradiance_mu_s");
-  require(s.irradiance_r, 2, "irradiance_r");
-  require(s.scattering_r, 2, "scattering_r");
-  require(s.scattering_mu, 4, "scattering_mu");
-  require(s.scattering_mu_s, 2, "scattering_mu_s");
-  require(s.scattering_nu, 2, "scattering_nu");
-  if (s.scattering_mu % 2 != 0) {
+  require(s.transmittanceMu, 2, "transmittance_mu");
+  require(s.transmittanceR, 2, "transmittance_r");
+  require(s.irradianceMuS, 2, "irradiance_mu_s");
+  require(s.irradianceR, 2, "irradiance_r");
+  require(s.scatteringR, 2, "scattering_r");
+  require(s.scatteringMu, 4, "scattering_mu");
+  require(s.scatteringMuS, 2, "scattering_mu_s");
+  require(s.scatteringNu, 2, "scattering_nu");
+  if (s.scatteringMu % 2 != 0) {
     throw std::invalid_argument("atmosphere table size scattering_mu = " +
-                                std::to_string(s.scattering_mu) +
+                                std::to_string(s.scatteringMu) +
                                 " must be even (half the rows for rays hitting the ground)");
   }
 }

@@ -11,14 +11,14 @@
 namespace skyig::atmosphere {
 
 struct TableSizes {
-  int transmittance_mu = 256;  // Bruneton 2017 (the paper: 64x256 T, 16x64 E, 32x128x32x8 S)
-  int transmittance_r = 64;
-  int irradiance_mu_s = 64;
-  int irradiance_r = 16;
-  int scattering_r = 32;
-  int scattering_mu = 128;  // even
-  int scattering_mu_s = 32;
-  int scattering_nu = 8;
+  int transmittanceMu = 256;  // Bruneton 2017 (the paper: 64x256 T, 16x64 E, 32x128x32x8 S)
+  int transmittanceR = 64;
+  int irradianceMuS = 64;
+  int irradianceR = 16;
+  int scatteringR = 32;
+  int scatteringMu = 128;  // even
+  int scatteringMuS = 32;
+  int scatteringNu = 8;
 
   // Small tables for tests (the physics tests need luminance at 16 wavelengths quickly): seconds
   // to precompute on llvmpipe, but 15-22% off the default tables at sunset.
@@ -40,7 +40,7 @@ struct GroupTables {
   shader::cpu_texture::sampler2D transmittance;  // mu x r
   shader::cpu_texture::sampler2D irradiance;     // mu_s x r, indirect (sky) light only
   shader::cpu_texture::sampler3D scattering;     // (nu * mu_s) x mu x r: C*
-  shader::cpu_texture::sampler3D single_mie;     // same layout: C_M
+  shader::cpu_texture::sampler3D singleMie;     // same layout: C_M
 };
 
 }  // namespace skyig::atmosphere

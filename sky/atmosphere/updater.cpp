@@ -5,15 +5,15 @@
 namespace skyig::atmosphere {
 
 AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial,
-                                     std::filesystem::path cache_directory)
-    : AtmosphereUpdater(initial, std::move(cache_directory), precomputeTablesOnCpu) {}
+                                     std::filesystem::path cacheDirectory)
+    : AtmosphereUpdater(initial, std::move(cacheDirectory), precomputeTablesOnCpu) {}
 
 AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial,
-                                     std::filesystem::path cache_directory, TableBuilder builder)
-    : cache_directory_(std::move(cache_directory)),
+                                     std::filesystem::path cacheDirectory, TableBuilder builder)
+    : cacheDirectory_(std::move(cacheDirectory)),
       builder_(builder ? std::move(builder) : TableBuilder(precomputeTablesOnCpu)),
       current_(std::make_shared<const AtmosphereModel>(
-          loadOrPrecompute(initial, cache_directory_, nullptr, builder_))),
+          loadOrPrecompute(initial, cacheDirectory_, nullptr, builder_))),
       worker_([this] { run(); }) {}
 
 AtmosphereUpdater::~AtmosphereUpdater() {
@@ -45,7 +45,7 @@ std::uint64_t AtmosphereUpdater::generation() const {
 
 std::string AtmosphereUpdater::lastError() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return last_error_;
+  return lastError_;
 }
 
 void AtmosphereUpdater::waitIdle() {
@@ -65,7 +65,7 @@ void AtmosphereUpdater::run() {
     std::shared_ptr<const AtmosphereModel> model;
     std::string error;
     try {
-      model = std::make_shared<const AtmosphereModel>(loadOrPrecompute(config, cache_directory_, nullptr, builder_));
+      model = std::make_shared<const AtmosphereModel>(loadOrPrecompute(config, cacheDirectory_, nullptr, builder_));
     } catch (const std::exception& e) {
       error = e.what();
     }
@@ -73,9 +73,9 @@ void AtmosphereUpdater::run() {
     if (model) {
       current_ = std::move(model);
       ++generation_;
-      last_error_.clear();
+      lastError_.clear();
     } else {
-      last_error_ = error;
+      lastError_ = error;
     }
     busy_ = false;
     if (!pending_) idle_.notify_all();

@@ -23,8 +23,8 @@ class AtmosphereUpdater {
   // missing from the cache are computed by `builder` (the CPU precompute by default; the node
   // passes the GPU one, services/atmosphere_loader.h), on the calling thread for the initial
   // model and on the updater's own thread afterwards.
-  AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cache_directory);
-  AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cache_directory,
+  AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cacheDirectory);
+  AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cacheDirectory,
                     TableBuilder builder);
   ~AtmosphereUpdater();
   AtmosphereUpdater(const AtmosphereUpdater&) = delete;
@@ -44,7 +44,7 @@ class AtmosphereUpdater {
  private:
   void run();
 
-  const std::filesystem::path cache_directory_;
+  const std::filesystem::path cacheDirectory_;
   const TableBuilder builder_;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
@@ -54,7 +54,7 @@ class AtmosphereUpdater {
   bool busy_ = false;
   bool stop_ = false;
   std::uint64_t generation_ = 0;
-  std::string last_error_;
+  std::string lastError_;
   std::thread worker_;
 };
 

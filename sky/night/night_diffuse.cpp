@@ -17,9 +17,9 @@ const glm::dvec3& airglowRec709() {
   static const glm::dvec3 colour = [] {
     auto unitY = [](const glm::dvec3& xyz) { return xyz / xyz.y; };
     glm::dvec3 continuum(0.0);
-    for (double w = 400.0; w <= 700.0; w += 1.0) continuum += atmosphere::cie1931ColorMatching(w);
-    const glm::dvec3 xyz = kAirglowGreenLineShare * unitY(atmosphere::cie1931ColorMatching(557.7)) +
-                           kAirglowSodiumShare * unitY(atmosphere::cie1931ColorMatching(589.3)) +
+    for (double w = 400.0; w <= 700.0; w += 1.0) continuum += atmosphere::cie1931ColourMatching(w);
+    const glm::dvec3 xyz = kAirglowGreenLineShare * unitY(atmosphere::cie1931ColourMatching(557.7)) +
+                           kAirglowSodiumShare * unitY(atmosphere::cie1931ColourMatching(589.3)) +
                            (1.0 - kAirglowGreenLineShare - kAirglowSodiumShare) * unitY(continuum);
     const glm::dvec3 rgb = glm::max(atmosphere::xyzToRec709(xyz), glm::dvec3(0.0));
     return rgb / (0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b);

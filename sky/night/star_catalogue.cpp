@@ -16,7 +16,7 @@ StarCatalogue::StarCatalogue(const std::vector<ephemeris::Star>& stars, const ep
 }
 
 std::shared_ptr<const StarCatalogue> loadStarCatalogue(const std::string& path, const ephemeris::UtcTime& epoch) {
-  return std::make_shared<const StarCatalogue>(ephemeris::loadStarCatalog(path), epoch);
+  return std::make_shared<const StarCatalogue>(ephemeris::loadStarCatalogue(path), epoch);
 }
 
 }  // namespace skyig::sky::night

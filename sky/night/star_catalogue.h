@@ -3,7 +3,7 @@
 // with its proper motion applied at the run's epoch (starDirectionAt moves a star by at most
 // 10" a year: once a run is exact enough for a flight), its illuminance above the atmosphere
 // and its colour. Immutable, shared by every SkyState through SkyConditions::starCatalogue.
-#include "ephemeris/star_catalog.h"
+#include "ephemeris/star_catalogue.h"
 #include "ephemeris/time.h"
 
 #include <glm/vec3.hpp>
@@ -31,7 +31,7 @@ class StarCatalogue {
   std::vector<CatalogueStar> stars_;
 };
 
-// Loads the CSV (ephemeris::loadStarCatalog; throws std::runtime_error naming the file) and
+// Loads the CSV (ephemeris::loadStarCatalogue; throws std::runtime_error naming the file) and
 // prepares it for `epoch`.
 std::shared_ptr<const StarCatalogue> loadStarCatalogue(const std::string& path, const ephemeris::UtcTime& epoch);
 

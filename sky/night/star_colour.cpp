@@ -28,7 +28,7 @@ glm::dvec3 blackbodyRec709(double temperatureK) {
   // 5 nm midpoint rule over the CMF table's range: the CMFs are smooth on that scale.
   glm::dvec3 xyz(0.0);
   for (double l = atmosphere::kSpectralDataMinNm + 2.5; l < atmosphere::kSpectralDataMaxNm; l += 5.0)
-    xyz += planckShape(l, temperatureK) * atmosphere::cie1931ColorMatching(l);
+    xyz += planckShape(l, temperatureK) * atmosphere::cie1931ColourMatching(l);
   return atmosphere::xyzToRec709(xyz / xyz.y);
 }
 

@@ -69,7 +69,7 @@ double zodiacalS10(double helioLongitudeDeg, double eclipticLatitudeDeg) {
 const glm::dvec3& sunlightRec709() {
   static const glm::dvec3 colour = [] {
     glm::dvec3 xyz(0.0);
-    for (double w = 380.0; w <= 780.0; w += 1.0) xyz += atmosphere::solarIrradiance(w) * atmosphere::cie1931ColorMatching(w);
+    for (double w = 380.0; w <= 780.0; w += 1.0) xyz += atmosphere::solarIrradiance(w) * atmosphere::cie1931ColourMatching(w);
     const glm::dvec3 rgb = atmosphere::xyzToRec709(xyz);
     return rgb / xyz.y;
   }();

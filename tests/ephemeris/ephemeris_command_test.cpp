@@ -21,7 +21,7 @@ CommandRun run(std::vector<std::string> args) {
   CLI::App app("skyig");
   CommandRun r;
   std::ostringstream out, err;
-  commands::registerEphemerisCommand(app, r.exitCode, out, err);
+  services::registerEphemerisCommand(app, r.exitCode, out, err);
   args.insert(args.begin(), "ephemeris");
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 wants them reversed
   app.parse(reversed);
@@ -79,6 +79,10 @@ TEST(EphemerisCommand, BadValuesGiveAMessageAndExitCode2) {
   r = run({"--lat", "10", "--lon", "0", "--utc", "2150-01-01T00:00:00Z"});
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("2150"), std::string::npos) << r.err;
+  r = run({"--lat", "10", "--lon", "0", "--utc", "2024-01-01T00:00:00Z", "--stars", "3", "--catalogue", "/no/such.csv"});
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("/no/such.csv"), std::string::npos) << r.err;
+  // The former spelling of the flag, as scripts written for it pass it.
   r = run({"--lat", "10", "--lon", "0", "--utc", "2024-01-01T00:00:00Z", "--stars", "3", "--catalog", "/no/such.csv"});
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("/no/such.csv"), std::string::npos) << r.err;

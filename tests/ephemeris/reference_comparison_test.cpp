@@ -135,7 +135,7 @@ TEST(ReferenceComparison, SunMoonPlanetsAgainstSwissEphemeris) {
 
 TEST(ReferenceComparison, SiderealTimeAndStarsAgainstErfa) {
   std::mt19937_64 rng(4242);
-  const std::vector<Star> stars = brightestStars(loadStarCatalog(std::string(SKYIG_SOURCE_DIR) + "/ephemeris/data/bsc5.csv"), 300);
+  const std::vector<Star> stars = brightestStars(loadStarCatalogue(std::string(SKYIG_SOURCE_DIR) + "/ephemeris/data/bsc5.csv"), 300);
   Stat gast, star, starGpu;
   for (int k = 0; k < 200; ++k) {
     // ERFA's UTC uses the same leap-second table from 1972 on; before that it models the

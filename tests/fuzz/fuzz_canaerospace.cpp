@@ -22,7 +22,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (parseFrame(toFrame(m), back) != FrameError::none || !(back == m)) std::abort();
     }
   }
-  const HostState& s = decoder.state();
+  const CanAerospaceState& s = decoder.state();
   if (s.has(kLatitude) && !(s.latitudeDeg >= -90.0 && s.latitudeDeg <= 90.0)) std::abort();
   if (s.has(kHeading) && !(s.headingDeg >= 0.0 && s.headingDeg <= 360.0)) std::abort();
   return 0;

@@ -83,7 +83,7 @@ TEST(CanasState, DecodesTheStandardIdentifiers) {
   // Spec section 5 examples: UTC 13h43m22s = 0D 2B 16 00; date 12 June 1987 = 0C 06 13 57.
   EXPECT_EQ(d.feed(frame(0x4B0, "0A 0F 00 00 0D 2B 16 00")).status, FeedStatus::applied);
   EXPECT_EQ(d.feed(frame(0x4B6, "0A 0F 00 00 0C 06 13 57")).status, FeedStatus::applied);
-  const HostState& s = d.state();
+  const CanAerospaceState& s = d.state();
   EXPECT_EQ(s.pitchDeg, 4.0);
   EXPECT_EQ(s.rollDeg, -12.5);
   EXPECT_EQ(s.headingDeg, 270.0);  // -90 deg (+-180 convention) is 270 deg true heading
@@ -110,7 +110,7 @@ TEST(CanasState, FieldsSeenAreTracked) {
 
 TEST(CanasState, DoublePairKeepsFullPrecision) {
   // 47.450239871234 deg as FLOAT would lose ~1e-6 deg; the DOUBLEH+DOUBLEL pair keeps it all.
-  HostState in;
+  CanAerospaceState in;
   in.latitudeDeg = 47.450239871234;
   in.longitudeDeg = -122.309876543219;
   StateEncoder e({}, 3, LatLonEncoding::doublePair);
@@ -189,7 +189,7 @@ TEST(CanasState, NodeFilterIgnoresOtherTransmitters) {
 }
 
 TEST(CanasState, EncoderRoundTripsAStateAndCountsMessageCodes) {
-  HostState in;
+  CanAerospaceState in;
   in.latitudeDeg = -33.856784;
   in.longitudeDeg = 151.215297;
   in.altitudeM = 120.5;
@@ -211,7 +211,7 @@ TEST(CanasState, EncoderRoundTripsAStateAndCountsMessageCodes) {
   for (const CanFrame& f : second) ASSERT_TRUE(d.feed(f).ok());
   EXPECT_EQ(second[0].data[3], 2);  // latitude DOUBLEH: codes 0,1 then 2,3
   EXPECT_EQ(second[4].data[3], 1);  // altitude: second message of its id
-  const HostState& s = d.state();
+  const CanAerospaceState& s = d.state();
   EXPECT_EQ(s.latitudeDeg, in.latitudeDeg);
   EXPECT_EQ(s.longitudeDeg, in.longitudeDeg);
   EXPECT_FLOAT_EQ(static_cast<float>(s.altitudeM), 120.5f);

@@ -132,7 +132,7 @@ TEST(Candump, ALogWithoutFinalNewlineAndAnEmptyLog) {
 }
 
 TEST(Candump, CanaerospaceStateReplaysFromALog) {
-  canaerospace::HostState in;
+  canaerospace::CanAerospaceState in;
   in.latitudeDeg = 47.450239871234;
   in.longitudeDeg = 8.561983475982;
   in.altitudeM = 432.0;

@@ -62,7 +62,7 @@ void BM_CigiEncodeTypicalHostMessage(benchmark::State& state) {
 BENCHMARK(BM_CigiEncodeTypicalHostMessage);
 
 void BM_CanaerospaceFeed(benchmark::State& state) {
-  canaerospace::HostState s;
+  canaerospace::CanAerospaceState s;
   s.latitudeDeg = 47.45;
   s.longitudeDeg = 8.56;
   canaerospace::StateEncoder enc;

@@ -224,18 +224,18 @@ std::shared_ptr<const atmosphere::AtmosphereModel> smallModel(double visibilityK
   atmosphere::ModelConfig config;
   config.sizes = atmosphere::TableSizes::small();
   if (tiny) {  // a few texels a side and 12 radii: computed in a second, uploaded in 6 frames
-    config.sizes.transmittance_mu = 16;
-    config.sizes.transmittance_r = 8;
-    config.sizes.irradiance_mu_s = 8;
-    config.sizes.irradiance_r = 4;
-    config.sizes.scattering_r = 12;
-    config.sizes.scattering_mu = 8;
-    config.sizes.scattering_mu_s = 4;
-    config.sizes.scattering_nu = 2;
+    config.sizes.transmittanceMu = 16;
+    config.sizes.transmittanceR = 8;
+    config.sizes.irradianceMuS = 8;
+    config.sizes.irradianceR = 4;
+    config.sizes.scatteringR = 12;
+    config.sizes.scatteringMu = 8;
+    config.sizes.scatteringMuS = 4;
+    config.sizes.scatteringNu = 2;
   }
   if (visibilityKm > 0.0) {
     atmosphere::Conditions c;
-    c.visibility_km = visibilityKm;
+    c.visibilityKm = visibilityKm;
     config.medium = atmosphere::applyConditions(config.medium, c);
   }
   return std::make_shared<const atmosphere::AtmosphereModel>(

@@ -159,6 +159,46 @@ TEST_F(Cli, ProbeReportsTheClearAtmosphere) {
   EXPECT_NEAR(j["irradiance"]["direct_sun_lux"].get<double>(), 115000.0 * std::cos(30.0 * 3.14159265 / 180.0), 0.1 * 100000.0);
 }
 
+// With a time and place the probe adds the night's lights to each view, under the keys
+// docs/night-sky.md names, and their total (sky, sun, ground and every night light).
+TEST_F(Cli, ProbeReportsTheNightLightsAndTheirTotal) {
+  const std::string cache = std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache";
+  const Result r = run("probe --lat 47.26 --lon 11.34 --alt 2000 --utc 2026-01-18T19:00:00Z --view 0,0 --view 100,0 "
+                       "--irradiance --cache " + cache);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["utc"], "2026-01-18T19:00:00.000Z");
+  EXPECT_EQ(j["latitude_deg"].get<double>(), 47.26);
+  EXPECT_EQ(j["longitude_deg"].get<double>(), 11.34);
+  EXPECT_EQ(j["model"], "physical");
+  EXPECT_EQ(j["altitude_m"].get<double>(), 2000.0);
+  EXPECT_GT(j["sun"]["zenith_deg"].get<double>(), 108.0);  // night
+  for (const char* key : {"direct_sun_lux", "sky_lux", "moon_lux", "moonlit_sky_lux"})
+    EXPECT_TRUE(j["irradiance"][key].is_number()) << key;
+  ASSERT_EQ(j["views"].size(), 2u);
+  for (const auto& v : j["views"]) {
+    for (const char* day : {"zenith_deg", "azimuth_deg", "sky", "sun", "ground", "transmittance"})
+      EXPECT_TRUE(v.contains(day)) << day;
+    EXPECT_TRUE(v["sky"].contains("spectral_radiance"));
+    double sum[3] = {0.0, 0.0, 0.0};
+    for (const char* key : {"sky", "sun", "ground", "moonlit_sky", "moon", "stars_planets", "milky_way", "zodiacal_light",
+                            "airglow"}) {
+      ASSERT_TRUE(v.contains(key)) << key;
+      if (v[key].is_null()) continue;
+      for (int k = 0; k < 3; ++k) sum[k] += v[key]["rgb_cd_m2"][k].get<double>();
+    }
+    EXPECT_EQ(v["sunlit_sky"]["rgb_cd_m2"], v["sky"]["rgb_cd_m2"]);  // one sky, counted once
+    EXPECT_FALSE(v["sunlit_sky"].contains("spectral_radiance"));
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(v["total"]["rgb_cd_m2"][k].get<double>(), sum[k], 1e-12 + 1e-9 * std::abs(sum[k]));
+    const auto& t = v["total"]["rgb_cd_m2"];
+    EXPECT_NEAR(v["total"]["luminance_cd_m2"].get<double>(),
+                0.2126 * t[0].get<double>() + 0.7152 * t[1].get<double>() + 0.0722 * t[2].get<double>(), 1e-15);
+  }
+  EXPECT_TRUE(j["views"][0]["ground"].is_null());
+  EXPECT_FALSE(j["views"][1]["ground"].is_null());  // 100 deg from the zenith: the ground
+}
+
 TEST_F(Cli, ProbeNeedsASun) {
   const Result r = run("probe --view 0,0");
   EXPECT_EQ(r.exitCode, 2);

@@ -37,13 +37,13 @@ TEST(HostAtmosphere, AChangeIsRequestedOnceItSettles) {
   EXPECT_FALSE(h.observe(15000.0, 60.0, t0 + 800ms));
   const auto c = h.observe(15000.0, 60.0, t0 + 950ms);
   ASSERT_TRUE(c);
-  EXPECT_DOUBLE_EQ(*c->visibility_km, 15.0);
-  EXPECT_DOUBLE_EQ(*c->relative_humidity, 0.6);
-  EXPECT_DOUBLE_EQ(*c->ground_albedo, 0.2);
+  EXPECT_DOUBLE_EQ(*c->visibilityKm, 15.0);
+  EXPECT_DOUBLE_EQ(*c->relativeHumidity, 0.6);
+  EXPECT_DOUBLE_EQ(*c->groundAlbedo, 0.2);
   EXPECT_FALSE(h.observe(15000.0, 60.0, t0 + 2s));  // asked for once
   const auto back = (h.observe(50000.0, 0.0, t0 + 3s), h.observe(50000.0, 0.0, t0 + 4s));
   ASSERT_TRUE(back);  // back to the host's defaults is a change like any other
-  EXPECT_DOUBLE_EQ(*back->visibility_km, 50.0);
+  EXPECT_DOUBLE_EQ(*back->visibilityKm, 50.0);
 }
 
 TEST(HostAtmosphere, ValuesOutsideTheModelsRangeThrowOnceAndAreIgnored) {
@@ -72,15 +72,15 @@ TEST(HostAtmosphere, TheUpdaterBuildsTheHostsVisibility) {
   // Tiny tables (the mechanism, not the physics) through the real background updater.
   NodeConfig config;
   atmosphere::ModelConfig initial = nodeModelConfig(config, {});
-  initial.sizes.transmittance_mu = 16;
-  initial.sizes.transmittance_r = 8;
-  initial.sizes.irradiance_mu_s = 8;
-  initial.sizes.irradiance_r = 4;
-  initial.sizes.scattering_r = 4;
-  initial.sizes.scattering_mu = 8;
-  initial.sizes.scattering_mu_s = 4;
-  initial.sizes.scattering_nu = 2;
-  initial.options.scattering_orders = 2;
+  initial.sizes.transmittanceMu = 16;
+  initial.sizes.transmittanceR = 8;
+  initial.sizes.irradianceMuS = 8;
+  initial.sizes.irradianceR = 4;
+  initial.sizes.scatteringR = 4;
+  initial.sizes.scatteringMu = 8;
+  initial.sizes.scatteringMuS = 4;
+  initial.sizes.scatteringNu = 2;
+  initial.options.scatteringOrders = 2;
   atmosphere::AtmosphereUpdater updater(initial, std::filesystem::path(SKYIG_BINARY_DIR) / "atmosphere-test-cache");
   HostAtmosphere host(updater.current()->config().medium, config.sky.groundAlbedo, 0.0);
   const auto t0 = Clock::now();
@@ -94,25 +94,25 @@ TEST(HostAtmosphere, TheUpdaterBuildsTheHostsVisibility) {
   updater.waitIdle();
   EXPECT_EQ(updater.generation(), 1u);
   EXPECT_NEAR(atmosphere::visibilityOf(updater.current()->config().medium), 12.0, 1e-9);
-  EXPECT_DOUBLE_EQ(updater.current()->config().medium.ground_albedo, config.sky.groundAlbedo);
+  EXPECT_DOUBLE_EQ(updater.current()->config().medium.groundAlbedo, config.sky.groundAlbedo);
 }
 
 // The node's tables are those of its configuration: the [atmosphere] medium and orders, the
 // sky's ground albedo, the host's conditions on top.
 TEST(HostAtmosphere, NodeTablesFollowTheConfiguredMedium) {
   NodeConfig config;
-  config.atmosphere.medium.mie_phase_g = 0.7;
-  config.atmosphere.medium.ozone_column_du = 350.0;
+  config.atmosphere.medium.miePhaseG = 0.7;
+  config.atmosphere.medium.ozoneColumnDu = 350.0;
   config.atmosphere.scatteringOrders = 6;
   const atmosphere::ModelConfig m = nodeModelConfig(config, {});
-  EXPECT_EQ(m.medium.mie_phase_g, 0.7);
-  EXPECT_EQ(m.medium.ozone_column_du, 350.0);
-  EXPECT_EQ(m.options.scattering_orders, 6);
-  EXPECT_EQ(m.medium.ground_albedo, config.sky.groundAlbedo);
+  EXPECT_EQ(m.medium.miePhaseG, 0.7);
+  EXPECT_EQ(m.medium.ozoneColumnDu, 350.0);
+  EXPECT_EQ(m.options.scatteringOrders, 6);
+  EXPECT_EQ(m.medium.groundAlbedo, config.sky.groundAlbedo);
   atmosphere::Conditions hazy;
-  hazy.visibility_km = 5.0;
+  hazy.visibilityKm = 5.0;
   EXPECT_NEAR(atmosphere::visibilityOf(nodeModelConfig(config, hazy).medium), 5.0, 1e-9);
-  EXPECT_EQ(nodeModelConfig(config, hazy).medium.mie_phase_g, 0.7);
+  EXPECT_EQ(nodeModelConfig(config, hazy).medium.miePhaseG, 0.7);
 }
 
 }  // namespace

@@ -146,20 +146,20 @@ TEST(NodeConfig, AtmosphereTablesAndStarCatalogue) {
 TEST(NodeConfig, AtmosphereMedium) {
   const skyig::atmosphere::Medium bruneton;
   EXPECT_TRUE(parseNodeConfig("", "empty").atmosphere.medium == bruneton);
-  EXPECT_EQ(bruneton.bottom_radius_m, 6360e3);
-  EXPECT_EQ(bruneton.mie_phase_g, 0.8);
+  EXPECT_EQ(bruneton.bottomRadiusM, 6360e3);
+  EXPECT_EQ(bruneton.miePhaseG, 0.8);
   const NodeConfig c = parseNodeConfig(
       "[atmosphere]\nground_radius_km = 6371\ntop_radius_km = 6471\nmie_extinction = 2e-5\nmie_phase_g = 0.7\n"
       "ozone_column_du = 350\nsun_angular_radius_deg = 0.25\nscattering_orders = 6\n",
       "a.toml");
-  EXPECT_EQ(c.atmosphere.medium.bottom_radius_m, 6371e3);
-  EXPECT_EQ(c.atmosphere.medium.top_radius_m, 6471e3);
-  EXPECT_EQ(c.atmosphere.medium.mie_extinction_per_m, 2e-5);
-  EXPECT_EQ(c.atmosphere.medium.mie_phase_g, 0.7);
-  EXPECT_EQ(c.atmosphere.medium.ozone_column_du, 350.0);
-  EXPECT_NEAR(c.atmosphere.medium.sun_angular_radius_rad, 0.25 * skyig::atmosphere::kDegree, 1e-15);
+  EXPECT_EQ(c.atmosphere.medium.bottomRadiusM, 6371e3);
+  EXPECT_EQ(c.atmosphere.medium.topRadiusM, 6471e3);
+  EXPECT_EQ(c.atmosphere.medium.mieExtinctionPerM, 2e-5);
+  EXPECT_EQ(c.atmosphere.medium.miePhaseG, 0.7);
+  EXPECT_EQ(c.atmosphere.medium.ozoneColumnDu, 350.0);
+  EXPECT_NEAR(c.atmosphere.medium.sunAngularRadiusRad, 0.25 * skyig::atmosphere::kDegree, 1e-15);
   EXPECT_EQ(c.atmosphere.scatteringOrders, 6);
-  EXPECT_EQ(c.atmosphere.medium.rayleigh_scale_height_m, bruneton.rayleigh_scale_height_m);  // untouched
+  EXPECT_EQ(c.atmosphere.medium.rayleighScaleHeightM, bruneton.rayleighScaleHeightM);  // untouched
   EXPECT_NE(errorOf("[atmosphere]\nmie_phase_g = 1.5\n").find("bad.toml:2: atmosphere.mie_phase_g: expected a number in"),
             std::string::npos);
   EXPECT_NE(errorOf("[atmosphere]\nmie_g = 0.7\n").find("atmosphere.mie_g: unknown key"), std::string::npos);

@@ -275,7 +275,7 @@ TEST_F(NodeIntegration, CanAerospaceThroughARealTransport) {
   o.canFd = fds[0];
   NodeRun node(o);
   ASSERT_TRUE(node.waitUntilRendering());
-  skyig::protocol::canaerospace::HostState s;
+  skyig::protocol::canaerospace::CanAerospaceState s;
   s.latitudeDeg = 47.2603;
   s.longitudeDeg = 11.3439;
   s.altitudeM = 700.0;

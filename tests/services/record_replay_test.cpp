@@ -152,7 +152,7 @@ TEST_F(RecordReplay, FromAndToSelectAPart) {
 }
 
 TEST_F(RecordReplay, CandumpLogReplaysThroughTheCanAerospaceDecoder) {
-  skyig::protocol::canaerospace::HostState s;
+  skyig::protocol::canaerospace::CanAerospaceState s;
   s.latitudeDeg = -33.9461;
   s.longitudeDeg = 151.1772;
   s.altitudeM = 21.0;

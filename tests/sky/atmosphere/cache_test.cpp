@@ -14,9 +14,9 @@ namespace {
 
 ModelConfig tinyConfig() {
   ModelConfig c = testing::oneGroupConfig();
-  c.wavelengths_nm = {440.0, 550.0, 680.0, 700.0, 720.0};  // two groups, the last padded
+  c.wavelengthsNm = {440.0, 550.0, 680.0, 700.0, 720.0};  // two groups, the last padded
   c.sizes = testing::tinySizes();
-  c.options.scattering_orders = 3;
+  c.options.scatteringOrders = 3;
   return c;
 }
 
@@ -33,7 +33,7 @@ bool sameTables(const AtmosphereModel& a, const AtmosphereModel& b) {
     const auto& x = a.tables(g);
     const auto& y = b.tables(g);
     if (x.transmittance.texels != y.transmittance.texels || x.irradiance.texels != y.irradiance.texels ||
-        x.scattering.texels != y.scattering.texels || x.single_mie.texels != y.single_mie.texels) {
+        x.scattering.texels != y.scattering.texels || x.singleMie.texels != y.singleMie.texels) {
       return false;
     }
   }
@@ -53,25 +53,25 @@ TEST(AtmosphereHash, EveryParameterChangesTheHash) {
   const ModelConfig base = tinyConfig();
   const std::uint64_t h0 = parameterHash(base);
   std::vector<ModelConfig> variants(20, base);
-  variants[0].medium.bottom_radius_m += 1.0;
-  variants[1].medium.top_radius_m += 1.0;
-  variants[2].medium.rayleigh_scattering_at_1um_per_m *= 1.001;
-  variants[3].medium.rayleigh_scale_height_m += 1.0;
-  variants[4].medium.mie_extinction_per_m *= 1.001;
-  variants[5].medium.mie_single_scattering_albedo = 0.91;
-  variants[6].medium.mie_angstrom_exponent = 0.1;
-  variants[7].medium.mie_scale_height_m += 1.0;
-  variants[8].medium.mie_phase_g = 0.76;
-  variants[9].medium.ozone_column_du = 301.0;
-  variants[10].medium.ozone_center_altitude_m += 1.0;
-  variants[11].medium.ozone_half_width_m += 1.0;
-  variants[12].medium.ground_albedo = 0.3;
-  variants[13].medium.sun_angular_radius_rad *= 1.01;
-  variants[14].medium.solar_irradiance_scale = 2.0;
-  variants[15].medium.max_sun_zenith_rad -= 0.01;
-  variants[16].wavelengths_nm.back() = 721.0;
-  variants[17].sizes.scattering_nu = 4;
-  variants[18].options.scattering_orders = 2;
+  variants[0].medium.bottomRadiusM += 1.0;
+  variants[1].medium.topRadiusM += 1.0;
+  variants[2].medium.rayleighScatteringAt1umPerM *= 1.001;
+  variants[3].medium.rayleighScaleHeightM += 1.0;
+  variants[4].medium.mieExtinctionPerM *= 1.001;
+  variants[5].medium.mieSingleScatteringAlbedo = 0.91;
+  variants[6].medium.mieAngstromExponent = 0.1;
+  variants[7].medium.mieScaleHeightM += 1.0;
+  variants[8].medium.miePhaseG = 0.76;
+  variants[9].medium.ozoneColumnDu = 301.0;
+  variants[10].medium.ozoneCentreAltitudeM += 1.0;
+  variants[11].medium.ozoneHalfWidthM += 1.0;
+  variants[12].medium.groundAlbedo = 0.3;
+  variants[13].medium.sunAngularRadiusRad *= 1.01;
+  variants[14].medium.solarIrradianceScale = 2.0;
+  variants[15].medium.maxSunZenithRad -= 0.01;
+  variants[16].wavelengthsNm.back() = 721.0;
+  variants[17].sizes.scatteringNu = 4;
+  variants[18].options.scatteringOrders = 2;
   variants[19].options.threads = 1;  // the only field that must NOT change the tables
   for (std::size_t i = 0; i + 1 < variants.size(); ++i) {
     EXPECT_NE(parameterHash(variants[i]), h0) << "variant " << i;
@@ -155,7 +155,7 @@ TEST(AtmosphereCache, FileOfOtherParametersIsNotTrusted) {
   // The same file presented for another ground albedo (e.g. renamed by hand).
   ModelConfig other = c;
   Conditions conditions;
-  conditions.ground_albedo = 0.3;
+  conditions.groundAlbedo = 0.3;
   other.medium = applyConditions(c.medium, conditions);
   std::string reason;
   EXPECT_FALSE(readTableCache(r.path, other, &reason).has_value());
@@ -165,7 +165,7 @@ TEST(AtmosphereCache, FileOfOtherParametersIsNotTrusted) {
 
 TEST(AtmosphereCache, BadConfigurationIsRejectedWithItsName) {
   ModelConfig c = tinyConfig();
-  c.sizes.scattering_mu = 7;
+  c.sizes.scatteringMu = 7;
   try {
     AtmosphereModel m(c);
     FAIL() << "odd scattering_mu accepted";
@@ -173,13 +173,13 @@ TEST(AtmosphereCache, BadConfigurationIsRejectedWithItsName) {
     EXPECT_NE(std::string(e.what()).find("scattering_mu = 7"), std::string::npos) << e.what();
   }
   c = tinyConfig();
-  c.medium.mie_phase_g = 1.0;
+  c.medium.miePhaseG = 1.0;
   EXPECT_THROW(AtmosphereModel{c}, std::invalid_argument);
   c = tinyConfig();
-  c.wavelengths_nm = {550.0, 440.0};
+  c.wavelengthsNm = {550.0, 440.0};
   EXPECT_THROW(AtmosphereModel{c}, std::invalid_argument);
   c = tinyConfig();
-  c.options.scattering_orders = 0;
+  c.options.scatteringOrders = 0;
   EXPECT_THROW(AtmosphereModel{c}, std::invalid_argument);
 }
 
@@ -193,13 +193,13 @@ using skyig::atmosphere::TableSizes;
 TEST(AtmosphereTableSizes, NamedSizes) {
   const TableSizes medium = TableSizes::named("medium");
   const TableSizes full = TableSizes::named("default");
-  EXPECT_EQ(medium.scattering_r * 2, full.scattering_r);
-  EXPECT_EQ(medium.scattering_mu * 2, full.scattering_mu);
-  EXPECT_EQ(medium.scattering_mu_s, full.scattering_mu_s);
-  EXPECT_EQ(medium.scattering_nu, full.scattering_nu);
-  EXPECT_EQ(medium.transmittance_mu, full.transmittance_mu);
+  EXPECT_EQ(medium.scatteringR * 2, full.scatteringR);
+  EXPECT_EQ(medium.scatteringMu * 2, full.scatteringMu);
+  EXPECT_EQ(medium.scatteringMuS, full.scatteringMuS);
+  EXPECT_EQ(medium.scatteringNu, full.scatteringNu);
+  EXPECT_EQ(medium.transmittanceMu, full.transmittanceMu);
   EXPECT_EQ(full.scatteringTexels(), 4 * medium.scatteringTexels());
-  EXPECT_EQ(TableSizes::named("small").scattering_r, TableSizes::small().scattering_r);
+  EXPECT_EQ(TableSizes::named("small").scatteringR, TableSizes::small().scatteringR);
   try {
     (void)TableSizes::named("huge");
     FAIL() << "accepted an unknown size";

@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     atmosphere::ModelConfig config;
     config.sizes = atmosphere::TableSizes::named(size);
     const auto gl = render::createHeadlessContext();
-    std::printf("%s, %s tables, %zu wavelengths\n", gl->info().renderer.c_str(), size.c_str(), config.wavelengths_nm.size());
+    std::printf("%s, %s tables, %zu wavelengths\n", gl->info().renderer.c_str(), size.c_str(), config.wavelengthsNm.size());
     options.progress = [](const std::string& line) { std::printf("  %s\n", line.c_str()); };
     render::AtmosphereGpuPrecompute precompute;
     render::GpuPrecomputeTiming timing;

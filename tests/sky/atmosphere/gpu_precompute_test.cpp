@@ -70,11 +70,11 @@ void image(GLuint unit, GLuint t, GLenum access) {
   glBindImageTexture(unit, t, 0, GL_TRUE, 0, access, GL_RGBA32F);
 }
 
-void dispatch(GLuint program, int w, int h, int d, int local_xy, int local_z) {
+void dispatch(GLuint program, int w, int h, int d, int localXy, int localZ) {
   glUseProgram(program);
-  glDispatchCompute(static_cast<GLuint>((w + local_xy - 1) / local_xy),
-                    static_cast<GLuint>((h + local_xy - 1) / local_xy),
-                    static_cast<GLuint>((d + local_z - 1) / local_z));
+  glDispatchCompute(static_cast<GLuint>((w + localXy - 1) / localXy),
+                    static_cast<GLuint>((h + localXy - 1) / localXy),
+                    static_cast<GLuint>((d + localZ - 1) / localZ));
   glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 
@@ -131,20 +131,20 @@ TEST(AtmosphereGpu, ComputePassesMatchTheCpuReferenceAndRepeat) {
   render::GpuPrecomputeTiming timing;
   render::GpuPrecomputeOptions options;
   options.time_passes = true;
-  const AtmosphereModel gpu_model = precompute.compute(c, options, &timing);
-  const GroupTables& gpu = gpu_model.tables(0);
+  const AtmosphereModel gpuModel = precompute.compute(c, options, &timing);
+  const GroupTables& gpu = gpuModel.tables(0);
   std::printf("GPU precompute, one group: %s\n", render::describe(timing).c_str());
 
   const Stats t = compare(gpu.transmittance.texels, cpu.transmittance.texels);
   const Stats e = compare(gpu.irradiance.texels, cpu.irradiance.texels);
   const Stats sc = compare(gpu.scattering.texels, cpu.scattering.texels);
-  const Stats m = compare(gpu.single_mie.texels, cpu.single_mie.texels);
+  const Stats m = compare(gpu.singleMie.texels, cpu.singleMie.texels);
   std::printf("GPU precompute (%d x %d x %d x %d tables, %d orders, one group of 4 wavelengths) "
               "%.3f s; GPU vs "
               "CPU relative difference median / 99th percentile: T %.2g / %.2g, E %.2g / %.2g, "
               "S %.2g / %.2g, single Mie %.2g / %.2g\n",
-              c.sizes.scattering_r, c.sizes.scattering_mu, c.sizes.scattering_mu_s,
-              c.sizes.scattering_nu, c.options.scattering_orders, timing.total, t.median, t.p99, e.median, e.p99,
+              c.sizes.scatteringR, c.sizes.scatteringMu, c.sizes.scatteringMuS,
+              c.sizes.scatteringNu, c.options.scatteringOrders, timing.total, t.median, t.p99, e.median, e.p99,
               sc.median, sc.p99, m.median, m.p99);
   // Float on the GPU against double on the CPU, through the whole chain of orders (measured
   // on llvmpipe, 99th percentiles: small tables 1e-4 to 6e-4, default tables up to 3.1e-3
@@ -162,7 +162,7 @@ TEST(AtmosphereGpu, ComputePassesMatchTheCpuReferenceAndRepeat) {
   EXPECT_TRUE(again[0].transmittance.texels == gpu.transmittance.texels);
   EXPECT_TRUE(again[0].irradiance.texels == gpu.irradiance.texels);
   EXPECT_TRUE(again[0].scattering.texels == gpu.scattering.texels);
-  EXPECT_TRUE(again[0].single_mie.texels == gpu.single_mie.texels);
+  EXPECT_TRUE(again[0].singleMie.texels == gpu.singleMie.texels);
 }
 
 // Several groups in one call: each group's tables are those of a call with that group alone
@@ -172,9 +172,9 @@ TEST(AtmosphereGpu, GroupsAreIndependentOfEachOther) {
   if (!gl) GTEST_SKIP() << "no OpenGL 4.5 context through EGL";
   ModelConfig two = testing::smallEarthConfig();
   two.sizes = testing::tinySizes();
-  two.wavelengths_nm = {360.0, 390.0, 420.0, 440.0, 600.0, 630.0, 655.0, 680.0};
+  two.wavelengthsNm = {360.0, 390.0, 420.0, 440.0, 600.0, 630.0, 655.0, 680.0};
   ModelConfig second = two;
-  second.wavelengths_nm = {600.0, 630.0, 655.0, 680.0};
+  second.wavelengthsNm = {600.0, 630.0, 655.0, 680.0};
   render::AtmosphereGpuPrecompute precompute;
   const std::vector<GroupTables> both = precompute.computeTables(two);
   const std::vector<GroupTables> alone = precompute.computeTables(second);
@@ -198,7 +198,7 @@ TEST(AtmosphereGpu, BadOptionsAreRejectedWithTheirName) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("density_divisor = 3"), std::string::npos) << e.what();
   }
-  c.options.scattering_orders = 0;
+  c.options.scatteringOrders = 0;
   EXPECT_THROW(precompute.computeTables(c), std::invalid_argument);
 }
 
@@ -227,7 +227,7 @@ TEST(AtmosphereGpu, SkyPanoramaIsFiniteAndMatchesTheCpu) {
   const Medium& m = model.config().medium;
   glBindTextureUnit(SKYIG_UNIT_TRANSMITTANCE, upload2D(t.transmittance));
   glBindTextureUnit(SKYIG_UNIT_SCATTERING, upload3D(t.scattering));
-  glBindTextureUnit(SKYIG_UNIT_SINGLE_MIE, upload3D(t.single_mie));
+  glBindTextureUnit(SKYIG_UNIT_SINGLE_MIE, upload3D(t.singleMie));
   glBindTextureUnit(SKYIG_UNIT_IRRADIANCE, upload2D(t.irradiance));
   const GLuint program = computeProgram("sky_view.comp");
   setParameters(program, atm);
@@ -237,11 +237,11 @@ TEST(AtmosphereGpu, SkyPanoramaIsFiniteAndMatchesTheCpu) {
   image(SKYIG_IMAGE_SKY_VIEW, out, GL_WRITE_ONLY);
 
   struct Case {
-    double altitude, sun_zenith_deg;
+    double altitude, sunZenithDeg;
   };
   for (const Case& k : {Case{1000.0, 30.0}, Case{0.0, 90.0}, Case{100e3, 95.0}, Case{1000.0, 108.0}}) {
     const glm::dvec3 camera = observerPosition(m, k.altitude);
-    const glm::dvec3 sun = directionFromAngles(k.sun_zenith_deg * kDegree, 0.0);
+    const glm::dvec3 sun = directionFromAngles(k.sunZenithDeg * kDegree, 0.0);
     glUseProgram(program);
     glUniform3f(glGetUniformLocation(program, "camera"), float(camera.x), float(camera.y), float(camera.z));
     glUniform3f(glGetUniformLocation(program, "sun_direction"), float(sun.x), float(sun.y), float(sun.z));
@@ -253,10 +253,10 @@ TEST(AtmosphereGpu, SkyPanoramaIsFiniteAndMatchesTheCpu) {
     const std::vector<float> pixels = readBack(out, static_cast<std::size_t>(width) * height);
     int bad = 0;
     for (float v : pixels) bad += (std::isfinite(v) && v >= 0.0f) ? 0 : 1;
-    EXPECT_EQ(bad, 0) << "altitude " << k.altitude << " sun zenith " << k.sun_zenith_deg;
+    EXPECT_EQ(bad, 0) << "altitude " << k.altitude << " sun zenith " << k.sunZenithDeg;
     std::printf("sky panorama %dx%d, altitude %.0f m, sun zenith %.0f deg: %.1f ms (%.0f ns per "
                 "pixel for 4 wavelengths), %d NaN/Inf/negative values\n",
-                width, height, k.altitude, k.sun_zenith_deg, seconds * 1e3,
+                width, height, k.altitude, k.sunZenithDeg, seconds * 1e3,
                 seconds * 1e9 / (width * height), bad);
     // A few pixels against the CPU (double) evaluation of the same functions.
     for (int y : {100, 500, 700, 1100}) {
@@ -268,10 +268,10 @@ TEST(AtmosphereGpu, SkyPanoramaIsFiniteAndMatchesTheCpu) {
         const Spectrum disc = model.sunDiscRadiance(camera, view, sun);
         const double r = glm::length(camera);
         const double rmu = glm::dot(camera, view);
-        const double disc_ground = rmu * rmu - r * r + m.bottom_radius_m * m.bottom_radius_m;
+        const double discGround = rmu * rmu - r * r + m.bottomRadiusM * m.bottomRadiusM;
         Spectrum ground(4, 0.0);
-        if (rmu < 0.0 && disc_ground >= 0.0) {
-          const glm::dvec3 point = camera + view * (-rmu - std::sqrt(disc_ground));
+        if (rmu < 0.0 && discGround >= 0.0) {
+          const glm::dvec3 point = camera + view * (-rmu - std::sqrt(discGround));
           Spectrum tr;
           const Spectrum total = model.groundRadiance(camera, point, sun, &tr);
           const Spectrum in = model.skyRadianceToPoint(camera, point, sun);
@@ -281,7 +281,7 @@ TEST(AtmosphereGpu, SkyPanoramaIsFiniteAndMatchesTheCpu) {
           const double e = expected[i] + disc[i] + ground[i];
           const double g = pixels[(static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x)) * 4 + i];
           EXPECT_NEAR(g, e, 2e-3 * e + 1e-9) << "pixel " << x << "," << y << " band " << i
-                                             << " altitude " << k.altitude << " sun " << k.sun_zenith_deg;
+                                             << " altitude " << k.altitude << " sun " << k.sunZenithDeg;
         }
       }
     }

@@ -17,20 +17,20 @@ namespace {
 TEST(AtmosphereMultipleScattering, SmallTablesAgainstDoubleResolution) {
   const ModelConfig small = testing::oneGroupConfig();
   ModelConfig fine = small;
-  fine.sizes.scattering_r *= 2;
-  fine.sizes.scattering_mu *= 2;
+  fine.sizes.scatteringR *= 2;
+  fine.sizes.scatteringMu *= 2;
   const AtmosphereModel model = testing::cachedModel(small);
   const AtmosphereModel reference = testing::cachedModel(fine);
 
   std::printf("altitude  sun_zenith  worst error (440/550/680 nm, 15 view directions)\n");
   for (double altitude : {0.0, 1000.0, 5000.0, 20000.0}) {
     const glm::dvec3 camera = observerPosition(small.medium, altitude);
-    for (double sun_zenith : {0.0, 30.0, 60.0, 80.0, 90.0}) {
-      const glm::dvec3 sun = directionFromAngles(sun_zenith * kDegree, 0.0);
+    for (double sunZenith : {0.0, 30.0, 60.0, 80.0, 90.0}) {
+      const glm::dvec3 sun = directionFromAngles(sunZenith * kDegree, 0.0);
       double worst = 0.0;
-      for (double view_zenith : {0.0, 30.0, 60.0, 80.0, 88.0}) {
+      for (double viewZenith : {0.0, 30.0, 60.0, 80.0, 88.0}) {
         for (double azimuth : {0.0, 90.0, 180.0}) {
-          const glm::dvec3 view = directionFromAngles(view_zenith * kDegree, azimuth * kDegree);
+          const glm::dvec3 view = directionFromAngles(viewZenith * kDegree, azimuth * kDegree);
           const Spectrum a = model.skyRadiance(camera, view, sun);
           const Spectrum b = reference.skyRadiance(camera, view, sun);
           for (std::size_t i = 0; i < 3; ++i) {
@@ -39,12 +39,12 @@ TEST(AtmosphereMultipleScattering, SmallTablesAgainstDoubleResolution) {
             // Measured: at most 3.0% up to 5 km (1 km, sun low), 4.6% at 20 km where the 8
             // radii of the small tables are 3-6 km apart (linear interpolation in r).
             EXPECT_LT(std::abs(e), altitude <= 5000.0 ? 0.035 : 0.055)
-                << "altitude " << altitude << " sun zenith " << sun_zenith << " view zenith "
-                << view_zenith << " azimuth " << azimuth << " band " << i;
+                << "altitude " << altitude << " sun zenith " << sunZenith << " view zenith "
+                << viewZenith << " azimuth " << azimuth << " band " << i;
           }
         }
       }
-      std::printf("%8.0f  %10.0f  %6.2f%%\n", altitude, sun_zenith, worst * 100.0);
+      std::printf("%8.0f  %10.0f  %6.2f%%\n", altitude, sunZenith, worst * 100.0);
     }
   }
 }
@@ -54,31 +54,31 @@ TEST(AtmosphereMultipleScattering, HigherOrdersAddLightThatConverges) {
   // geometry make the series converge), and multiple scattering brightens the zenith by tens
   // of percent in daylight.
   ModelConfig c = testing::oneGroupConfig();
-  c.sizes.scattering_r = 4;
-  c.sizes.scattering_mu = 16;
-  c.sizes.scattering_mu_s = 8;
-  c.sizes.scattering_nu = 4;
+  c.sizes.scatteringR = 4;
+  c.sizes.scatteringMu = 16;
+  c.sizes.scatteringMuS = 8;
+  c.sizes.scatteringNu = 4;
   const glm::dvec3 camera = observerPosition(c.medium, 0.0);
   const glm::dvec3 sun = directionFromAngles(60.0 * kDegree, 0.0);
   const glm::dvec3 up(0.0, 0.0, 1.0);
-  double previous_total = 0.0;
-  double previous_increment = 1e300;
+  double previousTotal = 0.0;
+  double previousIncrement = 1e300;
   double single = 0.0;
   for (int orders = 1; orders <= 4; ++orders) {
-    c.options.scattering_orders = orders;
+    c.options.scatteringOrders = orders;
     const AtmosphereModel model(c);
     const double total = model.skyRadiance(camera, up, sun)[1];
-    const double increment = total - previous_total;
+    const double increment = total - previousTotal;
     EXPECT_GT(increment, 0.0) << "order " << orders;
-    EXPECT_LT(increment, previous_increment) << "order " << orders;
+    EXPECT_LT(increment, previousIncrement) << "order " << orders;
     if (orders == 1) {
       single = total;
     }
     if (orders == 4) {
       EXPECT_GT(total / single, 1.1);
     }
-    previous_increment = increment;
-    previous_total = total;
+    previousIncrement = increment;
+    previousTotal = total;
   }
 }
 

@@ -19,9 +19,9 @@ using testing::smallEarthConfig;
 
 const glm::dvec3 kUp(0.0, 0.0, 1.0);
 
-double zenithLuminance(const AtmosphereModel& model, double sun_zenith_deg, double altitude_m = 0.0) {
-  const glm::dvec3 camera = observerPosition(model.config().medium, altitude_m);
-  const glm::dvec3 sun = directionFromAngles(sun_zenith_deg * kDegree, 0.0);
+double zenithLuminance(const AtmosphereModel& model, double sunZenithDeg, double altitudeM = 0.0) {
+  const glm::dvec3 camera = observerPosition(model.config().medium, altitudeM);
+  const glm::dvec3 sun = directionFromAngles(sunZenithDeg * kDegree, 0.0);
   return model.converter().luminance(model.skyRadiance(camera, kUp, sun));
 }
 
@@ -29,20 +29,20 @@ double zenithLuminance(const AtmosphereModel& model, double sun_zenith_deg, doub
 ModelConfig tinyConfig() {
   ModelConfig c = oneGroupConfig();
   c.sizes = testing::tinySizes();
-  c.sizes.transmittance_mu = 32;
-  c.options.scattering_orders = 2;
+  c.sizes.transmittanceMu = 32;
+  c.options.scatteringOrders = 2;
   return c;
 }
 
 TEST(AtmospherePhysics, NoSunNoSky) {
   ModelConfig c = tinyConfig();
-  c.medium.solar_irradiance_scale = 0.0;
+  c.medium.solarIrradianceScale = 0.0;
   const AtmosphereModel model(c);
   const glm::dvec3 camera = observerPosition(c.medium, 1000.0);
-  for (double sun_zenith : {0.0, 60.0, 89.0, 95.0}) {
-    const glm::dvec3 sun = directionFromAngles(sun_zenith * kDegree, 0.0);
-    for (double view_zenith : {0.0, 45.0, 89.0, 91.0, 120.0}) {
-      const glm::dvec3 view = directionFromAngles(view_zenith * kDegree, 0.5);
+  for (double sunZenith : {0.0, 60.0, 89.0, 95.0}) {
+    const glm::dvec3 sun = directionFromAngles(sunZenith * kDegree, 0.0);
+    for (double viewZenith : {0.0, 45.0, 89.0, 91.0, 120.0}) {
+      const glm::dvec3 view = directionFromAngles(viewZenith * kDegree, 0.5);
       for (double v : model.skyRadiance(camera, view, sun)) EXPECT_EQ(v, 0.0);
       for (double v : model.skyIrradiance(camera, kUp, sun)) EXPECT_EQ(v, 0.0);
       for (double v : model.sunIrradiance(camera, kUp, sun)) EXPECT_EQ(v, 0.0);
@@ -53,15 +53,15 @@ TEST(AtmospherePhysics, NoSunNoSky) {
 TEST(AtmospherePhysics, TwiceTheSunTwiceTheRadiance) {
   ModelConfig c1 = tinyConfig();
   ModelConfig c2 = c1;
-  c2.medium.solar_irradiance_scale = 2.0;
+  c2.medium.solarIrradianceScale = 2.0;
   const AtmosphereModel m1(c1);
   const AtmosphereModel m2(c2);
   const glm::dvec3 camera = observerPosition(c1.medium, 500.0);
   int checked = 0;
-  for (double sun_zenith : {10.0, 70.0, 92.0}) {
-    const glm::dvec3 sun = directionFromAngles(sun_zenith * kDegree, 0.0);
-    for (double view_zenith : {0.0, 60.0, 89.5, 100.0}) {
-      const glm::dvec3 view = directionFromAngles(view_zenith * kDegree, 1.0);
+  for (double sunZenith : {10.0, 70.0, 92.0}) {
+    const glm::dvec3 sun = directionFromAngles(sunZenith * kDegree, 0.0);
+    for (double viewZenith : {0.0, 60.0, 89.5, 100.0}) {
+      const glm::dvec3 view = directionFromAngles(viewZenith * kDegree, 1.0);
       const Spectrum l1 = m1.skyRadiance(camera, view, sun);
       const Spectrum l2 = m2.skyRadiance(camera, view, sun);
       for (std::size_t i = 0; i < l1.size(); ++i) {
@@ -128,23 +128,23 @@ TEST(AtmospherePhysics, FromHundredKilometresSpaceIsBlackAndTheLimbBlue) {
   const glm::dvec3 sun = directionFromAngles(45.0 * kDegree, 0.0);
   // Straight up the ray never meets the atmosphere.
   EXPECT_EQ(zenithLuminance(model, 45.0, 100e3), 0.0);
-  const double ground_zenith = zenithLuminance(model, 45.0, 0.0);
+  const double groundZenith = zenithLuminance(model, 45.0, 0.0);
   // The limb: a ray grazing 20 km above the ground, 90 degrees in azimuth from the sun.
   const double r = glm::length(camera);
-  const double limb_zenith = kPi - std::asin((m.bottom_radius_m + 20e3) / r);
-  const glm::dvec3 limb = directionFromAngles(limb_zenith, kPi / 2.0);
+  const double limbZenith = kPi - std::asin((m.bottomRadiusM + 20e3) / r);
+  const glm::dvec3 limb = directionFromAngles(limbZenith, kPi / 2.0);
   const Spectrum radiance = model.skyRadiance(camera, limb, sun);
   const glm::dvec3 rgb = model.converter().toRec709(radiance);
   const double luminance = model.converter().luminance(radiance);
   std::printf("limb from 100 km: %.1f cd/m^2, Rec.709 (%.1f, %.1f, %.1f); zenith from the ground %.1f\n",
-              luminance, rgb.r, rgb.g, rgb.b, ground_zenith);
-  EXPECT_GT(luminance, 0.1 * ground_zenith);  // it glows
+              luminance, rgb.r, rgb.g, rgb.b, groundZenith);
+  EXPECT_GT(luminance, 0.1 * groundZenith);  // it glows
   EXPECT_GT(rgb.b, 1.3 * rgb.r);              // and it is blue
   EXPECT_GT(rgb.b, rgb.g);
   // Above the limb, the sky turns black within a few scale heights.
-  const double high_zenith = kPi - std::asin((m.bottom_radius_m + 59e3) / r);
+  const double highZenith = kPi - std::asin((m.bottomRadiusM + 59e3) / r);
   const double high = model.converter().luminance(
-      model.skyRadiance(camera, directionFromAngles(high_zenith, kPi / 2.0), sun));
+      model.skyRadiance(camera, directionFromAngles(highZenith, kPi / 2.0), sun));
   EXPECT_LT(high, 0.02 * luminance);
 }
 
@@ -154,11 +154,11 @@ TEST(AtmospherePhysics, HazeWhitensTheHorizon) {
   ModelConfig clear = oneGroupConfig();
   ModelConfig hazy = clear;
   Conditions conditions;
-  conditions.visibility_km = 5.0;
+  conditions.visibilityKm = 5.0;
   hazy.medium = applyConditions(clear.medium, conditions);
   EXPECT_NEAR(visibilityOf(hazy.medium), 5.0, 1e-9);
-  const AtmosphereModel clear_model = cachedModel(clear);
-  const AtmosphereModel hazy_model = cachedModel(hazy);
+  const AtmosphereModel clearModel = cachedModel(clear);
+  const AtmosphereModel hazyModel = cachedModel(hazy);
   const glm::dvec3 camera = observerPosition(clear.medium, 0.0);
   const glm::dvec3 sun = directionFromAngles(40.0 * kDegree, 0.0);
   const glm::dvec3 horizon = directionFromAngles(88.0 * kDegree, kPi / 2.0);
@@ -167,13 +167,13 @@ TEST(AtmospherePhysics, HazeWhitensTheHorizon) {
     const Spectrum e = model.solarRadiance();
     return (l[0] / e[0]) / (l[2] / e[2]);
   };
-  const double b_clear = blueness(clear_model);
-  const double b_hazy = blueness(hazy_model);
+  const double bClear = blueness(clearModel);
+  const double bHazy = blueness(hazyModel);
   std::printf("horizon 440/680 nm ratio relative to the sun: clear %.2f, visibility 5 km %.2f\n",
-              b_clear, b_hazy);
-  EXPECT_GT(b_clear, 1.5);
-  EXPECT_LT(b_hazy, 1.25);
-  EXPECT_GT(b_hazy, 0.8);
+              bClear, bHazy);
+  EXPECT_GT(bClear, 1.5);
+  EXPECT_LT(bHazy, 1.25);
+  EXPECT_GT(bHazy, 0.8);
 }
 
 TEST(AtmospherePhysics, NoNanOrInfAcrossTheHorizon) {
@@ -182,9 +182,9 @@ TEST(AtmospherePhysics, NoNanOrInfAcrossTheHorizon) {
   int checked = 0;
   for (double altitude : {0.0, 1.0, 1000.0, 59999.0, 60001.0, 100e3, 1e6}) {
     const glm::dvec3 camera = observerPosition(m, altitude);
-    const double horizon = kPi - std::asin(std::min(1.0, m.bottom_radius_m / glm::length(camera)));
-    for (double sun_zenith : {0.0, 89.9, 90.0, 95.0, 119.0, 150.0}) {
-      const glm::dvec3 sun = directionFromAngles(sun_zenith * kDegree, 0.0);
+    const double horizon = kPi - std::asin(std::min(1.0, m.bottomRadiusM / glm::length(camera)));
+    for (double sunZenith : {0.0, 89.9, 90.0, 95.0, 119.0, 150.0}) {
+      const glm::dvec3 sun = directionFromAngles(sunZenith * kDegree, 0.0);
       for (double dz = -2e-3; dz <= 2e-3; dz += 1e-4) {
         for (double zenith : {horizon + dz, kPi / 2.0 + dz}) {
           const glm::dvec3 view = directionFromAngles(zenith, 0.3);
@@ -206,24 +206,24 @@ TEST(AtmospherePhysics, GroundSeenFromAboveHasAerialPerspective) {
   const AtmosphereModel model = cachedModel(smallEarthConfig());
   const Medium& m = model.config().medium;
   const glm::dvec3 sun = directionFromAngles(30.0 * kDegree, 0.0);
-  const glm::dvec3 ground_point(0.0, 0.0, m.bottom_radius_m);
+  const glm::dvec3 groundPoint(0.0, 0.0, m.bottomRadiusM);
   // The same ground point from 100 m and from 10 km: the far view is more attenuated and has
   // more light scattered in, and the total stays finite and positive.
-  Spectrum t_near;
-  Spectrum t_far;
-  const Spectrum near = model.groundRadiance(observerPosition(m, 100.0), ground_point, sun, &t_near);
-  const Spectrum far = model.groundRadiance(observerPosition(m, 10000.0), ground_point, sun, &t_far);
-  const Spectrum in_far = model.skyRadianceToPoint(observerPosition(m, 10000.0), ground_point, sun);
+  Spectrum tNear;
+  Spectrum tFar;
+  const Spectrum near = model.groundRadiance(observerPosition(m, 100.0), groundPoint, sun, &tNear);
+  const Spectrum far = model.groundRadiance(observerPosition(m, 10000.0), groundPoint, sun, &tFar);
+  const Spectrum inFar = model.skyRadianceToPoint(observerPosition(m, 10000.0), groundPoint, sun);
   for (std::size_t i = 0; i < near.size(); ++i) {
-    EXPECT_GT(t_near[i], t_far[i]);
-    EXPECT_GT(in_far[i], 0.0);
+    EXPECT_GT(tNear[i], tFar[i]);
+    EXPECT_GT(inFar[i], 0.0);
     EXPECT_TRUE(std::isfinite(far[i]) && far[i] > 0.0);
   }
   // Lambertian check near the ground: radiance ~ albedo/pi * (E_sun + E_sky).
   const glm::dvec3 n(0.0, 0.0, 1.0);
-  const double e = model.converter().luminance(model.sunIrradiance(ground_point, n, sun)) +
-                   model.converter().luminance(model.skyIrradiance(ground_point, n, sun));
-  EXPECT_NEAR(model.converter().luminance(near), m.ground_albedo / kPi * e, 0.03 * m.ground_albedo / kPi * e);
+  const double e = model.converter().luminance(model.sunIrradiance(groundPoint, n, sun)) +
+                   model.converter().luminance(model.skyIrradiance(groundPoint, n, sun));
+  EXPECT_NEAR(model.converter().luminance(near), m.groundAlbedo / kPi * e, 0.03 * m.groundAlbedo / kPi * e);
 }
 
 }  // namespace
@@ -238,7 +238,7 @@ TEST(AtmosphereSunDisc, LimbDarkenedDiscKeepsTheSolarIrradiance) {
   const glm::dvec3 space = observerPosition(m, 1e6);
   const glm::dvec3 sun = glm::normalize(glm::dvec3(0.3, 0.0, 1.0));
   // Irradiance = integral of the radiance over the disc (rings of equal angular width).
-  const double radius = m.sun_angular_radius_rad;
+  const double radius = m.sunAngularRadiusRad;
   const glm::dvec3 side = glm::normalize(glm::cross(sun, glm::dvec3(0.0, 1.0, 0.0)));
   const int rings = 400;
   Spectrum irradiance(4, 0.0);
@@ -246,11 +246,11 @@ TEST(AtmosphereSunDisc, LimbDarkenedDiscKeepsTheSolarIrradiance) {
     const double angle = (i + 0.5) / rings * radius;
     const glm::dvec3 view = std::cos(angle) * sun + std::sin(angle) * side;
     const Spectrum l = model.sunDiscRadiance(space, view, sun);
-    const double solid_angle = 2.0 * kPi * std::sin(angle) * (radius / rings);
-    for (int k = 0; k < 4; ++k) irradiance[static_cast<std::size_t>(k)] += l[static_cast<std::size_t>(k)] * solid_angle;
+    const double solidAngle = 2.0 * kPi * std::sin(angle) * (radius / rings);
+    for (int k = 0; k < 4; ++k) irradiance[static_cast<std::size_t>(k)] += l[static_cast<std::size_t>(k)] * solidAngle;
   }
   for (std::size_t k = 0; k < 4; ++k) {
-    const double expected = coefficientsAt(m, model.wavelengths()[k]).solar_irradiance;
+    const double expected = coefficientsAt(m, model.wavelengths()[k]).solarIrradiance;
     EXPECT_NEAR(irradiance[k] / expected, 1.0, 0.005) << model.wavelengths()[k] << " nm";
   }
   // Darker at the limb, and more so in the blue (alpha grows as lambda falls).
@@ -270,7 +270,7 @@ TEST(AtmosphereSunDisc, AttenuatedByTheAtmosphereAndHiddenByTheGround) {
   const glm::dvec3 up(0.0, 0.0, 1.0);
   const Spectrum outside = model.sunDiscRadiance(observerPosition(m, 1e6), up, up);
   const Spectrum ground = model.sunDiscRadiance(observerPosition(m, 0.0), up, up);
-  const Spectrum t = model.transmittanceToTop(m.bottom_radius_m, 1.0);
+  const Spectrum t = model.transmittanceToTop(m.bottomRadiusM, 1.0);
   for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(ground[k] / outside[k], t[k], 1e-12);
   // The sun below the horizon of an observer on the ground, and behind the planet from space.
   const glm::dvec3 low = directionFromAngles(91.0 * kDegree, 0.0);
@@ -289,28 +289,28 @@ TEST(AtmospherePhysics, OzoneKeepsTheTwilightZenithBlue) {
   // At twilight the zenith's light crosses the ozone layer on a long slant path; the Chappuis
   // band (around 600 nm) then removes orange and red, which is why the zenith stays blue
   // (Hulburt 1953). Without ozone the same sky is far less blue.
-  ModelConfig with_ozone = oneGroupConfig();
-  with_ozone.wavelengths_nm = {440.0, 500.0, 600.0, 680.0};
-  ModelConfig without_ozone = with_ozone;
-  without_ozone.medium.ozone_column_du = 0.0;
-  const AtmosphereModel a = cachedModel(with_ozone);
-  const AtmosphereModel b = cachedModel(without_ozone);
-  const glm::dvec3 camera = observerPosition(with_ozone.medium, 0.0);
-  auto blue_over_orange = [&](const AtmosphereModel& model, double sun_zenith_deg) {
-    const glm::dvec3 sun = directionFromAngles(sun_zenith_deg * kDegree, 0.0);
+  ModelConfig withOzone = oneGroupConfig();
+  withOzone.wavelengthsNm = {440.0, 500.0, 600.0, 680.0};
+  ModelConfig withoutOzone = withOzone;
+  withoutOzone.medium.ozoneColumnDu = 0.0;
+  const AtmosphereModel a = cachedModel(withOzone);
+  const AtmosphereModel b = cachedModel(withoutOzone);
+  const glm::dvec3 camera = observerPosition(withOzone.medium, 0.0);
+  auto blueOverOrange = [&](const AtmosphereModel& model, double sunZenithDeg) {
+    const glm::dvec3 sun = directionFromAngles(sunZenithDeg * kDegree, 0.0);
     const Spectrum l = model.skyRadiance(camera, kUp, sun);
     const Spectrum e = model.solarRadiance();
     return (l[0] / e[0]) / (l[2] / e[2]);
   };
-  const double twilight_with = blue_over_orange(a, 96.0);
-  const double twilight_without = blue_over_orange(b, 96.0);
-  const double noon_with = blue_over_orange(a, 30.0);
-  const double noon_without = blue_over_orange(b, 30.0);
+  const double twilightWith = blueOverOrange(a, 96.0);
+  const double twilightWithout = blueOverOrange(b, 96.0);
+  const double noonWith = blueOverOrange(a, 30.0);
+  const double noonWithout = blueOverOrange(b, 30.0);
   std::printf("zenith 440/600 nm ratio relative to the sun: sun 30 deg %.2f (no ozone %.2f), "
               "sun 96 deg %.2f (no ozone %.2f)\n",
-              noon_with, noon_without, twilight_with, twilight_without);
-  EXPECT_GT(twilight_with, 1.5 * twilight_without);
-  EXPECT_LT(noon_with, 1.15 * noon_without);  // in daylight ozone matters little
+              noonWith, noonWithout, twilightWith, twilightWithout);
+  EXPECT_GT(twilightWith, 1.5 * twilightWithout);
+  EXPECT_LT(noonWith, 1.15 * noonWithout);  // in daylight ozone matters little
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ using atmosphere::ModelConfig;
 ModelConfig tinyConfig() {
   ModelConfig c = atmosphere::testing::oneGroupConfig();
   c.sizes = atmosphere::testing::tinySizes();
-  c.options.scattering_orders = 2;
+  c.options.scatteringOrders = 2;
   return c;
 }
 
@@ -36,7 +36,7 @@ bool sameTables(const std::vector<GroupTables>& a, const std::vector<GroupTables
   if (a.size() != b.size()) return false;
   for (std::size_t g = 0; g < a.size(); ++g) {
     if (a[g].transmittance.texels != b[g].transmittance.texels || a[g].irradiance.texels != b[g].irradiance.texels ||
-        a[g].scattering.texels != b[g].scattering.texels || a[g].single_mie.texels != b[g].single_mie.texels)
+        a[g].scattering.texels != b[g].scattering.texels || a[g].singleMie.texels != b[g].singleMie.texels)
       return false;
   }
   return true;
@@ -85,12 +85,12 @@ TEST(AtmospherePrecomputeDevice, AutoUsesTheGpuWhenAContextCanBeMade) {
 
 TEST(AtmospherePrecomputeDevice, InvalidConfigsThrowWhateverTheDevice) {
   ModelConfig c = tinyConfig();
-  c.medium.mie_phase_g = 1.5;
+  c.medium.miePhaseG = 1.5;
   for (PrecomputeDevice d : {PrecomputeDevice::kAuto, PrecomputeDevice::kCpu}) {
     EXPECT_THROW(atmosphereTableBuilder(d)(c), std::invalid_argument);
   }
   c = tinyConfig();
-  c.wavelengths_nm = {550.0, 440.0};
+  c.wavelengthsNm = {550.0, 440.0};
   EXPECT_THROW(atmosphereTableBuilder(PrecomputeDevice::kAuto)(c), std::invalid_argument);
 }
 
@@ -136,7 +136,7 @@ TEST(AtmospherePrecomputeDevice, UpdaterBuildsOnTheGpuFromItsThread) {
   ::testing::internal::CaptureStderr();
   atmosphere::AtmosphereUpdater updater(c, dir, atmosphereTableBuilder(PrecomputeDevice::kGpu));
   EXPECT_EQ(eglGetCurrentContext(), current);
-  c.medium.ground_albedo = 0.3;
+  c.medium.groundAlbedo = 0.3;
   updater.request(c);
   updater.waitIdle();
   const std::string said = ::testing::internal::GetCapturedStderr();

@@ -35,11 +35,11 @@ Spectrum groundReflection(const AtmosphereModel& model, const glm::dvec3& camera
   Spectrum t;
   model.skyRadianceToPoint(camera, point, sun, &t);
   const glm::dvec3 n = glm::normalize(point);
-  const Spectrum e_sun = model.sunIrradiance(point, n, sun);
-  const Spectrum e_sky = model.skyIrradiance(point, n, sun);
+  const Spectrum eSun = model.sunIrradiance(point, n, sun);
+  const Spectrum eSky = model.skyIrradiance(point, n, sun);
   const double albedo = model.parameters(0).ground_albedo.x;
   Spectrum out(t.size());
-  for (std::size_t i = 0; i < t.size(); ++i) out[i] = albedo / 3.14159265358979323846 * (e_sun[i] + e_sky[i]) * t[i];
+  for (std::size_t i = 0; i < t.size(); ++i) out[i] = albedo / 3.14159265358979323846 * (eSun[i] + eSky[i]) * t[i];
   return out;
 }
 
@@ -60,12 +60,12 @@ class PackedTables : public ::testing::Test {
 TEST_F(PackedTables, SkyEqualsTheSpectralModelToHalfFloatRounding) {
   double worst = 0.0;
   for (double altitude : {10.0, 3000.0, 100e3})
-    for (double sun_zenith : {20.0, 80.0, 95.0})
-      for (double view_zenith : {0.0, 45.0, 85.0, 95.0, 120.0})
+    for (double sunZenith : {20.0, 80.0, 95.0})
+      for (double viewZenith : {0.0, 45.0, 85.0, 95.0, 120.0})
         for (double azimuth : {0.0, 1.0, 3.0}) {
           const glm::dvec3 camera = observerPosition(model_->config().medium, altitude);
-          const glm::dvec3 sun = directionFromAngles(sun_zenith * kDeg, 0.0);
-          const glm::dvec3 view = directionFromAngles(view_zenith * kDeg, azimuth);
+          const glm::dvec3 sun = directionFromAngles(sunZenith * kDeg, 0.0);
+          const glm::dvec3 view = directionFromAngles(viewZenith * kDeg, azimuth);
           const glm::dvec3 expected = spectralRgb(*model_, model_->skyRadiance(camera, view, sun));
           if (luminance(expected) <= 0.0) continue;
           worst = std::max(worst, relativeError(packedSkyRec709(*model_, *tables_, camera, view, sun), expected));
@@ -81,14 +81,14 @@ TEST_F(PackedTables, SunDiscWithinTheXyzLimbDarkeningApproximation) {
   // is what the XYZ channels cannot follow, more so the lower the sun.
   double worst = 0.0, worstHigh = 0.0;
   for (double altitude : {10.0, 3000.0})
-    for (double sun_zenith : {0.0, 60.0, 85.0, 89.0}) {
+    for (double sunZenith : {0.0, 60.0, 85.0, 89.0}) {
       const glm::dvec3 camera = observerPosition(model_->config().medium, altitude);
-      const glm::dvec3 sun = directionFromAngles(sun_zenith * kDeg, 0.5);
+      const glm::dvec3 sun = directionFromAngles(sunZenith * kDeg, 0.5);
       const glm::dvec3 expected = spectralRgb(*model_, model_->sunDiscRadiance(camera, sun, sun)) +
                                   spectralRgb(*model_, model_->skyRadiance(camera, sun, sun));
       const glm::dvec3 got = packedRadianceRec709(*model_, *tables_, camera, sun, sun);
       worst = std::max(worst, relativeError(got, expected));
-      if (sun_zenith <= 60.0) worstHigh = std::max(worstHigh, relativeError(got, expected));
+      if (sunZenith <= 60.0) worstHigh = std::max(worstHigh, relativeError(got, expected));
     }
   std::printf("packed sun disc centre vs spectral: worst %.2e of the luminance (sun zenith <= 60 deg: %.2e)\n", worst,
               worstHigh);
@@ -102,12 +102,12 @@ TEST_F(PackedTables, GroundWithinTheXyzTransmittanceApproximation) {
   // long and the light is red (low sun, far ground).
   double worst = 0.0, worstNear = 0.0;
   for (double altitude : {10.0, 1000.0, 5000.0})
-    for (double sun_zenith : {20.0, 60.0, 85.0, 89.0})
-      for (double view_zenith : {100.0, 120.0, 150.0, 180.0})
+    for (double sunZenith : {20.0, 60.0, 85.0, 89.0})
+      for (double viewZenith : {100.0, 120.0, 150.0, 180.0})
         for (double azimuth : {0.0, 1.5, 3.0}) {
           const glm::dvec3 camera = observerPosition(model_->config().medium, altitude);
-          const glm::dvec3 sun = directionFromAngles(sun_zenith * kDeg, 0.0);
-          const glm::dvec3 view = directionFromAngles(view_zenith * kDeg, azimuth);
+          const glm::dvec3 sun = directionFromAngles(sunZenith * kDeg, 0.0);
+          const glm::dvec3 view = directionFromAngles(viewZenith * kDeg, azimuth);
           const double r = glm::length(camera), rmu = glm::dot(camera, view);
           const double bottom = model_->parameters(0).bottom_radius;
           const double disc = rmu * rmu - r * r + bottom * bottom;
@@ -117,7 +117,7 @@ TEST_F(PackedTables, GroundWithinTheXyzTransmittanceApproximation) {
                                       spectralRgb(*model_, groundReflection(*model_, camera, point, sun));
           const double e = relativeError(packedRadianceRec709(*model_, *tables_, camera, view, sun), expected);
           worst = std::max(worst, e);
-          if (view_zenith >= 150.0) worstNear = std::max(worstNear, e);
+          if (viewZenith >= 150.0) worstNear = std::max(worstNear, e);
         }
   std::printf("packed ground vs spectral: worst %.2e of the luminance (looking down 30 deg or steeper: %.2e)\n", worst,
               worstNear);
@@ -138,7 +138,7 @@ TEST_F(PackedTables, HalfFloatsHoldTheTables) {
   // At the default size the GPU set is 12.3 MB: RGBA16F + RG16F scattering, RGBA32F T and E.
   const TableSizes d;
   const double bytes = 12.0 * static_cast<double>(d.scatteringTexels()) +
-                       16.0 * (d.transmittance_mu * d.transmittance_r + d.irradiance_mu_s * d.irradiance_r);
+                       16.0 * (d.transmittanceMu * d.transmittanceR + d.irradianceMuS * d.irradianceR);
   EXPECT_LE(bytes, 16e6);
 }
 

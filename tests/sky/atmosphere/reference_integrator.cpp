@@ -7,13 +7,13 @@
 namespace skyig::atmosphere::reference {
 
 LocalMedium localMedium(const Medium& m, const SpectralCoefficients& c, const glm::dvec3& p) {
-  const double h = glm::length(p) - m.bottom_radius_m;
-  const double rayleigh = std::exp(-h / m.rayleigh_scale_height_m);
-  const double mie = std::exp(-h / m.mie_scale_height_m);
+  const double h = glm::length(p) - m.bottomRadiusM;
+  const double rayleigh = std::exp(-h / m.rayleighScaleHeightM);
+  const double mie = std::exp(-h / m.mieScaleHeightM);
   const double ozone =
-      std::max(0.0, 1.0 - std::abs(h - m.ozone_center_altitude_m) / m.ozone_half_width_m);
-  return {c.rayleigh_scattering * rayleigh + c.mie_extinction * mie + c.ozone_absorption * ozone,
-          c.rayleigh_scattering * rayleigh, c.mie_scattering * mie};
+      std::max(0.0, 1.0 - std::abs(h - m.ozoneCentreAltitudeM) / m.ozoneHalfWidthM);
+  return {c.rayleighScattering * rayleigh + c.mieExtinction * mie + c.ozoneAbsorption * ozone,
+          c.rayleighScattering * rayleigh, c.mieScattering * mie};
 }
 
 namespace {
@@ -31,13 +31,13 @@ double hitSphere(const glm::dvec3& o, const glm::dvec3& d, double radius, bool f
 
 }  // namespace
 
-double distanceToBoundary(const Medium& m, const Ray& ray, bool* hits_ground) {
+double distanceToBoundary(const Medium& m, const Ray& ray, bool* hitsGround) {
   // A ray starting on the ground and pointing down hits it at once (t = 0).
-  const double t_ground = hitSphere(ray.origin, ray.direction, m.bottom_radius_m, false);
-  const bool ground = t_ground >= 0.0 && glm::dot(ray.origin, ray.direction) < 0.0;
-  if (hits_ground) *hits_ground = ground;
-  if (ground) return t_ground;
-  return std::max(0.0, hitSphere(ray.origin, ray.direction, m.top_radius_m, true));
+  const double tGround = hitSphere(ray.origin, ray.direction, m.bottomRadiusM, false);
+  const bool ground = tGround >= 0.0 && glm::dot(ray.origin, ray.direction) < 0.0;
+  if (hitsGround) *hitsGround = ground;
+  if (ground) return tGround;
+  return std::max(0.0, hitSphere(ray.origin, ray.direction, m.topRadiusM, true));
 }
 
 double opticalDepth(const Medium& m, const SpectralCoefficients& c, const Ray& ray,
@@ -59,28 +59,28 @@ double singleScattering(const Medium& m, const SpectralCoefficients& c, const Ra
   const double dt = length / steps;
   const double nu = glm::dot(ray.direction, sun);
   const double k = 3.0 / (16.0 * kPi);
-  const double phase_r = k * (1.0 + nu * nu);
-  const double g = m.mie_phase_g;
-  const double phase_m = 3.0 / (8.0 * kPi) * (1.0 - g * g) * (1.0 + nu * nu) /
+  const double phaseR = k * (1.0 + nu * nu);
+  const double g = m.miePhaseG;
+  const double phaseM = 3.0 / (8.0 * kPi) * (1.0 - g * g) * (1.0 + nu * nu) /
                          ((2.0 + g * g) * std::pow(1.0 + g * g - 2.0 * g * nu, 1.5));
   double radiance = 0.0;
-  double depth_to_viewer = 0.0;
+  double depthToViewer = 0.0;
   glm::dvec3 previous = ray.origin;
   for (int i = 0; i < steps; ++i) {
     const glm::dvec3 p = ray.origin + ray.direction * ((i + 0.5) * dt);
     // Optical depth from the viewer, accumulated segment by segment (Simpson per segment).
-    depth_to_viewer += opticalDepth(m, c, Ray{previous, ray.direction}, glm::length(p - previous), 8);
+    depthToViewer += opticalDepth(m, c, Ray{previous, ray.direction}, glm::length(p - previous), 8);
     previous = p;
-    const Ray to_sun{p, sun};
+    const Ray toSun{p, sun};
     bool blocked = false;
-    const double sun_length = distanceToBoundary(m, to_sun, &blocked);
+    const double sunLength = distanceToBoundary(m, toSun, &blocked);
     if (blocked) continue;
-    const double depth_to_sun = opticalDepth(m, c, to_sun, sun_length, 120);
+    const double depthToSun = opticalDepth(m, c, toSun, sunLength, 120);
     const LocalMedium local = localMedium(m, c, p);
-    radiance += std::exp(-depth_to_viewer - depth_to_sun) *
-                (local.rayleigh_scattering * phase_r + local.mie_scattering * phase_m) * dt;
+    radiance += std::exp(-depthToViewer - depthToSun) *
+                (local.rayleighScattering * phaseR + local.mieScattering * phaseM) * dt;
   }
-  return radiance * c.solar_irradiance;
+  return radiance * c.solarIrradiance;
 }
 
 }  // namespace skyig::atmosphere::reference

@@ -16,13 +16,13 @@ struct Ray {
 // Extinction coefficient (m^-1) at a point, and its scattering parts.
 struct LocalMedium {
   double extinction;
-  double rayleigh_scattering;
-  double mie_scattering;
+  double rayleighScattering;
+  double mieScattering;
 };
 LocalMedium localMedium(const Medium& m, const SpectralCoefficients& c, const glm::dvec3& p);
 
 // Distance along the ray to the top of the atmosphere, or to the ground if it hits it first.
-double distanceToBoundary(const Medium& m, const Ray& ray, bool* hits_ground = nullptr);
+double distanceToBoundary(const Medium& m, const Ray& ray, bool* hitsGround = nullptr);
 
 // Optical depth over [0, length] by composite Simpson with `intervals` (even) intervals.
 double opticalDepth(const Medium& m, const SpectralCoefficients& c, const Ray& ray,

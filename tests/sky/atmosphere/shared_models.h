@@ -17,7 +17,7 @@ inline std::filesystem::path testCacheDirectory() {
 inline ModelConfig smallEarthConfig() {
   ModelConfig c;
   c.sizes = TableSizes::small();
-  c.options.scattering_orders = 4;
+  c.options.scatteringOrders = 4;
   return c;
 }
 
@@ -25,7 +25,7 @@ inline ModelConfig smallEarthConfig() {
 // spectral radiance only.
 inline ModelConfig oneGroupConfig() {
   ModelConfig c = smallEarthConfig();
-  c.wavelengths_nm = {440.0, 550.0, 680.0, 830.0};
+  c.wavelengthsNm = {440.0, 550.0, 680.0, 830.0};
   return c;
 }
 
@@ -33,14 +33,14 @@ inline ModelConfig oneGroupConfig() {
 // in well under a second, for tests of mechanisms (cache, updater, linearity).
 inline TableSizes tinySizes() {
   TableSizes s;
-  s.transmittance_mu = 16;
-  s.transmittance_r = 8;
-  s.irradiance_mu_s = 8;
-  s.irradiance_r = 4;
-  s.scattering_r = 4;
-  s.scattering_mu = 8;
-  s.scattering_mu_s = 4;
-  s.scattering_nu = 2;
+  s.transmittanceMu = 16;
+  s.transmittanceR = 8;
+  s.irradianceMuS = 8;
+  s.irradianceR = 4;
+  s.scatteringR = 4;
+  s.scatteringMu = 8;
+  s.scatteringMuS = 4;
+  s.scatteringNu = 2;
   return s;
 }
 

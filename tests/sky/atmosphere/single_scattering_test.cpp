@@ -13,13 +13,13 @@ namespace {
 
 ModelConfig singleScatteringConfig() {
   ModelConfig c = testing::oneGroupConfig();
-  c.options.scattering_orders = 1;
+  c.options.scatteringOrders = 1;
   // 16 radii: the table interpolates linearly in r between texels whose aerosol densities
   // differ by up to 3x at 1-2 km; the ground row and the high rows are exact.
-  c.sizes.scattering_r = 16;
-  c.sizes.scattering_mu = 64;
-  c.sizes.scattering_mu_s = 32;
-  c.sizes.scattering_nu = 8;
+  c.sizes.scatteringR = 16;
+  c.sizes.scatteringMu = 64;
+  c.sizes.scatteringMuS = 32;
+  c.sizes.scatteringNu = 8;
   return c;
 }
 
@@ -35,25 +35,25 @@ struct Worst {
 // tolerance for rays ending in space; ground_tolerance for rays ending on the ground, whose
 // 32 table rows (half of mu) span a wider range of path lengths.
 Worst compare(const AtmosphereModel& model, double altitude, double tolerance,
-              double ground_tolerance) {
+              double groundTolerance) {
   const ModelConfig& c = model.config();
   const glm::dvec3 camera = observerPosition(c.medium, altitude);
   Worst worst;
-  for (double sun_zenith : {0.0, 30.0, 60.0, 80.0}) {
-    const glm::dvec3 sun = directionFromAngles(sun_zenith * kDegree, 0.0);
-    for (double view_zenith : {0.0, 30.0, 60.0, 80.0, 88.0, 95.0, 120.0}) {
-      if (altitude == 0.0 && view_zenith > 90.0) continue;  // into the ground at once: no light
+  for (double sunZenith : {0.0, 30.0, 60.0, 80.0}) {
+    const glm::dvec3 sun = directionFromAngles(sunZenith * kDegree, 0.0);
+    for (double viewZenith : {0.0, 30.0, 60.0, 80.0, 88.0, 95.0, 120.0}) {
+      if (altitude == 0.0 && viewZenith > 90.0) continue;  // into the ground at once: no light
       for (double azimuth : {0.0, 90.0, 180.0}) {
-        const glm::dvec3 view = directionFromAngles(view_zenith * kDegree, azimuth * kDegree);
+        const glm::dvec3 view = directionFromAngles(viewZenith * kDegree, azimuth * kDegree);
         const Spectrum table = model.skyRadiance(camera, view, sun);
         for (std::size_t i = 0; i < 3; ++i) {
           const double ref = reference::singleScattering(
-              c.medium, coefficientsAt(c.medium, c.wavelengths_nm[i]), {camera, view}, sun, 600);
+              c.medium, coefficientsAt(c.medium, c.wavelengthsNm[i]), {camera, view}, sun, 600);
           const double e = table[i] / ref - 1.0;
           worst.add(e);
-          EXPECT_LT(std::abs(e), view_zenith > 90.0 ? ground_tolerance : tolerance)
-              << "altitude " << altitude << " sun zenith " << sun_zenith << " view zenith "
-              << view_zenith << " azimuth " << azimuth << " lambda " << c.wavelengths_nm[i]
+          EXPECT_LT(std::abs(e), viewZenith > 90.0 ? groundTolerance : tolerance)
+              << "altitude " << altitude << " sun zenith " << sunZenith << " view zenith "
+              << viewZenith << " azimuth " << azimuth << " lambda " << c.wavelengthsNm[i]
               << ": table " << table[i] << " reference " << ref;
         }
       }
@@ -64,9 +64,9 @@ Worst compare(const AtmosphereModel& model, double altitude, double tolerance,
 
 // Altitude of the i-th radius of a scattering table of n radii (u_r = rho / H, section 4).
 double tableRadiusAltitude(const Medium& m, int i, int n) {
-  const double H = std::sqrt(m.top_radius_m * m.top_radius_m - m.bottom_radius_m * m.bottom_radius_m);
+  const double H = std::sqrt(m.topRadiusM * m.topRadiusM - m.bottomRadiusM * m.bottomRadiusM);
   const double rho = H * i / (n - 1.0);
-  return std::sqrt(rho * rho + m.bottom_radius_m * m.bottom_radius_m) - m.bottom_radius_m;
+  return std::sqrt(rho * rho + m.bottomRadiusM * m.bottomRadiusM) - m.bottomRadiusM;
 }
 
 TEST(AtmosphereSingleScattering, TablesMatchARayMarchAtTheTableRadii) {
@@ -75,7 +75,7 @@ TEST(AtmosphereSingleScattering, TablesMatchARayMarchAtTheTableRadii) {
   const AtmosphereModel model = testing::cachedModel(singleScatteringConfig());
   const ModelConfig& c = model.config();
   for (int i : {0, 4, 8, 12}) {
-    const double altitude = tableRadiusAltitude(c.medium, i, c.sizes.scattering_r);
+    const double altitude = tableRadiusAltitude(c.medium, i, c.sizes.scatteringR);
     const Worst w = compare(model, altitude, 0.01, 0.02);
     std::printf("single scattering, altitude %7.0f m (table radius %2d): %d checks, worst %.2f%%\n",
                 altitude, i, w.count, w.error * 100.0);

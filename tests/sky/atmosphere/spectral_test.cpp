@@ -14,17 +14,17 @@ namespace {
 TEST(AtmosphereSpectral, RayleighCoefficientsOfTheIssue) {
   const Medium m;
   // 5.802, 13.558, 33.100 e-6 m^-1 at 680 / 550 / 440 nm.
-  EXPECT_NEAR(coefficientsAt(m, 680.0).rayleigh_scattering, 5.802e-6, 0.001e-6);
-  EXPECT_NEAR(coefficientsAt(m, 550.0).rayleigh_scattering, 13.558e-6, 0.001e-6);
-  EXPECT_NEAR(coefficientsAt(m, 440.0).rayleigh_scattering, 33.100e-6, 0.001e-6);
-  EXPECT_NEAR(coefficientsAt(m, 550.0).mie_scattering, 3.996e-6, 1e-12);
-  EXPECT_NEAR(coefficientsAt(m, 440.0).mie_extinction, 4.44e-6, 1e-12);
+  EXPECT_NEAR(coefficientsAt(m, 680.0).rayleighScattering, 5.802e-6, 0.001e-6);
+  EXPECT_NEAR(coefficientsAt(m, 550.0).rayleighScattering, 13.558e-6, 0.001e-6);
+  EXPECT_NEAR(coefficientsAt(m, 440.0).rayleighScattering, 33.100e-6, 0.001e-6);
+  EXPECT_NEAR(coefficientsAt(m, 550.0).mieScattering, 3.996e-6, 1e-12);
+  EXPECT_NEAR(coefficientsAt(m, 440.0).mieExtinction, 4.44e-6, 1e-12);
 }
 
 TEST(AtmosphereSpectral, OzoneColumnIsThreeHundredDobson) {
   const Medium m;
   // Column = peak density x half width of the tent (integral of the profile).
-  EXPECT_NEAR(ozonePeakNumberDensity(m) * m.ozone_half_width_m / kDobsonUnitPerM2, 300.0, 1e-9);
+  EXPECT_NEAR(ozonePeakNumberDensity(m) * m.ozoneHalfWidthM / kDobsonUnitPerM2, 300.0, 1e-9);
   // Chappuis band: absorbs more at 600 nm than at 440 or 680 nm.
   EXPECT_GT(ozoneCrossSection(600.0), ozoneCrossSection(440.0));
   EXPECT_GT(ozoneCrossSection(600.0), ozoneCrossSection(680.0));
@@ -34,12 +34,12 @@ TEST(AtmosphereSpectral, ColourMatchingFunctionIntegrals) {
   // Integral of ybar over 360-830 nm = 106.857 (CIE 1931, 1 nm data); x and z integrals are
   // equal to it within 0.1% by construction of the equal-energy white point.
   glm::dvec3 sum(0.0);
-  for (double w = 360.0; w <= 830.0; w += 1.0) sum += cie1931ColorMatching(w);
+  for (double w = 360.0; w <= 830.0; w += 1.0) sum += cie1931ColourMatching(w);
   EXPECT_NEAR(sum.y, 106.857, 0.15);
   EXPECT_NEAR(sum.x / sum.y, 1.0, 0.002);
   EXPECT_NEAR(sum.z / sum.y, 1.0, 0.002);
-  EXPECT_DOUBLE_EQ(cie1931ColorMatching(555.0).y, 1.0);
-  EXPECT_THROW(cie1931ColorMatching(300.0), std::out_of_range);
+  EXPECT_DOUBLE_EQ(cie1931ColourMatching(555.0).y, 1.0);
+  EXPECT_THROW(cie1931ColourMatching(300.0), std::out_of_range);
 }
 
 TEST(AtmosphereSpectral, D65WhiteIsRec709White) {
@@ -54,15 +54,15 @@ TEST(AtmosphereSpectral, SunSpectrumConvertsExactlyAtSixteenWavelengths) {
   // the luminance of a 1 nm integration of the ASTM table, at 16 samples as at 471.
   std::vector<double> fine;
   for (double w = 360.0; w <= 830.0; w += 1.0) fine.push_back(w);
-  const SpectralConverter fine_converter(fine);
-  const SpectralConverter coarse_converter(defaultWavelengths());
+  const SpectralConverter fineConverter(fine);
+  const SpectralConverter coarseConverter(defaultWavelengths());
   auto sun = [](const SpectralConverter& c) {
     std::vector<double> s;
     for (double w : c.wavelengths()) s.push_back(solarIrradiance(w));
     return c.toXyz(s);
   };
-  const glm::dvec3 a = sun(fine_converter);
-  const glm::dvec3 b = sun(coarse_converter);
+  const glm::dvec3 a = sun(fineConverter);
+  const glm::dvec3 b = sun(coarseConverter);
   EXPECT_NEAR(b.y / a.y, 1.0, 2e-3);
   EXPECT_NEAR(b.x / a.x, 1.0, 2e-3);
   // Solar illuminance outside the atmosphere, the luminous solar constant: 133.3 klx (Darula,
@@ -76,31 +76,31 @@ TEST(AtmosphereConditions, KoschmiederVisibility) {
   // The default aerosols: beta = 4.44e-6 + 13.558e-6 m^-1 -> V = 3.912 / beta = 217 km.
   EXPECT_NEAR(visibilityOf(clear), 3.912 / (4.44e-6 + 13.558e-6) / 1000.0, 0.01);
   Conditions hazy;
-  hazy.visibility_km = 5.0;
+  hazy.visibilityKm = 5.0;
   const Medium m = applyConditions(clear, hazy);
-  EXPECT_NEAR(m.mie_extinction_per_m, 3.912 / 5000.0 - 13.558e-6, 1e-9);
+  EXPECT_NEAR(m.mieExtinctionPerM, 3.912 / 5000.0 - 13.558e-6, 1e-9);
   EXPECT_NEAR(visibilityOf(m), 5.0, 1e-9);
-  hazy.visibility_km = 400.0;  // clearer than clean air allows
+  hazy.visibilityKm = 400.0;  // clearer than clean air allows
   EXPECT_THROW(applyConditions(clear, hazy), std::invalid_argument);
-  hazy.visibility_km = -1.0;
+  hazy.visibilityKm = -1.0;
   EXPECT_THROW(applyConditions(clear, hazy), std::invalid_argument);
 }
 
 TEST(AtmosphereConditions, HumidityGrowsTheAerosolsAndAlbedoApplies) {
   const Medium base;
   Conditions wet;
-  wet.relative_humidity = 0.9;
+  wet.relativeHumidity = 0.9;
   const Medium m = applyConditions(base, wet);
   // ((1 - 0.9) / (1 - 0.5))^-0.25 = 5^0.25.
-  EXPECT_NEAR(m.mie_extinction_per_m / base.mie_extinction_per_m, std::pow(5.0, 0.25), 1e-12);
-  wet.relative_humidity = 0.5;
-  EXPECT_DOUBLE_EQ(applyConditions(base, wet).mie_extinction_per_m, base.mie_extinction_per_m);
-  wet.relative_humidity = 1.0;
+  EXPECT_NEAR(m.mieExtinctionPerM / base.mieExtinctionPerM, std::pow(5.0, 0.25), 1e-12);
+  wet.relativeHumidity = 0.5;
+  EXPECT_DOUBLE_EQ(applyConditions(base, wet).mieExtinctionPerM, base.mieExtinctionPerM);
+  wet.relativeHumidity = 1.0;
   EXPECT_THROW(applyConditions(base, wet), std::invalid_argument);
   Conditions snow;
-  snow.ground_albedo = 0.8;
-  EXPECT_DOUBLE_EQ(applyConditions(base, snow).ground_albedo, 0.8);
-  snow.ground_albedo = 1.5;
+  snow.groundAlbedo = 0.8;
+  EXPECT_DOUBLE_EQ(applyConditions(base, snow).groundAlbedo, 0.8);
+  snow.groundAlbedo = 1.5;
   EXPECT_THROW(applyConditions(base, snow), std::invalid_argument);
 }
 

@@ -41,7 +41,7 @@ double referenceTransmittance(const Medium& m, double wavelength, double r, doub
 TEST_F(TransmittanceTest, VerticalTransmittanceMatchesPublishedValues) {
   // Bruneton 2017 defaults: 0.9404 / 0.8677 / 0.7624 at 680 / 550 / 440 nm.
   const glm::dvec4 t = shader::transmittanceToTopAtmosphereBoundary(
-      atm_, transmittance_, medium_.bottom_radius_m, 1.0);
+      atm_, transmittance_, medium_.bottomRadiusM, 1.0);
   EXPECT_NEAR(t[0], 0.9404, 0.0015);
   EXPECT_NEAR(t[1], 0.8677, 0.0015);
   EXPECT_NEAR(t[2], 0.7624, 0.0015);
@@ -53,7 +53,7 @@ TEST_F(TransmittanceTest, TableMatchesQuadratureWithinHalfAPercent) {
   double worst = 0.0;
   int checked = 0;
   for (double h : altitudes) {
-    const double r = medium_.bottom_radius_m + h;
+    const double r = medium_.bottomRadiusM + h;
     for (double mu : cosines) {
       if (shader::rayIntersectsGround(atm_, r, mu)) continue;
       const glm::dvec4 table = shader::transmittanceToTopAtmosphereBoundary(atm_, transmittance_, r, mu);
@@ -82,7 +82,7 @@ TEST_F(TransmittanceTest, TransmittanceBetweenPointsMatchesQuadrature) {
                         {3000.0, -0.1, 10000.0},  {10000.0, -0.5, 15000.0}, {500.0, 0.05, 100000.0}};
   double worst = 0.0;
   for (const Case& k : cases) {
-    const double r = medium_.bottom_radius_m + k.h;
+    const double r = medium_.bottomRadiusM + k.h;
     const bool ground = shader::rayIntersectsGround(atm_, r, k.mu);
     const glm::dvec4 table = shader::transmittanceAlongRay(atm_, transmittance_, r, k.mu, k.d, ground);
     const reference::Ray ray{{0.0, 0.0, r}, {std::sqrt(1.0 - k.mu * k.mu), 0.0, k.mu}};
@@ -101,7 +101,7 @@ TEST_F(TransmittanceTest, TransmittanceBetweenPointsMatchesQuadrature) {
 TEST_F(TransmittanceTest, ParameterisationRoundTrips) {
   for (double h : {0.0, 100.0, 8000.0, 59999.0}) {
     for (double mu : {1.0, 0.3, 0.0, -0.05}) {
-      const double r = medium_.bottom_radius_m + h;
+      const double r = medium_.bottomRadiusM + h;
       if (shader::rayIntersectsGround(atm_, r, mu)) continue;
       const glm::dvec2 uv = shader::transmittanceUvFromRMu(atm_, r, mu);
       double r2 = 0.0;

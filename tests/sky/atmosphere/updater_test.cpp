@@ -16,8 +16,8 @@ namespace {
 ModelConfig tinyConfig(double albedo) {
   ModelConfig c = testing::oneGroupConfig();
   c.sizes = testing::tinySizes();
-  c.options.scattering_orders = 2;
-  c.medium.ground_albedo = albedo;
+  c.options.scatteringOrders = 2;
+  c.medium.groundAlbedo = albedo;
   return c;
 }
 
@@ -33,11 +33,11 @@ TEST(AtmosphereUpdater, LatestRequestWinsAndTheOldModelServesMeanwhile) {
   EXPECT_TRUE(updater.current());
   updater.waitIdle();
   const auto latest = updater.current();
-  EXPECT_DOUBLE_EQ(latest->config().medium.ground_albedo, 0.3);
+  EXPECT_DOUBLE_EQ(latest->config().medium.groundAlbedo, 0.3);
   EXPECT_GE(updater.generation(), 1u);
   EXPECT_LE(updater.generation(), 2u);
   // The snapshot handed out before is untouched and still usable.
-  EXPECT_DOUBLE_EQ(first->config().medium.ground_albedo, 0.1);
+  EXPECT_DOUBLE_EQ(first->config().medium.groundAlbedo, 0.1);
   EXPECT_EQ(updater.lastError(), "");
 }
 
@@ -45,11 +45,11 @@ TEST(AtmosphereUpdater, BadRequestKeepsTheLastGoodModel) {
   const auto dir = testing::testCacheDirectory() / "updater";
   AtmosphereUpdater updater(tinyConfig(0.1), dir);
   ModelConfig bad = tinyConfig(0.1);
-  bad.medium.mie_phase_g = 1.5;
+  bad.medium.miePhaseG = 1.5;
   updater.request(bad);
   updater.waitIdle();
   EXPECT_NE(updater.lastError().find("mie_phase_g = 1.5"), std::string::npos) << updater.lastError();
-  EXPECT_DOUBLE_EQ(updater.current()->config().medium.mie_phase_g, 0.8);
+  EXPECT_DOUBLE_EQ(updater.current()->config().medium.miePhaseG, 0.8);
   EXPECT_EQ(updater.generation(), 0u);
 }
 
@@ -59,10 +59,10 @@ TEST(AtmosphereUpdater, UsesItsBuilderForTablesMissingFromTheCache) {
   const auto dir = testing::testCacheDirectory() / "updater-builder";
   std::filesystem::remove_all(dir);
   std::atomic<int> builds{0};
-  std::atomic<double> last_albedo{-1.0};
+  std::atomic<double> lastAlbedo{-1.0};
   const TableBuilder counting = [&](const ModelConfig& c) {
     ++builds;
-    last_albedo = c.medium.ground_albedo;
+    lastAlbedo = c.medium.groundAlbedo;
     return precomputeTablesOnCpu(c);
   };
   {
@@ -71,8 +71,8 @@ TEST(AtmosphereUpdater, UsesItsBuilderForTablesMissingFromTheCache) {
     updater.request(tinyConfig(0.25));
     updater.waitIdle();
     EXPECT_EQ(builds.load(), 2);
-    EXPECT_DOUBLE_EQ(last_albedo.load(), 0.25);
-    EXPECT_DOUBLE_EQ(updater.current()->config().medium.ground_albedo, 0.25);
+    EXPECT_DOUBLE_EQ(lastAlbedo.load(), 0.25);
+    EXPECT_DOUBLE_EQ(updater.current()->config().medium.groundAlbedo, 0.25);
     updater.request(tinyConfig(0.1));  // in the cache now
     updater.waitIdle();
     EXPECT_EQ(builds.load(), 2);
@@ -90,15 +90,15 @@ TEST(AtmosphereUpdater, UsesItsBuilderForTablesMissingFromTheCache) {
 TEST(AtmosphereUpdater, AFailingBuilderKeepsTheLastGoodModel) {
   const auto dir = testing::testCacheDirectory() / "updater-builder-fails";
   std::filesystem::remove_all(dir);
-  const TableBuilder fails_above_half = [](const ModelConfig& c) -> std::vector<GroupTables> {
-    if (c.medium.ground_albedo > 0.5) throw std::runtime_error("no device for albedo above 0.5");
+  const TableBuilder failsAboveHalf = [](const ModelConfig& c) -> std::vector<GroupTables> {
+    if (c.medium.groundAlbedo > 0.5) throw std::runtime_error("no device for albedo above 0.5");
     return precomputeTablesOnCpu(c);
   };
-  AtmosphereUpdater updater(tinyConfig(0.1), dir, fails_above_half);
+  AtmosphereUpdater updater(tinyConfig(0.1), dir, failsAboveHalf);
   updater.request(tinyConfig(0.7));
   updater.waitIdle();
   EXPECT_EQ(updater.lastError(), "no device for albedo above 0.5");
-  EXPECT_DOUBLE_EQ(updater.current()->config().medium.ground_albedo, 0.1);
+  EXPECT_DOUBLE_EQ(updater.current()->config().medium.groundAlbedo, 0.1);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// The night probe (`skyig probe --lat --lon --utc`, sky/night_probe.h): the function
-// the CLI prints, on a physical atmosphere.
+// The night probe (`skyig probe --lat --lon --utc`, sky/night_probe.h): the values the CLI
+// prints, on a physical atmosphere (their JSON: tests/services/cli_test.cpp).
 #include "sky/night/moon_disc.h"
 #include "sky/night_probe.h"
 #include "sky/sky_state.h"
@@ -7,9 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <string>
 
 using namespace skyig;
 using namespace skyig::sky;
@@ -25,7 +27,7 @@ std::shared_ptr<const atmosphere::AtmosphereModel> model() {
   static const auto m = [] {
     atmosphere::ModelConfig c = atmosphere::testing::smallEarthConfig();
     c.sizes = atmosphere::testing::tinySizes();
-    c.options.scattering_orders = 2;
+    c.options.scatteringOrders = 2;
     return std::make_shared<const atmosphere::AtmosphereModel>(atmosphere::testing::cachedModel(c));
   }();
   return m;
@@ -52,11 +54,19 @@ SkyState physicalState(const ObserverState& o) {
   return buildSkyState(o, c);
 }
 
-nlohmann::json probeViews(const SkyState& s, std::vector<atmosphere::ProbeView> views) {
+NightProbeResult probeViews(const SkyState& s, std::vector<atmosphere::ProbeView> views) {
   atmosphere::ProbeRequest r;
-  r.altitude_m = s.observer.heightM;
+  r.altitudeM = s.observer.heightM;
   r.views = std::move(views);
   return sky::nightProbe(*model(), s, r);
+}
+
+// The light of that name in a view; a test failure (and darkness) when there is none.
+atmosphere::ProbeLight lightOf(const NightProbeView& view, const std::string& name) {
+  const auto l = std::find_if(view.lights.begin(), view.lights.end(), [&](const NamedProbeLight& n) { return n.name == name; });
+  if (l != view.lights.end()) return l->light;
+  ADD_FAILURE() << "no light named " << name;
+  return {};
 }
 
 }  // namespace
@@ -66,42 +76,48 @@ nlohmann::json probeViews(const SkyState& s, std::vector<atmosphere::ProbeView> 
 TEST(NightProbe, MoonlessZenithLuminance) {
   const SkyState s = physicalState(darkSiteSunThirtyDown());
   ASSERT_LT(s.ephemeris->moon.altitudeRad, -10.0 * kDeg);  // moonless
-  const nlohmann::json out = probeViews(s, {{0.0, 0.0}});
-  const nlohmann::json& zenith = out["views"][0];
-  const double total = zenith["total"]["luminance_cd_m2"].get<double>();
+  const NightProbeResult out = probeViews(s, {{0.0, 0.0}});
+  const NightProbeView& zenith = out.views.at(0);
+  const double total = zenith.total.luminance;
   EXPECT_GT(total, 1e-4);
   EXPECT_LT(total, 4e-4);
   // The night's own light, not twilight, makes it.
-  EXPECT_LT(zenith["sunlit_sky"]["luminance_cd_m2"].get<double>(), 0.01 * total);
-  EXPECT_NEAR(out["sun"]["zenith_deg"].get<double>(), 120.0, 0.5);
+  EXPECT_LT(lightOf(zenith, "sunlit_sky").luminance, 0.01 * total);
+  EXPECT_NEAR(out.day.sunZenithDeg, 120.0, 0.5);
 }
 
-// Every key the issue names, each with luminance and colour; the total is their sum.
+// Every light the issue names, in that order, each with luminance and colour; the total is
+// their sum.
 TEST(NightProbe, ComponentsAndTheirTotal) {
   const SkyState s = physicalState(darkSiteSunThirtyDown());
-  const nlohmann::json out = probeViews(s, {{0.0, 0.0}, {60.0, 90.0}, {85.0, 250.0}, {100.0, 0.0}});
-  for (const nlohmann::json& v : out["views"]) {
+  const NightProbeResult out = probeViews(s, {{0.0, 0.0}, {60.0, 90.0}, {85.0, 250.0}, {100.0, 0.0}});
+  ASSERT_EQ(out.views.size(), 4u);
+  ASSERT_EQ(out.day.views.size(), 4u);  // the day probe's values, one per view
+  for (std::size_t i = 0; i < out.views.size(); ++i) {
+    const NightProbeView& v = out.views[i];
+    const atmosphere::ProbeViewResult& day = out.day.views[i];
+    std::vector<std::string> names;
+    for (const NamedProbeLight& l : v.lights) names.push_back(l.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"sunlit_sky", "moonlit_sky", "moon", "stars_planets", "milky_way",
+                                               "zodiacal_light", "airglow"}));
     glm::dvec3 sum(0.0);
-    for (const char* key : {"sunlit_sky", "moonlit_sky", "moon", "stars_planets", "milky_way", "zodiacal_light", "airglow"}) {
-      ASSERT_TRUE(v.contains(key)) << key;
-      const auto& rgb = v[key]["rgb_cd_m2"];
-      const glm::dvec3 c(rgb[0].get<double>(), rgb[1].get<double>(), rgb[2].get<double>());
-      EXPECT_NEAR(v[key]["luminance_cd_m2"].get<double>(), 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b, 1e-15);
-      for (int k = 0; k < 3; ++k) EXPECT_TRUE(std::isfinite(c[k]));
+    for (const NamedProbeLight& l : v.lights) {
+      const glm::dvec3& c = l.light.rec709;
+      EXPECT_NEAR(l.light.luminance, 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b, 1e-15) << l.name;
+      for (int k = 0; k < 3; ++k) EXPECT_TRUE(std::isfinite(c[k])) << l.name;
       sum += c;
     }
-    if (!v["ground"].is_null()) {
-      const auto& g = v["ground"]["rgb_cd_m2"];
-      sum += glm::dvec3(g[0].get<double>(), g[1].get<double>(), g[2].get<double>());
-    }
-    const auto& t = v["total"]["rgb_cd_m2"];
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(t[k].get<double>(), sum[k], 1e-12 + 1e-9 * std::abs(sum[k]));
-    EXPECT_EQ(v["sunlit_sky"]["rgb_cd_m2"], v["sky"]["rgb_cd_m2"]);  // one sky, counted once
-    // The day probe's keys are still there.
-    for (const char* day : {"sky", "sun", "ground", "transmittance"}) EXPECT_TRUE(v.contains(day)) << day;
+    if (day.ground) sum += day.ground->rec709;
+    EXPECT_FALSE(day.sun);  // 30 degrees down
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(v.total.rec709[k], sum[k], 1e-12 + 1e-9 * std::abs(sum[k]));
+    EXPECT_EQ(lightOf(v, "sunlit_sky").rec709, day.sky.rec709);  // one sky, counted once
   }
   // Below the horizon the ground hides the night's sources.
-  EXPECT_EQ(out["views"][3]["airglow"]["luminance_cd_m2"].get<double>(), 0.0);
+  EXPECT_EQ(lightOf(out.views[3], "airglow").luminance, 0.0);
+  // The time and place the lights are for.
+  EXPECT_EQ(out.utc.day, 18);
+  EXPECT_EQ(out.latitudeDeg, 47.26);
+  EXPECT_EQ(out.longitudeDeg, 11.34);
 }
 
 TEST(NightProbe, NeedsATimeAndPlace) {
@@ -135,7 +151,6 @@ SkyState fullMoonHigh() {
 
 double zenithDeg(const glm::dvec3& enu) { return std::acos(enu.z) / kDeg; }
 double azimuthDeg(const glm::dvec3& enu) { return std::atan2(enu.x, enu.y) / kDeg; }
-double luminanceOf(const nlohmann::json& view, const char* key) { return view[key]["luminance_cd_m2"].get<double>(); }
 
 }  // namespace
 
@@ -149,29 +164,31 @@ TEST(NightProbe, FullMoonDiscMoonlitSkyAndIlluminance) {
   const auto& disc = s.moonDisc;
   ASSERT_NE(disc, nullptr);
   atmosphere::ProbeRequest r;
-  r.altitude_m = s.observer.heightM;
+  r.altitudeM = s.observer.heightM;
   r.irradiance = true;
   r.views = {{zenithDeg(disc->centreSeen), azimuthDeg(disc->centreSeen)},
              {zenithDeg(disc->centreSeen) + 5.0, azimuthDeg(disc->centreSeen)}};
-  const nlohmann::json out = sky::nightProbe(*model(), s, r);
-  const nlohmann::json& onMoon = out["views"][0];
-  const nlohmann::json& beside = out["views"][1];
-  EXPECT_GT(luminanceOf(onMoon, "moon"), 1200.0);
-  EXPECT_LT(luminanceOf(onMoon, "moon"), 2600.0);
-  EXPECT_EQ(luminanceOf(beside, "moon"), 0.0);
+  const NightProbeResult out = sky::nightProbe(*model(), s, r);
+  const NightProbeView& onMoon = out.views.at(0);
+  const NightProbeView& beside = out.views.at(1);
+  EXPECT_GT(lightOf(onMoon, "moon").luminance, 1200.0);
+  EXPECT_LT(lightOf(onMoon, "moon").luminance, 2600.0);
+  EXPECT_EQ(lightOf(beside, "moon").luminance, 0.0);
   // The moonlit sky five degrees from a full moon: ~1e-2 cd/m^2, far above the moonless night's
   // 2e-4, blue over red as the day sky.
-  const double moonlit = luminanceOf(beside, "moonlit_sky");
+  const double moonlit = lightOf(beside, "moonlit_sky").luminance;
   EXPECT_GT(moonlit, 2e-3);
   EXPECT_LT(moonlit, 0.1);
-  EXPECT_GT(beside["moonlit_sky"]["rgb_cd_m2"][2].get<double>(), beside["moonlit_sky"]["rgb_cd_m2"][0].get<double>());
-  EXPECT_GT(luminanceOf(beside, "total"), luminanceOf(beside, "moonlit_sky"));
-  const double moonLux = out["irradiance"]["moon_lux"].get<double>();
+  EXPECT_GT(lightOf(beside, "moonlit_sky").rec709.b, lightOf(beside, "moonlit_sky").rec709.r);
+  EXPECT_GT(beside.total.luminance, moonlit);
+  ASSERT_TRUE(out.irradiance);
+  ASSERT_TRUE(out.day.irradiance);
+  const double moonLux = out.irradiance->moonLux;
   EXPECT_NEAR(moonLux, moonIlluminanceLux(s), 1e-12);
   EXPECT_GT(moonLux, 0.07);  // 0.125 lx x sin(>50 deg) x T
   EXPECT_LT(moonLux, 0.13);
   // The sky the moon lights adds a fraction of the disc's own light, as the day sky does the sun's.
-  const double skyLux = out["irradiance"]["moonlit_sky_lux"].get<double>();
+  const double skyLux = out.irradiance->moonlitSkyLux;
   EXPECT_GT(skyLux, 0.02 * moonLux);
   EXPECT_LT(skyLux, 0.5 * moonLux);
 }
@@ -186,10 +203,11 @@ TEST(NightProbe, StarsAndPlanetsTowardTheBrightestSource) {
     for (const night::PointSource& p : *list)
       if (p.direction.z > std::sin(20.0 * kDeg) && (!brightest || p.illuminanceLux > brightest->illuminanceLux)) brightest = &p;
   ASSERT_NE(brightest, nullptr);
-  const nlohmann::json out = probeViews(s, {{zenithDeg(brightest->direction), azimuthDeg(brightest->direction)},
-                                            {zenithDeg(brightest->direction) - 3.0, azimuthDeg(brightest->direction)}});
+  const NightProbeResult out = probeViews(s, {{zenithDeg(brightest->direction), azimuthDeg(brightest->direction)},
+                                              {zenithDeg(brightest->direction) - 3.0, azimuthDeg(brightest->direction)}});
   const double cone = 2.0 * std::numbers::pi * (1.0 - std::cos(0.5 * kDeg));
-  EXPECT_GE(luminanceOf(out["views"][0], "stars_planets"), brightest->illuminanceLux / cone * 0.999);
-  EXPECT_GT(luminanceOf(out["views"][0], "stars_planets"), 1e-3);  // brighter than magnitude ~1.5
-  EXPECT_LT(luminanceOf(out["views"][1], "stars_planets"), 0.1 * luminanceOf(out["views"][0], "stars_planets"));
+  const double toward = lightOf(out.views.at(0), "stars_planets").luminance;
+  EXPECT_GE(toward, brightest->illuminanceLux / cone * 0.999);
+  EXPECT_GT(toward, 1e-3);  // brighter than magnitude ~1.5
+  EXPECT_LT(lightOf(out.views.at(1), "stars_planets").luminance, 0.1 * toward);
 }

@@ -30,7 +30,7 @@ const ephemeris::SkyEphemeris& night() {
 }
 
 const night::StarCatalogue& catalogue() {
-  static const night::StarCatalogue c(night_testing::catalog(), {2026, 1, 15, 0.0});
+  static const night::StarCatalogue c(night_testing::catalogue(), {2026, 1, 15, 0.0});
   return c;
 }
 

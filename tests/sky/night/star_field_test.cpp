@@ -58,9 +58,9 @@ PointSource onlyStar(const ephemeris::Star& star, const StarFieldOptions& option
 // Sirius (V = -1.46): 9.7e-6 lx above the atmosphere (Allen: V = 0 is 2.54e-6 lx), and eq. 11
 // of paper 000 gives 9.6e-8 W/m^2; the two are the same law, 1 W/m^2 of eq. 11 = 101.6 lx.
 TEST(StarPhotometry, SiriusIlluminanceFromItsMagnitude) {
-  const auto sirius = std::find_if(night_testing::catalog().begin(), night_testing::catalog().end(),
+  const auto sirius = std::find_if(night_testing::catalogue().begin(), night_testing::catalogue().end(),
                                    [](const ephemeris::Star& s) { return s.hr == 2491; });
-  ASSERT_NE(sirius, night_testing::catalog().end());
+  ASSERT_NE(sirius, night_testing::catalogue().end());
   EXPECT_NEAR(sirius->vmag, -1.46, 0.01);
   const double lux = illuminanceFromVMagnitude(sirius->vmag);
   EXPECT_NEAR(lux, 9.7e-6, 0.1e-6);
@@ -82,7 +82,7 @@ TEST(StarPhotometry, SiriusIlluminanceFromItsMagnitude) {
 // part (e.g. Schlyter, "Radiometry and photometry in astronomy").
 TEST(StarPhotometry, CatalogueSumAgainstTableOneAndPublishedStarlight) {
   double sum = 0.0;
-  for (const ephemeris::Star& s : night_testing::catalog()) sum += ephemeris::irradianceFromMagnitude(s.vmag);
+  for (const ephemeris::Star& s : night_testing::catalogue()) sum += ephemeris::irradianceFromMagnitude(s.vmag);
   const double starlightRatio = sum / 3.0e-8;
   const double airglowLux = std::numbers::pi * illuminanceFromVMagnitude(22.0) / std::pow(kDeg / 3600.0, 2.0);
   const double airglowRatio = airglowLux / luxPerEq11Watt() / 5.1e-8;
@@ -90,7 +90,7 @@ TEST(StarPhotometry, CatalogueSumAgainstTableOneAndPublishedStarlight) {
   EXPECT_LT(starlightRatio, 300.0);
   EXPECT_GT(airglowRatio, 30.0);
   EXPECT_LT(airglowRatio, 300.0);
-  const StarCatalogue catalogue(night_testing::catalog(), {2026, 1, 15, 0.0});
+  const StarCatalogue catalogue(night_testing::catalogue(), {2026, 1, 15, 0.0});
   double lux = 0.0;
   for (const CatalogueStar& s : catalogue.stars()) lux += s.illuminanceLux;
   EXPECT_NEAR(lux, sum * luxPerEq11Watt(), 1e-9 * lux);
@@ -146,7 +146,7 @@ TEST(StarField, ExtinctionDimsAndReddensNearTheHorizon) {
 TEST(StarField, IntensityScalesAndZeroHides) {
   const ephemeris::Star star = night_testing::starAt(night(), 10.0, 40.0, 2.0, 0.5);
   EXPECT_NEAR(onlyStar(star, steady(0.5)).illuminanceLux, 0.5 * onlyStar(star).illuminanceLux, 1e-15);
-  const StarCatalogue catalogue(night_testing::catalog(), {2026, 1, 15, 0.0});
+  const StarCatalogue catalogue(night_testing::catalogue(), {2026, 1, 15, 0.0});
   const StarField none = buildStarField(&catalogue, night(), extinction(), steady(0.0));
   EXPECT_TRUE(none.stars.empty());
   EXPECT_TRUE(none.planets.empty());
@@ -209,7 +209,7 @@ TEST(StarField, PlanetsCarryTheirMagnitudesAndColours) {
 // The probe's cone: Sirius' illuminance over the solid angle of a 0.5 degree cone around it,
 // nothing a degree away, and the sum of every source in a cone wide enough to hold them all.
 TEST(StarLuminance, ConeAroundASourceHoldsItsIlluminance) {
-  const StarCatalogue catalogue(night_testing::catalog(), {2026, 1, 15, 0.0});
+  const StarCatalogue catalogue(night_testing::catalogue(), {2026, 1, 15, 0.0});
   const StarField field = buildStarField(&catalogue, night(), extinction(), steady());
   const PointSource brightest = *std::max_element(field.stars.begin(), field.stars.end(),
       [](const PointSource& a, const PointSource& b) { return a.illuminanceLux < b.illuminanceLux; });

@@ -174,7 +174,7 @@ TEST_F(StarPassGl, StarFieldIntensityZeroHidesTheStars) {
   ObserverState o;
   o.utc = {2026, 1, 15, 0.0};
   SkyConditions conditions;
-  conditions.starCatalogue = std::make_shared<const night::StarCatalogue>(night_testing::catalog(), o.utc);
+  conditions.starCatalogue = std::make_shared<const night::StarCatalogue>(night_testing::catalogue(), o.utc);
   auto sum = [&](double intensity) {
     conditions.starFieldIntensity = intensity;
     renderer.draw(buildSkyState(o, conditions, SunOverride{0.0, -30.0}), c);

@@ -20,7 +20,7 @@ using skyig::night_testing::kDeg;
 namespace {
 
 const ephemeris::Star& star(int hr) {
-  return *std::find_if(night_testing::catalog().begin(), night_testing::catalog().end(),
+  return *std::find_if(night_testing::catalogue().begin(), night_testing::catalogue().end(),
                        [hr](const ephemeris::Star& s) { return s.hr == hr; });
 }
 
@@ -39,7 +39,7 @@ TEST(StarrySky, OrionFromInnsbruckInJanuary) {
       atmosphere::loadOrPrecompute(config, std::filesystem::path(SKYIG_BINARY_DIR) / "atmosphere-test-cache"));
   ObserverState o;
   o.utc = {2026, 1, 15, 21 * 3600.0};
-  c.starCatalogue = std::make_shared<const night::StarCatalogue>(night_testing::catalog(), o.utc);
+  c.starCatalogue = std::make_shared<const night::StarCatalogue>(night_testing::catalogue(), o.utc);
   const SkyState probe = buildSkyState(o, c);
   ASSERT_LT(probe.sunAltitude, -30.0 * kDeg);
   const ephemeris::BodyPosition rigel = ephemeris::starPosition(star(1713), *probe.ephemeris);

@@ -1,7 +1,7 @@
 #pragma once
 // Shared by the star tests: the real catalogue and stars placed at chosen horizon coordinates.
 #include "ephemeris/ephemeris.h"
-#include "ephemeris/star_catalog.h"
+#include "ephemeris/star_catalogue.h"
 #include "sky/night/star_catalogue.h"
 
 #include <cmath>
@@ -14,10 +14,10 @@ namespace skyig::night_testing {
 
 inline constexpr double kDeg = std::numbers::pi / 180.0;
 
-inline std::string catalogPath() { return std::string(SKYIG_SOURCE_DIR) + "/ephemeris/data/bsc5.csv"; }
+inline std::string cataloguePath() { return std::string(SKYIG_SOURCE_DIR) + "/ephemeris/data/bsc5.csv"; }
 
-inline const std::vector<ephemeris::Star>& catalog() {
-  static const std::vector<ephemeris::Star> stars = ephemeris::loadStarCatalog(catalogPath());
+inline const std::vector<ephemeris::Star>& catalogue() {
+  static const std::vector<ephemeris::Star> stars = ephemeris::loadStarCatalogue(cataloguePath());
   return stars;
 }
 

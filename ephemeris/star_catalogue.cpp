@@ -1,4 +1,4 @@
-#include "ephemeris/star_catalog.h"
+#include "ephemeris/star_catalogue.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -48,7 +48,7 @@ double parseNumber(const std::string& path, int line, const std::string& column,
 }
 }  // namespace
 
-std::vector<Star> loadStarCatalog(const std::string& path) {
+std::vector<Star> loadStarCatalogue(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ": cannot open the star catalogue");
   std::vector<Star> stars;

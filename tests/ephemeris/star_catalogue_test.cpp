@@ -1,5 +1,5 @@
 // The Bright Star Catalogue loader: the shipped file and corrupt ones.
-#include "ephemeris/star_catalog.h"
+#include "ephemeris/star_catalogue.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 using namespace skyig::ephemeris;
 
 namespace {
-std::string catalogPath() { return std::string(SKYIG_SOURCE_DIR) + "/ephemeris/data/bsc5.csv"; }
+std::string cataloguePath() { return std::string(SKYIG_SOURCE_DIR) + "/ephemeris/data/bsc5.csv"; }
 
 std::string writeTemp(const std::string& name, const std::string& text) {
   const std::string path = std::string(SKYIG_BINARY_DIR) + "/" + name;
@@ -25,7 +25,7 @@ constexpr const char* kHeader =
 
 void expectErrorMentions(const std::string& path, const std::string& what) {
   try {
-    loadStarCatalog(path);
+    loadStarCatalogue(path);
     FAIL() << "no error for " << path;
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
@@ -33,8 +33,8 @@ void expectErrorMentions(const std::string& path, const std::string& what) {
 }
 }  // namespace
 
-TEST(StarCatalog, LoadsTheShippedCatalogue) {
-  const std::vector<Star> stars = loadStarCatalog(catalogPath());
+TEST(StarCatalogue, LoadsTheShippedCatalogue) {
+  const std::vector<Star> stars = loadStarCatalogue(cataloguePath());
   EXPECT_EQ(stars.size(), 9096u);  // 9110 HR numbers less the 14 non-stellar entries
   const std::vector<Star> bright = brightestStars(stars, 3);
   // Sirius (HR 2491, V -1.46), Canopus (HR 2326, -0.72), then Arcturus (HR 5340, -0.04).
@@ -51,9 +51,9 @@ TEST(StarCatalog, LoadsTheShippedCatalogue) {
   EXPECT_NEAR(*sirius.bMinusV, 0.0, 0.02);
 }
 
-TEST(StarCatalog, ProperMotionOf61CygniA) {
+TEST(StarCatalogue, ProperMotionOf61CygniA) {
   // 61 Cygni A (HR 8085) moves 5.2"/yr, among the fastest stars of the catalogue.
-  const std::vector<Star> stars = loadStarCatalog(catalogPath());
+  const std::vector<Star> stars = loadStarCatalogue(cataloguePath());
   const Star* cyg = nullptr;
   for (const Star& s : stars)
     if (s.hr == 8085) cyg = &s;
@@ -64,7 +64,7 @@ TEST(StarCatalog, ProperMotionOf61CygniA) {
   EXPECT_NEAR(moved / total, 100.0, 0.01);
 }
 
-TEST(StarCatalog, ClearErrorsForBadFiles) {
+TEST(StarCatalogue, ClearErrorsForBadFiles) {
   expectErrorMentions("/nonexistent/bsc5.csv", "/nonexistent/bsc5.csv");
   expectErrorMentions(writeTemp("stars_bad_header.csv", "# c\nHR,RA\n1,2\n"), "stars_bad_header.csv:2: unexpected header");
   expectErrorMentions(writeTemp("stars_bad_number.csv", std::string(kHeader) + "1,1.29,45.2,-0.012,-0.018,6.70,0.07,,,-18\n"

@@ -23,7 +23,7 @@ struct Star {
 // Reads the catalogue CSV (lines starting with '#' are comments, the first other line is the
 // header). Throws std::runtime_error naming the file and line for a missing file, a wrong
 // header, a malformed or out-of-range field. Returns the stars sorted by HR number.
-std::vector<Star> loadStarCatalog(const std::string& path);
+std::vector<Star> loadStarCatalogue(const std::string& path);
 
 // Unit vector of a star at TT Julian date jdTt with its proper motion applied (J2000 axes,
 // linear space motion; radial velocity and parallax neglected: < 0.01 arcsec within 1900-2100 for

@@ -1,0 +1,74 @@
+#include "services/commands/probe_json.h"
+
+#include <string>
+#include <utility>
+
+#include "ephemeris/time.h"
+
+namespace skyig::services {
+
+namespace {
+
+// Values at the probe's wavelengths, keyed by the wavelength in whole nm ("440", ...).
+template <std::size_t N>
+nlohmann::json byWavelength(const std::array<double, N>& values) {
+  static_assert(N == atmosphere::kProbeWavelengthsNm.size());
+  nlohmann::json j = nlohmann::json::object();
+  for (std::size_t i = 0; i < N; ++i) j[std::to_string(static_cast<int>(atmosphere::kProbeWavelengthsNm[i]))] = values[i];
+  return j;
+}
+
+nlohmann::json spectralLightJson(const atmosphere::SpectralProbeLight& light) {
+  nlohmann::json j = probeLightJson(light);
+  j["spectral_radiance"] = byWavelength(light.spectralRadiance);
+  return j;
+}
+
+nlohmann::json optionalLightJson(const std::optional<atmosphere::SpectralProbeLight>& light) {
+  return light ? spectralLightJson(*light) : nlohmann::json(nullptr);
+}
+
+}  // namespace
+
+nlohmann::json probeLightJson(const atmosphere::ProbeLight& light) {
+  return {{"luminance_cd_m2", light.luminance}, {"rgb_cd_m2", {light.rec709.r, light.rec709.g, light.rec709.b}}};
+}
+
+nlohmann::json probeJson(const atmosphere::ProbeResult& result) {
+  nlohmann::json out;
+  out["model"] = "physical";
+  out["altitude_m"] = result.altitudeM;
+  out["sun"] = {{"zenith_deg", result.sunZenithDeg}, {"azimuth_deg", result.sunAzimuthDeg}};
+  out["views"] = nlohmann::json::array();
+  for (const atmosphere::ProbeViewResult& v : result.views) {
+    nlohmann::json view = {{"zenith_deg", v.view.zenithDeg},
+                           {"azimuth_deg", v.view.azimuthDeg},
+                           {"sky", spectralLightJson(v.sky)},
+                           {"sun", optionalLightJson(v.sun)},
+                           {"ground", optionalLightJson(v.ground)},
+                           {"transmittance", byWavelength(v.transmittance)}};
+    out["views"].push_back(std::move(view));
+  }
+  if (result.irradiance)
+    out["irradiance"] = {{"direct_sun_lux", result.irradiance->directSunLux}, {"sky_lux", result.irradiance->skyLux}};
+  return out;
+}
+
+nlohmann::json nightProbeJson(const sky::NightProbeResult& result) {
+  nlohmann::json out = probeJson(result.day);
+  for (std::size_t i = 0; i < result.views.size(); ++i) {
+    nlohmann::json& view = out["views"].at(i);
+    for (const sky::NamedProbeLight& l : result.views[i].lights) view[l.name] = probeLightJson(l.light);
+    view["total"] = probeLightJson(result.views[i].total);
+  }
+  if (result.irradiance) {
+    out["irradiance"]["moon_lux"] = result.irradiance->moonLux;
+    out["irradiance"]["moonlit_sky_lux"] = result.irradiance->moonlitSkyLux;
+  }
+  out["utc"] = ephemeris::formatIso8601Utc(result.utc);
+  out["latitude_deg"] = result.latitudeDeg;
+  out["longitude_deg"] = result.longitudeDeg;
+  return out;
+}
+
+}  // namespace skyig::services

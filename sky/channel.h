@@ -7,7 +7,8 @@
 
 namespace skyig::sky {
 
-// Paper 000 eq. 17: L_d = L_amb + L_dmax n^gamma, and the viewer's adaptation to the display.
+// Wang, Ji & Zhang 2011, eq. 17 (after Tumblin & Rushmeier 1993): L_d = L_amb + L_dmax n^gamma,
+// and the viewer's adaptation to the display.
 struct DisplayParams {
   double maxLuminance = 100.0;        // L_dmax, cd/m^2
   double ambientLuminance = 0.1;      // L_amb, cd/m^2

@@ -1,5 +1,5 @@
 #pragma once
-// `skyig probe` at night (issue 6, item 7): for a time and place, every view reports each light
+// `skyig probe` at night (docs/night-sky.md): for a time and place, every view reports each light
 // source separately and their sum, each as {"luminance_cd_m2", "rgb_cd_m2"} (linear Rec.709
 // scaled so that Y is cd/m^2):
 //   sunlit_sky      the physical atmosphere's sky lit by the sun (a copy of the day probe's "sky")

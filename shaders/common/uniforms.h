@@ -23,7 +23,7 @@ SKYIG_CONST SKYIG_BINDING_SKY = 1;
 SKYIG_CONST SKYIG_BINDING_TONE = 2;
 SKYIG_CONST SKYIG_UNIT_HDR_IMAGE = 0;
 
-// Per channel and frame: how pixels map to view rays (paper 000 eq. 22).
+// Per channel and frame: how pixels map to view rays (Wang, Ji & Zhang 2011, eq. 22).
 SKYIG_UBO_BEGIN(FrameBlock, 0)
   SKYIG_MAT4 ndcToWorld;  // (x_ndc, y_ndc, 1) -> ENU view direction (unnormalised); mat3 in 4x4
   SKYIG_VEC4 viewport;    // width, height, 1/width, 1/height

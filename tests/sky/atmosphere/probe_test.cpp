@@ -22,7 +22,7 @@ TEST(AtmosphereProbe, ComponentsPerViewAreConsistent) {
   const auto& zenith = j["views"][0];
   EXPECT_TRUE(zenith["sun"].is_null());
   EXPECT_TRUE(zenith["ground"].is_null());
-  // Vertical transmittance at 550 nm (sky-model-facts.md: 0.8677).
+  // Vertical transmittance at 550 nm (Bruneton 2017 defaults: 0.8677).
   EXPECT_NEAR(zenith["transmittance"]["550"].get<double>(), 0.8677, 0.0015);
   // Y of the Rec.709 triple is the luminance (Rec.709 luminance weights).
   const auto& rgb = zenith["sky"]["rgb_cd_m2"];

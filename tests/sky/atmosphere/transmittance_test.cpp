@@ -1,6 +1,6 @@
-// Transmittance tables against direct numerical quadrature of the optical depth (issue 5:
-// within 0.5%), and the reference values of a clear Earth atmosphere
-// (../shared/docs/sky-model-facts.md).
+// Transmittance tables against direct numerical quadrature of the optical depth (within
+// 0.5%), and the reference values of a clear Earth atmosphere (those of Bruneton's 2017
+// implementation with its default parameters).
 #include <gtest/gtest.h>
 
 #include <cmath>

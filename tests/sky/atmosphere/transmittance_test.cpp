@@ -12,7 +12,7 @@
 namespace skyig::atmosphere {
 namespace {
 
-// One group: the paper's three wavelengths and one in the ozone Chappuis band's peak.
+// One group: Bruneton & Neyret 2008's three wavelengths and one in the ozone Chappuis band's peak.
 const std::array<double, 4> kWavelengths = {680.0, 550.0, 440.0, 600.0};
 
 class TransmittanceTest : public ::testing::Test {

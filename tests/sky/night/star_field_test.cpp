@@ -56,7 +56,8 @@ PointSource onlyStar(const ephemeris::Star& star, const StarFieldOptions& option
 }  // namespace
 
 // Sirius (V = -1.46): 9.7e-6 lx above the atmosphere (Allen: V = 0 is 2.54e-6 lx), and eq. 11
-// of Wang, Ji & Zhang 2011 (corrected) gives 9.6e-8 W/m^2; the two are the same law, 1 W/m^2 of eq. 11 = 101.6 lx.
+// of Wang, Ji & Zhang 2011 (corrected) gives 9.6e-8 W/m^2; the two are the same law, 1 W/m^2 of
+// eq. 11 = 101.6 lx.
 TEST(StarPhotometry, SiriusIlluminanceFromItsMagnitude) {
   const auto sirius = std::find_if(night_testing::catalog().begin(), night_testing::catalog().end(),
                                    [](const ephemeris::Star& s) { return s.hr == 2491; });

@@ -1,5 +1,5 @@
 # Every dependency is a Debian 12 package (deploy/setup.sh installs them); the CMake names
-# below are the ones Debian ships (../shared/docs/platform-notes.md, section 1).
+# below are the config files and Find modules those packages install.
 set(OpenGL_GL_PREFERENCE GLVND)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
 find_package(glfw3 3.3 REQUIRED)

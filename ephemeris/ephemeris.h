@@ -45,7 +45,7 @@ struct BodyPosition {
 
 struct SunState : BodyPosition {
   double angularRadiusRad = 0.0;
-  double irradianceWm2 = 0.0;  // eq. 11 of paper 000 from the sun's apparent V magnitude
+  double irradianceWm2 = 0.0;  // Wang, Ji & Zhang 2011, eq. 11 (corrected), sun's V magnitude
 };
 
 struct MoonState : BodyPosition {
@@ -55,7 +55,7 @@ struct MoonState : BodyPosition {
   // zenith, counterclockwise as the observer sees the sky (towards the left), [0, 2 pi).
   double brightLimbAngleRad = 0.0;
   double angularRadiusRad = 0.0;
-  double irradianceWm2 = 0.0;        // eq. 9 of paper 000 (corrected)
+  double irradianceWm2 = 0.0;        // Wang, Ji & Zhang 2011, eq. 9 (corrected)
 };
 
 struct PlanetState : BodyPosition {
@@ -63,7 +63,7 @@ struct PlanetState : BodyPosition {
   double magnitude = 0.0;            // apparent V (Mallama & Hilton 2018)
   double phaseAngleRad = 0.0;        // sun-planet-observer angle
   double illuminatedFraction = 0.0;
-  double irradianceWm2 = 0.0;        // eq. 11 of paper 000 (corrected)
+  double irradianceWm2 = 0.0;        // Wang, Ji & Zhang 2011, eq. 11 (corrected)
 };
 
 struct SkyEphemeris {

@@ -1,6 +1,9 @@
 #pragma once
-// Night-sky irradiances of paper 000 (Wang, Ji & Zhang), eq. 9-12, corrected as in
-// ../shared/seeds/NOTES.md, after Jensen et al. (2001), "A physically-based night sky model".
+// Night-sky irradiances of Wang, Ji & Zhang 2011, "Realistic sky rendering in real time",
+// eq. 9-12, after Jensen, Durand, Stark, Premoze, Dorsey & Shirley 2001, "A physically-based
+// night sky model", with two misprints of the former corrected: eq. 9's last factor is
+// 1 - sin(phi/2) tan(phi/2) ln(cot(phi/4)) (printed with cos), and eq. 11 is
+// E = 10^(-(m + 19) / 2.5) (printed 10^(-m - 19)), the inverse of eq. 10.
 
 namespace skyig::ephemeris {
 

@@ -27,8 +27,9 @@ glm::dmat3 bodyToEnu(const Attitude& attitude);
 // which is itself a yaw/pitch/roll in the body frame.
 glm::dmat3 eyeToEnu(const Attitude& ownship, const Attitude& channelOffset);
 
-// Paper 000 eq. 22 as a matrix: (x_ndc, y_ndc, 1) -> the (unnormalised) ENU direction of the
-// view ray through that point of the far plane. x_ndc grows to the right, y_ndc upwards.
+// Wang, Ji & Zhang 2011, eq. 22 (the view ray from the inverse projection) as a matrix:
+// (x_ndc, y_ndc, 1) -> the (unnormalised) ENU direction of the view ray through that point of
+// the far plane. x_ndc grows to the right, y_ndc upwards.
 glm::dmat3 ndcToWorld(const glm::dmat3& eyeToEnu, const Frustum& frustum);
 
 // The unit ENU view ray through the centre of pixel (column, row), row 0 at the top.

@@ -13,7 +13,8 @@ enum class ToneOperator {
   TumblinRushmeier,  // Tumblin & Rushmeier 1993: brightness matching
 };
 
-// Paper 000 eq. 17: L_d = L_amb + L_dmax n^gamma, and the viewer's adaptation to the display.
+// Wang, Ji & Zhang 2011, eq. 17 (after Tumblin & Rushmeier 1993): L_d = L_amb + L_dmax n^gamma,
+// and the viewer's adaptation to the display.
 struct DisplayParams {
   ToneOperator toneOperator = ToneOperator::TumblinRushmeier;
   double maxLuminance = 100.0;        // L_dmax, cd/m^2

@@ -1,5 +1,5 @@
 #pragma once
-// `skyig probe` at night (issue 6, item 7): for a time and place, every view reports each light
+// `skyig probe` at night (docs/night-sky.md): for a time and place, every view reports each light
 // source separately and their sum, each as luminance and linear Rec.709 (scaled so that Y is
 // cd/m^2), under these names:
 //   sunlit_sky      the physical atmosphere's sky lit by the sun (the day probe's "sky")

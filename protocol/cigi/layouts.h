@@ -1,9 +1,10 @@
 #pragma once
 // CIGI 3.3 packet layouts, written once and used both ways: layout(io, packet) visits every
 // field with its byte offset, and the IO object either packs (cigi/encoder.cpp) or unpacks
-// (cigi/decoder.cpp). Offsets and bit positions follow the ICD tables (SISO-STD-013, CIGI 3.3;
-// cross-checked with the CIGI Class Library 3.3.3 Pack() functions and Wireshark's
-// packet-cigi.c, see ../shared/docs/cigi-canaerospace-facts.md section 1.5). Bits count from
+// (cigi/decoder.cpp). Offsets and bit positions follow the ICD tables (CIGI ICD 3.3, the
+// Boeing CIGI 3.3 Interface Control Document, sections 4.1 host-to-IG and 4.2 IG-to-host
+// packets; cross-checked with the CIGI Class Library 3.3.3 Pack() functions and Wireshark's
+// epan/dissectors/packet-cigi.c). Bits count from
 // 0 = least significant. Bytes 0 and 1 (packet id and size) are written by the framework.
 // The tests pin each layout with hand-written bytes (tests/protocol/cigi_layout_test.cpp).
 #include <type_traits>

@@ -6,7 +6,7 @@
 // Class Library 4.0 port (captainflasmr/cigi-ccl_4_0: CigiIGCtrlV4, CigiSOFV4,
 // CigiEntityPositionCtrlV4, CigiCelestialCtrlV4, CigiAtmosCtrlV4, CigiViewCtrlV4,
 // CigiViewDefV4 Pack functions); the
-// SISO text itself was not available (../shared/docs/cigi-canaerospace-facts.md 1.6, 5).
+// SISO text itself (SISO-STD-013-2014) was not available to check them against.
 #include <type_traits>
 
 #include "protocol/cigi/packets.h"
@@ -91,8 +91,8 @@ void layout4(IO& io, P& m) {
   io.f32(32, m.yawDeg);
 }
 
-// The floats start at offset 12 in the CCL 4.0 Pack function (the facts page's "from 8" is
-// a slip: bytes 9-11 are reserved after the two flag bytes).
+// The floats start at offset 12 in the CCL 4.0 Pack function, not 8: bytes 9-11 are reserved
+// after the two flag bytes.
 template <class IO, class P> requires std::is_same_v<std::remove_const_t<P>, ViewDefinition>
 void layout4(IO& io, P& m) {
   io.u16(4, m.viewId);

@@ -59,8 +59,8 @@ struct Packet4Info {
   const char* name;
 };
 
-// CIGI 4.0 ids and sizes (CIGI 4.0 ICD, as implemented by the CCL 4.0 port; see
-// ../shared/docs/cigi-canaerospace-facts.md section 1.6), in the Packet variant's order.
+// CIGI 4.0 ids and sizes (CIGI 4.0 ICD, SISO-STD-013-2014, as implemented by the CIGI Class
+// Library 4.0 port, captainflasmr/cigi-ccl_4_0), in the Packet variant's order.
 constexpr std::array<Packet4Info, kPacketTypeCount> kInfo4{{
     {kCigi4IgControl, 24, "IG Control"},
     {kCigi4EntityPositionControl, 48, "Entity Position Control"},

@@ -1,6 +1,7 @@
-// Headless OpenGL through EGL with no display server (../shared/docs/platform-notes.md): the
-// EGL device platform first (a GPU, or Mesa's software device), then Mesa's surfaceless
-// platform. Rendering goes to framebuffer objects, so no EGL surface is needed.
+// Headless OpenGL through EGL with no display server: the EGL device platform first
+// (EGL_EXT_platform_device; a GPU, or Mesa's software device), then Mesa's surfaceless
+// platform (EGL_MESA_platform_surfaceless). Rendering goes to framebuffer objects, so no EGL
+// surface is needed.
 #include "render/gl/egl_context.h"
 #include "render/gl/gl_context.h"
 

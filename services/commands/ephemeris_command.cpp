@@ -62,9 +62,9 @@ nlohmann::json ephemerisToJson(const SkyEphemeris& sky, const std::vector<Star>&
                            {"altitude_refracted_deg", p.altitudeRefractedRad * kRadToDeg}};
       if (s.bMinusV) {
         sj["b_minus_v"] = *s.bMinusV;
-        sj["colour_temperature_k"] = colourTemperatureFromBv(*s.bMinusV);  // paper 000 eq. 12
+        sj["colour_temperature_k"] = colourTemperatureFromBv(*s.bMinusV);  // Wang, Ji & Zhang 2011, eq. 12
       }
-      sj["irradiance_w_m2"] = irradianceFromMagnitude(s.vmag);  // paper 000 eq. 11
+      sj["irradiance_w_m2"] = irradianceFromMagnitude(s.vmag);  // Wang, Ji & Zhang 2011, eq. 11
       j["stars"].push_back(sj);
     }
   }

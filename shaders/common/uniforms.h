@@ -18,7 +18,7 @@
 #define SKYIG_MAT4 mat4
 #endif
 
-// Per channel and frame: how pixels map to view rays (paper 000 eq. 22).
+// Per channel and frame: how pixels map to view rays (Wang, Ji & Zhang 2011, eq. 22).
 SKYIG_UBO_BEGIN(FrameBlock, SKYIG_BINDING_FRAME)
   SKYIG_MAT4 ndcToWorld;  // (x_ndc, y_ndc, 1) -> ENU view direction (unnormalised); mat3 in 4x4
   SKYIG_VEC4 viewport;    // width, height, 1/width, 1/height

@@ -1,12 +1,13 @@
 #ifndef SKYIG_NIGHT_MOON_GLSL
 #define SKYIG_NIGHT_MOON_GLSL
-// The moon's disc (issue 6, docs/night-sky.md "Moon"): a sphere lit by the sun and by the
+// The moon's disc (docs/night-sky.md "Moon"): a sphere lit by the sun and by the
 // earth, seen through refraction and extinction. Shared by the GL pass (shaders/passes/moon.*)
 // and the CPU (sky/night/moon_disc.h) through shaders/night/moon_physics.h.
 //
 // Reflectance: Lommel-Seeliger, r = mu0 / (mu0 + mu), the single-scattering limit of Hapke's
 // (1981, eq. 16) law for a dark surface; it gives the full moon its flat, unshaded look. Its
-// disc integral over a sphere is the phase law of paper 000's eq. 9,
+// disc integral over a sphere is the phase law of eq. 9 of Wang, Ji & Zhang 2011 (after Jensen
+// et al. 2001; corrected: ln cot(phi/4), printed with cos),
 // int mu0 mu / (mu0 + mu) dA = pi/2 (1 - sin(phi/2) tan(phi/2) ln cot(phi/4)), so with
 // radiance L = 4 C_a / (3 pi) E_sun r the disc's irradiance is eq. 9 exactly (the tests
 // integrate it numerically). Hapke's opposition surge B(g) is a factor of the phase angle

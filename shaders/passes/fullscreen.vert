@@ -1,6 +1,6 @@
-// One triangle covering the viewport (paper 000 section 4: no sky dome mesh). Each vertex
-// carries the view ray through it, the inverse projection of eq. 22; the ray is affine in
-// screen space, so interpolating it is exact.
+// One triangle covering the viewport (Wang, Ji & Zhang 2011, section 4: no sky dome mesh).
+// Each vertex carries the view ray through it, the inverse projection of eq. 22; the ray is
+// affine in screen space, so interpolating it is exact.
 #include "common/uniforms.h"
 
 out vec3 vViewRay;

@@ -1,12 +1,13 @@
 #ifndef SKYIG_SKY_ANALYTIC_SKY_GLSL
 #define SKYIG_SKY_ANALYTIC_SKY_GLSL
-// The analytic sky of paper 000 (section 2.2): luminance and chromaticity each follow a
-// Perez-form distribution scaled from the zenith value (eq. 7-8):
+// The analytic sky of Wang, Ji & Zhang 2011 (section 2.2): luminance and chromaticity each
+// follow a Perez-form distribution scaled from the zenith value (eq. 7-8, corrected: both divide
+// by F(0, theta_s), the value at the zenith for the sun's zenith angle; eq. 7 prints theta_z):
 //   F(theta, gamma) = (1 + A exp(B / cos theta)) (K + C exp(D gamma) + E cos^2 gamma)
 //   (Y, x, y)(theta, gamma) = (Y, x, y)_zenith F(theta, gamma) / F(0, theta_s).
 // K = 1 is Perez et al. 1993 / Preetham et al. 1999; K = 1 - C exp(D pi/2) is the CIE
 // standard general sky's indicatrix (sky/cie_general_sky.glsl), so both models share one
-// evaluation. The CPU fills the coefficients per state (render/analytic_sky_params.cpp).
+// evaluation. The CPU fills the coefficients per state (sky/analytic/analytic_sky.cpp).
 #include "common/constants.glsl"
 #include "common/color.glsl"
 

@@ -1,9 +1,10 @@
 #ifndef SKYIG_SKY_CIE_GENERAL_SKY_GLSL
 #define SKYIG_SKY_CIE_GENERAL_SKY_GLSL
 // CIE standard general sky (CIE S 011/E:2003 = ISO 15469:2004), the Perez-form relative
-// luminance of paper 000 eq. 6-7 (with NOTES.md's corrections: the last term of eq. 6 is
-// e cos^2(chi), and eq. 7 divides by the same function at the zenith with the sun's zenith
-// angle). Coefficients a..e of the 15 types are in sky/analytic/cie_sky_types.cpp.
+// luminance of Wang, Ji & Zhang 2011, eq. 6-7 (corrected: the last term of eq. 6 is
+// e cos^2(chi), printed "Ec cos^2", and eq. 7 divides by the same function at the zenith with
+// the sun's zenith angle, F(0, theta_s), printed F(0, theta_z)). Coefficients a..e of the 15
+// types are in sky/analytic/cie_sky_types.cpp.
 #include "common/constants.glsl"
 
 struct CieSkyCoefficients {

@@ -1,7 +1,8 @@
 #ifndef SKYIG_TONE_SCOTOPIC_GLSL
 #define SKYIG_TONE_SCOTOPIC_GLSL
-// Scotopic and mesopic vision, paper 000 eq. 20-21 after Jensen et al. 2000 ("Night
-// rendering", UUCS-00-016): as luminance falls from 10^0.6 (about 4) to 0.01 cd/m^2 colour
+// Scotopic and mesopic vision, Wang, Ji & Zhang 2011, eq. 20-21, after Jensen et al. 2000
+// ("Night rendering", UUCS-00-016) and 2001, with V from XYZ as Larson et al. 1997 give it (the
+// paper gives no formula for V): as luminance falls from 10^0.6 (about 4) to 0.01 cd/m^2 colour
 // drains towards the rod-vision blue (x, y) = (0.25, 0.25) and the luminance becomes the
 // scotopic luminance V.
 #include "common/constants.glsl"

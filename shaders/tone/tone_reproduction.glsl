@@ -1,8 +1,8 @@
 #ifndef SKYIG_TONE_TONE_REPRODUCTION_GLSL
 #define SKYIG_TONE_TONE_REPRODUCTION_GLSL
-// The whole tone reproduction of a pixel (paper 000 section 3): mesopic vision (eq. 20-21),
-// Tumblin-Rushmeier brightness matching of the luminance (eq. 16), the display model
-// (eq. 17-18) per Rec.709 channel. The chromaticity is kept; only the luminance is mapped.
+// The whole tone reproduction of a pixel (Wang, Ji & Zhang 2011, section 3): mesopic vision
+// (eq. 20-21), Tumblin-Rushmeier brightness matching of the luminance (eq. 16), the display
+// model (eq. 17-18) per Rec.709 channel. The chromaticity is kept; only the luminance is mapped.
 #include "tone/tumblin_rushmeier.glsl"
 #include "tone/scotopic.glsl"
 

@@ -2,13 +2,14 @@
 #define SKYIG_TONE_TUMBLIN_RUSHMEIER_GLSL
 // Tumblin & Rushmeier 1993, "Tone reproduction for realistic images", IEEE CG&A 13(6):
 // match the brightness (Stevens & Stevens 1963) the eye perceives in the world and on the
-// display; paper 000 eq. 13-19.
+// display; Wang, Ji & Zhang 2011, eq. 13-19.
 //
 // The original works in lamberts: B = 10^beta(La) L^alpha(La) with
 //   alpha(La) = 0.4 log10 La + 2.92,  beta(La) = -0.4 (log10 La)^2 - 2.584 log10 La + 2.0208.
-// Paper 000's eq. 14 (alpha = 0.4 log10 La + 1.519, beta = -0.4 (log10 La)^2 + 0.218 log10 La
-// + 6.1642) is the same pair rewritten for La in cd/m^2 (substitute La -> pi 1e-4 La); the
-// test suite checks that identity. We keep the original constants and convert units here.
+// Wang, Ji & Zhang's eq. 14 (alpha = 0.4 log10 La + 1.519, beta = -0.4 (log10 La)^2 + 0.218
+// log10 La + 6.1642; printed with L_w where the adaptation luminance La belongs) is the same
+// pair rewritten for La in cd/m^2 (substitute La -> pi 1e-4 La); the test suite checks that
+// identity. We keep the original constants and convert units here.
 #include "common/constants.glsl"
 
 const Float LAMBERTS_PER_CD_M2 = PI * 1e-4;

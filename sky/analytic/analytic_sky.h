@@ -1,7 +1,8 @@
 #pragma once
-// The analytic sky of a state (paper 000 section 2.2) on the CPU side: the per-state
-// coefficients the sky shader needs, and the lighting quantities derived from the same model
-// (horizontal illuminance for the ground, the eye's adaptation luminance).
+// The analytic sky of a state (Wang, Ji & Zhang 2011, section 2.2: the Perez model of Perez,
+// Seals & Michalsky 1993 as Preetham, Shirley & Smits 1999 and CIE S 011 use it) on the CPU
+// side: the per-state coefficients the sky shader needs, and the lighting quantities derived
+// from the same model (horizontal illuminance for the ground, the eye's adaptation luminance).
 #include "sky/common/sky_conditions.h"
 
 #include <glm/glm.hpp>

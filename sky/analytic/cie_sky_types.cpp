@@ -6,8 +6,9 @@
 namespace skyig::sky {
 
 // Gradation groups I-VI (a, b) and indicatrix groups 1-6 (c, d, e) as tabulated in the
-// standard; cross-checked with Darula & Kittler 2002 and ../shared/docs/sky-model-facts.md
-// (type 12 equals the classic CIE clear sky of Perez and Preetham).
+// standard (CIE S 011/E:2003 = ISO 15469:2004); cross-checked with Darula & Kittler 2002, "CIE
+// general sky standard defining luminance distributions" (type 12 equals the classic CIE clear
+// sky of Perez and Preetham).
 const std::array<CieSkyType, 15>& cieSkyTypes() {
   static const std::array<CieSkyType, 15> kTypes = {{
       {1, 4.0, -0.70, 0, -1.0, 0.00, false, true, "standard overcast, steep gradation, azimuthal uniformity"},

@@ -1,7 +1,8 @@
 #pragma once
 // The physical medium of the atmosphere model, in SI units, with the defaults of Bruneton's
-// 2017 implementation of Bruneton & Neyret 2008 (the "Earth" of issue 5), and the spectral
-// sampling it is evaluated at.
+// 2017 implementation of Bruneton & Neyret 2008 (the Earth atmosphere of its demo,
+// github.com/ebruneton/precomputed_atmospheric_scattering), and the spectral sampling it is
+// evaluated at.
 #include <string>
 #include <vector>
 

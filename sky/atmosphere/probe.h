@@ -1,5 +1,5 @@
 #pragma once
-// What `skyig probe` reports for the physical sky (issue 5, item 8), computed on the CPU from
+// What `skyig probe` reports for the physical sky (docs/atmosphere.md), computed on the CPU from
 // a model: per view direction, the light scattered into the ray (sky), the solar disc (sun)
 // and the reflected ground light (ground), each as luminance, linear Rec.709 scaled so Y is
 // cd/m^2, and spectral radiance at 440/550/680 nm; the ray's transmittance; optionally the

@@ -1,8 +1,10 @@
 #pragma once
-// The moon's disc on the CPU (issue 6, docs/night-sky.md "Moon"): its radiance along a view and
-// its illuminance on the ground, from the same physics as the GL pass (shaders/night/moon.glsl).
-// The disc's irradiance above the atmosphere is paper 000's eq. 9 (corrected, Jensen et al. 2001)
-// for the sunlit part at every phase; the earthshine adds its own, physically lit, share.
+// The moon's disc on the CPU (docs/night-sky.md "Moon"): its radiance along a view and its
+// illuminance on the ground, from the same physics as the GL pass (shaders/night/moon.glsl).
+// The disc's irradiance above the atmosphere is eq. 9 of Wang, Ji & Zhang 2011 (after Jensen
+// et al. 2001, "A physically-based night sky model"; corrected: its phase law's last factor is
+// ln(cot(phi/4)), printed with cos) for the sunlit part at every phase; the earthshine adds its
+// own, physically lit, share.
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 

@@ -1,7 +1,8 @@
 #pragma once
 // The colour of a star as linear Rec.709 at unit illuminance: B-V -> effective temperature by
-// eq. 12 of paper 000 (corrected, ephemeris/night_irradiance.h) -> a blackbody (Planck) seen
-// through the CIE 1931 2-degree colour matching functions -> Rec.709 (D65 white).
+// eq. 12 of Wang, Ji & Zhang 2011 (after Jensen et al. 2001; ephemeris/night_irradiance.h) -> a
+// blackbody (Planck) seen through the CIE 1931 2-degree colour matching functions -> Rec.709
+// (D65 white).
 #include <glm/vec3.hpp>
 
 #include <optional>

@@ -1,8 +1,9 @@
 #pragma once
 // Photometry of point sources for the night sky (docs/night-sky-stars.md, "Units").
 //
-// Paper 000 eq. 11 (corrected, ephemeris/night_irradiance.h) gives E = 10^(-(m + 19) / 2.5)
-// W/m^2: Jensen et al. (2001)'s "irradiance" of a V-magnitude source, which is in fact a
+// Wang, Ji & Zhang 2011, eq. 11 (printed 10^(-m - 19); corrected to the inverse of their
+// eq. 10, ephemeris/night_irradiance.h) gives E = 10^(-(m + 19) / 2.5) W/m^2: Jensen et al.
+// (2001)'s "irradiance" of a V-magnitude source, which is in fact a
 // luminous quantity divided by a nominal efficacy. The renderer works in lux: a star of V = 0
 // gives 2.54e-6 lx above the atmosphere: E_v = 10^(-0.4 (m + 13.99)) lx (Allen's Astrophysical
 // Quantities, 4th ed.; Schaefer 1990, PASP 102, 212). The two agree

@@ -1,4 +1,5 @@
-// Refraction, planetary magnitudes and the night-sky irradiances of paper 000 (eq. 9-12).
+// Refraction, planetary magnitudes and the night-sky irradiances of Wang, Ji & Zhang 2011
+// (eq. 9-12, after Jensen et al. 2001).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -75,7 +76,7 @@ TEST(PlanetMagnitude, KnownAppearances) {
 }
 
 TEST(NightIrradiance, MagnitudeConversionsEq10And11) {
-  // NOTES.md check: the sun at m = -26.7 gives about 1.2e3 W/m^2.
+  // Corrected eq. 11: the sun at m = -26.7 gives about 1.2e3 W/m^2 (the solar constant's order).
   EXPECT_NEAR(irradianceFromMagnitude(-26.7), 1.2e3, 0.05e3);
   EXPECT_NEAR(irradianceFromMagnitude(0.0), 2.512e-8, 0.001e-8);  // 10^-7.6 W/m^2 for magnitude 0
   for (double m : {-12.7, -4.0, 0.0, 6.5}) EXPECT_NEAR(magnitudeFromIrradiance(irradianceFromMagnitude(m)), m, 1e-12);

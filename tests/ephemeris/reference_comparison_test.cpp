@@ -77,7 +77,7 @@ TEST(ReferenceComparison, SunMoonPlanetsAgainstSwissEphemeris) {
   constexpr int kBodies = 7;
   const int sweBody[kBodies] = {SE_SUN, SE_MOON, SE_MERCURY, SE_VENUS, SE_MARS, SE_JUPITER, SE_SATURN};
   const char* names[kBodies] = {"sun", "moon", "Mercury", "Venus", "Mars", "Jupiter", "Saturn"};
-  const double limitArcsec[kBodies] = {1.0, 5.0, 5.0, 5.0, 5.0, 5.0, 5.0};  // issue 3 targets
+  const double limitArcsec[kBodies] = {1.0, 5.0, 5.0, 5.0, 5.0, 5.0, 5.0};  // docs/ephemeris.md's targets
   Stat pos[kBodies], azalt[kBodies], mag[5], phase, sweSidereal;
   for (int k = 0; k < 300; ++k) {
     const UtcTime t = randomInstant(rng, 1950, 2100);

@@ -1,7 +1,7 @@
 // CIGI 4.0 subset: IG Control, Entity Position Control, Celestial Sphere Control (with
 // seconds), Atmosphere Control and Start of Frame against bytes written by hand from the
-// CIGI 4.0 layouts (u16 size, u16 id, then the fields; ../shared/docs/cigi-canaerospace-facts.md
-// section 1.6 and the CCL 4.0 port's Pack functions), both byte orders, and errors.
+// CIGI 4.0 layouts (u16 size, u16 id, then the fields; CIGI 4.0 ICD, SISO-STD-013-2014, as the
+// CIGI Class Library 4.0 port's Pack functions implement it), both byte orders, and errors.
 #include <gtest/gtest.h>
 
 #include "protocol/cigi/decoder.h"

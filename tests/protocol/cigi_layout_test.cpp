@@ -1,6 +1,6 @@
-// Byte-exact CIGI 3.3 layouts: each packet against bytes written by hand from the ICD
-// tables (offsets and bit positions in ../shared/docs/cigi-canaerospace-facts.md section
-// 1.5), encoded and decoded. IEEE-754 patterns worked by hand, e.g. 271.0f = 0x43878000,
+// Byte-exact CIGI 3.3 layouts: each packet against bytes written by hand from the ICD tables
+// (offsets and bit positions of CIGI ICD 3.3, sections 4.1 and 4.2, as protocol/cigi/layouts.h
+// cites them), encoded and decoded. IEEE-754 patterns worked by hand, e.g. 271.0f = 0x43878000,
 // 47.5 = 0x4047C00000000000.
 #include <gtest/gtest.h>
 

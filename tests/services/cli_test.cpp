@@ -144,7 +144,7 @@ TEST_F(Cli, VersionAndCaps) {
 }
 
 // `skyig probe` on the physical atmosphere, with the small tables the atmosphere tests share
-// through the build tree's cache: the clear-sky reference values of sky-model-facts.md.
+// through the build tree's cache: the clear-sky reference values of Bruneton's 2017 defaults.
 TEST_F(Cli, ProbeReportsTheClearAtmosphere) {
   const std::string cache = std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache";
   const Result r = run("probe --sun-zenith 30 --sun-azimuth 180 --view 0,0 --view 95,180 --irradiance --cache " + cache);

@@ -1,6 +1,7 @@
-// Record and replay (issue 7): a live session recorded and replayed gives the same host
-// states; replays are byte-identical; CAN logs replay through the CANaerospace decoder; bad
-// files give clear errors naming the record and offset, and --skip-bad counts what it skips.
+// Record and replay (docs/record-replay.md): a live session recorded and replayed gives the
+// same host states; replays are byte-identical; CAN logs replay through the CANaerospace
+// decoder; bad files give clear errors naming the record and offset, and --skip-bad counts what
+// it skips.
 #include "protocol/canaerospace/state_encoder.h"
 #include "protocol/candump/candump.h"
 #include "protocol/io/byte_sink.h"

@@ -1,5 +1,5 @@
 // The analytic sky's absolute levels and the lighting derived from it, against reference
-// values (../shared/docs/sky-model-facts.md) and closed forms.
+// values (Bruneton's 2017 clear atmosphere, Preetham et al. 1999) and closed forms.
 #include "sky/analytic/analytic_sky.h"
 #include "sky/sky_state.h"
 #include "shaders/physics.h"
@@ -18,7 +18,7 @@ double lum(const glm::dvec3& rgb) { return shader::rec709Luminance(rgb); }
 }  // namespace
 
 // Sun at the zenith in a clear atmosphere: ~115 klx direct and ~8 klx from the sky on a
-// horizontal surface (Bruneton's very clean atmosphere, sky-model-facts.md). The direct beam
+// horizontal surface (Bruneton's 2017 very clean default atmosphere). The direct beam
 // must land near it; Preetham's sky is known to be bright at high sun (Zotti et al. 2007) and
 // gives ~27 klx of diffuse light, within the range measured under clear skies with some haze
 // (10-30 klx), so only that range is asserted.

@@ -1,5 +1,7 @@
-// The CIE standard general sky (paper 000 eq. 6-7, corrected) against values computed by hand
-// from the standard's formula (../shared/docs/sky-model-facts.md) and its defining properties.
+// The CIE standard general sky (Wang, Ji & Zhang 2011, eq. 6-7, corrected: the last term of
+// eq. 6 is E cos^2(gamma), and eq. 7 divides by F(0, theta_s)) against values computed by hand
+// from the standard's formula (CIE S 011/E:2003 = ISO 15469:2004; Darula & Kittler 2002) and
+// its defining properties.
 #include "sky/analytic/analytic_sky.h"
 #include "sky/analytic/cie_sky_types.h"
 #include "shaders/physics.h"

@@ -1,4 +1,5 @@
-// Tone reproduction (paper 000 eq. 13-21) against hand computations from the printed formulas.
+// Tone reproduction (Wang, Ji & Zhang 2011, eq. 13-21, after Tumblin & Rushmeier 1993 and
+// Larson et al. 1997) against hand computations from the printed formulas.
 #include "shaders/physics.h"
 
 #include <gtest/gtest.h>
@@ -11,7 +12,8 @@ using namespace skyig;
 namespace {
 constexpr double kLambert = std::numbers::pi * 1e-4;
 
-// Paper 000 eq. 14 as printed, La in cd/m^2 (with +0.218: see tumblin_rushmeier.glsl).
+// Wang, Ji & Zhang 2011, eq. 14 as printed, La in cd/m^2 (with +0.218: see
+// tumblin_rushmeier.glsl).
 double paperAlpha(double la) { return 0.4 * std::log10(la) + 1.519; }
 double paperBeta(double la) { return -0.4 * std::pow(std::log10(la), 2) + 0.218 * std::log10(la) + 6.1642; }
 

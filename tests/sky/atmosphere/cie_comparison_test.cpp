@@ -1,7 +1,7 @@
 // Relative luminance of the model against the CIE standard clear skies (types 12 and 13,
 // CIE S 011/E:2003) along the sun's vertical and almucantar, printed like Bruneton & Neyret
 // 2008 figures 6-7. The physical model is known to be brighter near the horizon than the CIE
-// fit (paper fig. 7; ../shared/docs/sky-model-facts.md), so the bounds are per region.
+// fit (Bruneton & Neyret 2008, fig. 7), so the bounds are per region.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -34,7 +34,7 @@ double cieRelative(const CieSky& s, double viewZenith, double viewAzimuth, doubl
 }
 
 TEST(AtmosphereCie, ReferenceFormulaReproducesTheWorkedValues) {
-  // sky-model-facts.md, type 12, sun zenith 30 deg, view zenith 30/60/80/85/89.
+  // Type 12 (CIE S 011/E:2003), sun zenith 30 deg, view zenith 30/60/80/85/89.
   const double towards[] = {3.852, 1.726, 1.687, 1.733, 1.630};
   const double away[] = {0.493, 0.519, 0.919, 1.086, 1.137};
   const double zeniths[] = {30.0, 60.0, 80.0, 85.0, 89.0};
@@ -83,7 +83,7 @@ TEST(AtmosphereCie, RelativeLuminanceAgainstClearSkies) {
       }
     }
     if (sunZenithDeg == 60.0) {
-      // The anchor of sky-model-facts.md: 7.8 times the zenith at 85 deg away from the sun.
+      // Bruneton 2017 with its defaults: 7.8 times the zenith at 85 deg away from the sun.
       EXPECT_NEAR(relative(85.0 * kDegree, kPi), 7.8, 0.08 * 7.8);
     }
     std::printf("  almucantar: azimuth from the sun\n");

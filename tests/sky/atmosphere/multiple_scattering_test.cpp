@@ -1,7 +1,7 @@
 // Full multiple-scattering radiance (4 orders) from the small test tables against the same
 // equations at twice the radii and view angles: a convergence check of the whole chain
-// (single scattering, density, multiple scattering, irradiance) that CI can afford. Issue 5
-// asks for 3% against a high-resolution reference with the sun at most 90 degrees from the
+// (single scattering, density, multiple scattering, irradiance) that CI can afford. The
+// target is 3% against a high-resolution reference with the sun at most 90 degrees from the
 // zenith; docs/atmosphere.md gives the small and the default tables against the default
 // (Bruneton-size) tables, which take minutes per wavelength group on the CPU.
 #include <gtest/gtest.h>

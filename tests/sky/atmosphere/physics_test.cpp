@@ -1,5 +1,5 @@
-// Physical facts the full model must show (issue 5, "physics"), and the reference values of a
-// clear Earth atmosphere (../shared/docs/sky-model-facts.md: Bruneton 2017 defaults, 4
+// Physical facts the full model must show, and the reference values of a clear Earth
+// atmosphere (those of Bruneton's 2017 implementation with its default parameters, 4
 // orders, 47 wavelengths; skyig uses 16 wavelengths and small test tables, hence the
 // tolerances).
 #include <gtest/gtest.h>

@@ -24,7 +24,7 @@ TEST(AtmosphereProbe, ComponentsPerViewAreConsistent) {
   const ProbeViewResult& zenith = result.views[0];
   EXPECT_FALSE(zenith.sun);
   EXPECT_FALSE(zenith.ground);
-  // Vertical transmittance at 550 nm (sky-model-facts.md: 0.8677).
+  // Vertical transmittance at 550 nm (Bruneton 2017 defaults: 0.8677).
   ASSERT_EQ(kProbeWavelengthsNm[1], 550.0);
   EXPECT_NEAR(zenith.transmittance[1], 0.8677, 0.0015);
   // Y of the Rec.709 triple is the luminance (Rec.709 luminance weights).

@@ -21,8 +21,8 @@ inline ModelConfig smallEarthConfig() {
   return c;
 }
 
-// One group of four wavelengths (the paper's three and 830 nm), for tests that look at
-// spectral radiance only.
+// One group of four wavelengths (Bruneton & Neyret 2008's three and 830 nm), for tests that
+// look at spectral radiance only.
 inline ModelConfig oneGroupConfig() {
   ModelConfig c = smallEarthConfig();
   c.wavelengthsNm = {440.0, 550.0, 680.0, 830.0};

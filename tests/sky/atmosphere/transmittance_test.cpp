@@ -1,6 +1,6 @@
-// Transmittance tables against direct numerical quadrature of the optical depth (issue 5:
-// within 0.5%), and the reference values of a clear Earth atmosphere
-// (../shared/docs/sky-model-facts.md).
+// Transmittance tables against direct numerical quadrature of the optical depth (within
+// 0.5%), and the reference values of a clear Earth atmosphere (those of Bruneton's 2017
+// implementation with its default parameters).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +12,7 @@
 namespace skyig::atmosphere {
 namespace {
 
-// One group: the paper's three wavelengths and one in the ozone Chappuis band's peak.
+// One group: Bruneton & Neyret 2008's three wavelengths and one in the ozone Chappuis band's peak.
 const std::array<double, 4> kWavelengths = {680.0, 550.0, 440.0, 600.0};
 
 class TransmittanceTest : public ::testing::Test {

@@ -1,6 +1,6 @@
-// The moon's disc on the CPU (sky/night/moon_disc.h): its reflectance law against paper
-// 000's eq. 9, its illuminance on the ground, its colour through the atmosphere, the albedo
-// map's orientation and the moonlit sky.
+// The moon's disc on the CPU (sky/night/moon_disc.h): its reflectance law against eq. 9 of
+// Wang, Ji & Zhang 2011 (corrected; Jensen et al. 2001), its illuminance on the ground, its
+// colour through the atmosphere, the albedo map's orientation and the moonlit sky.
 #include "ephemeris/night_irradiance.h"
 #include "night/moon_physics.h"
 #include "sky/night/moon_disc.h"

@@ -86,8 +86,7 @@ TEST(NightProbe, MoonlessZenithLuminance) {
   EXPECT_NEAR(out.day.sunZenithDeg, 120.0, 0.5);
 }
 
-// Every light the issue names, in that order, each with luminance and colour; the total is
-// their sum.
+// Every key sky/night_probe.h lists, each with luminance and colour; the total is their sum.
 TEST(NightProbe, ComponentsAndTheirTotal) {
   const SkyState s = physicalState(darkSiteSunThirtyDown());
   const NightProbeResult out = probeViews(s, {{0.0, 0.0}, {60.0, 90.0}, {85.0, 250.0}, {100.0, 0.0}});

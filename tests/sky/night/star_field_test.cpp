@@ -56,7 +56,8 @@ PointSource onlyStar(const ephemeris::Star& star, const StarFieldOptions& option
 }  // namespace
 
 // Sirius (V = -1.46): 9.7e-6 lx above the atmosphere (Allen: V = 0 is 2.54e-6 lx), and eq. 11
-// of paper 000 gives 9.6e-8 W/m^2; the two are the same law, 1 W/m^2 of eq. 11 = 101.6 lx.
+// of Wang, Ji & Zhang 2011 (corrected) gives 9.6e-8 W/m^2; the two are the same law, 1 W/m^2 of
+// eq. 11 = 101.6 lx.
 TEST(StarPhotometry, SiriusIlluminanceFromItsMagnitude) {
   const auto sirius = std::find_if(night_testing::catalogue().begin(), night_testing::catalogue().end(),
                                    [](const ephemeris::Star& s) { return s.hr == 2491; });
@@ -72,7 +73,8 @@ TEST(StarPhotometry, SiriusIlluminanceFromItsMagnitude) {
   EXPECT_NEAR(illuminanceFromVMagnitude(1.0) / illuminanceFromVMagnitude(6.0), 100.0, 1e-9);
 }
 
-// Table 1 of paper 000 (after Jensen et al. 2001) gives 3.0e-8 W/m^2 for integrated starlight.
+// Table 1 of Wang, Ji & Zhang 2011 (after Jensen et al. 2001) gives 3.0e-8 W/m^2 for
+// integrated starlight.
 // The catalogue's stars (V < 6.5) sum, by eq. 11, to about 80 times that: the table's diffuse
 // entries are two orders below the magnitude law, as its airglow shows too (5.1e-8 W/m^2,
 // where a zenith brightness of 22 V mag/arcsec^2 over the hemisphere gives pi L = 5.4e-4 lx,

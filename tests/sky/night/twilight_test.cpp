@@ -1,7 +1,7 @@
 // Twilight through the whole pipeline: the physical sky, the stars and the full tone
 // reproduction on the real GL path. Colour drains from the frame as the sun goes down, and a
 // magnitude-1 star appears against the darkening sky because of the sky's luminance and the
-// eye's adaptation alone (issue 6, item 8; docs/night-sky-stars.md, "Twilight").
+// eye's adaptation alone (docs/night-sky-stars.md, "Twilight").
 #include "sky/atmosphere/table_cache.h"
 #include "render/gl/gl_context.h"
 #include "render/image_io.h"
@@ -81,7 +81,8 @@ double meanChroma(const DisplayImage& im) {
   return sum / static_cast<double>(n);
 }
 
-// Display luminance (cd/m^2) of a pixel: eq. 17 of paper 000 per channel, Rec.709 weights.
+// Display luminance (cd/m^2) of a pixel: eq. 17 of Wang, Ji & Zhang 2011 per channel, Rec.709
+// weights.
 double displayLuminance(const DisplayImage& im, int x, int y, const DisplayParams& d) {
   const std::uint8_t* p = &im.rgba[(static_cast<std::size_t>(y) * im.width + x) * 4];
   double l = 0.0;
@@ -236,8 +237,9 @@ double trimmedMeanDisplayLuminance(const DisplayImage& im, const DisplayParams& 
 // 0.012 at -15.5, 0.013 at -19, 0.038 at -24.5. The band is invisible in nautical twilight (under
 // half the threshold), reaches the threshold near -15 and is plainly visible (twice it) in the
 // dark sky: it appears as the sky darkens, through the sky's luminance and the adaptation alone
-// (issue 6, item 8: "below about -15 degrees"). The small tables make twilight 15-22% too
-// bright (docs/atmosphere.md), so -15 to -19 are if anything pessimistic.
+// (docs/night-sky.md, "When the night's sources appear": below about -15 degrees). The small
+// tables make twilight 15-22% too bright (docs/atmosphere.md), so -15 to -19 are if anything
+// pessimistic.
 TEST_F(Twilight, MilkyWayAppearsAsTheSkyDarkens) {
   ChannelConfig patch;
   patch.width = 64;

@@ -64,6 +64,11 @@ ViewSphere viewSphere(const SkyState& s) {
     }
   }
   out.meanLuminance = sum / (kMu * kPhi);
+  double brightest = 0.0;
+  for (int i = eye::LuminanceHistogram::kBins - 1; i >= 0 && brightest == 0.0; --i)
+    if (h.weight[static_cast<std::size_t>(i)] > 0.0)
+      brightest = h.minLog10 + (i + 1) * (h.maxLog10 - h.minLog10) / eye::LuminanceHistogram::kBins;
+  h.highlightLog10 = brightest;  // the discs added below are highlights
   // The discs: their luminance over their solid angle (a part of a cell each).
   const double sunRadius = model ? model->parameters(0).sun_angular_radius : 0.2666 * kPi / 180.0;
   const double sunDisc = model ? model->converter().luminance(model->sunDiscRadiance(camera, sun, sun))

@@ -70,7 +70,13 @@ ToneCurve histogramAdjustment(const LuminanceHistogram& histogram, const Display
   while (lo < hi && histogram.weight[static_cast<std::size_t>(lo)] <= 0.0) ++lo;
   while (hi > lo && histogram.weight[static_cast<std::size_t>(hi)] <= 0.0) --hi;
   const double dB = binWidth(histogram);
-  const double worldMin = histogram.minLog10 + lo * dB, worldMax = histogram.minLog10 + (hi + 1) * dB;
+  const double worldMin = histogram.minLog10 + lo * dB, worldTop = histogram.minLog10 + (hi + 1) * dB;
+  // The extended part of the scene: bins up to the highlight level.
+  if (histogram.highlightLog10 < worldTop) {
+    const int h = static_cast<int>(std::floor((histogram.highlightLog10 - histogram.minLog10) / dB));
+    hi = std::clamp(h, lo, hi);
+  }
+  const double worldMax = histogram.minLog10 + (hi + 1) * dB;
   // Brightness matching (Tumblin & Rushmeier 1993) sets where the scene sits on the display:
   // the top of the curve at the matched luminance of the scene's brightest part, and (when the
   // scene fits) its level at the matched luminance of that level.
@@ -85,7 +91,7 @@ ToneCurve histogramAdjustment(const LuminanceHistogram& histogram, const Display
 
   ToneCurve curve;
   curve.minLog10 = worldMin;
-  curve.maxLog10 = worldMax;
+  curve.maxLog10 = std::max(worldTop, worldMax);
   std::array<double, kBins> f = histogram.weight;
   // The display brightness of each bin's centre under the cumulative distribution of f
   // (WLRP97 eq. 4): B_d = log Ldmin + (log Ldmax - log Ldmin) P(B_w).
@@ -130,11 +136,12 @@ ToneCurve histogramAdjustment(const LuminanceHistogram& histogram, const Display
   const double gain = std::log10(std::max(adaptationGain, 1e-30));
   if (t > kTolerance * total0) {
     for (int k = 0; k < ToneCurve::kPoints; ++k) {
-      const double bw = worldMin + (worldMax - worldMin) * k / (ToneCurve::kPoints - 1);
+      const double bw = worldMin + (curve.maxLog10 - worldMin) * k / (ToneCurve::kPoints - 1);
       const double x = std::clamp((bw - histogram.minLog10) / dB, double(lo), double(hi + 1));
       const int i = std::min(static_cast<int>(x), hi);
       const double fr = x - i;
-      const double bd = (1.0 - fr) * edges[static_cast<std::size_t>(i)] + fr * edges[static_cast<std::size_t>(i + 1)];
+      const double bd = (1.0 - fr) * edges[static_cast<std::size_t>(i)] + fr * edges[static_cast<std::size_t>(i + 1)] +
+                        std::max(bw - worldMax, 0.0);  // highlights: slope 1 above the extended scene
       curve.displayLog10[static_cast<std::size_t>(k)] = static_cast<float>(std::min(bd + gain, std::log10(display.maxCdM2) + 3.0));
     }
     return curve;
@@ -145,7 +152,7 @@ ToneCurve histogramAdjustment(const LuminanceHistogram& histogram, const Display
   curve.linear = true;
   const double anchor = matched(std::log10(level)) - std::log10(level);
   for (int k = 0; k < ToneCurve::kPoints; ++k) {
-    const double bw = worldMin + (worldMax - worldMin) * k / (ToneCurve::kPoints - 1);
+    const double bw = worldMin + (curve.maxLog10 - worldMin) * k / (ToneCurve::kPoints - 1);
     curve.displayLog10[static_cast<std::size_t>(k)] = static_cast<float>(std::min(bw + anchor + gain, std::log10(display.maxCdM2) + 3.0));
   }
   return curve;

@@ -24,6 +24,11 @@ struct LuminanceHistogram {
   double minLog10 = -6.0;  // log10 cd/m^2 of the lower edge of bin 0
   double maxLog10 = 10.0;  // upper edge of the last bin
   std::array<double, kBins> weight{};
+  // Luminances above this (log10 cd/m^2) are highlights, the sun's and moon's discs: the curve
+  // is equalised and placed below it and continues above it with slope 1, so a disc is shown
+  // brighter than anything around it (white, where it exceeds the display) and an extended
+  // bright area (a sunlit cloud deck or terrain seen from 12 km) is not pushed to white.
+  double highlightLog10 = 1e300;
 
   // Adds `solidAngle` sr of luminance `cdM2` (ignored when not positive and finite).
   void add(double cdM2, double solidAngle);

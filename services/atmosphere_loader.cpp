@@ -117,6 +117,7 @@ void loadAtmosphereIfNeeded(NodeConfig& config) {
   if (config.sky.model != sky::SkyModel::Physical || config.sky.atmosphere) return;
   atmosphere::Conditions conditions;
   conditions.groundAlbedo = config.sky.groundAlbedo;
+  conditions.visibilityKm = config.atmosphere.visibilityKm;  // as nodeModelConfig: one cache key
   config.sky.atmosphere = loadAtmosphere(config.atmosphere, conditions);
 }
 

@@ -51,6 +51,7 @@ std::optional<atmosphere::Conditions> HostAtmosphere::observe(double visibilityM
 atmosphere::ModelConfig nodeModelConfig(const NodeConfig& config, const atmosphere::Conditions& conditions) {
   atmosphere::Conditions c = conditions;
   if (!c.groundAlbedo) c.groundAlbedo = config.sky.groundAlbedo;
+  if (!c.visibilityKm) c.visibilityKm = config.atmosphere.visibilityKm;
   return modelConfig(config.atmosphere, c);
 }
 

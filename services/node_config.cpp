@@ -125,6 +125,7 @@ void readAtmosphere(TableReader& r, AtmosphereSettings& a) {
   m.rayleighScatteringAt1umPerM = r.number("rayleigh_scattering_1um", m.rayleighScatteringAt1umPerM, 0.0, 1e-3);
   m.rayleighScaleHeightM = r.number("rayleigh_scale_height", m.rayleighScaleHeightM, 100.0, 100000.0);
   m.mieExtinctionPerM = r.number("mie_extinction", m.mieExtinctionPerM, 0.0, 1e-2);
+  if (r.find("visibility_km")) a.visibilityKm = r.number("visibility_km", 50.0, 0.05, 280.0);
   m.mieSingleScatteringAlbedo = r.number("mie_single_scattering_albedo", m.mieSingleScatteringAlbedo, 0.0, 1.0);
   m.mieAngstromExponent = r.number("mie_angstrom_exponent", m.mieAngstromExponent, -1.0, 4.0);
   m.mieScaleHeightM = r.number("mie_scale_height", m.mieScaleHeightM, 10.0, 100000.0);

@@ -9,6 +9,7 @@
 #include "sky/atmosphere/medium.h"
 #include "sky/sky_state.h"
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,6 +35,9 @@ struct AtmosphereSettings {
   std::string tables = "medium";
   atmosphere::Medium medium;  // the ground albedo comes from sky.ground_albedo
   int scatteringOrders = 4;
+  // The visibility (km, Koschmieder) the tables are computed for until the host says otherwise
+  // ([atmosphere] visibility_km, `render --visibility`); unset: the medium's own aerosols.
+  std::optional<double> visibilityKm;
   std::string cacheDir;          // "" = $XDG_CACHE_HOME/skyig or ~/.cache/skyig
 };
 

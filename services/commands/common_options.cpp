@@ -21,6 +21,8 @@ void SkyOptions::add(CLI::App& c) {
   c.add_option("--cie-type", cieType, "CIE standard general sky type, 1 (overcast) .. 15")->check(CLI::Range(1, 15));
   c.add_option("--turbidity", turbidity, "Atmospheric turbidity (Preetham), 1.7 .. 10")->check(CLI::Range(1.7, 10.0));
   c.add_option("--ground-albedo", groundAlbedo, "Ground albedo, 0 .. 1")->check(CLI::Range(0.0, 1.0));
+  c.add_option("--visibility", visibilityKm, "Physical sky: visibility, km (Koschmieder; haze), 0.05 .. 280")
+      ->check(CLI::Range(0.05, 280.0));
   c.add_option("--sun-azimuth", sunAzimuth, "Override the sun's azimuth, degrees from north through east")
       ->check(CLI::Range(-360.0, 360.0));
   c.add_option("--sun-elevation", sunElevation, "Override the sun's elevation, degrees")->check(CLI::Range(-90.0, 90.0));
@@ -47,6 +49,7 @@ NodeConfig SkyOptions::resolve() const {
   }
   if (turbidity) config.sky.turbidity = *turbidity;
   if (groundAlbedo) config.sky.groundAlbedo = *groundAlbedo;
+  if (visibilityKm) config.atmosphere.visibilityKm = *visibilityKm;
   return config;
 }
 

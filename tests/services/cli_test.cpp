@@ -271,3 +271,19 @@ TEST_F(Cli, ProbeUsesTheConfiguredMedium) {
   EXPECT_EQ(refused.exitCode, 2);
   EXPECT_NE(refused.err.find("atmosphere.mie_phase_g"), std::string::npos) << refused.err;
 }
+
+// `render --visibility` hazes the physical sky without editing a configuration: 5 degrees from
+// the sun the aerosols' forward scattering (Cornette-Shanks) makes the aureole of a 5 km haze
+// far brighter than the clear medium's; a bad value is a usage error.
+TEST_F(Cli, RenderVisibilityHazesThePhysicalSky) {
+  const fs::path config = write("small.toml", "[sky]\natmosphere_tables = \"small\"\n[[channel]]\nname = \"front\"\n"
+                                              "width = 32\nheight = 24\nup = 2\ndown = 2\nleft = 2\nright = 2\n");
+  const std::string common = "render --config " + config.string() + " --sun-azimuth 90 --sun-elevation 30 --yaw 90 --pitch 25 --exr ";
+  ASSERT_EQ(run(common + (dir_ / "clear.exr").string()).exitCode, 0);
+  ASSERT_EQ(run(common + (dir_ / "hazy.exr").string() + " --visibility 5").exitCode, 0);
+  auto green = [&](const char* name) {
+    return static_cast<double>(skyig::render::readExr((dir_ / name).string()).image.pixel(16, 12)[1]);
+  };
+  EXPECT_GT(green("hazy.exr"), 1.5 * green("clear.exr"));
+  EXPECT_EQ(run(common + (dir_ / "bad.exr").string() + " --visibility 0").exitCode, 2);
+}

@@ -154,9 +154,11 @@ TEST(ReplayEqualsServe, ReplayUsesTheHostsStarsViewsAirAndVisibilityAsTheNodeDid
   EXPECT_DOUBLE_EQ(replayed["temperature_c"].get<double>(), -12.0);
   for (const char* key : {"pressure_hpa", "temperature_c", "lat", "lon", "alt", "yaw", "pitch", "roll"})
     EXPECT_EQ(replayed[key], live[key]) << key;
-  // The node's sim clock ran on for the seconds it waited for its tables (1.6e-4 deg of sky a
-  // second): the adaptation may differ by that, no more.
-  EXPECT_NEAR(replayed["adaptation_cd_m2"].get<double>() / live["adaptation_cd_m2"].get<double>(), 1.0, 0.02);
+  // The eye adapts on the host's clock, stepped at each host message. The one difference: the
+  // node showed the old tables for the frames its updater took to build the 12 km ones, the
+  // replay waited for them, so the scene the eye followed differed for those frames (4e-5 of
+  // the level measured).
+  EXPECT_NEAR(replayed["adaptation_cd_m2"].get<double>() / live["adaptation_cd_m2"].get<double>(), 1.0, 1e-3);
 
   // The frames: the node's last saved frame and the replay's last frame, as displayed. The
   // stars and sky moved by a few thousandths of a degree between them (a pixel is ~1 degree):

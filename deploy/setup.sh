@@ -22,6 +22,8 @@ packages=(
   libswe-dev swe-basic-data liberfa-dev
   # libFuzzer targets (tests/fuzz), built with clang even when the rest uses gcc
   clang-14 libclang-rt-14-dev
+  # the code's style (.clang-format)
+  clang-format-14
 )
 
 missing=()

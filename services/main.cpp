@@ -1,5 +1,6 @@
 // skyig: the sky image generator of a helicopter flight simulator. One executable, one
 // subcommand per use (docs/design.md, "Interfaces people and tests rely on").
+#include "ephemeris/data_files.h"
 #include "render/gl/gl_context.h"
 #include "render/gl/gl_program.h"
 #include "render/image_io.h"
@@ -42,9 +43,9 @@ int main(int argc, char** argv) {
   registerProbeCommand(app, exitCode);
   registerReplayCommand(app, exitCode);
 
-  // Exit codes: 0 done; 2 bad flags, configuration, input value or output path; 3 the GPU
-  // context or a shader failed; 4 a socket could not be opened (port in use, no SocketCAN);
-  // 1 anything else.
+  // Exit codes: 0 done; 2 bad flags, configuration, input value, output path, or a missing data
+  // file (ephemeris/data_files.h); 3 the GPU context or a shader failed; 4 a socket could not be
+  // opened (port in use, no SocketCAN); 1 anything else.
   try {
     app.parse_complete_callback([&] { spdlog::set_level(spdlog::level::from_str(logLevel)); });
     app.parse(argc, argv);
@@ -57,6 +58,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "skyig: error: %s\n", e.what());
     return 2;
   } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "skyig: error: %s\n", e.what());
+    return 2;
+  } catch (const skyig::ephemeris::DataFileError& e) {
     std::fprintf(stderr, "skyig: error: %s\n", e.what());
     return 2;
   } catch (const RecordingError& e) {

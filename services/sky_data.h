@@ -9,12 +9,14 @@
 
 namespace skyig::services {
 
-// The catalogue file `configured` names: itself, or for "" the bundled BSC5
-// ($SKYIG_DATA_DIR/bsc5.csv when that is set, else the source tree's ephemeris/data/bsc5.csv).
+// The catalogue file `configured` names: itself, or for "" the bundled BSC5, bsc5.csv in
+// skyig's data directory ($SKYIG_DATA_DIR, else <executable's directory>/../share/skyig;
+// ephemeris/data_files.h).
 std::string starCataloguePath(const std::string& configured);
 
 // The catalogue of `configured` prepared for `epoch` (proper motion), or null for "none".
-// Throws ConfigError naming the file when it cannot be read or parsed.
+// Throws ConfigError naming the file when it cannot be read or parsed (for the bundled one, also
+// how its directory was chosen).
 std::shared_ptr<const sky::night::StarCatalogue> loadConfiguredStarCatalogue(const std::string& configured,
                                                                               const ephemeris::UtcTime& epoch);
 

@@ -4,6 +4,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "ephemeris/data_files.h"
 #include "ephemeris/night_irradiance.h"
 
 namespace skyig::services {
@@ -86,7 +87,8 @@ nlohmann::json ephemerisToJson(const EphemerisRequest& r) {
   options.dut1S = r.dut1S;
   const SkyEphemeris sky = computeEphemeris(*utc, o, options);
   std::vector<Star> stars;
-  if (r.stars > 0) stars = brightestStars(loadStarCatalogue(r.cataloguePath), r.stars);
+  if (r.stars > 0)
+    stars = brightestStars(loadStarCatalogue(r.cataloguePath.empty() ? requireDataFile("bsc5.csv") : r.cataloguePath), r.stars);
   nlohmann::json j = ephemerisToJson(sky, stars);
   j["utc"] = formatIso8601Utc(*utc);
   j["observer"] = {{"latitude_deg", r.latitudeDeg},   {"longitude_deg", r.longitudeDeg},
@@ -97,9 +99,6 @@ nlohmann::json ephemerisToJson(const EphemerisRequest& r) {
 
 void registerEphemerisCommand(CLI::App& app, int& exitCode, std::ostream& out, std::ostream& err) {
   auto request = std::make_shared<EphemerisRequest>();
-#ifdef SKYIG_DEFAULT_STAR_CATALOGUE
-  request->cataloguePath = SKYIG_DEFAULT_STAR_CATALOGUE;
-#endif
   CLI::App* cmd = app.add_subcommand(
       "ephemeris", "Apparent topocentric sun, moon, planets (and brightest stars) as JSON");
   cmd->add_option("--lat", request->latitudeDeg, "Geodetic latitude, degrees north (WGS84)")->required();
@@ -111,8 +110,9 @@ void registerEphemerisCommand(CLI::App& app, int& exitCode, std::ostream& out, s
   cmd->add_option("--tt-minus-utc", request->ttMinusUtcS, "Override TT - UTC, seconds");
   cmd->add_option("--dut1", request->dut1S, "UT1 - UTC, seconds (default 0)");
   cmd->add_option("--stars", request->stars, "Also list the N brightest stars (default 0)");
-  cmd->add_option("--catalogue,--catalog", request->cataloguePath, "Bright Star Catalogue CSV for --stars (--catalog: the former spelling)")
-      ->capture_default_str();
+  cmd->add_option("--catalogue,--catalog", request->cataloguePath,
+                  "Bright Star Catalogue CSV for --stars (default: bsc5.csv in skyig's data directory, "
+                  "$SKYIG_DATA_DIR or <executable's directory>/../share/skyig; --catalog: the former spelling)");
   cmd->callback([request, &exitCode, &out, &err]() {
     try {
       out << ephemerisToJson(*request).dump(2) << '\n';

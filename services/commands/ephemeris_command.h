@@ -27,7 +27,7 @@ struct EphemerisRequest {
   std::optional<double> ttMinusUtcS;
   std::optional<double> dut1S;
   std::size_t stars = 0;        // the N brightest stars
-  std::string cataloguePath;    // Bright Star Catalogue CSV (for stars > 0)
+  std::string cataloguePath;    // Bright Star Catalogue CSV (for stars > 0); "" = the bundled one
 };
 
 // The JSON document of a request. Throws std::invalid_argument (bad value, named) or

@@ -1,7 +1,7 @@
 #include "sky/night/milky_way_map.h"
 
+#include "ephemeris/data_files.h"
 #include "night/diffuse_physics.h"
-#include "sky/night/sky_data_path.h"
 #include "sky/common/png_reader.h"
 
 #include <algorithm>
@@ -152,13 +152,13 @@ glm::dvec3 MilkyWayMap::s10(const glm::dvec3& directionJ2000) const {
   return sampleS10(shader::milkyWayTexCoord(glm::normalize(directionJ2000)));
 }
 
-std::string MilkyWayMap::standardPath() { return skyDataPath("milkyway.png"); }
+std::string MilkyWayMap::standardPath() { return ephemeris::dataFilePath("milkyway.png"); }
 
 std::shared_ptr<const MilkyWayMap> MilkyWayMap::standard() {
   static std::mutex mutex;
   static std::shared_ptr<const MilkyWayMap> map;
   std::lock_guard lock(mutex);
-  if (!map) map = std::make_shared<const MilkyWayMap>(standardPath());
+  if (!map) map = std::make_shared<const MilkyWayMap>(ephemeris::requireDataFile("milkyway.png"));
   return map;
 }
 

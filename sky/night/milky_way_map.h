@@ -50,8 +50,8 @@ class MilkyWayMap {
   double meanPoleS10() const { return meanPole_; }
   double brightS10() const { return bright_; }
 
-  // The shipped map: $SKYIG_DATA_DIR/milkyway.png if set, else SKYIG_SKY_DATA_DIR's; loaded
-  // once per process (~0.5 s) and shared.
+  // The shipped map, milkyway.png in skyig's data directory (ephemeris/data_files.h); loaded
+  // once per process (~0.5 s) and shared. Throws ephemeris::DataFileError when it is missing.
   static std::shared_ptr<const MilkyWayMap> standard();
   static std::string standardPath();
 

@@ -1,18 +1,14 @@
 #include "sky/night/moon_albedo.h"
 
+#include "ephemeris/data_files.h"
 #include "night/moon_physics.h"
 #include "sky/common/png_reader.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <memory>
 #include <stdexcept>
-
-#ifndef SKYIG_SKY_DATA_DIR
-#error "SKYIG_SKY_DATA_DIR must name sky/data (render/CMakeLists.txt)"
-#endif
 
 namespace skyig::sky::night {
 
@@ -68,7 +64,7 @@ const MoonAlbedo& MoonAlbedo::uniform() {
 }
 
 const MoonAlbedo& MoonAlbedo::standard() {
-  static const MoonAlbedo map = load(moonAlbedoPath());
+  static const MoonAlbedo map = load(ephemeris::requireDataFile("moon.png"));
   return map;
 }
 
@@ -85,9 +81,6 @@ double MoonAlbedo::sample(double u, double v) const {
   return (at(x0, y0) * (1 - tx) + at(x0 + 1, y0) * tx) * (1 - ty) + (at(x0, y0 + 1) * (1 - tx) + at(x0 + 1, y0 + 1) * tx) * ty;
 }
 
-std::string moonAlbedoPath() {
-  if (const char* dir = std::getenv("SKYIG_DATA_DIR"); dir && *dir) return std::string(dir) + "/moon.png";
-  return std::string(SKYIG_SKY_DATA_DIR) + "/moon.png";
-}
+std::string moonAlbedoPath() { return ephemeris::dataFilePath("moon.png"); }
 
 }  // namespace skyig::sky::night

@@ -14,7 +14,8 @@ class MoonAlbedo {
   static MoonAlbedo load(const std::string& path);
   // A featureless moon (albedo 1 everywhere), for checks of the reflectance law alone.
   static const MoonAlbedo& uniform();
-  // The map at moonAlbedoPath(), read once per process.
+  // The map at moonAlbedoPath(), read once per process; throws ephemeris::DataFileError when it
+  // is missing.
   static const MoonAlbedo& standard();
 
   int width() const { return width_; }
@@ -30,7 +31,7 @@ class MoonAlbedo {
   std::vector<float> texels_;
 };
 
-// $SKYIG_DATA_DIR/moon.png when the variable is set, else the repository's sky/data/moon.png.
+// moon.png in skyig's data directory (ephemeris/data_files.h), whether or not it is there.
 std::string moonAlbedoPath();
 
 }  // namespace skyig::sky::night

@@ -41,11 +41,14 @@ class Cli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  Result run(const std::string& args) const {
+  // `environment`: env(1) arguments, e.g. "-u SKYIG_DATA_DIR" (the test programs set it,
+  // tests/staged_data_dir.cpp, and skyig inherits it).
+  Result run(const std::string& args, const std::string& environment = "") const {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
     // The physical sky (the default) keeps its tables in the build tree, not in $HOME.
-    const std::string command = "XDG_CACHE_HOME=" + std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache " +
-                                std::string(SKYIG_EXECUTABLE) + " " + args + " >" + out.string() + " 2>" + err.string();
+    const std::string command = "env " + environment + " XDG_CACHE_HOME=" + std::string(SKYIG_BINARY_DIR) +
+                                "/atmosphere-test-cache " + std::string(SKYIG_EXECUTABLE) + " " + args + " >" +
+                                out.string() + " 2>" + err.string();
     const int status = std::system(command.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
   }
@@ -253,6 +256,32 @@ TEST_F(Cli, MissingStarCatalogueNamesTheFile) {
   EXPECT_NE(r.err.find("sky.star_catalogue"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("/nonexistent/stars.csv"), std::string::npos) << r.err;
   EXPECT_EQ(imageFiles(), 0u);
+}
+
+// Without SKYIG_DATA_DIR, build/bin/skyig reads the data files staged in build/share/skyig, as an
+// installed /usr/bin/skyig reads /usr/share/skyig: no path of the source tree is compiled in.
+TEST_F(Cli, FindsItsDataBesideTheExecutable) {
+  const std::string args = "ephemeris --lat 47.26 --lon 11.34 --utc 2026-11-09T22:00:00Z --stars 3";
+  const Result r = run(args, "-u SKYIG_DATA_DIR");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["stars"].size(), 3u) << r.out;
+  EXPECT_EQ(run("render --sky-model preetham --utc 2026-11-09T22:00:00Z --size 32x32 --png " +
+                    (dir_ / "x.png").string(), "-u SKYIG_DATA_DIR").exitCode, 0);
+}
+
+// A data file that is not there stops the command with exit code 2, naming the path it tried and
+// the variable that chose it.
+TEST_F(Cli, AMissingDataFileNamesThePathAndTheVariable) {
+  const Result r = run("render --sky-model preetham --png " + (dir_ / "x.png").string(),
+                       "SKYIG_DATA_DIR=/nonexistent-skyig-data");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("/nonexistent-skyig-data/bsc5.csv"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("SKYIG_DATA_DIR"), std::string::npos) << r.err;
+  EXPECT_EQ(imageFiles(), 0u);
+  const Result e = run("ephemeris --lat 0 --lon 0 --utc 2026-11-09T22:00:00Z --stars 3",
+                       "SKYIG_DATA_DIR=/nonexistent-skyig-data");
+  EXPECT_EQ(e.exitCode, 2);
+  EXPECT_NE(e.err.find("/nonexistent-skyig-data/bsc5.csv"), std::string::npos) << e.err;
 }
 
 // The probe computes for the configuration's [atmosphere]: five times Bruneton's aerosols

@@ -180,9 +180,10 @@ TEST(Moonlight, FullMoonSkyIsADimBlue) {
 
 // The map is found through SKYIG_DATA_DIR when it is set, and a missing map is named.
 TEST(MoonAlbedoMap, DataDirectoryOverrideAndMissingFile) {
+  const std::string staged = std::getenv("SKYIG_DATA_DIR");  // tests/staged_data_dir.cpp
   ASSERT_EQ(::setenv("SKYIG_DATA_DIR", "/nonexistent-skyig-data", 1), 0);
   const std::string path = moonAlbedoPath();
-  ::unsetenv("SKYIG_DATA_DIR");
+  ASSERT_EQ(::setenv("SKYIG_DATA_DIR", staged.c_str(), 1), 0);
   EXPECT_EQ(path, "/nonexistent-skyig-data/moon.png");
   try {
     MoonAlbedo::load(path);
@@ -190,7 +191,7 @@ TEST(MoonAlbedoMap, DataDirectoryOverrideAndMissingFile) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
-  EXPECT_EQ(moonAlbedoPath().substr(moonAlbedoPath().size() - 18), "/sky/data/moon.png");
+  EXPECT_EQ(moonAlbedoPath(), staged + "/moon.png");
 }
 
 // The disc is refracted by the ephemeris' own formula (Saemundsson at the observer's air): its

@@ -261,7 +261,14 @@ TEST_F(NodeIntegration, SurvivesOneHundredThousandMalformedDatagrams) {
   ASSERT_TRUE(node.error.empty()) << node.error;
   EXPECT_GT(node.stats.malformedDatagrams.load(), kCount * 95 / 100);
   EXPECT_GT(node.stats.frames.load(), framesBefore + 10);  // it kept rendering
+#ifndef __SANITIZE_ADDRESS__
   EXPECT_LT(rssAfter - rssBefore, 8 * 1024) << "RSS grew from " << rssBefore << " kB to " << rssAfter << " kB";
+#else
+  // AddressSanitizer keeps freed memory in quarantine (256 MB) to catch use after free, so RSS
+  // grows by design (30 MB here); its leak check at exit stands in for this one.
+  (void)rssBefore;
+  (void)rssAfter;
+#endif
   const auto last = readStateDump(dir_ / "dump.jsonl").back();
   EXPECT_NEAR(last["host"]["lat"].get<double>(), 51.4775, 1e-9);  // the last good state
   EXPECT_NEAR(last["used"]["yaw"].get<double>(), 270.0, 1e-9);

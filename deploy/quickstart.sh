@@ -6,4 +6,4 @@ cd "$(dirname "$0")/.."
 bash deploy/setup.sh
 bash deploy/build.sh
 mkdir -p out
-./build/services/skyig render --exr out/sky.exr --png out/sky.png "$@"
+./build/bin/skyig render --exr out/sky.exr --png out/sky.png "$@"

@@ -202,8 +202,8 @@ TEST_F(NodeIntegration, StartOfFrameGoesBackToTheHost) {
   node.stop();
 }
 
-// 100 000 malformed datagrams at full speed: the node keeps rendering, counts them, its memory
-// stays flat and the last good state is kept.
+// 100 000 malformed datagrams, in bursts at full speed: the node keeps rendering, counts them,
+// its memory stays flat and the last good state is kept.
 TEST_F(NodeIntegration, SurvivesOneHundredThousandMalformedDatagrams) {
   const std::uint16_t port = freeLoopbackPort();
   NodeRun node(smallNode(port, dir_ / "dump.jsonl"));
@@ -228,6 +228,7 @@ TEST_F(NodeIntegration, SurvivesOneHundredThousandMalformedDatagrams) {
   ASSERT_TRUE(waitForFrames(node.stats.frames, 30));
   const long rssBefore = rssKb();
   const std::uint64_t framesBefore = node.stats.frames.load();
+  const std::uint64_t datagramsBefore = node.stats.datagrams.load();
 
   std::mt19937 rng(12345);
   std::vector<std::uint8_t> junk;
@@ -244,7 +245,18 @@ TEST_F(NodeIntegration, SurvivesOneHundredThousandMalformedDatagrams) {
     }
     if (junk == bytes || junk.empty()) junk.assign({0x01});
     attacker.sendTo(junk, to);
-    if (i % 2000 == 0) std::this_thread::sleep_for(1ms);  // let loopback's queue drain
+    // Let loopback's queue drain after each burst: what overflows the socket's buffer is dropped,
+    // and a slower receiver must not fail the test (under ASan, 22% were lost with a fixed 1 ms
+    // pause every 2000). Drained: the node has them all, or its count stopped moving.
+    if (i % 250 == 249) {
+      std::uint64_t seen = ~std::uint64_t{0};
+      waitUntil([&] {
+        const std::uint64_t now = node.stats.datagrams.load() - datagramsBefore;
+        const bool drained = now >= static_cast<std::uint64_t>(i) + 1 || now == seen;
+        seen = now;
+        return drained;
+      }, 2s);
+    }
   }
   // Drained: the counts stop moving (loopback drops what overflows the socket's buffer).
   std::uint64_t seen = 0;
@@ -261,7 +273,14 @@ TEST_F(NodeIntegration, SurvivesOneHundredThousandMalformedDatagrams) {
   ASSERT_TRUE(node.error.empty()) << node.error;
   EXPECT_GT(node.stats.malformedDatagrams.load(), kCount * 95 / 100);
   EXPECT_GT(node.stats.frames.load(), framesBefore + 10);  // it kept rendering
+#ifndef __SANITIZE_ADDRESS__
   EXPECT_LT(rssAfter - rssBefore, 8 * 1024) << "RSS grew from " << rssBefore << " kB to " << rssAfter << " kB";
+#else
+  // AddressSanitizer keeps freed memory in quarantine (256 MB) to catch use after free, so RSS
+  // grows by design (30 MB here); its leak check at exit stands in for this one.
+  (void)rssBefore;
+  (void)rssAfter;
+#endif
   const auto last = readStateDump(dir_ / "dump.jsonl").back();
   EXPECT_NEAR(last["host"]["lat"].get<double>(), 51.4775, 1e-9);  // the last good state
   EXPECT_NEAR(last["used"]["yaw"].get<double>(), 270.0, 1e-9);

@@ -5,9 +5,11 @@
 #include "sky/atmosphere/table_cache.h"
 #include "render/passes/atmosphere_gpu_precompute.h"
 
-#include <chrono>
 #include <algorithm>
-#include <array>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -20,32 +22,77 @@ double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::vector<atmosphere::GroupTables> onGpu(const atmosphere::ModelConfig& config) {
+// Says what a precompute is doing: a line as it starts, then the step it is at every few
+// seconds (one step of the default tables takes half a minute on llvmpipe, the whole minutes),
+// so a first start is never silent.
+class PrecomputeReporter {
+ public:
+  PrecomputeReporter(const atmosphere::ModelConfig& config, const char* device) : device_(device) {
+    std::fprintf(stderr,
+                 "physical sky: precomputing %zu wavelength groups of tables on the %s (progress every %.0f s)\n",
+                 (config.wavelengthsNm.size() + 3) / 4, device, kIntervalS);
+    thread_ = std::thread([this] { run(); });
+  }
+  ~PrecomputeReporter() {
+    {
+      std::lock_guard lock(mutex_);
+      done_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+  }
+  PrecomputeReporter(const PrecomputeReporter&) = delete;
+  PrecomputeReporter& operator=(const PrecomputeReporter&) = delete;
+
+  // control with its step reported here.
+  atmosphere::PrecomputeControl wrap(const atmosphere::PrecomputeControl& control) {
+    return {control.cancel, [this, outer = control.step](const std::string& name) {
+              {
+                std::lock_guard lock(mutex_);
+                step_ = name;
+              }
+              if (outer) outer(name);
+            }};
+  }
+
+ private:
+  static constexpr double kIntervalS = 3.0;
+  void run() {
+    std::unique_lock lock(mutex_);
+    while (!wake_.wait_for(lock, std::chrono::duration<double>(kIntervalS), [this] { return done_; }))
+      std::fprintf(stderr, "physical sky: %s precompute at %s (%.0f s)\n", device_,
+                   step_.empty() ? "start" : step_.c_str(), since(start_));
+  }
+
+  const char* device_;
+  const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::string step_;
+  bool done_ = false;
+  std::thread thread_;
+};
+
+std::vector<atmosphere::GroupTables> onGpu(const atmosphere::ModelConfig& config,
+                                           const atmosphere::PrecomputeControl& control) {
   const auto start = std::chrono::steady_clock::now();
+  PrecomputeReporter reporter(config, "GPU");
   render::GpuPrecomputeOptions options;
   options.progress = [](const std::string& line) { std::fprintf(stderr, "physical sky: GPU precompute %s\n", line.c_str()); };
+  options.control = reporter.wrap(control);
   auto tables = render::precomputeTablesOnGpu(config, options);
   std::fprintf(stderr, "physical sky: precomputed %zu wavelength groups on the GPU in %.1f s\n", tables.size(), since(start));
   return tables;
 }
 
-std::vector<atmosphere::GroupTables> onCpu(const atmosphere::ModelConfig& config) {
+std::vector<atmosphere::GroupTables> onCpu(const atmosphere::ModelConfig& config,
+                                           const atmosphere::PrecomputeControl& control) {
   const auto start = std::chrono::steady_clock::now();
-  // The CPU path has no per-group progress of its own: the groups one by one give it.
   if (config.wavelengthsNm.empty()) throw std::invalid_argument("atmosphere precompute: no wavelengths");
-  std::vector<atmosphere::GroupTables> tables;
-  const std::size_t groups = (config.wavelengthsNm.size() + 3) / 4;
-  for (std::size_t g = 0; g < groups; ++g) {
-    const auto group_start = std::chrono::steady_clock::now();
-    // As AtmosphereModel: the last group padded by repeating the last wavelength.
-    std::array<double, 4> wavelengths{};
-    for (std::size_t i = 0; i < 4; ++i)
-      wavelengths[i] = config.wavelengthsNm[std::min(g * 4 + i, config.wavelengthsNm.size() - 1)];
-    tables.push_back(atmosphere::precomputeGroup(atmosphere::makeParameters(config.medium, wavelengths, config.sizes),
-                                                 config.options));
-    std::fprintf(stderr, "physical sky: CPU precompute group %zu/%zu done (%.1f s)\n", g + 1, groups, since(group_start));
-  }
-  std::fprintf(stderr, "physical sky: precomputed %zu wavelength groups on the CPU in %.1f s\n", groups, since(start));
+  PrecomputeReporter reporter(config, "CPU");
+  auto tables = atmosphere::precomputeTablesOnCpu(config, reporter.wrap(control));
+  std::fprintf(stderr, "physical sky: precomputed %zu wavelength groups on the CPU in %.1f s\n", tables.size(),
+               since(start));
   return tables;
 }
 
@@ -64,18 +111,20 @@ PrecomputeDevice precomputeDeviceFromEnvironment() {
 }
 
 atmosphere::TableBuilder atmosphereTableBuilder(PrecomputeDevice device) {
-  return [device](const atmosphere::ModelConfig& config) {
+  return [device](const atmosphere::ModelConfig& config, const atmosphere::PrecomputeControl& control) {
     (void)atmosphere::SpectralConverter(config.wavelengthsNm);  // bad wavelengths throw before any work
-    if (device == PrecomputeDevice::kCpu) return onCpu(config);
-    if (device == PrecomputeDevice::kGpu) return onGpu(config);
+    if (device == PrecomputeDevice::kCpu) return onCpu(config, control);
+    if (device == PrecomputeDevice::kGpu) return onGpu(config, control);
     try {
-      return onGpu(config);
+      return onGpu(config, control);
     } catch (const std::invalid_argument&) {
       throw;  // the CPU would refuse the config too
+    } catch (const atmosphere::Cancelled&) {
+      throw;  // asked to stop, not a GPU failure
     } catch (const std::exception& e) {
       std::fprintf(stderr, "physical sky: no GPU precompute (%s); computing on the CPU\n", e.what());
     }
-    return onCpu(config);
+    return onCpu(config, control);
   };
 }
 
@@ -95,11 +144,13 @@ atmosphere::ModelConfig modelConfig(const AtmosphereSettings& settings, const at
 }
 
 std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const AtmosphereSettings& settings,
-                                                                  const atmosphere::Conditions& conditions) {
+                                                                  const atmosphere::Conditions& conditions,
+                                                                  const std::atomic<bool>* stop) {
   atmosphere::CacheResult cache;
   const auto start = std::chrono::steady_clock::now();
-  auto loaded = std::make_shared<const atmosphere::AtmosphereModel>(atmosphere::loadOrPrecompute(
-      modelConfig(settings, conditions), cacheDirectory(settings), &cache, atmosphereTableBuilder()));
+  auto loaded = std::make_shared<const atmosphere::AtmosphereModel>(
+      atmosphere::loadOrPrecompute(modelConfig(settings, conditions), cacheDirectory(settings), &cache,
+                                   atmosphereTableBuilder(), {atmosphere::CancelToken(stop), {}}));
   if (cache.outcome != atmosphere::CacheOutcome::kLoaded)
     std::fprintf(stderr, "physical sky: precomputed the %s tables in %.1f s (%s); cached in %s\n", settings.tables.c_str(),
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), cache.reason.c_str(),
@@ -107,18 +158,19 @@ std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const Atmosphe
   return loaded;
 }
 
-std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config) {
+std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config,
+                                                                     const std::atomic<bool>* stop) {
   if (config.sky.model != sky::SkyModel::Physical) return nullptr;
-  return std::make_unique<atmosphere::AtmosphereUpdater>(nodeModelConfig(config, {}),
-                                                         cacheDirectory(config.atmosphere), atmosphereTableBuilder());
+  return std::make_unique<atmosphere::AtmosphereUpdater>(nodeModelConfig(config, {}), cacheDirectory(config.atmosphere),
+                                                         atmosphereTableBuilder(), stop);
 }
 
-void loadAtmosphereIfNeeded(NodeConfig& config) {
+void loadAtmosphereIfNeeded(NodeConfig& config, const std::atomic<bool>* stop) {
   if (config.sky.model != sky::SkyModel::Physical || config.sky.atmosphere) return;
   atmosphere::Conditions conditions;
   conditions.groundAlbedo = config.sky.groundAlbedo;
   conditions.visibilityKm = config.atmosphere.visibilityKm;  // as nodeModelConfig: one cache key
-  config.sky.atmosphere = loadAtmosphere(config.atmosphere, conditions);
+  config.sky.atmosphere = loadAtmosphere(config.atmosphere, conditions, stop);
 }
 
 }  // namespace skyig::services

@@ -8,6 +8,7 @@
 #include "sky/atmosphere/updater.h"
 #include "services/node_config.h"
 
+#include <atomic>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -39,18 +40,22 @@ std::filesystem::path cacheDirectory(const AtmosphereSettings& settings);
 atmosphere::ModelConfig modelConfig(const AtmosphereSettings& settings, const atmosphere::Conditions& conditions);
 
 // modelConfig(settings, conditions) from the cache directory, or precomputed
-// (atmosphereTableBuilder) and cached there; says on stderr when it has to precompute.
+// (atmosphereTableBuilder) and cached there; says on stderr when it has to precompute. Once
+// `stop` is set (a signalled command) a precompute ends within a slice: atmosphere::Cancelled.
 std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const AtmosphereSettings& settings,
-                                                                  const atmosphere::Conditions& conditions);
+                                                                  const atmosphere::Conditions& conditions,
+                                                                  const std::atomic<bool>* stop = nullptr);
 
 // Sets config.sky.atmosphere when config.sky.model is physical; prints to stderr when it has
-// to precompute.
-void loadAtmosphereIfNeeded(NodeConfig& config);
+// to precompute; `stop` as loadAtmosphere.
+void loadAtmosphereIfNeeded(NodeConfig& config, const std::atomic<bool>* stop = nullptr);
 
 // The background updater the sky worker (services/sky_worker.h) follows the host's visibility
 // and humidity with, in `serve` and `replay` alike: its first model is the configuration's
 // (from the cache loadAtmosphereIfNeeded filled), later ones are built by
-// atmosphereTableBuilder. Null unless the sky is physical.
-std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config);
+// atmosphereTableBuilder. Null unless the sky is physical. `stop` (the command's signal flag)
+// ends its precomputes and waits at once (atmosphere/updater.h).
+std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config,
+                                                                     const std::atomic<bool>* stop = nullptr);
 
 }  // namespace skyig::services

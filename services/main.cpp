@@ -26,12 +26,16 @@ int main(int argc, char** argv) {
   using namespace skyig::services;
   CLI::App app{"skyig — physically based sky image generator for flight simulation"};
   app.require_subcommand(0, 1);
+  // Options of the program (--log-level) are accepted after the subcommand too: the
+  // subcommands, made below, inherit this and pass what they do not know up.
+  app.fallthrough();
   bool version = false, caps = false;
   app.add_flag("--version", version, "Print the build and exit");
   app.add_flag("--caps", caps, "With --version: also the GL renderer, its limits and the transports");
   std::string logLevel = "warn";
-  app.add_option("--log-level", logLevel, "trace, debug, info, warn, error")
-      ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}));
+  CLI::Option* logLevelOption =
+      app.add_option("--log-level", logLevel, "trace, debug, info, warn, error (default: info for serve, else warn)")
+          ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error"}));
 
   int exitCode = 0;
   registerRenderCommand(app, exitCode);
@@ -47,7 +51,11 @@ int main(int argc, char** argv) {
   // file (ephemeris/data_files.h); 3 the GPU context or a shader failed; 4 a socket could not be
   // opened (port in use, no SocketCAN); 1 anything else.
   try {
-    app.parse_complete_callback([&] { spdlog::set_level(spdlog::level::from_str(logLevel)); });
+    app.parse_complete_callback([&] {
+      // A node says how it started (configuration, channels, transports, renderer) by default.
+      if (logLevelOption->count() == 0 && app.got_subcommand("serve")) logLevel = "info";
+      spdlog::set_level(spdlog::level::from_str(logLevel));
+    });
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);

@@ -197,9 +197,10 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   const int canFd = opt.canInterface ? ownedCan.fd : opt.canFd;
   std::unique_ptr<CanReceiver> can;
   if (canFd >= 0) can = std::make_unique<CanReceiver>(canFd, opt.config.canIdentifiers, stats, host);
+  if (opt.canInterface) spdlog::info("reading CANaerospace from {}", *opt.canInterface);
   // The physical sky follows the host's visibility and humidity through a background updater
   // (from the cache the configuration's tables were just loaded from).
-  const std::unique_ptr<atmosphere::AtmosphereUpdater> updater = makeAtmosphereUpdater(opt.config);
+  const std::unique_ptr<atmosphere::AtmosphereUpdater> updater = makeAtmosphereUpdater(opt.config, &externalStop);
   SkyWorker worker(opt.config, updater.get(), stats);  // the worker thread's: its caches are its own
   sky.publish(BuiltSky{worker.build(nullptr, Clock::now()), nullptr, 0});  // frame 0 already has a sky
 
@@ -212,7 +213,12 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
     const auto baseChannels = opt.config.channelsOf(opt.config.nodeName);
     if (baseChannels.empty()) throw ConfigError("node \"" + opt.config.nodeName + "\" has no channels in the configuration");
     Display display(opt, baseChannels);
-    spdlog::info("rendering {} channel(s) on {}", baseChannels.size(), display.info().renderer);
+    spdlog::info("rendering {} channel(s) of node \"{}\" on {} ({})", baseChannels.size(), opt.config.nodeName,
+                 display.info().renderer, opt.headless ? "headless" : "windows");
+    for (const auto& c : baseChannels)
+      spdlog::info("channel {}: {}x{}, yaw {} pitch {} roll {}, frustum left {} right {} down {} up {} deg", c.name,
+                   c.width, c.height, c.offset.yawDeg, c.offset.pitchDeg, c.offset.rollDeg, c.frustum.leftDeg,
+                   c.frustum.rightDeg, c.frustum.downDeg, c.frustum.upDeg);
     std::unique_ptr<StateDump> dump = opt.dumpStatePath.empty() ? nullptr : std::make_unique<StateDump>(opt.dumpStatePath);
     const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / opt.frameRateHz));
     auto next = Clock::now();

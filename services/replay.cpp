@@ -51,9 +51,47 @@ Bound parseBound(const std::optional<std::string>& text, const char* flag) {
   return b;
 }
 
+// Sleeps until `t` (realtime pacing) in short steps, so that a stop is seen within 50 ms.
+void sleepUntil(std::chrono::steady_clock::time_point t, const std::atomic<bool>* stop) {
+  while (std::chrono::steady_clock::now() < t && !(stop && stop->load(std::memory_order_relaxed)))
+    std::this_thread::sleep_until(std::min(t, std::chrono::steady_clock::now() + std::chrono::milliseconds(50)));
+}
+
 double julian(const ephemeris::UtcTime& t) { return ephemeris::julianDateUtc(t); }
 
 bool before(const ephemeris::UtcTime& a, const ephemeris::UtcTime& b) { return julian(a) < julian(b); }
+
+// Where a frame is within what was asked for, 0..1, for the progress bar: by sim time between
+// --from and --to when --to is a time (the recording's clock cannot say when the host's clock
+// gets there), else by recording time between the frames --from and --to name (the recording's
+// ends without them).
+class ReplaySpan {
+ public:
+  ReplaySpan(const Bound& from, const Bound& to, std::int64_t firstNs, std::int64_t lastNs, double frameRateHz)
+      : from_(from), to_(to), startNs_(firstNs), endNs_(lastNs) {
+    auto frameNs = [&](std::uint64_t k) {
+      return firstNs + static_cast<std::int64_t>(static_cast<double>(k) * 1e9 / frameRateHz);
+    };
+    if (from.frame) startNs_ = std::min(lastNs, frameNs(*from.frame));
+    if (to.frame) endNs_ = std::min(lastNs, frameNs(*to.frame));
+  }
+  double fraction(std::int64_t timeNs, const std::optional<sky::SkyState>& sky) {
+    if (to_.utc) {
+      if (!sky) return 0.0;
+      const double now = julian(sky->observer.utc);
+      if (!startUtc_) startUtc_ = from_.utc ? julian(*from_.utc) : now;
+      const double span = julian(*to_.utc) - *startUtc_;
+      return span > 0.0 ? std::clamp((now - *startUtc_) / span, 0.0, 1.0) : 1.0;
+    }
+    if (endNs_ <= startNs_) return 1.0;
+    return std::clamp(static_cast<double>(timeNs - startNs_) / static_cast<double>(endNs_ - startNs_), 0.0, 1.0);
+  }
+
+ private:
+  Bound from_, to_;
+  std::int64_t startNs_, endNs_;
+  std::optional<double> startUtc_;
+};
 
 // Decodes every event up to the frame's instant and runs the sky worker there: the work of one
 // frame that does not need the GPU, the same as the node's worker and render threads do.
@@ -158,9 +196,13 @@ ReplayResult sendRecording(const ReplayOptions& o) {
   std::optional<std::int64_t> first;
   const auto start = std::chrono::steady_clock::now();
   while (source.next(e)) {
+    if (o.stop && o.stop->load(std::memory_order_relaxed)) {
+      r.stopped = true;
+      break;
+    }
     if (o.port != 0 && e.destinationPort != o.port) continue;
     if (!first) first = e.timeNs;
-    if (o.realtime) std::this_thread::sleep_until(start + Ns(e.timeNs - *first));
+    if (o.realtime) sleepUntil(start + Ns(e.timeNs - *first), o.stop);
     socket.sendTo(e.payload, to);
     ++r.events;
   }
@@ -205,12 +247,14 @@ ReplayResult replay(const ReplayOptions& o) {
       lastNs = std::max(lastNs, e.timeNs);
     }
   }
-  const std::unique_ptr<atmosphere::AtmosphereUpdater> updater = makeAtmosphereUpdater(o.config);
+  const std::unique_ptr<atmosphere::AtmosphereUpdater> updater = makeAtmosphereUpdater(o.config, o.stop);
   Feeder feeder(o, source, updater.get());
   const auto context = render::createHeadlessContext();
   render::SkyRenderer renderer;
   std::unique_ptr<StateDump> dump = o.dumpStatePath.empty() ? nullptr : std::make_unique<StateDump>(o.dumpStatePath);
   Progress progress(o.progress);
+  ReplaySpan span(from, to, firstNs, lastNs, o.frameRateHz);
+  double shown = 0.0;  // the bar's last fraction
   ReplayResult result;
   const auto wallStart = std::chrono::steady_clock::now();
   std::optional<sky::SkyState> lastSky;
@@ -228,12 +272,13 @@ ReplayResult replay(const ReplayOptions& o) {
     ++result.frames;
     const bool afterFrom = (!from.frame || k >= *from.frame) && (!from.utc || !lastSky || !before(lastSky->observer.utc, *from.utc));
     const bool pastTo = (to.frame && k > *to.frame) || (to.utc && lastSky && before(*to.utc, lastSky->observer.utc));
-    if (pastTo) {
+    result.stopped = o.stop && o.stop->load(std::memory_order_relaxed);
+    if (pastTo || result.stopped) {
       if (!last) next.wait();
       break;
     }
     if (afterFrom && lastSky) {
-      if (o.realtime) std::this_thread::sleep_until(wallStart + Ns(frame.timeNs - feeder.firstNs()));
+      if (o.realtime) sleepUntil(wallStart + Ns(frame.timeNs - feeder.firstNs()), o.stop);
       const bool write = !o.outDir.empty() && k % static_cast<std::uint64_t>(o.every) == 0;
       for (std::size_t i = 0; i < lastPose.channels.size(); ++i) {
         if (!wanted[i]) continue;
@@ -251,10 +296,11 @@ ReplayResult replay(const ReplayOptions& o) {
       glFinish();  // the frame is done when its pixels are, written or not
       if (dump) dump->write(k, frame.host.get(), *lastSky, lastPose);
     }
-    progress.update(lastNs > firstNs ? static_cast<double>(frame.timeNs - firstNs) / static_cast<double>(lastNs - firstNs) : 1.0, k);
+    shown = span.fraction(frame.timeNs, lastSky);
+    progress.update(shown, k);
     if (last) break;
   }
-  progress.update(1.0, result.frames, true);
+  progress.update(result.stopped ? shown : 1.0, result.frames, true);
   result.events = feeder.events();
   result.skippedRecords = source.skipped();
   for (const auto& m : source.skippedMessages()) spdlog::warn("skipped: {}", m);

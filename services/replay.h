@@ -6,6 +6,7 @@
 #include "services/node_config.h"
 #include "services/udp_socket.h"
 
+#include <atomic>
 #include <optional>
 #include <string>
 
@@ -29,6 +30,9 @@ struct ReplayOptions {
   bool skipBad = false;
   int port = 0;                     // only datagrams to this UDP port (0: all)
   bool progress = true;
+  // Set (by a signal) to end the replay after the frame in hand: what was written stays, the
+  // result says how far it got. Also ends a wait for tables.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct ReplayResult {
@@ -37,6 +41,7 @@ struct ReplayResult {
   std::uint64_t imagesWritten = 0;
   std::uint64_t skippedRecords = 0;   // bad records passed over (--skip-bad)
   double wallSeconds = 0.0;
+  bool stopped = false;  // ended early by ReplayOptions::stop
 };
 
 // Throws RecordingError (a bad recording), ConfigError (bad options) or the render errors.

@@ -22,13 +22,13 @@ std::shared_ptr<const sky::night::StarCatalogue> loadConfiguredStarCatalogue(con
   }
 }
 
-void loadSkyData(NodeConfig& config) {
+void loadSkyData(NodeConfig& config, const std::atomic<bool>* stop) {
   // The catalogue first: a missing file stops the command at once, not after a precompute.
   // Proper motion at the configured observer's epoch: a host's clock years away moves a bright
   // star by under an arcminute.
   if (!config.sky.starCatalogue)
     config.sky.starCatalogue = loadConfiguredStarCatalogue(config.starCataloguePath, config.observer.utc);
-  loadAtmosphereIfNeeded(config);
+  loadAtmosphereIfNeeded(config, stop);
 }
 
 }  // namespace skyig::services

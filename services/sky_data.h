@@ -4,6 +4,7 @@
 #include "sky/night/star_catalogue.h"
 #include "services/node_config.h"
 
+#include <atomic>
 #include <memory>
 #include <string>
 
@@ -21,7 +22,8 @@ std::shared_ptr<const sky::night::StarCatalogue> loadConfiguredStarCatalogue(con
                                                                               const ephemeris::UtcTime& epoch);
 
 // Sets config.sky.atmosphere (physical model) and config.sky.starCatalogue (at the observer's
-// epoch) where they are not set yet.
-void loadSkyData(NodeConfig& config);
+// epoch) where they are not set yet. Once `stop` is set, a precompute of the tables ends within
+// a slice with atmosphere::Cancelled (a command signalled while it starts).
+void loadSkyData(NodeConfig& config, const std::atomic<bool>* stop = nullptr);
 
 }  // namespace skyig::services

@@ -149,14 +149,8 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
   }
   const std::vector<double>& w = config.wavelengthsNm;
   (void)atmosphere::SpectralConverter(w);  // throws std::invalid_argument on bad wavelengths
-  // As AtmosphereModel: groups of four, the last padded by repeating the last wavelength;
-  // makeParameters validates the medium and the sizes.
-  std::vector<AtmosphereParameters> params;
-  for (std::size_t g = 0; g < (w.size() + 3) / 4; ++g) {
-    std::array<double, 4> group{};
-    for (std::size_t i = 0; i < 4; ++i) group[i] = w[std::min(g * 4 + i, w.size() - 1)];
-    params.push_back(atmosphere::makeParameters(config.medium, group, config.sizes));
-  }
+  // The groups as AtmosphereModel makes them (validates the medium and the sizes).
+  const std::vector<AtmosphereParameters> params = atmosphere::groupParameters(config);
 
   if (options.density_divisor != 1 && options.density_divisor != 2) {
     throw std::invalid_argument("atmosphere GPU precompute: density_divisor = " +
@@ -179,13 +173,28 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
 
   // Each pass's local size is that of its .comp file (llvmpipe runs a workgroup's
   // invocations as SIMD lanes: 8 x 8, one radius per group, keeps the branches on the ground
-  // intersection coherent).
-  auto run = [&](GLuint program, int width, int height, int depth, double& seconds) {
+  // intersection coherent). A 3D pass (local depth 1) runs one radius per dispatch, finished
+  // before the next, so a cancellation waits for one slice (~1 s of llvmpipe at the default
+  // sizes' costliest pass) instead of the whole pass (30 s).
+  const atmosphere::CancelToken& cancel = options.control.cancel;
+  std::string group_prefix;
+  auto run = [&](GLuint program, int width, int height, int depth, double& seconds, const std::string& name) {
+    options.control.begin(group_prefix + name);
     const auto pass_start = Clock::now();
     GLint local[3] = {1, 1, 1};
     glGetProgramiv(program, GL_COMPUTE_WORK_GROUP_SIZE, local);
     glUseProgram(program);
-    glDispatchCompute(groups(width, local[0]), groups(height, local[1]), groups(depth, local[2]));
+    const GLint z_offset = glGetUniformLocation(program, "z_offset");
+    const int slice = z_offset >= 0 ? local[2] : depth;
+    for (int z = 0; z < depth; z += slice) {
+      if (z > 0) {
+        glFinish();
+        cancel.throwIfRequested();
+      }
+      if (z_offset >= 0) glUniform1i(z_offset, z);
+      glDispatchCompute(groups(width, local[0]), groups(height, local[1]),
+                        groups(std::min(slice, depth - z), local[2]));
+    }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     if (options.time_passes) {
       glFinish();
@@ -196,6 +205,7 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
   std::vector<GroupTables> out(params.size());
   for (std::size_t g = 0; g < params.size(); ++g) {
     const auto group_start = Clock::now();
+    group_prefix = "group " + std::to_string(g + 1) + "/" + std::to_string(params.size()) + ": ";
     for (GLuint program : p.all()) setAtmosphereUniforms(program, "atm", params[g]);
     AtmosphereParameters density_params = params[g];
     density_params.scattering_r_size = density_sizes.scatteringR;
@@ -204,17 +214,18 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
     for (GLuint unit = 0; unit < SKYIG_PRECOMPUTE_UNIT_COUNT; ++unit) glBindTextureUnit(unit, 0);
 
     image(SKYIG_IMAGE_TRANSMITTANCE, x.transmittance, GL_WRITE_ONLY);
-    run(p.transmittance, s.transmittanceMu, s.transmittanceR, 1, t.transmittance);
+    run(p.transmittance, s.transmittanceMu, s.transmittanceR, 1, t.transmittance, "transmittance");
     glBindTextureUnit(SKYIG_UNIT_TRANSMITTANCE, x.transmittance);
     image(SKYIG_IMAGE_DELTA_IRRADIANCE, x.delta_irradiance, GL_WRITE_ONLY);
     image(SKYIG_IMAGE_IRRADIANCE, x.irradiance, GL_WRITE_ONLY);
-    run(p.direct, s.irradianceMuS, s.irradianceR, 1, t.direct_irradiance);
+    run(p.direct, s.irradianceMuS, s.irradianceR, 1, t.direct_irradiance, "direct irradiance");
     image(SKYIG_IMAGE_DELTA_RAYLEIGH, x.delta_rayleigh, GL_WRITE_ONLY);
     image(SKYIG_IMAGE_DELTA_MIE, x.delta_mie, GL_WRITE_ONLY);
     image(SKYIG_IMAGE_SCATTERING, x.scattering, GL_WRITE_ONLY);
     image(SKYIG_IMAGE_SINGLE_MIE, x.single_mie, GL_WRITE_ONLY);
-    run(p.single, sw, sh, sd, t.single_scattering);
+    run(p.single, sw, sh, sd, t.single_scattering, "single scattering");
     for (int order = 2; order <= orders; ++order) {
+      const std::string order_text = ", order " + std::to_string(order) + "/" + std::to_string(orders);
       glBindTextureUnit(SKYIG_UNIT_DELTA_RAYLEIGH, x.delta_rayleigh);
       glBindTextureUnit(SKYIG_UNIT_DELTA_MIE, x.delta_mie);
       glBindTextureUnit(SKYIG_UNIT_DELTA_MULTIPLE, x.delta_multiple);
@@ -222,24 +233,25 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
       image(SKYIG_IMAGE_NU_SLICES_A, x.slices_a, GL_WRITE_ONLY);
       image(SKYIG_IMAGE_NU_SLICES_B, x.slices_b, GL_WRITE_ONLY);
       setOrder(p.slices, order);
-      run(p.slices, s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS, density_sizes.scatteringR,
-          t.nu_slices);
+      run(p.slices, s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS, density_sizes.scatteringR, t.nu_slices,
+          "nu slices" + order_text);
       glBindTextureUnit(SKYIG_UNIT_NU_SLICES_A, x.slices_a);
       glBindTextureUnit(SKYIG_UNIT_NU_SLICES_B, x.slices_b);
       image(SKYIG_IMAGE_DELTA_DENSITY, x.delta_density, GL_WRITE_ONLY);
       setOrder(p.density, order);
-      run(p.density, sw, density_sizes.scatteringMu, density_sizes.scatteringR, t.scattering_density);
+      run(p.density, sw, density_sizes.scatteringMu, density_sizes.scatteringR, t.scattering_density,
+          "scattering density" + order_text);
       // delta_irradiance and delta_multiple are rewritten next: unbind them as samplers.
       glBindTextureUnit(SKYIG_UNIT_DELTA_IRRADIANCE, 0);
       image(SKYIG_IMAGE_DELTA_IRRADIANCE, x.delta_irradiance, GL_WRITE_ONLY);
       image(SKYIG_IMAGE_IRRADIANCE, x.irradiance, GL_READ_WRITE);
       setOrder(p.indirect, order);
-      run(p.indirect, s.irradianceMuS, s.irradianceR, 1, t.indirect_irradiance);
+      run(p.indirect, s.irradianceMuS, s.irradianceR, 1, t.indirect_irradiance, "indirect irradiance" + order_text);
       glBindTextureUnit(SKYIG_UNIT_DELTA_MULTIPLE, 0);
       glBindTextureUnit(SKYIG_UNIT_DELTA_DENSITY, x.delta_density);
       image(SKYIG_IMAGE_DELTA_MULTIPLE, x.delta_multiple, GL_WRITE_ONLY);
       image(SKYIG_IMAGE_SCATTERING, x.scattering, GL_READ_WRITE);
-      run(p.multiple, sw, sh, sd, t.multiple_scattering);
+      run(p.multiple, sw, sh, sd, t.multiple_scattering, "multiple scattering" + order_text);
     }
 
     const auto read_start = Clock::now();

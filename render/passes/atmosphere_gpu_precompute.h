@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sky/atmosphere/model.h"
+#include "sky/atmosphere/precompute_control.h"
 
 namespace skyig::render {
 
@@ -41,6 +42,9 @@ struct GpuPrecomputeOptions {
   int density_divisor = 1;
   // Called after each group with a line such as "group 2/4 done (3.1 s)".
   std::function<void(const std::string&)> progress;
+  // Stops the precompute between passes and between the radius slices of a 3D pass (Cancelled),
+  // and hears each pass start as "group 2/4: scattering density, order 3/4".
+  atmosphere::PrecomputeControl control;
 };
 
 class AtmosphereGpuPrecompute {

@@ -5,21 +5,19 @@
 #include "services/recorder.h"
 #include "services/replay.h"
 #include "services/sky_data.h"
+#include "services/stop_signal.h"
+#include "sky/atmosphere/precompute_control.h"
 
 #include <poll.h>
 #include <unistd.h>
 
 #include <array>
-#include <csignal>
 #include <cstdio>
 #include <memory>
 
 namespace skyig::services {
 
 namespace {
-
-std::atomic<bool> gStopRecording{false};
-extern "C" void onRecordSignal(int) { gStopRecording.store(true); }
 
 struct RecordOptions {
   std::string listen = "0.0.0.0:8004";
@@ -32,6 +30,7 @@ struct RecordOptions {
 };
 
 int runRecord(const RecordOptions& o) {
+  const StopOnSignal signals;
   if (o.out.empty() && o.canOut.empty()) throw ConfigError("record: give --out FILE.pcap and/or --can IF --can-out FILE.log");
   if (!o.canOut.empty() && o.canInterface.empty()) throw ConfigError("--can-out needs --can INTERFACE");
   Endpoint listen;
@@ -52,9 +51,6 @@ int runRecord(const RecordOptions& o) {
     canFd = openSocketCan(o.canInterface);
     candump = std::make_unique<CandumpRecorder>(o.canOut, o.canInterface);
   }
-  gStopRecording = false;
-  std::signal(SIGINT, onRecordSignal);
-  std::signal(SIGTERM, onRecordSignal);
   std::fprintf(stderr, "recording%s%s; Ctrl-C stops\n", udp ? (" UDP " + udp->localEndpoint().toString() + " to " + o.out).c_str() : "",
                candump ? (" CAN " + o.canInterface + " to " + o.canOut).c_str() : "");
   const auto start = std::chrono::steady_clock::now();
@@ -63,7 +59,7 @@ int runRecord(const RecordOptions& o) {
   auto unixNs = [] {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
   };
-  while (!gStopRecording) {
+  while (!signals.requested()) {
     if (o.durationS > 0.0 && std::chrono::steady_clock::now() - start > std::chrono::duration<double>(o.durationS)) break;
     if (o.count > 0 && datagrams + frames >= o.count) break;
     if (udp) {
@@ -106,9 +102,10 @@ struct ReplayCli {
 };
 
 int runReplay(ReplayCli& cli) {
+  const StopOnSignal signals;  // the first SIGINT/SIGTERM ends the replay after its frame, with the summary
   ReplayOptions& o = cli.options;
+  o.stop = &signals.flag();
   o.config = cli.configPath.empty() ? NodeConfig{} : loadNodeConfig(cli.configPath);
-  loadSkyData(o.config);
   if (!cli.size.empty())
     for (auto& c : o.config.channels) parseSize(cli.size, c.width, c.height);
   if (cli.exr || cli.png) o.writeExr = cli.exr, o.writePng = cli.png;
@@ -120,12 +117,19 @@ int runReplay(ReplayCli& cli) {
     }
   }
   o.progress = !cli.quiet;
-  const ReplayResult r = replay(o);
+  ReplayResult r;
+  try {
+    loadSkyData(o.config, o.stop);
+    r = replay(o);
+  } catch (const atmosphere::Cancelled&) {
+    r.stopped = true;  // signalled while the tables were being built: nothing replayed
+  }
   std::printf("replayed %llu host messages%s: %llu frames, %llu images in %.2f s (%.1f frames/s)%s\n",
               static_cast<unsigned long long>(r.events), o.sendTo ? (" to " + o.sendTo->toString()).c_str() : "",
               static_cast<unsigned long long>(r.frames), static_cast<unsigned long long>(r.imagesWritten), r.wallSeconds,
               r.wallSeconds > 0 ? static_cast<double>(r.frames) / r.wallSeconds : 0.0,
               r.skippedRecords ? (", skipped " + std::to_string(r.skippedRecords) + " bad records").c_str() : "");
+  if (r.stopped) std::printf("stopped by a signal before the end of the recording\n");
   return 0;
 }
 

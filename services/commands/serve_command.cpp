@@ -3,18 +3,17 @@
 #include "render/image_io.h"
 #include "services/node.h"
 #include "services/sky_data.h"
+#include "services/state_dump.h"
+#include "services/stop_signal.h"
+#include "sky/atmosphere/precompute_control.h"
 
 #include <spdlog/spdlog.h>
 
-#include <csignal>
 #include <memory>
 
 namespace skyig::services {
 
 namespace {
-
-std::atomic<bool> gStop{false};
-extern "C" void onSignal(int) { gStop.store(true); }
 
 struct ServeOptions {
   std::string configPath;
@@ -28,10 +27,11 @@ struct ServeOptions {
 };
 
 int run(const ServeOptions& o) {
+  const StopOnSignal signals;  // from the start: a node stopped while its tables build exits 0
   NodeOptions opt;
   opt.config = o.configPath.empty() ? NodeConfig{} : loadNodeConfig(o.configPath);
   if (!o.node.empty()) opt.config.nodeName = o.node;
-  loadSkyData(opt.config);
+  spdlog::info("configuration: {}", o.configPath.empty() ? std::string("the built-in defaults") : o.configPath);
   const HostLink& h = opt.config.host;
   try {
     opt.listen = parseEndpoint(o.listen.empty() ? h.listen : o.listen);
@@ -57,13 +57,17 @@ int run(const ServeOptions& o) {
   const std::string can = o.canInterface.empty() ? h.canInterface : o.canInterface;
   if (!can.empty()) opt.canInterface = can;
 
-  gStop = false;
-  std::signal(SIGINT, onSignal);
-  std::signal(SIGTERM, onSignal);
   NodeStats stats;
-  const int code = runNode(opt, stats, gStop);
-  spdlog::info("stopped after {} frames; {} datagrams, {} malformed", stats.frames.load(), stats.datagrams.load(),
-               stats.malformedDatagrams.load());
+  int code = 0;
+  try {
+    loadSkyData(opt.config, &signals.flag());
+    code = runNode(opt, stats, signals.flag());
+  } catch (const atmosphere::Cancelled&) {
+    // Signalled while the tables were being built: nothing was served, which the stats say.
+    if (!opt.statsPath.empty()) writeStatsFile(opt.statsPath, stats);
+  }
+  spdlog::info("stopped{} after {} frames; {} datagrams, {} malformed", signals.requested() ? " by a signal" : "",
+               stats.frames.load(), stats.datagrams.load(), stats.malformedDatagrams.load());
   return code;
 }
 

@@ -24,8 +24,11 @@ vec4 integrand(Float r, Float mu, Float mu_s, Float nu, Float d, bool ray_r_mu_i
          transmittanceAlongRay(atm, transmittance_texture, r, mu, d, ray_r_mu_intersects_ground);
 }
 
+// The first radius (z) of this dispatch: the pass runs a slice of radii at a time, so that a
+// precompute can stop between slices (render/passes/atmosphere_gpu_precompute.cpp).
+uniform int z_offset;
 void main() {
-  ivec3 texel = ivec3(gl_GlobalInvocationID);
+  ivec3 texel = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, z_offset);
   if (any(greaterThanEqual(texel, imageSize(delta_multiple_out)))) {
     return;
   }

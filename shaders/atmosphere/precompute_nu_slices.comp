@@ -21,8 +21,11 @@ layout(binding = SKYIG_UNIT_DELTA_MIE) uniform sampler3D single_mie_texture;
 layout(binding = SKYIG_UNIT_DELTA_MULTIPLE) uniform sampler3D multiple_texture;
 layout(binding = SKYIG_IMAGE_NU_SLICES_A, rgba32f) uniform writeonly image3D slices_a_out;  // Rayleigh or delta S
 layout(binding = SKYIG_IMAGE_NU_SLICES_B, rgba32f) uniform writeonly image3D slices_b_out;  // Mie (order 1)
+// The first radius (z) of this dispatch: the pass runs a slice of radii at a time, so that a
+// precompute can stop between slices (render/passes/atmosphere_gpu_precompute.cpp).
+uniform int z_offset;
 void main() {
-  ivec3 texel = ivec3(gl_GlobalInvocationID);
+  ivec3 texel = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, z_offset);
   if (any(greaterThanEqual(texel, imageSize(slices_a_out)))) {
     return;
   }

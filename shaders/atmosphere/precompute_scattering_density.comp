@@ -62,8 +62,11 @@ vec4 incidentRadiance(Float r, Float mu_s, Float nu1_unclamped, int slice_y, int
   return radiance;
 }
 
+// The first radius (z) of this dispatch: the pass runs a slice of radii at a time, so that a
+// precompute can stop between slices (render/passes/atmosphere_gpu_precompute.cpp).
+uniform int z_offset;
 void main() {
-  ivec3 texel = ivec3(gl_GlobalInvocationID);
+  ivec3 texel = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, z_offset);
   if (any(greaterThanEqual(texel, imageSize(density_out)))) {
     return;
   }

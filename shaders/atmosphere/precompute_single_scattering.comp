@@ -9,8 +9,11 @@ layout(binding = SKYIG_IMAGE_DELTA_RAYLEIGH, rgba32f) uniform writeonly image3D 
 layout(binding = SKYIG_IMAGE_DELTA_MIE, rgba32f) uniform writeonly image3D delta_mie_out;
 layout(binding = SKYIG_IMAGE_SCATTERING, rgba32f) uniform writeonly image3D scattering_out;
 layout(binding = SKYIG_IMAGE_SINGLE_MIE, rgba32f) uniform writeonly image3D single_mie_out;
+// The first radius (z) of this dispatch: the pass runs a slice of radii at a time, so that a
+// precompute can stop between slices (render/passes/atmosphere_gpu_precompute.cpp).
+uniform int z_offset;
 void main() {
-  ivec3 texel = ivec3(gl_GlobalInvocationID);
+  ivec3 texel = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, z_offset);
   if (any(greaterThanEqual(texel, imageSize(delta_rayleigh_out)))) {
     return;
   }

@@ -60,16 +60,17 @@ AtmosphereModel::AtmosphereModel(const ModelConfig& config, std::vector<GroupTab
   }
 }
 
-void AtmosphereModel::setUp() {
-  validate(config_.medium);
-  validate(config_.sizes);
-  const auto& w = config_.wavelengthsNm;
-  const std::size_t groups = (w.size() + 3) / 4;
-  params_.clear();
-  for (std::size_t g = 0; g < groups; ++g) {
-    params_.push_back(makeParameters(config_.medium, groupWavelengths(w, g), config_.sizes));
-  }
+std::vector<AtmosphereParameters> groupParameters(const ModelConfig& config) {
+  validate(config.medium);
+  validate(config.sizes);
+  const auto& w = config.wavelengthsNm;
+  std::vector<AtmosphereParameters> params;
+  for (std::size_t g = 0; g < (w.size() + 3) / 4; ++g)
+    params.push_back(makeParameters(config.medium, groupWavelengths(w, g), config.sizes));
+  return params;
 }
+
+void AtmosphereModel::setUp() { params_ = groupParameters(config_); }
 
 template <typename Fn>
 Spectrum AtmosphereModel::perGroup(Fn fn, Spectrum* second) const {

@@ -29,6 +29,11 @@ struct ModelConfig {
   PrecomputeOptions options;
 };
 
+// The shader-side parameters of each group of four wavelengths of `config`, the last group
+// padded by repeating the last wavelength; validates the medium and the sizes (throws
+// std::invalid_argument). The CPU and GPU precomputes and the model all group them so.
+std::vector<AtmosphereParameters> groupParameters(const ModelConfig& config);
+
 class AtmosphereModel {
  public:
   // Precomputes every group's tables (throws std::invalid_argument on a bad config).

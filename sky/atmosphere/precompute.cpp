@@ -84,53 +84,61 @@ sampler3D makeScattering(const AtmosphereParameters& atm) {
                    size(atm.scattering_mu_size), size(atm.scattering_r_size));
 }
 
-// Fills a 2D table texel by texel; rows in parallel.
+// Fills a 2D table texel by texel; rows in parallel. A cancelled pass skips its remaining rows
+// and throws Cancelled.
 template <typename Fn>
-void fill2D(sampler2D& t, int threads, Fn fn) {
+void fill2D(sampler2D& t, int threads, const CancelToken& cancel, Fn fn) {
   parallelFor(t.height, threads, [&](int y) {
+    if (cancel.requested()) return;
     for (int x = 0; x < t.width; ++x) t.at(x, y) = fn(glm::dvec2(x + 0.5, y + 0.5));
   });
+  cancel.throwIfRequested();
 }
 
-// Runs fn(x, y, z, frag_coord) over a 3D table; (z, y) rows in parallel.
+// Runs fn(x, y, z, frag_coord) over a 3D table; (z, y) rows in parallel, cancellable as fill2D.
 template <typename Fn>
-void for3D(const sampler3D& t, int threads, Fn fn) {
+void for3D(const sampler3D& t, int threads, const CancelToken& cancel, Fn fn) {
   parallelFor(t.depth * t.height, threads, [&](int row) {
+    if (cancel.requested()) return;
     const int z = row / t.height;
     const int y = row % t.height;
     for (int x = 0; x < t.width; ++x) fn(x, y, z, glm::dvec3(x + 0.5, y + 0.5, z + 0.5));
   });
+  cancel.throwIfRequested();
 }
 
 }  // namespace
 
-GroupTables precomputeGroup(const AtmosphereParameters& atm, const PrecomputeOptions& options) {
+GroupTables precomputeGroup(const AtmosphereParameters& atm, const PrecomputeOptions& options,
+                            const PrecomputeControl& control) {
   if (options.scatteringOrders < 1 || options.scatteringOrders > 32) {
     throw std::invalid_argument("atmosphere precompute: scattering_orders = " +
                                 std::to_string(options.scatteringOrders) +
                                 " is invalid (expected 1 to 32)");
   }
   const int threads = options.threads;
+  const CancelToken& cancel = control.cancel;
   GroupTables out;
 
   // 1. Transmittance to the top of the atmosphere.
+  control.begin("transmittance");
   out.transmittance = make2D(atm.transmittance_width, atm.transmittance_height);
-  fill2D(out.transmittance, threads, [&](const glm::dvec2& frag) {
-    return shader::computeTransmittanceTexel(atm, frag);
-  });
+  fill2D(out.transmittance, threads, cancel,
+         [&](const glm::dvec2& frag) { return shader::computeTransmittanceTexel(atm, frag); });
   const sampler2D& transmittance = out.transmittance;
 
   // 2. Direct irradiance (order 0 on the ground): feeds order 2; not part of the sky table.
+  control.begin("direct irradiance");
   sampler2D deltaIrradiance = make2D(atm.irradiance_width, atm.irradiance_height);
-  fill2D(deltaIrradiance, threads, [&](const glm::dvec2& frag) {
-    return shader::computeDirectIrradianceTexel(atm, transmittance, frag);
-  });
+  fill2D(deltaIrradiance, threads, cancel,
+         [&](const glm::dvec2& frag) { return shader::computeDirectIrradianceTexel(atm, transmittance, frag); });
   out.irradiance = make2D(atm.irradiance_width, atm.irradiance_height);
 
   // 3. Single scattering, Rayleigh and Mie apart.
+  control.begin("single scattering");
   sampler3D deltaRayleigh = makeScattering(atm);
   sampler3D deltaMie = makeScattering(atm);
-  for3D(deltaRayleigh, threads, [&](int x, int y, int z, const glm::dvec3& frag) {
+  for3D(deltaRayleigh, threads, cancel, [&](int x, int y, int z, const glm::dvec3& frag) {
     glm::dvec4 rayleigh;
     glm::dvec4 mie;
     shader::computeSingleScatteringTexel(atm, transmittance, frag, rayleigh, mie);
@@ -144,19 +152,23 @@ GroupTables precomputeGroup(const AtmosphereParameters& atm, const PrecomputeOpt
   sampler3D deltaMultiple = makeScattering(atm);
   sampler3D deltaDensity = makeScattering(atm);
   for (int order = 2; order <= options.scatteringOrders; ++order) {
-    for3D(deltaDensity, threads, [&](int x, int y, int z, const glm::dvec3& frag) {
+    const std::string orderText = ", order " + std::to_string(order) + "/" + std::to_string(options.scatteringOrders);
+    control.begin("scattering density" + orderText);
+    for3D(deltaDensity, threads, cancel, [&](int x, int y, int z, const glm::dvec3& frag) {
       deltaDensity.at(x, y, z) = shader::computeScatteringDensityTexel(
           atm, transmittance, deltaRayleigh, deltaMie, deltaMultiple, deltaIrradiance, frag,
           order);
     });
-    fill2D(deltaIrradiance, threads, [&](const glm::dvec2& frag) {
+    control.begin("indirect irradiance" + orderText);
+    fill2D(deltaIrradiance, threads, cancel, [&](const glm::dvec2& frag) {
       return shader::computeIndirectIrradianceTexel(atm, deltaRayleigh, deltaMie,
                                                     deltaMultiple, frag, order - 1);
     });
     for (std::size_t i = 0; i < out.irradiance.texels.size(); ++i) {
       out.irradiance.texels[i] += deltaIrradiance.texels[i];
     }
-    for3D(deltaMultiple, threads, [&](int x, int y, int z, const glm::dvec3& frag) {
+    control.begin("multiple scattering" + orderText);
+    for3D(deltaMultiple, threads, cancel, [&](int x, int y, int z, const glm::dvec3& frag) {
       double nu = 0.0;
       const glm::dvec4 radiance =
           shader::computeMultipleScatteringTexel(atm, transmittance, deltaDensity, frag, nu);

@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "sky/atmosphere/medium.h"
+#include "sky/atmosphere/precompute_control.h"
 #include "sky/atmosphere/tables.h"
 #include "shaders/atmosphere_physics.h"
 
@@ -27,6 +28,8 @@ AtmosphereParameters makeParameters(const Medium& medium, const std::array<doubl
 // exception.
 void parallelFor(int count, int threads, const std::function<void(int)>& fn);
 
-GroupTables precomputeGroup(const AtmosphereParameters& atm, const PrecomputeOptions& options);
+// One group's tables; `control` can stop it (Cancelled) between rows and hears each pass start.
+GroupTables precomputeGroup(const AtmosphereParameters& atm, const PrecomputeOptions& options,
+                            const PrecomputeControl& control = {});
 
 }  // namespace skyig::atmosphere

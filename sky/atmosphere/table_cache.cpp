@@ -1,6 +1,8 @@
 #include "sky/atmosphere/table_cache.h"
 
 #include <array>
+#include <cerrno>
+#include <chrono>
 #include <bit>
 #include <cstring>
 #include <fstream>
@@ -13,6 +15,7 @@
 #include <unistd.h>
 
 #include "sky/atmosphere/parameter_hash.h"
+#include "sky/atmosphere/precompute.h"
 
 namespace skyig::atmosphere {
 
@@ -178,15 +181,25 @@ namespace {
 
 // An exclusive advisory lock on `path`.lock for the scope: two processes needing the same
 // tables (ctest -j, two skyig instances on a node) compute them once, the second one loads.
+// The wait for it is polled so that a cancelled caller does not wait out the other's minutes.
 class FileLock {
  public:
-  explicit FileLock(const std::filesystem::path& path) {
+  FileLock(const std::filesystem::path& path, const CancelToken& cancel) {
     std::error_code ec;
     std::filesystem::create_directories(path.parent_path(), ec);
     fd_ = ::open((path.string() + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ >= 0 && ::flock(fd_, LOCK_EX) != 0) {
-      ::close(fd_);
-      fd_ = -1;  // no lock: still correct (atomic rename), just possibly computed twice
+    if (fd_ < 0) return;  // no lock: still correct (atomic rename), just possibly computed twice
+    while (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      if (errno != EWOULDBLOCK && errno != EINTR) {
+        ::close(fd_);
+        fd_ = -1;
+        return;
+      }
+      if (cancel.requested()) {
+        ::close(fd_);
+        throw Cancelled();
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
   }
   ~FileLock() {
@@ -201,30 +214,36 @@ class FileLock {
 
 }  // namespace
 
-std::vector<GroupTables> precomputeTablesOnCpu(const ModelConfig& config) {
-  const AtmosphereModel computed(config);
+std::vector<GroupTables> precomputeTablesOnCpu(const ModelConfig& config, const PrecomputeControl& control) {
+  const std::vector<AtmosphereParameters> groups = groupParameters(config);
   std::vector<GroupTables> tables;
-  for (std::size_t g = 0; g < computed.groupCount(); ++g) tables.push_back(computed.tables(g));
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    PrecomputeControl group{control.cancel, {}};
+    if (control.step) {
+      const std::string prefix = "group " + std::to_string(g + 1) + "/" + std::to_string(groups.size()) + ": ";
+      group.step = [&](const std::string& name) { control.step(prefix + name); };
+    }
+    tables.push_back(precomputeGroup(groups[g], config.options, group));
+  }
   return tables;
 }
 
 AtmosphereModel loadOrPrecompute(const ModelConfig& config,
                                  const std::filesystem::path& directory, CacheResult* result) {
-  return loadOrPrecompute(config, directory, result, precomputeTablesOnCpu);
+  return loadOrPrecompute(config, directory, result, TableBuilder(precomputeTablesOnCpu));
 }
 
-AtmosphereModel loadOrPrecompute(const ModelConfig& config,
-                                 const std::filesystem::path& directory, CacheResult* result,
-                                 const TableBuilder& builder) {
+AtmosphereModel loadOrPrecompute(const ModelConfig& config, const std::filesystem::path& directory, CacheResult* result,
+                                 const TableBuilder& builder, const PrecomputeControl& control) {
   const auto path = cacheFilePath(directory, config);
-  const FileLock lock(path);
+  const FileLock lock(path, control.cancel);
   std::string reason;
   if (auto tables = readTableCache(path, config, &reason)) {
     if (result) *result = {CacheOutcome::kLoaded, "", path};
     return AtmosphereModel(config, std::move(*tables));
   }
   const bool existed = std::filesystem::exists(path);
-  std::vector<GroupTables> tables = builder(config);  // validates the config (or throws)
+  std::vector<GroupTables> tables = builder(config, control);  // validates the config (or throws)
   roundTablesToFloat(tables);
   writeTableCache(path, config, tables);
   if (result) *result = {existed ? CacheOutcome::kRebuilt : CacheOutcome::kComputed, reason, path};

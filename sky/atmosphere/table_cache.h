@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "sky/atmosphere/model.h"
+#include "sky/atmosphere/precompute_control.h"
 
 namespace skyig::atmosphere {
 
@@ -59,19 +60,21 @@ struct CacheResult {
 // Computes the tables of every group of a config. The CPU reference is the default; the GPU
 // precompute (render/passes/atmosphere_gpu_precompute.h) is one too, passed in by code that may use
 // GL (this library must not). Either may throw; the cache key does not say which one made a
-// file (the GPU tables are within 0.3% of the CPU ones: docs/atmosphere.md).
-using TableBuilder = std::function<std::vector<GroupTables>(const ModelConfig&)>;
+// file (the GPU tables are within 0.3% of the CPU ones: docs/atmosphere.md). A builder stops
+// with Cancelled when control.cancel is set and names its steps to control.step.
+using TableBuilder = std::function<std::vector<GroupTables>(const ModelConfig&, const PrecomputeControl&)>;
 
-// The CPU precompute (precompute.h) of every group.
-std::vector<GroupTables> precomputeTablesOnCpu(const ModelConfig& config);
+// The CPU precompute (precompute.h) of every group; steps are named "group 2/4: ...".
+std::vector<GroupTables> precomputeTablesOnCpu(const ModelConfig& config, const PrecomputeControl& control = {});
 
 // Loads the model's tables from `directory` if a valid file matches the config; otherwise
 // precomputes them (with `builder`, the CPU by default), writes the file and returns the model.
+// While another process computes the same file this waits for it; `control.cancel` ends the
+// wait and the precompute alike (Cancelled, nothing written).
 AtmosphereModel loadOrPrecompute(const ModelConfig& config,
                                  const std::filesystem::path& directory,
                                  CacheResult* result = nullptr);
-AtmosphereModel loadOrPrecompute(const ModelConfig& config,
-                                 const std::filesystem::path& directory, CacheResult* result,
-                                 const TableBuilder& builder);
+AtmosphereModel loadOrPrecompute(const ModelConfig& config, const std::filesystem::path& directory, CacheResult* result,
+                                 const TableBuilder& builder, const PrecomputeControl& control = {});
 
 }  // namespace skyig::atmosphere

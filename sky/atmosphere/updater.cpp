@@ -1,19 +1,20 @@
 #include "sky/atmosphere/updater.h"
 
+#include <chrono>
 #include <exception>
 
 namespace skyig::atmosphere {
 
-AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial,
-                                     std::filesystem::path cacheDirectory)
-    : AtmosphereUpdater(initial, std::move(cacheDirectory), precomputeTablesOnCpu) {}
+AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cacheDirectory)
+    : AtmosphereUpdater(initial, std::move(cacheDirectory), TableBuilder(precomputeTablesOnCpu)) {}
 
-AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial,
-                                     std::filesystem::path cacheDirectory, TableBuilder builder)
+AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cacheDirectory,
+                                     TableBuilder builder, const std::atomic<bool>* stop)
     : cacheDirectory_(std::move(cacheDirectory)),
       builder_(builder ? std::move(builder) : TableBuilder(precomputeTablesOnCpu)),
+      stopFlag_(stop),
       current_(std::make_shared<const AtmosphereModel>(
-          loadOrPrecompute(initial, cacheDirectory_, nullptr, builder_))),
+          loadOrPrecompute(initial, cacheDirectory_, nullptr, builder_, {CancelToken(stopFlag_), {}}))),
       worker_([this] { run(); }) {}
 
 AtmosphereUpdater::~AtmosphereUpdater() {
@@ -21,8 +22,9 @@ AtmosphereUpdater::~AtmosphereUpdater() {
     std::lock_guard<std::mutex> lock(mutex_);
     stop_ = true;
   }
+  cancel_ = true;  // a running precomputation stops at its next slice
   wake_.notify_all();
-  worker_.join();  // a running precomputation finishes first (it has no cancellation point)
+  worker_.join();
 }
 
 void AtmosphereUpdater::request(const ModelConfig& config) {
@@ -50,7 +52,10 @@ std::string AtmosphereUpdater::lastError() const {
 
 void AtmosphereUpdater::waitIdle() {
   std::unique_lock<std::mutex> lock(mutex_);
-  idle_.wait(lock, [this] { return !busy_ && !pending_; });
+  const CancelToken stopped(stopFlag_);
+  // The stop flag is set from a signal handler, which cannot notify: poll it.
+  while (!idle_.wait_for(lock, std::chrono::milliseconds(50), [this] { return !busy_ && !pending_; }))
+    if (stopped.requested()) return;
 }
 
 void AtmosphereUpdater::run() {
@@ -65,7 +70,10 @@ void AtmosphereUpdater::run() {
     std::shared_ptr<const AtmosphereModel> model;
     std::string error;
     try {
-      model = std::make_shared<const AtmosphereModel>(loadOrPrecompute(config, cacheDirectory_, nullptr, builder_));
+      model = std::make_shared<const AtmosphereModel>(
+          loadOrPrecompute(config, cacheDirectory_, nullptr, builder_, {CancelToken(&cancel_, stopFlag_), {}}));
+    } catch (const Cancelled&) {
+      // stopping: nothing to report
     } catch (const std::exception& e) {
       error = e.what();
     }

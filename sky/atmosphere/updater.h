@@ -4,6 +4,7 @@
 // lock held while computing). A caller never waits for a precomputation: until the new model
 // is ready it keeps getting the previous one. A request that fails (bad parameters) is
 // reported and the last good model stays.
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <filesystem>
@@ -22,10 +23,13 @@ class AtmosphereUpdater {
   // Loads or computes the initial model before returning (throws on a bad config). Tables
   // missing from the cache are computed by `builder` (the CPU precompute by default; the node
   // passes the GPU one, services/atmosphere_loader.h), on the calling thread for the initial
-  // model and on the updater's own thread afterwards.
+  // model and on the updater's own thread afterwards. `stop`, when given, is the owner's stop
+  // flag (a signalled command): once set, the initial precompute, a running one and waitIdle()
+  // all end at once (the first by throwing Cancelled).
   AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cacheDirectory);
-  AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cacheDirectory,
-                    TableBuilder builder);
+  AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cacheDirectory, TableBuilder builder,
+                    const std::atomic<bool>* stop = nullptr);
+  // Cancels a running precompute (it stops within one of its slices) and joins the thread.
   ~AtmosphereUpdater();
   AtmosphereUpdater(const AtmosphereUpdater&) = delete;
   AtmosphereUpdater& operator=(const AtmosphereUpdater&) = delete;
@@ -38,7 +42,7 @@ class AtmosphereUpdater {
   std::uint64_t generation() const;
   // Why the last failed request failed; empty if none failed since the last success.
   std::string lastError() const;
-  // Blocks until no request is pending or running (tests, shutdown).
+  // Blocks until no request is pending or running (replay, tests), or the stop flag is set.
   void waitIdle();
 
  private:
@@ -46,6 +50,8 @@ class AtmosphereUpdater {
 
   const std::filesystem::path cacheDirectory_;
   const TableBuilder builder_;
+  std::atomic<bool> cancel_{false};  // set by the destructor
+  const std::atomic<bool>* stopFlag_;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::condition_variable idle_;

@@ -7,6 +7,9 @@
 #include <EGL/egl.h>
 
 #include <array>
+#include <atomic>
+#include <chrono>
+#include <thread>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -66,7 +69,7 @@ TEST(AtmospherePrecomputeDevice, NamesParseAndBadOnesAreRejected) {
 TEST(AtmospherePrecomputeDevice, CpuBuilderGivesTheCpuReferenceAndSaysSo) {
   const ModelConfig c = tinyConfig();
   ::testing::internal::CaptureStderr();
-  const auto tables = atmosphereTableBuilder(PrecomputeDevice::kCpu)(c);
+  const auto tables = atmosphereTableBuilder(PrecomputeDevice::kCpu)(c, {});
   const std::string said = ::testing::internal::GetCapturedStderr();
   EXPECT_TRUE(sameTables(tables, atmosphere::precomputeTablesOnCpu(c)));
   EXPECT_NE(said.find("on the CPU in"), std::string::npos) << said;
@@ -76,7 +79,7 @@ TEST(AtmospherePrecomputeDevice, AutoUsesTheGpuWhenAContextCanBeMade) {
   if (!glAvailable()) GTEST_SKIP() << "no OpenGL 4.5 context through EGL";
   const ModelConfig c = tinyConfig();
   ::testing::internal::CaptureStderr();
-  const auto tables = atmosphereTableBuilder(PrecomputeDevice::kAuto)(c);
+  const auto tables = atmosphereTableBuilder(PrecomputeDevice::kAuto)(c, {});
   const std::string said = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(said.find("on the GPU in"), std::string::npos) << said;
   EXPECT_TRUE(sameTables(tables, render::precomputeTablesOnGpu(c)));
@@ -87,11 +90,11 @@ TEST(AtmospherePrecomputeDevice, InvalidConfigsThrowWhateverTheDevice) {
   ModelConfig c = tinyConfig();
   c.medium.miePhaseG = 1.5;
   for (PrecomputeDevice d : {PrecomputeDevice::kAuto, PrecomputeDevice::kCpu}) {
-    EXPECT_THROW(atmosphereTableBuilder(d)(c), std::invalid_argument);
+    EXPECT_THROW(atmosphereTableBuilder(d)(c, {}), std::invalid_argument);
   }
   c = tinyConfig();
   c.wavelengthsNm = {550.0, 440.0};
-  EXPECT_THROW(atmosphereTableBuilder(PrecomputeDevice::kAuto)(c), std::invalid_argument);
+  EXPECT_THROW(atmosphereTableBuilder(PrecomputeDevice::kAuto)(c, {}), std::invalid_argument);
 }
 
 // Runs in the child process of the next test, where EGL has no driver.
@@ -99,8 +102,8 @@ TEST(AtmospherePrecomputeDevice, WithoutGlChild) {
   if (!std::getenv("SKYIG_PRECOMPUTE_FALLBACK_CHILD")) GTEST_SKIP() << "run by AutoFallsBackToTheCpuWithoutGl";
   ASSERT_FALSE(glAvailable());
   const ModelConfig c = tinyConfig();
-  EXPECT_TRUE(sameTables(atmosphereTableBuilder(PrecomputeDevice::kAuto)(c), atmosphere::precomputeTablesOnCpu(c)));
-  EXPECT_THROW(atmosphereTableBuilder(PrecomputeDevice::kGpu)(c), render::GlContextError);
+  EXPECT_TRUE(sameTables(atmosphereTableBuilder(PrecomputeDevice::kAuto)(c, {}), atmosphere::precomputeTablesOnCpu(c)));
+  EXPECT_THROW(atmosphereTableBuilder(PrecomputeDevice::kGpu)(c, {}), render::GlContextError);
 }
 
 TEST(AtmospherePrecomputeDevice, AutoFallsBackToTheCpuWithoutGl) {
@@ -148,6 +151,66 @@ TEST(AtmospherePrecomputeDevice, UpdaterBuildsOnTheGpuFromItsThread) {
   atmosphere::roundTablesToFloat(expected);
   EXPECT_TRUE(sameTables({model->tables(0)}, expected));
   EXPECT_EQ(eglGetCurrentContext(), current);
+}
+
+// A cancelled GPU precompute stops within a radius slice of its pass: at the medium sizes the
+// scattering density pass alone takes ~10 s of llvmpipe, one of its 32 slices a third of one.
+TEST(AtmospherePrecomputeDevice, GpuPrecomputeStopsWithinASliceOfItsPass) {
+  if (!glAvailable()) GTEST_SKIP() << "no OpenGL 4.5 context through EGL";
+  ModelConfig c = atmosphere::testing::oneGroupConfig();
+  c.sizes = atmosphere::TableSizes::named("medium");
+  std::atomic<bool> cancel{false};
+  std::atomic<bool> inDensity{false};
+  render::GpuPrecomputeOptions options;
+  options.control.cancel = atmosphere::CancelToken(&cancel);
+  options.control.step = [&](const std::string& step) {
+    if (step.find("scattering density") != std::string::npos) inDensity = true;
+  };
+  std::atomic<bool> cancelled{false};
+  std::thread worker([&] {
+    try {
+      render::precomputeTablesOnGpu(c, options);
+    } catch (const atmosphere::Cancelled&) {
+      cancelled = true;
+    }
+  });
+  const auto start = std::chrono::steady_clock::now();
+  while (!inDensity && std::chrono::steady_clock::now() - start < std::chrono::seconds(120))
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_TRUE(inDensity.load());
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // into the pass
+  const auto asked = std::chrono::steady_clock::now();
+  cancel = true;
+  worker.join();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - asked).count();
+  EXPECT_TRUE(cancelled.load());
+  EXPECT_LT(seconds, 2.0);
+}
+
+// The loader's builder reports progress from its start and then every few seconds, and a
+// cancelled build writes no cache file.
+TEST(AtmospherePrecomputeDevice, LoaderSaysWhereItIsAndACancelledBuildCachesNothing) {
+  if (!glAvailable()) GTEST_SKIP() << "no OpenGL 4.5 context through EGL";
+  ModelConfig c = atmosphere::testing::oneGroupConfig();
+  c.sizes = atmosphere::TableSizes::named("medium");
+  const auto dir = std::filesystem::path(SKYIG_BINARY_DIR) / "atmosphere-test-cache" / "cancelled-build";
+  std::filesystem::remove_all(dir);
+  std::atomic<bool> cancel{false};
+  ::testing::internal::CaptureStderr();
+  std::thread stopper([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(4500));
+    cancel = true;
+  });
+  EXPECT_THROW(atmosphere::loadOrPrecompute(c, dir, nullptr, atmosphereTableBuilder(PrecomputeDevice::kGpu),
+                                            {atmosphere::CancelToken(&cancel), {}}),
+               atmosphere::Cancelled);
+  stopper.join();
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(said.find("physical sky: precomputing 1 wavelength groups"), 0u) << said;
+  EXPECT_NE(said.find("GPU precompute at group 1/1: "), std::string::npos) << said;  // after 3 s
+  EXPECT_FALSE(std::filesystem::exists(atmosphere::cacheFilePath(dir, c)));
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    EXPECT_EQ(entry.path().extension(), ".lock") << entry.path();  // no temporary left either
 }
 
 }  // namespace

@@ -3,10 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
+#include <string>
+#include <thread>
+#include <vector>
 #include <filesystem>
 #include <stdexcept>
 
 #include "sky/atmosphere/conditions.h"
+#include "sky/atmosphere/precompute.h"
 #include "sky/atmosphere/updater.h"
 #include "shared_models.h"
 
@@ -60,10 +65,10 @@ TEST(AtmosphereUpdater, UsesItsBuilderForTablesMissingFromTheCache) {
   std::filesystem::remove_all(dir);
   std::atomic<int> builds{0};
   std::atomic<double> lastAlbedo{-1.0};
-  const TableBuilder counting = [&](const ModelConfig& c) {
+  const TableBuilder counting = [&](const ModelConfig& c, const PrecomputeControl& control) {
     ++builds;
     lastAlbedo = c.medium.groundAlbedo;
-    return precomputeTablesOnCpu(c);
+    return precomputeTablesOnCpu(c, control);
   };
   {
     AtmosphereUpdater updater(tinyConfig(0.1), dir, counting);
@@ -90,7 +95,7 @@ TEST(AtmosphereUpdater, UsesItsBuilderForTablesMissingFromTheCache) {
 TEST(AtmosphereUpdater, AFailingBuilderKeepsTheLastGoodModel) {
   const auto dir = testing::testCacheDirectory() / "updater-builder-fails";
   std::filesystem::remove_all(dir);
-  const TableBuilder failsAboveHalf = [](const ModelConfig& c) -> std::vector<GroupTables> {
+  const TableBuilder failsAboveHalf = [](const ModelConfig& c, const PrecomputeControl&) -> std::vector<GroupTables> {
     if (c.medium.groundAlbedo > 0.5) throw std::runtime_error("no device for albedo above 0.5");
     return precomputeTablesOnCpu(c);
   };
@@ -99,6 +104,95 @@ TEST(AtmosphereUpdater, AFailingBuilderKeepsTheLastGoodModel) {
   updater.waitIdle();
   EXPECT_EQ(updater.lastError(), "no device for albedo above 0.5");
   EXPECT_DOUBLE_EQ(updater.current()->config().medium.groundAlbedo, 0.1);
+}
+
+// The updater's destructor does not wait out a precompute: the CPU one of one group at the
+// medium sizes takes minutes; it stops between rows, nothing is cached, within 2 s.
+TEST(AtmosphereUpdater, DestructionCancelsARunningPrecompute) {
+  const auto dir = testing::testCacheDirectory() / "updater-cancel";
+  std::filesystem::remove_all(dir);
+  ModelConfig slow = tinyConfig(0.1);
+  slow.sizes = TableSizes::named("medium");
+  slow.options.scatteringOrders = 4;
+  std::atomic<bool> started{false};
+  std::atomic<bool> cancelled{false};
+  const TableBuilder watched = [&](const ModelConfig& c, const PrecomputeControl& control) {
+    if (c.sizes.scatteringR == slow.sizes.scatteringR) started = true;
+    try {
+      return precomputeTablesOnCpu(c, control);
+    } catch (const Cancelled&) {
+      cancelled = true;
+      throw;
+    }
+  };
+  std::chrono::steady_clock::time_point asked;
+  {
+    AtmosphereUpdater updater(tinyConfig(0.1), dir, watched);
+    updater.request(slow);
+    const auto start = std::chrono::steady_clock::now();
+    while (!started && std::chrono::steady_clock::now() - start < std::chrono::seconds(30))
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ASSERT_TRUE(started.load());
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    asked = std::chrono::steady_clock::now();
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - asked).count();
+  EXPECT_TRUE(cancelled.load());
+  EXPECT_LT(seconds, 2.0);
+  EXPECT_FALSE(std::filesystem::exists(cacheFilePath(dir, slow)));
+}
+
+// The owner's stop flag (a signalled command): an initial precompute throws Cancelled at once,
+// and waitIdle() returns while a request is still building.
+TEST(AtmosphereUpdater, StopFlagEndsTheInitialPrecomputeAndWaitIdle) {
+  const auto dir = testing::testCacheDirectory() / "updater-stop";
+  std::filesystem::remove_all(dir);
+  std::atomic<bool> stop{true};
+  EXPECT_THROW(AtmosphereUpdater(tinyConfig(0.15), dir, TableBuilder{}, &stop), Cancelled);
+  EXPECT_FALSE(std::filesystem::exists(cacheFilePath(dir, tinyConfig(0.15))));
+
+  stop = false;
+  std::atomic<bool> building{false};
+  const TableBuilder waitsForStop = [&](const ModelConfig& c, const PrecomputeControl& control) {
+    if (c.medium.groundAlbedo > 0.5) {
+      building = true;
+      while (!control.cancel.requested()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      control.cancel.throwIfRequested();
+    }
+    return precomputeTablesOnCpu(c, control);
+  };
+  AtmosphereUpdater updater(tinyConfig(0.15), dir, waitsForStop, &stop);
+  updater.request(tinyConfig(0.7));
+  while (!building) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  std::thread signal([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    stop = true;
+  });
+  updater.waitIdle();  // returns: the flag is set and the build ends
+  signal.join();
+  EXPECT_DOUBLE_EQ(updater.current()->config().medium.groundAlbedo, 0.15);
+  EXPECT_EQ(updater.lastError(), "");
+}
+
+// A precompute asked to stop before it starts does no work at all.
+TEST(PrecomputeGroup, ThrowsCancelledWhenAskedToStop) {
+  std::atomic<bool> stop{true};
+  const ModelConfig c = tinyConfig(0.1);
+  std::vector<std::string> steps;
+  EXPECT_THROW(precomputeGroup(groupParameters(c)[0], c.options,
+                               {CancelToken(&stop), [&](const std::string& s) { steps.push_back(s); }}),
+               Cancelled);
+  EXPECT_TRUE(steps.empty());
+  stop = false;
+  precomputeGroup(groupParameters(c)[0], c.options,
+                  {CancelToken(&stop), [&](const std::string& s) { steps.push_back(s); }});
+  const std::vector<std::string> expected = {"transmittance",
+                                             "direct irradiance",
+                                             "single scattering",
+                                             "scattering density, order 2/2",
+                                             "indirect irradiance, order 2/2",
+                                             "multiple scattering, order 2/2"};
+  EXPECT_EQ(steps, expected);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfStandardAttributes.h>
+#include <ImfStdIO.h>
 #include <ImfStringAttribute.h>
 #include <png.h>
 
@@ -15,7 +16,9 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
-#include <unistd.h>
+#include <vector>
+
+#include "render/output_file.h"
 
 namespace skyig::render {
 
@@ -23,35 +26,22 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string temporaryPath(const std::string& path) {
-  return path + ".tmp-" + std::to_string(::getpid());
+// libpng's output: appended to a byte vector (the file is written whole, render/output_file.h).
+extern "C" void appendPngBytes(png_structp png, png_bytep data, png_size_t length) {
+  auto* out = static_cast<std::vector<std::byte>*>(png_get_io_ptr(png));
+  const auto* bytes = reinterpret_cast<const std::byte*>(data);
+  out->insert(out->end(), bytes, bytes + length);
 }
-
-void commit(const std::string& tmp, const std::string& path) {
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw ImageIoError("cannot write " + path + ": " + ec.message());
-  }
-}
+extern "C" void flushPngBytes(png_structp) {}
 
 }  // namespace
 
-void checkWritable(const std::string& path) {
-  if (path.empty()) throw ImageIoError("empty output path");
-  const fs::path p(path);
-  if (fs::is_directory(p)) throw ImageIoError("output path " + path + " is a directory");
-  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-    throw ImageIoError("cannot write " + path + ": directory " + dir.string() + " does not exist");
-  if (::access(dir.c_str(), W_OK) != 0)
-    throw ImageIoError("cannot write " + path + ": " + std::strerror(errno));
-}
+void checkWritable(const std::string& path) { checkOutputPath(path); }
 
 void writeExr(const std::string& path, const HdrImage& image, const ImageAttributes& attributes) {
-  const std::string tmp = temporaryPath(path);
+  // Encoded in memory: OpenEXR seeks back to write its offset table, which a FIFO or standard
+  // output cannot; the bytes then go out by the output rules (render/output_file.h).
+  std::string bytes;
   try {
     Imf::Header header(image.width, image.height);
     Imf::addChromaticities(header, Imf::Chromaticities());  // Rec.709 primaries, D65 white
@@ -68,15 +58,17 @@ void writeExr(const std::string& path, const HdrImage& image, const ImageAttribu
       char* base = const_cast<char*>(reinterpret_cast<const char*>(image.rgba.data() + c));  // NOLINT
       frame.insert(names[c], Imf::Slice(Imf::FLOAT, base, pixelBytes, rowBytes));
     }
-    Imf::OutputFile file(tmp.c_str(), header);
-    file.setFrameBuffer(frame);
-    file.writePixels(image.height);
+    Imf::StdOSStream stream;
+    {
+      Imf::OutputFile file(stream, header);
+      file.setFrameBuffer(frame);
+      file.writePixels(image.height);
+    }  // the file is complete when OutputFile is destroyed
+    bytes = stream.str();
   } catch (const std::exception& e) {
-    std::error_code ec;
-    fs::remove(tmp, ec);
     throw ImageIoError("cannot write " + path + ": " + e.what());
   }
-  commit(tmp, path);
+  writeOutputFile(path, bytes);
 }
 
 ExrFile readExr(const std::string& path) {
@@ -109,15 +101,13 @@ ExrFile readExr(const std::string& path) {
 }
 
 void writePng(const std::string& path, const DisplayImage& image, double displayGamma) {
-  const std::string tmp = temporaryPath(path);
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw ImageIoError("cannot write " + path + ": " + std::strerror(errno));
+  std::vector<std::byte> bytes;
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   volatile bool ok = png && info;  // volatile: read after a longjmp
   if (ok && setjmp(png_jmpbuf(png))) ok = false;  // libpng reports errors by longjmp
   if (ok) {
-    png_init_io(png, f);
+    png_set_write_fn(png, &bytes, appendPngBytes, flushPngBytes);
     png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
                  PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_gAMA(png, info, 1.0 / displayGamma);
@@ -127,12 +117,8 @@ void writePng(const std::string& path, const DisplayImage& image, double display
     png_write_end(png, nullptr);
   }
   png_destroy_write_struct(png ? &png : nullptr, info ? &info : nullptr);
-  const bool closed = std::fclose(f) == 0;
-  if (!ok || !closed) {
-    std::remove(tmp.c_str());
-    throw ImageIoError("cannot write " + path + ": PNG encoding or disk write failed");
-  }
-  commit(tmp, path);
+  if (!ok) throw ImageIoError("cannot write " + path + ": PNG encoding failed");
+  writeOutputFile(path, bytes);
 }
 
 }  // namespace skyig::render

@@ -1,8 +1,10 @@
 #pragma once
 // Image files. EXR: half RGBA, linear Rec.709 primaries with whiteLuminance = 1 so values are
 // cd/m^2, plus skyig's string attributes. PNG: 8-bit, the tone-reproduced frame-buffer values
-// as the projector receives them (gAMA records the display gamma). Files are written to a
-// temporary name beside the target and renamed, so a failure never leaves half a file.
+// as the projector receives them (gAMA records the display gamma). Files are encoded in memory
+// and written by render/output_file.h: a regular file through a temporary name and a rename
+// (a failure never leaves half a file), a FIFO, a device, "-" (stdout) or a link's target in
+// place; they throw its OutputPathError or OutputWriteError.
 #include "render/image.h"
 
 #include <map>
@@ -28,8 +30,8 @@ struct ExrFile {
 };
 ExrFile readExr(const std::string& path);
 
-// Throws ImageIoError if a file cannot be created in path's directory (checked before a
-// render, so a bad output path fails fast and writes nothing).
+// checkOutputPath (render/output_file.h): throws OutputPathError if `path` cannot be an output
+// (checked before a render, so a bad output path fails fast and writes nothing).
 void checkWritable(const std::string& path);
 
 }  // namespace skyig::render

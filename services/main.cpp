@@ -4,6 +4,7 @@
 #include "render/gl/gl_context.h"
 #include "render/gl/gl_program.h"
 #include "render/image_io.h"
+#include "render/output_file.h"
 #include "services/caps.h"
 #include "services/commands/bench_command.h"
 #include "services/commands/ephemeris_command.h"
@@ -47,9 +48,10 @@ int main(int argc, char** argv) {
   registerProbeCommand(app, exitCode);
   registerReplayCommand(app, exitCode);
 
-  // Exit codes: 0 done; 2 bad flags, configuration, input value, output path, or a missing data
-  // file (ephemeris/data_files.h); 3 the GPU context or a shader failed; 4 a socket could not be
-  // opened (port in use, no SocketCAN); 1 anything else.
+  // Exit codes: 0 done (also when stopped by SIGINT/SIGTERM); 2 bad flags, configuration, input
+  // value, output path, or a missing data file (ephemeris/data_files.h); 3 the GPU context or a
+  // shader failed, or an output could not be written (a full disk); 4 a socket could not be
+  // opened (port in use, no SocketCAN); 1 anything else; 128 + N a second signal N.
   try {
     app.parse_complete_callback([&] {
       // A node says how it started (configuration, channels, transports, renderer) by default.
@@ -74,6 +76,12 @@ int main(int argc, char** argv) {
   } catch (const RecordingError& e) {
     std::fprintf(stderr, "skyig: error: %s\n", e.what());
     return 2;
+  } catch (const skyig::render::OutputPathError& e) {
+    std::fprintf(stderr, "skyig: error: %s\n", e.what());
+    return 2;
+  } catch (const skyig::render::OutputWriteError& e) {
+    std::fprintf(stderr, "skyig: I/O error: %s\n", e.what());
+    return 3;
   } catch (const skyig::render::ImageIoError& e) {
     std::fprintf(stderr, "skyig: error: %s\n", e.what());
     return 2;

@@ -1,6 +1,7 @@
 #include "services/node_config.h"
 
 #include "ephemeris/time.h"
+#include "services/udp_socket.h"
 
 #include <toml++/toml.h>
 
@@ -163,7 +164,15 @@ void readObserver(TableReader& r, sky::ObserverState& o) {
 
 void readHost(TableReader& r, HostLink& h) {
   h.listen = r.string("listen", h.listen, "\"ADDRESS:PORT\"");
+  try {
+    (void)parseEndpoint(h.listen);  // a bad port or name is the file's error, whatever the command
+  } catch (const NetworkError& e) {
+    r.fail(r.find("listen"), "listen", e.what());
+  }
   h.multicastGroup = r.string("multicast_group", h.multicastGroup, "an IPv4 multicast address");
+  if (!h.multicastGroup.empty() && !isMulticastGroup(h.multicastGroup))
+    r.fail(r.find("multicast_group"), "multicast_group",
+           "expected an IPv4 multicast address (224.0.0.0 to 239.255.255.255), got \"" + h.multicastGroup + "\"");
   h.replyPort = r.integer("reply_port", h.replyPort, 1, 65535);
   h.synchronous = r.boolean("synchronous", h.synchronous);
   h.syncTimeoutS = r.number("sync_timeout", h.syncTimeoutS, 0.001, 10.0);

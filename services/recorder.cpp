@@ -1,5 +1,7 @@
 #include "services/recorder.h"
 
+#include "render/output_file.h"
+
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <unistd.h>
@@ -11,8 +13,8 @@
 namespace skyig::services {
 
 DurableFileSink::DurableFileSink(const std::string& path) : path_(path) {
-  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd_ < 0) throw std::runtime_error("cannot record to " + path + ": " + std::strerror(errno));
+  // Written as it goes, in place: "-" is stdout, a FIFO stays one (render/output_file.h).
+  fd_ = render::openOutputStream(path);
   lastSync_ = std::chrono::steady_clock::now();
 }
 

@@ -2,9 +2,15 @@
 
 #include "sky/atmosphere/parameter_hash.h"
 
-#include <nlohmann/json.hpp>
+#include "render/output_file.h"
 
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -30,8 +36,12 @@ nlohmann::json hostJson(const HostState& h) {
 }  // namespace
 
 StateDump::StateDump(const std::string& path) : path_(path) {
-  file_ = std::fopen(path.c_str(), "w");
-  if (!file_) throw std::runtime_error("cannot write the state dump " + path + ": " + std::strerror(errno));
+  const int fd = render::openOutputStream(path);  // in place: "-" is stdout, a FIFO stays one
+  file_ = ::fdopen(fd, "w");
+  if (!file_) {
+    ::close(fd);
+    throw std::runtime_error("cannot write the state dump " + path + ": " + std::strerror(errno));
+  }
 }
 
 StateDump::~StateDump() {
@@ -77,14 +87,14 @@ void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const sky
 }
 
 void writeStatsFile(const std::string& path, const NodeStats& stats) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << stats.toJson().dump(2) << "\n";
-    if (!out) return;  // statistics are best effort: never stop the node for them
+  try {
+    render::writeOutputFile(path, stats.toJson().dump(2) + "\n");
+  } catch (const std::exception& e) {
+    // Statistics are best effort: never stop the node for them; say so at most every 10 s.
+    static std::atomic<std::int64_t> lastWarning{0};
+    const std::int64_t now = std::chrono::duration_cast<std::chrono::seconds>(Clock::now().time_since_epoch()).count();
+    if (now - lastWarning.exchange(now) >= 10) spdlog::warn("statistics not written: {}", e.what());
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
 }
 
 }  // namespace skyig::services

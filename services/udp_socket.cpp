@@ -1,6 +1,7 @@
 #include "services/udp_socket.h"
 
 #include <arpa/inet.h>
+#include <netdb.h>
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -16,14 +17,32 @@ namespace {
 
 Endpoint parseEndpoint(const std::string& text) {
   const size_t colon = text.rfind(':');
-  in_addr a{};
-  if (colon == std::string::npos || inet_pton(AF_INET, text.substr(0, colon).c_str(), &a) != 1)
-    throw NetworkError("\"" + text + "\" is not an IPv4 ADDRESS:PORT");
+  if (colon == std::string::npos || colon == 0)
+    throw NetworkError("\"" + text + "\" is not ADDRESS:PORT (an IPv4 address or a host name)");
   char* end = nullptr;
   const long port = std::strtol(text.c_str() + colon + 1, &end, 10);
   if (*end != '\0' || colon + 1 == text.size() || port < 0 || port > 65535)
     throw NetworkError("\"" + text + "\": port must be 0..65535");
-  return {text.substr(0, colon), static_cast<std::uint16_t>(port)};
+  const std::string host = text.substr(0, colon);
+  in_addr a{};
+  if (inet_pton(AF_INET, host.c_str(), &a) == 1) return {host, static_cast<std::uint16_t>(port)};
+  // A name ("localhost", a host in /etc/hosts or DNS): its first IPv4 address.
+  addrinfo hints{};
+  hints.ai_family = AF_INET;
+  hints.ai_socktype = SOCK_DGRAM;
+  addrinfo* found = nullptr;
+  const int error = ::getaddrinfo(host.c_str(), nullptr, &hints, &found);
+  if (error != 0 || !found)
+    throw NetworkError("\"" + text + "\": cannot resolve \"" + host + "\" to an IPv4 address (" +
+                       ::gai_strerror(error) + ")");
+  const sockaddr_in resolved = *reinterpret_cast<const sockaddr_in*>(found->ai_addr);
+  ::freeaddrinfo(found);
+  return {fromSockaddr(resolved).address, static_cast<std::uint16_t>(port)};
+}
+
+bool isMulticastGroup(const std::string& address) {
+  in_addr a{};
+  return inet_pton(AF_INET, address.c_str(), &a) == 1 && IN_MULTICAST(ntohl(a.s_addr));
 }
 
 sockaddr_in toSockaddr(const Endpoint& e) {

@@ -22,8 +22,11 @@ struct Endpoint {
   std::string toString() const { return address + ":" + std::to_string(port); }
 };
 
-// "ADDR:PORT" (IPv4); throws NetworkError naming the text when it is not one.
+// "ADDR:PORT", ADDR an IPv4 address or a host name resolved (getaddrinfo) to its first IPv4
+// address; throws NetworkError naming the text (and the name that did not resolve).
 Endpoint parseEndpoint(const std::string& text);
+// Whether `address` is an IPv4 multicast group (224.0.0.0/4).
+bool isMulticastGroup(const std::string& address);
 sockaddr_in toSockaddr(const Endpoint& e);
 Endpoint fromSockaddr(const sockaddr_in& a);
 

@@ -3,6 +3,7 @@
 #include "ephemeris/time.h"
 #include "render/gl/gl_context.h"
 #include "render/image_io.h"
+#include "render/output_file.h"
 #include "render/sky_renderer.h"
 #include "services/commands/common_options.h"
 #include "services/sky_data.h"
@@ -68,7 +69,6 @@ render::ImageAttributes attributesOf(const sky::SkyState& s, const sky::ChannelC
 int run(const RenderOptions& opt) {
   if (opt.exrPath.empty() && opt.pngPath.empty()) throw ConfigError("render: give --exr PATH and/or --png PATH");
   NodeConfig config = opt.sky.resolve();
-  loadSkyData(config);
   std::vector<sky::ChannelConfig> channels;
   if (opt.allChannels) {
     channels = config.channels;
@@ -86,32 +86,40 @@ int run(const RenderOptions& opt) {
   if (!opt.size.empty())
     for (auto& c : channels) parseSize(opt.size, c.width, c.height);
 
-  // Every output is checked before any work, so a bad path fails fast and writes nothing.
+  // Every output is checked before any work (the tables included), so a bad path fails fast
+  // and writes nothing; two outputs naming one file would leave only the second.
   const bool perChannel = opt.allChannels && channels.size() > 1;
   auto outPath = [&](const std::string& p, const sky::ChannelConfig& c) {
-    return perChannel ? perChannelPath(p, c.name) : p;
+    return perChannel && p != "-" ? perChannelPath(p, c.name) : p;
   };
+  std::vector<std::pair<std::string, std::string>> outputs;
   for (const auto& c : channels) {
     if (!opt.exrPath.empty()) render::checkWritable(outPath(opt.exrPath, c));
     if (!opt.pngPath.empty()) render::checkWritable(outPath(opt.pngPath, c));
+    outputs.emplace_back("--exr", outPath(opt.exrPath, c));
+    outputs.emplace_back("--png", outPath(opt.pngPath, c));
   }
+  render::checkDistinctOutputs(outputs);
+  // With an image on standard output, the report goes to stderr.
+  std::FILE* report = opt.exrPath == "-" || opt.pngPath == "-" ? stderr : stdout;
+  loadSkyData(config);
 
   const sky::SkyState state = sky::buildSkyState(config.observer, config.sky, opt.sky.sunOverride());
   const auto context = render::createHeadlessContext();
   spdlog::info("GL: {} ({}, {})", context->info().renderer, context->info().version, context->info().platform);
   render::SkyRenderer renderer;
-  std::printf("sky: %s, sun azimuth %.2f deg, altitude %.2f deg, adaptation %.4g cd/m^2\n",
-              std::string(sky::toString(state.conditions.model)).c_str(), state.sunAzimuth / kDeg,
-              state.sunAltitude / kDeg, state.adaptationLuminance);
+  std::fprintf(report, "sky: %s, sun azimuth %.2f deg, altitude %.2f deg, adaptation %.4g cd/m^2\n",
+               std::string(sky::toString(state.conditions.model)).c_str(), state.sunAzimuth / kDeg,
+               state.sunAltitude / kDeg, state.adaptationLuminance);
   for (const auto& c : channels) {
     const auto start = std::chrono::steady_clock::now();
     renderer.draw(state, c);
     if (!opt.exrPath.empty()) render::writeExr(outPath(opt.exrPath, c), renderer.readHdr(), attributesOf(state, c));
     if (!opt.pngPath.empty()) render::writePng(outPath(opt.pngPath, c), renderer.readDisplay(), c.display.gamma);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    std::printf("channel %s: %dx%d in %.1f ms ->%s%s\n", c.name.c_str(), c.width, c.height, ms,
-                opt.exrPath.empty() ? "" : (" " + outPath(opt.exrPath, c)).c_str(),
-                opt.pngPath.empty() ? "" : (" " + outPath(opt.pngPath, c)).c_str());
+    std::fprintf(report, "channel %s: %dx%d in %.1f ms ->%s%s\n", c.name.c_str(), c.width, c.height, ms,
+                 opt.exrPath.empty() ? "" : (" " + outPath(opt.exrPath, c)).c_str(),
+                 opt.pngPath.empty() ? "" : (" " + outPath(opt.pngPath, c)).c_str());
   }
   return 0;
 }

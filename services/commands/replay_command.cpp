@@ -4,6 +4,7 @@
 #include "services/commands/common_options.h"
 #include "services/recorder.h"
 #include "services/replay.h"
+#include "render/output_file.h"
 #include "services/sky_data.h"
 #include "services/stop_signal.h"
 #include "sky/atmosphere/precompute_control.h"
@@ -39,6 +40,13 @@ int runRecord(const RecordOptions& o) {
   } catch (const NetworkError& e) {
     throw ConfigError(std::string("--listen: ") + e.what());
   }
+  if (!o.multicastGroup.empty() && !isMulticastGroup(o.multicastGroup))
+    throw ConfigError("--multicast: expected an IPv4 multicast address (224.0.0.0 to 239.255.255.255), got \"" +
+                      o.multicastGroup + "\"");
+  // The outputs before the socket: a bad path is a usage error (exit 2) and opens nothing.
+  if (!o.out.empty()) render::checkOutputPath(o.out);
+  if (!o.canOut.empty()) render::checkOutputPath(o.canOut);
+  render::checkDistinctOutputs({{"--out", o.out}, {"--can-out", o.canOut}});
   std::unique_ptr<UdpSocket> udp;
   std::unique_ptr<PcapRecorder> pcap;
   if (!o.out.empty()) {
@@ -68,7 +76,7 @@ int runRecord(const RecordOptions& o) {
       if (n > 0) {
         if (!pcap->record(std::span(buffer.data(), n), from, unixNs())) {
           std::fprintf(stderr, "skyig: recording stopped: %s\n", pcap->error().c_str());
-          return 1;
+          return 3;  // an I/O error (a full disk): what was recorded before it stays
         }
         ++datagrams;
       }
@@ -80,7 +88,7 @@ int runRecord(const RecordOptions& o) {
         if (::read(canFd, &f, sizeof f) == static_cast<ssize_t>(sizeof f)) {
           if (!candump->record(f, unixNs())) {
             std::fprintf(stderr, "skyig: recording stopped: %s\n", candump->error().c_str());
-            return 1;
+            return 3;
           }
           ++frames;
         }

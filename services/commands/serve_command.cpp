@@ -1,6 +1,7 @@
 #include "services/commands/serve_command.h"
 
 #include "render/image_io.h"
+#include "render/output_file.h"
 #include "services/node.h"
 #include "services/sky_data.h"
 #include "services/state_dump.h"
@@ -54,6 +55,7 @@ int run(const ServeOptions& o) {
   // Output files are checked before anything starts: a bad path is a usage error (exit 2).
   for (const std::string* path : {&o.dumpState, &o.statsJson, &o.record})
     if (!path->empty()) render::checkWritable(*path);
+  render::checkDistinctOutputs({{"--dump-state", o.dumpState}, {"--stats-json", o.statsJson}, {"--record", o.record}});
   const std::string can = o.canInterface.empty() ? h.canInterface : o.canInterface;
   if (!can.empty()) opt.canInterface = can;
 

@@ -316,3 +316,81 @@ TEST_F(Cli, RenderVisibilityHazesThePhysicalSky) {
   EXPECT_GT(green("hazy.exr"), 1.5 * green("clear.exr"));
   EXPECT_EQ(run(common + (dir_ / "bad.exr").string() + " --visibility 0").exitCode, 2);
 }
+
+// Outputs never replace what they name: two outputs naming one file are refused (exit 2,
+// nothing written); "-" is standard output; /dev/null is written and stays a device.
+TEST_F(Cli, TwoOutputsNamingOneFileExitTwoAndWriteNothing) {
+  const std::string x = (dir_ / "x.png").string();
+  const Result r = run("render --sky-model preetham --size 32x24 --png " + x + " --exr " + x);
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("--exr and --png name the same file, " + x), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(x));
+}
+
+TEST_F(Cli, RenderWritesAPngToStandardOutputAndItsReportToStderr) {
+  const Result r = run("render --sky-model preetham --size 32x24 --png -");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_GE(r.out.size(), 8u);
+  EXPECT_EQ(r.out.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_NE(r.err.find("channel front: 32x24"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, RenderToDevNullLeavesTheDevice) {
+  const Result r = run("render --sky-model preetham --size 32x24 --exr /dev/null --png /dev/null");
+  EXPECT_EQ(r.exitCode, 2) << r.err;  // one file for two outputs
+  const Result one = run("render --sky-model preetham --size 32x24 --exr /dev/null");
+  EXPECT_EQ(one.exitCode, 0) << one.err;
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+}
+
+// Exit codes of the network commands: a bad output path or configuration is a usage error (2)
+// naming the file and line; names resolve.
+TEST_F(Cli, RecordToAMissingDirectoryExitsTwo) {
+  const Result r = run("record --listen 127.0.0.1:0 --out /nonexistent-dir/r.pcap --duration 1");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("/nonexistent-dir"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, BadHostAddressesInTheConfigurationExitTwoWithFileAndLine) {
+  const fs::path group = write("group.toml", "[sky]\nmodel = \"preetham\"\n[host]\nmulticast_group = \"10.0.0.1\"\n");
+  const Result g = run("serve --config " + group.string() + " --headless --frames 1 --listen 127.0.0.1:0");
+  EXPECT_EQ(g.exitCode, 2);
+  EXPECT_NE(g.err.find(group.string() + ":4: host.multicast_group: expected an IPv4 multicast address"),
+            std::string::npos)
+      << g.err;
+  const fs::path port = write("port.toml", "[sky]\nmodel = \"preetham\"\n[host]\nlisten = \"127.0.0.1:99999\"\n");
+  for (const std::string& command :
+       {"render --size 32x24 --png " + (dir_ / "p.png").string(), std::string("serve --headless --frames 1")}) {
+    const Result p = run(command + " --config " + port.string());
+    EXPECT_EQ(p.exitCode, 2) << command;
+    EXPECT_NE(p.err.find(port.string() + ":4: host.listen: \"127.0.0.1:99999\": port must be 0..65535"),
+              std::string::npos)
+        << command << ": " << p.err;
+  }
+}
+
+TEST_F(Cli, ListenAcceptsAHostNameAndNamesOneThatDoesNotResolve) {
+  const fs::path analytic =
+      write("analytic.toml", "[sky]\nmodel = \"preetham\"\n[[channel]]\nname = \"front\"\nwidth = 32\nheight = 24\n");
+  const Result ok = run("serve --config " + analytic.string() + " --headless --frames 1 --listen localhost:0");
+  EXPECT_EQ(ok.exitCode, 0) << ok.err;
+  EXPECT_NE((ok.out + ok.err).find("listening for CIGI on 127.0.0.1:"), std::string::npos) << ok.out << ok.err;
+  const Result bad =
+      run("serve --config " + analytic.string() + " --headless --frames 1 --listen no-such-host.invalid:8004");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("cannot resolve \"no-such-host.invalid\""), std::string::npos) << bad.err;
+}
+
+// --log-level after the subcommand as well as before; serve says how it started at info.
+TEST_F(Cli, LogLevelIsAcceptedAfterTheSubcommand) {
+  const fs::path analytic =
+      write("analytic.toml", "[sky]\nmodel = \"preetham\"\n[[channel]]\nname = \"front\"\nwidth = 32\nheight = 24\n");
+  const Result quiet =
+      run("serve --config " + analytic.string() + " --headless --frames 1 --listen 127.0.0.1:0 --log-level warn");
+  EXPECT_EQ(quiet.exitCode, 0) << quiet.err;
+  EXPECT_EQ((quiet.out + quiet.err).find("listening for CIGI"), std::string::npos) << quiet.out;
+  const Result chatty = run("serve --config " + analytic.string() + " --headless --frames 1 --listen 127.0.0.1:0");
+  EXPECT_EQ(chatty.exitCode, 0) << chatty.err;
+  for (const char* line : {"configuration: ", "listening for CIGI on 127.0.0.1:", "channel front: 32x24", "llvmpipe"})
+    EXPECT_NE((chatty.out + chatty.err).find(line), std::string::npos) << line << " in " << chatty.out;
+}

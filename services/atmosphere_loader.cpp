@@ -165,12 +165,16 @@ std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeC
                                                          atmosphereTableBuilder(), stop);
 }
 
-void loadAtmosphereIfNeeded(NodeConfig& config, const std::atomic<bool>* stop) {
-  if (config.sky.model != sky::SkyModel::Physical || config.sky.atmosphere) return;
+atmosphere::Conditions configuredConditions(const NodeConfig& config) {
   atmosphere::Conditions conditions;
   conditions.groundAlbedo = config.sky.groundAlbedo;
   conditions.visibilityKm = config.atmosphere.visibilityKm;  // as nodeModelConfig: one cache key
-  config.sky.atmosphere = loadAtmosphere(config.atmosphere, conditions, stop);
+  return conditions;
+}
+
+void loadAtmosphereIfNeeded(NodeConfig& config, const std::atomic<bool>* stop) {
+  if (config.sky.model != sky::SkyModel::Physical || config.sky.atmosphere) return;
+  config.sky.atmosphere = loadAtmosphere(config.atmosphere, configuredConditions(config), stop);
 }
 
 }  // namespace skyig::services

@@ -46,6 +46,11 @@ std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const Atmosphe
                                                                   const atmosphere::Conditions& conditions,
                                                                   const std::atomic<bool>* stop = nullptr);
 
+// The conditions a configuration's own tables are built for: its sky.ground_albedo and
+// [atmosphere] visibility_km (as nodeModelConfig with no host conditions). render, probe, serve
+// and replay all ask with these, so one configuration's tables are one cache file.
+atmosphere::Conditions configuredConditions(const NodeConfig& config);
+
 // Sets config.sky.atmosphere when config.sky.model is physical; prints to stderr when it has
 // to precompute; `stop` as loadAtmosphere.
 void loadAtmosphereIfNeeded(NodeConfig& config, const std::atomic<bool>* stop = nullptr);

@@ -74,22 +74,21 @@ int run(const ProbeCli& cli) {
   }
   if (request.views.empty()) request.views.push_back({0.0, 0.0});  // the zenith
 
-  // The node's atmosphere ([atmosphere], sky.atmosphere_tables, sky.ground_albedo) when a
-  // configuration is given; the flags override it.
-  AtmosphereSettings settings;
-  atmosphere::Conditions conditions;
-  if (!cli.configPath.empty()) {
-    const NodeConfig node = loadNodeConfig(cli.configPath);
-    settings = node.atmosphere;
-    conditions.groundAlbedo = node.sky.groundAlbedo;
-  }
-  if (cli.tables) settings.tables = *cli.tables;
-  if (cli.cacheDir) settings.cacheDir = *cli.cacheDir;
-  if (cli.orders) settings.scatteringOrders = *cli.orders;
-  conditions.visibilityKm = cli.visibilityKm;
+  // The node's atmosphere ([atmosphere], sky.atmosphere_tables, sky.ground_albedo,
+  // visibility_km) from the configuration given, as render and serve see it (one cache key for
+  // the same tables); the flags override it.
+  NodeConfig node = cli.configPath.empty() ? NodeConfig{} : loadNodeConfig(cli.configPath);
+  if (cli.tables) node.atmosphere.tables = *cli.tables;
+  if (cli.cacheDir) node.atmosphere.cacheDir = *cli.cacheDir;
+  if (cli.orders) node.atmosphere.scatteringOrders = *cli.orders;
+  if (cli.visibilityKm) node.atmosphere.visibilityKm = cli.visibilityKm;
+  if (cli.groundAlbedo) node.sky.groundAlbedo = *cli.groundAlbedo;
+  atmosphere::Conditions conditions = configuredConditions(node);
+  // Without a configuration the ground is the medium's own (Bruneton's 0.1, the reference
+  // values' sky) unless --ground-albedo says otherwise.
+  if (cli.configPath.empty() && !cli.groundAlbedo) conditions.groundAlbedo.reset();
   if (cli.humidityPct) conditions.relativeHumidity = *cli.humidityPct / 100.0;
-  if (cli.groundAlbedo) conditions.groundAlbedo = cli.groundAlbedo;
-  const auto model = loadAtmosphere(settings, conditions);
+  const auto model = loadAtmosphere(node.atmosphere, conditions);
   if (!place) {
     std::printf("%s\n", probeJson(atmosphere::probe(*model, request)).dump(2).c_str());
     return 0;

@@ -394,3 +394,20 @@ TEST_F(Cli, LogLevelIsAcceptedAfterTheSubcommand) {
   for (const char* line : {"configuration: ", "listening for CIGI on 127.0.0.1:", "channel front: 32x24", "llvmpipe"})
     EXPECT_NE((chatty.out + chatty.err).find(line), std::string::npos) << line << " in " << chatty.out;
 }
+
+// One configuration's tables are one cache file whichever command asks: a render after a probe
+// of the same configuration loads the probe's tables instead of precomputing them again.
+TEST_F(Cli, RenderAfterProbeOfTheSameConfigurationDoesNotPrecomputeAgain) {
+  const fs::path cache = dir_ / "cache";
+  const fs::path cfg = write("small.toml", "[sky]\natmosphere_tables = \"small\"\natmosphere_cache = \"" +
+                                               cache.string() + "\"\n[atmosphere]\nvisibility_km = 30.0\n");
+  const Result probe = run("probe --config " + cfg.string() + " --sun-zenith 30 --sun-azimuth 0 --view 0,0");
+  ASSERT_EQ(probe.exitCode, 0) << probe.err;
+  EXPECT_NE(probe.err.find("physical sky: precomputing"), std::string::npos) << probe.err;  // a fresh cache
+  const Result render = run("render --config " + cfg.string() + " --size 32x24 --png " + (dir_ / "x.png").string());
+  ASSERT_EQ(render.exitCode, 0) << render.err;
+  EXPECT_EQ(render.err.find("physical sky: precomputing"), std::string::npos) << render.err;
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(cache)) files += entry.path().extension() == ".skyatm";
+  EXPECT_EQ(files, 1);
+}

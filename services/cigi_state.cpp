@@ -31,6 +31,17 @@ ViewOverride& HostState::view(std::uint16_t id) {
   return views.back();
 }
 
+void CigiStateTracker::anchorTimestamp(std::uint32_t timestamp, Clock::time_point arrival) {
+  clock_.timestampBaseS = clock_.continuousAt(arrival);
+  clock_.timestampArrival = arrival;
+  clock_.haveTimestamp = true;
+  lastTimestamp_ = timestamp;
+  sessionHasTimestamp_ = true;
+  rateAnchorS_ = clock_.timestampBaseS;
+  rateAnchorArrival_ = arrival;
+  rate_.reset();
+}
+
 double HostClock::continuousAt(Clock::time_point t) const {
   // With host timestamps, the host's own clock (smooth, immune to network jitter); without,
   // the arrival time.
@@ -41,16 +52,7 @@ double HostClock::continuousAt(Clock::time_point t) const {
 int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_point arrival) {
   int rejected = 0;
   bool changed = false;
-  if (!message.packets.empty()) {
-    if (const auto* ig = std::get_if<cigi::IgControl>(&message.packets.front())) {
-      // Serial-number order (wraps at 2^32): a frame behind the last one is stale.
-      if (haveHostFrame_ && static_cast<std::int32_t>(ig->hostFrameNumber - state_.hostFrame) < 0) {
-        ++stale_;
-        return 0;
-      }
-      haveHostFrame_ = true;
-    }
-  }
+  messageHostTime_.reset();
   for (const cigi::Packet& packet : message.packets) {
     std::visit(
         [&](const auto& p) {
@@ -58,12 +60,28 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
           if constexpr (std::is_same_v<T, cigi::IgControl>) {
             state_.hostFrame = p.hostFrameNumber;
             if (p.timestampValid) {
-              // 32-bit 10 us ticks wrap every 11.9 hours: unwrap by the difference.
-              const double step = clock_.haveTimestamp ? static_cast<std::uint32_t>(p.timestamp - lastTimestamp_) * 1e-5 : 0.0;
-              clock_.timestampBaseS = clock_.haveTimestamp ? clock_.timestampBaseS + step : p.timestamp * 1e-5;
-              lastTimestamp_ = p.timestamp;
-              clock_.timestampArrival = arrival;
-              clock_.haveTimestamp = true;
+              // 32-bit 10 us ticks wrap every 11.9 hours: the step is the signed difference
+              // (a wrap is a small step forward, one tick back is one tick back), and bounded.
+              const double step = static_cast<std::int32_t>(p.timestamp - lastTimestamp_) * 1e-5;
+              if (!sessionHasTimestamp_ || step < -kMaxTimestampBackS || step > kMaxTimestampStepS) {
+                // A session's first timestamp, or a re-based host clock: the clock goes on from
+                // where it stands, so neither moves the sim clock.
+                if (sessionHasTimestamp_) ++timestampJumps_;
+                anchorTimestamp(p.timestamp, arrival);
+              } else if (step >= 0.0) {
+                clock_.timestampBaseS += step;
+                clock_.timestampArrival = arrival;
+                lastTimestamp_ = p.timestamp;
+                if (arrival - rateAnchorArrival_ >= std::chrono::seconds(1)) {
+                  const double rate = (clock_.timestampBaseS - rateAnchorS_) / seconds(arrival - rateAnchorArrival_);
+                  rate_ = rate > 0.0 ? std::optional(rate) : std::nullopt;
+                  rateAnchorS_ = clock_.timestampBaseS;
+                  rateAnchorArrival_ = arrival;
+                }
+                if (rate_) messageHostTime_ = HostTime{clock_.timestampBaseS, *rate_};
+              }
+              // A small step back (jitter of the host's clock) is ignored: the host's time
+              // never runs backwards, and the next step is taken from the newest timestamp.
             }
             changed = true;
           } else if constexpr (std::is_same_v<T, cigi::EntityControl>) {

@@ -22,6 +22,13 @@ struct OwnshipRates {
   double rollRate = 0.0, pitchRate = 0.0, yawRate = 0.0;
 };
 
+// A moment on the host's own clock (its IG Control timestamps): seconds, and how fast that
+// clock runs, in host seconds per local second.
+struct HostTime {
+  double seconds = 0.0;
+  double rate = 1.0;
+};
+
 // A channel's eyepoint rotation and frustum as the host set them (CIGI View Control and View
 // Definition); view ID n is the node's n-th channel. Unset parts keep the configuration's.
 struct ViewOverride {

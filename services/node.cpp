@@ -175,7 +175,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   // up before any thread starts.
   UdpSocket udp(opt.listen, opt.multicastGroup);  // always: Start of Frame goes out through it
   spdlog::info("listening for CIGI on {}", udp.localEndpoint().toString());
-  CigiReceiver cigi(stats, host);
+  CigiReceiver cigi(stats, host, opt.config.host.session);
   std::unique_ptr<PcapRecorder> recorder;
   if (!opt.recordPath.empty()) {
     try {
@@ -258,10 +258,15 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
         lastArrivalShown = snapshot->state.received;
       }
 
-      // Start of Frame: to --reply-to, else back to the host's address on the reply port.
+      // Start of Frame: to the configured host (host.reply_to, --reply-to), else to the
+      // followed host's address on the reply port while it is alive: only an allowed sender
+      // that won a session is answered, and one datagram from a spoofed source gets at most a
+      // session gap's worth of frames, never a stream.
       std::optional<sockaddr_in> to;
       if (opt.replyTo) to = toSockaddr(*opt.replyTo);
-      else if (snapshot && snapshot->sender) {
+      else if (snapshot && snapshot->sender &&
+               frameEnd - snapshot->state.received <=
+                   std::chrono::duration<double>(opt.config.host.session.sessionGapS)) {
         to = *snapshot->sender;
         to->sin_port = htons(opt.replyPort);
       }

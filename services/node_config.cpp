@@ -1,6 +1,7 @@
 #include "services/node_config.h"
 
 #include "ephemeris/time.h"
+#include "services/udp_socket.h"
 
 #include <toml++/toml.h>
 
@@ -165,6 +166,33 @@ void readHost(TableReader& r, HostLink& h) {
   h.listen = r.string("listen", h.listen, "\"ADDRESS:PORT\"");
   h.multicastGroup = r.string("multicast_group", h.multicastGroup, "an IPv4 multicast address");
   h.replyPort = r.integer("reply_port", h.replyPort, 1, 65535);
+  h.replyTo = r.string("reply_to", h.replyTo, "\"ADDRESS:PORT\" or \"\"");
+  if (!h.replyTo.empty()) {
+    try {
+      parseEndpoint(h.replyTo);
+    } catch (const NetworkError& e) {
+      r.fail(r.find("reply_to"), "reply_to", e.what());
+    }
+  }
+  if (const toml::node* n = r.find("allowed")) {
+    const toml::array* list = n->as_array();
+    if (!list) r.fail(n, "allowed", "expected a list of IPv4 addresses or CIDR blocks, e.g. [\"10.0.0.0/8\"]");
+    if (list->empty())
+      r.fail(n, "allowed", "an empty list would ignore every host; [\"0.0.0.0/0\"] accepts any address");
+    h.session.allowed.clear();
+    for (const toml::node& item : *list) {
+      const std::optional<std::string> text = item.value<std::string>();
+      if (!text) r.fail(&item, "allowed", "expected a list of strings (\"A.B.C.D\" or \"A.B.C.D/N\")");
+      try {
+        h.session.allowed.push_back(parseAddressRange(*text));
+      } catch (const std::invalid_argument& e) {
+        r.fail(&item, "allowed", e.what());
+      }
+    }
+  }
+  h.session.sessionGapS = r.number("session_gap", h.session.sessionGapS, 0.05, 3600.0);
+  h.session.staleFrames =
+      static_cast<std::uint32_t>(r.integer("stale_frames", static_cast<int>(h.session.staleFrames), 0, 100000));
   h.synchronous = r.boolean("synchronous", h.synchronous);
   h.syncTimeoutS = r.number("sync_timeout", h.syncTimeoutS, 0.001, 10.0);
   h.frameRateHz = r.number("frame_rate", h.frameRateHz, 1.0, 1000.0);

@@ -3,6 +3,7 @@
 // `skyig render`, and the display channels. Every value has a default, so an empty file (or
 // none) is a valid configuration.
 #include "protocol/canaerospace/identifiers.h"
+#include "services/host_session.h"
 #include "sky/channel.h"
 #include "sky/common/sky_conditions.h"
 #include "sky/atmosphere/conditions.h"
@@ -20,7 +21,10 @@ namespace skyig::services {
 struct HostLink {
   std::string listen = "0.0.0.0:8004";  // CIGI host -> IG
   std::string multicastGroup;           // empty: unicast
-  int replyPort = 8005;                 // Start of Frame goes back to the sender on this port
+  int replyPort = 8005;                 // Start of Frame goes back to the host's address on this port
+  std::string replyTo;                  // "ADDR:PORT": Start of Frame goes there instead; "" = the host's address
+  // Who may drive the node, how a restart and reordering are told apart (services/host_session.h).
+  HostSessionSettings session;
   bool synchronous = false;             // render frame N after the host's frame N
   double syncTimeoutS = 0.1;
   double frameRateHz = 60.0;            // headless pacing

@@ -35,6 +35,9 @@ nlohmann::json NodeStats::toJson() const {
   nlohmann::json can = nlohmann::json::object();
   for (std::size_t i = 0; i < canStatus.size(); ++i)
     can[protocol::canaerospace::toString(static_cast<protocol::canaerospace::FeedStatus>(i))] = canStatus[i].load();
+  nlohmann::json sessionsByReason = nlohmann::json::object();
+  for (std::size_t i = 0; i < sessions.size(); ++i)
+    sessionsByReason[toString(static_cast<SessionReason>(i))] = sessions[i].load();
   return {
       {"datagrams", datagrams.load()},
       {"bytes", bytes.load()},
@@ -42,6 +45,10 @@ nlohmann::json NodeStats::toJson() const {
       {"skipped_packets", skippedPackets.load()},
       {"rejected_values", rejectedValues.load()},
       {"stale_messages", staleMessages.load()},
+      {"sessions", sessionsByReason},
+      {"not_allowed_datagrams", notAllowedDatagrams.load()},
+      {"other_host_datagrams", otherHostDatagrams.load()},
+      {"not_host_messages", notHostMessages.load()},
       {"recorded", recorded.load()},
       {"record_errors", recordErrors.load()},
       {"packets", packetsByType},
@@ -52,9 +59,10 @@ nlohmann::json NodeStats::toJson() const {
       {"sky_states", skyStates.load()},
       {"sync_timeouts", syncTimeouts.load()},
       {"start_of_frame_sent", startOfFrameSent.load()},
-      {"latency", {{"arrival_to_visible", arrivalToVisible.summary()},
-                   {"arrival_to_frame_end", arrivalToFrameEnd.summary()},
-                   {"frame_render", frameTime.summary()}}},
+      {"latency",
+       {{"arrival_to_visible", arrivalToVisible.summary()},
+        {"arrival_to_frame_end", arrivalToFrameEnd.summary()},
+        {"frame_render", frameTime.summary()}}},
   };
 }
 

@@ -71,7 +71,7 @@ class Feeder {
   Feeder(const ReplayOptions& o, RecordingSource& source, atmosphere::AtmosphereUpdater* updater)
       : options_(o),
         source_(source),
-        cigi_(stats_, latest_),
+        cigi_(stats_, latest_, o.config.host.session),
         can_(-1, o.config.canIdentifiers, stats_, latest_),
         worker_(o.config, updater, stats_),
         channels_(o.config.channelsOf(o.config.nodeName)) {

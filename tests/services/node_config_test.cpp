@@ -50,6 +50,12 @@ TEST(NodeConfig, DocumentedDefaultsEqualBuiltInDefaults) {
   EXPECT_EQ(file.host.syncTimeoutS, builtIn.host.syncTimeoutS);
   EXPECT_EQ(file.host.frameRateHz, builtIn.host.frameRateHz);
   EXPECT_EQ(file.host.canInterface, builtIn.host.canInterface);
+  EXPECT_EQ(file.host.replyTo, builtIn.host.replyTo);
+  ASSERT_EQ(file.host.session.allowed.size(), builtIn.host.session.allowed.size());
+  for (std::size_t i = 0; i < file.host.session.allowed.size(); ++i)
+    EXPECT_EQ(file.host.session.allowed[i].toString(), builtIn.host.session.allowed[i].toString());
+  EXPECT_EQ(file.host.session.sessionGapS, builtIn.host.session.sessionGapS);
+  EXPECT_EQ(file.host.session.staleFrames, builtIn.host.session.staleFrames);
   EXPECT_EQ(file.canIdentifiers.bodyPitch, builtIn.canIdentifiers.bodyPitch);
   EXPECT_EQ(file.canIdentifiers.heading, builtIn.canIdentifiers.heading);
   EXPECT_EQ(file.canIdentifiers.latitude, builtIn.canIdentifiers.latitude);
@@ -123,6 +129,20 @@ TEST(NodeConfig, HostSectionErrors) {
   EXPECT_EQ(errorOf("[host]\nsynchronous = \"yes\"\n"), "bad.toml:2: host.synchronous: expected true or false, got 'yes'");
   EXPECT_EQ(errorOf("[can_identifiers]\nheading = 4000\n"),
             "bad.toml:2: can_identifiers.heading: expected an integer in [0, 2047], got 4000");
+  EXPECT_EQ(
+      errorOf("[host]\nallowed = [\"10.0.0.0/8\",\n  \"10.1.2.3/8\"]\n"),
+      "bad.toml:3: host.allowed: \"10.1.2.3/8\": address bits set beyond the /8 prefix (did you mean 10.0.0.0/8?)");
+  EXPECT_EQ(errorOf("[host]\nallowed = []\n"),
+            "bad.toml:2: host.allowed: an empty list would ignore every host; [\"0.0.0.0/0\"] accepts any address");
+  EXPECT_EQ(errorOf("[host]\nreply_to = \"host:8005\"\n"),
+            "bad.toml:2: host.reply_to: \"host:8005\" is not an IPv4 ADDRESS:PORT");
+  EXPECT_EQ(errorOf("[host]\nsession_gap = 0\n"),
+            "bad.toml:2: host.session_gap: expected a number in [0.05, 3600], got 0");
+  const NodeConfig c = parseNodeConfig(
+      "[host]\nallowed = [\"192.168.7.20\", \"10.9.0.0/16\"]\nreply_to = \"192.168.7.20:8005\"\n", "ok");
+  ASSERT_EQ(c.host.session.allowed.size(), 2u);
+  EXPECT_EQ(c.host.session.allowed[1].toString(), "10.9.0.0/16");
+  EXPECT_EQ(c.host.replyTo, "192.168.7.20:8005");
 }
 
 TEST(NodeConfig, MissingFile) {

@@ -202,6 +202,42 @@ TEST_F(NodeIntegration, StartOfFrameGoesBackToTheHost) {
   node.stop();
 }
 
+// Start of Frame answers only the followed host: a sender outside host.allowed (here a spoofed
+// 127.0.0.2 listening on the reply port) gets nothing however long the node runs, and is
+// counted; the allowed host that then speaks is answered on its own address.
+TEST_F(NodeIntegration, StartOfFrameNeverGoesToASenderOutsideAllowed) {
+  UdpSocket spoofed({"127.0.0.2", 0});
+  const std::uint16_t replyPort = spoofed.localEndpoint().port;
+  UdpSocket host({"127.0.0.1", replyPort});
+  const std::uint16_t port = freeLoopbackPort();
+  NodeOptions o = smallNode(port, dir_ / "dump.jsonl");
+  o.replyPort = replyPort;
+  o.config.host.session.allowed = {parseAddressRange("127.0.0.1/32")};
+  NodeRun node(o);
+  ASSERT_TRUE(node.waitUntilRendering());
+  cigi::IgControl ig;
+  ig.hostFrameNumber = 7;
+  const cigi::Packet packets[] = {ig};
+  std::vector<std::uint8_t> bytes;
+  ASSERT_EQ(cigi::encodeMessage(packets, skyig::protocol::ByteOrder::big, bytes), "");
+  ASSERT_TRUE(spoofed.sendTo(bytes, toSockaddr({"127.0.0.1", port})));
+  ASSERT_TRUE(waitUntil([&] { return node.stats.notAllowedDatagrams.load() == 1; }));
+  ASSERT_TRUE(waitForFrames(node.stats.frames, 10));
+  std::array<std::uint8_t, 2048> buffer{};
+  sockaddr_in from{};
+  EXPECT_EQ(spoofed.receive(buffer, from, 300ms), 0u);
+  EXPECT_EQ(node.stats.startOfFrameSent.load(), 0u);
+  ASSERT_TRUE(host.sendTo(bytes, toSockaddr({"127.0.0.1", port})));
+  const std::size_t n = host.receive(buffer, from, 2000ms);
+  ASSERT_GT(n, 0u);
+  const cigi::DecodedMessage m = cigi::decodeMessage(std::span(buffer.data(), n));
+  ASSERT_TRUE(m.ok());
+  ASSERT_NE(std::get_if<cigi::StartOfFrame>(&m.packets.front()), nullptr);
+  EXPECT_EQ(std::get<cigi::StartOfFrame>(m.packets.front()).lastHostFrameNumber, 7u);
+  EXPECT_EQ(spoofed.receive(buffer, from, 100ms), 0u);
+  node.stop();
+}
+
 // 100 000 malformed datagrams, in bursts at full speed: the node keeps rendering, counts them,
 // its memory stays flat and the last good state is kept.
 TEST_F(NodeIntegration, SurvivesOneHundredThousandMalformedDatagrams) {

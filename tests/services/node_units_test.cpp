@@ -1,4 +1,4 @@
-// The node's pure parts: the sim clock, ownship prediction, applying CIGI to the host state,
+// The node's pure parts: the sim clock, applying CIGI to the host state,
 // scripted paths.
 #include "protocol/cigi/date.h"
 #include "services/cigi_state.h"
@@ -62,39 +62,6 @@ TEST(SimClock, CrossesMidnight) {
   EXPECT_NEAR(t->secondsOfDay, 30.0, 1e-3);
 }
 
-// With Rate Control, a 30 Hz host sampled by a 60 Hz IG moves smoothly: half a host frame
-// after a sample the ownship has moved half a frame's worth.
-TEST(OwnshipPredictor, DeadReckonsWithHostRates) {
-  OwnshipPredictor p;
-  const auto t0 = Clock::now();
-  OwnshipRates r;
-  r.valid = true;
-  r.x = 50.0;        // 50 m/s north
-  r.yawRate = 6.0;   // deg/s
-  p.addSample({45.0, 7.0, 1000.0, {350.0, 0.0, 0.0}}, t0, r);
-  const skyig::sky::Ownship o = p.at(t0 + std::chrono::microseconds(16667));
-  EXPECT_NEAR((o.latitudeDeg - 45.0) * 111132.0, 50.0 * 0.016667, 0.01);  // metres of latitude at 45 deg
-  EXPECT_NEAR(o.attitude.yawDeg, 350.1, 1e-3);
-  // Across north the heading wraps.
-  EXPECT_NEAR(p.at(t0 + 200ms).attitude.yawDeg, 351.2, 1e-3);
-  // A silent host: prediction stops after 0.25 s.
-  EXPECT_NEAR(p.at(t0 + 10s).latitudeDeg, p.at(t0 + 250ms).latitudeDeg, 1e-12);
-}
-
-TEST(OwnshipPredictor, ExtrapolatesFromTwoSamplesWithoutRates) {
-  OwnshipPredictor p;
-  const auto t0 = Clock::now();
-  p.addSample({45.0, 7.0, 1000.0, {359.0, 0.0, 10.0}}, t0, {});
-  p.addSample({45.0, 7.0, 1003.0, {1.0, 0.0, 12.0}}, t0 + 100ms, {});
-  const skyig::sky::Ownship o = p.at(t0 + 150ms);
-  EXPECT_NEAR(o.heightM, 1004.5, 1e-9);
-  EXPECT_NEAR(o.attitude.yawDeg, 2.0, 1e-9);  // 359 -> 1 is +2 deg, not -358
-  EXPECT_NEAR(o.attitude.rollDeg, 13.0, 1e-9);
-  // An older sample is ignored.
-  p.addSample({0.0, 0.0, 0.0, {0.0, 0.0, 0.0}}, t0 + 50ms, {});
-  EXPECT_NEAR(p.at(t0 + 100ms).heightM, 1003.0, 1e-9);
-}
-
 namespace {
 cigi::DecodedMessage messageOf(std::uint32_t frame, const cigi::EntityControl& e) {
   cigi::DecodedMessage m;
@@ -125,20 +92,6 @@ TEST(CigiState, OwnshipIsEntityZeroAndBadValuesKeepTheLastGood) {
   EXPECT_EQ(t.apply(messageOf(4, bad), Clock::now()), 1);
   EXPECT_EQ(t.state().ownship.latitudeDeg, 47.0);
   EXPECT_EQ(t.state().ownship.attitude.yawDeg, 90.0);
-}
-
-TEST(CigiState, ReorderedOlderFramesAreDropped) {
-  CigiStateTracker t;
-  cigi::EntityControl e;
-  e.latitudeDeg = 2.0;
-  t.apply(messageOf(11, e), Clock::now());
-  e.latitudeDeg = 1.0;
-  t.apply(messageOf(10, e), Clock::now());  // arrives late
-  EXPECT_EQ(t.state().ownship.latitudeDeg, 2.0);
-  EXPECT_EQ(t.staleMessages(), 1u);
-  e.latitudeDeg = 3.0;
-  t.apply(messageOf(0x7fffff00u + 11, e), Clock::now());  // far ahead (less than 2^31) is newer
-  EXPECT_EQ(t.state().ownship.latitudeDeg, 3.0);
 }
 
 TEST(CigiState, CelestialDateAndViewsApply) {

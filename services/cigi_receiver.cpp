@@ -104,7 +104,9 @@ void CigiReceiver::handle(std::span<const std::uint8_t> datagram, const sockaddr
       break;
     case Admission::apply: break;
   }
+  const std::uint64_t jumpsBefore = tracker_.timestampJumps();
   const int rejected = tracker_.apply(decoded_, arrival);
+  stats_.timestampJumps.fetch_add(tracker_.timestampJumps() - jumpsBefore, std::memory_order_relaxed);
   stats_.rejectedValues.fetch_add(static_cast<std::uint64_t>(rejected), std::memory_order_relaxed);
   const HostState& s = tracker_.state();
   if (s.ownshipValid && s.ownshipTime == arrival)

@@ -49,6 +49,7 @@ nlohmann::json NodeStats::toJson() const {
       {"not_allowed_datagrams", notAllowedDatagrams.load()},
       {"other_host_datagrams", otherHostDatagrams.load()},
       {"not_host_messages", notHostMessages.load()},
+      {"timestamp_jumps", timestampJumps.load()},
       {"recorded", recorded.load()},
       {"record_errors", recordErrors.load()},
       {"packets", packetsByType},

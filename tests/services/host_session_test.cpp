@@ -206,6 +206,30 @@ TEST(CigiReceiver, MalformedDatagramIsRejectedWhole) {
   EXPECT_NEAR(secondsOf(out.get()->utcAt(t + 1s)), shown, 1e-9);
 }
 
+// A re-based host clock reaches the counters and leaves the sim clock where it stood.
+TEST(CigiReceiver, TimestampJumpIsCountedAndMovesNothing) {
+  NodeStats stats;
+  Latest<HostSnapshot> out;
+  CigiReceiver r(stats, out);
+  const auto from = address("127.0.0.1", 40000);
+  cigi::CelestialSphereControl cs;
+  cs.date = *cigi::composeDate({2026, 6, 21});
+  cs.hour = 19;
+  cs.minute = 30;
+  std::vector<std::uint8_t> bytes;
+  const cigi::Packet first[] = {frame(1, 1'000'000), cs};
+  ASSERT_EQ(cigi::encodeMessage(first, skyig::protocol::ByteOrder::big, bytes), "");
+  const auto t = Clock::now();
+  r.handle(bytes, from, t);
+  const double shown = secondsOf(out.get()->utcAt(t + 1s));
+  const cigi::Packet jumped[] = {frame(2, 1'000'000 + ticks(20000.0))};
+  ASSERT_EQ(cigi::encodeMessage(jumped, skyig::protocol::ByteOrder::big, bytes), "");
+  r.handle(bytes, from, t + 33ms);
+  EXPECT_EQ(out.version(), 2u);
+  EXPECT_EQ(stats.timestampJumps.load(), 1u);
+  EXPECT_NEAR(secondsOf(out.get()->utcAt(t + 1s)), shown, 1e-6);
+}
+
 // With Rate Control, a 30 Hz host sampled by a 60 Hz IG moves smoothly: half a host frame
 // after a sample the ownship has moved half a frame's worth.
 TEST(OwnshipPredictor, DeadReckonsWithHostRates) {

@@ -76,6 +76,7 @@ void HostSessions::start(const sockaddr_in& from, const cigi::IgControl& ig, Clo
   ++sessions_;
   lastFrame_ = ig.hostFrameNumber;
   lastHeard_ = arrival;
+  lastMode_ = ig.igMode;
 }
 
 SessionDecision HostSessions::admit(const sockaddr_in& from, const cigi::IgControl& ig, Clock::time_point arrival) {
@@ -91,7 +92,10 @@ SessionDecision HostSessions::admit(const sockaddr_in& from, const cigi::IgContr
   };
   if (!active_) return restart(SessionReason::first);
   if (!sameAddress) return restart(SessionReason::newAddress);
-  if (ig.igMode == cigi::IgMode::resetStandby) return restart(SessionReason::resetMode);
+  // Entering Reset/Standby (a host held in it keeps one session: no session per datagram).
+  const bool entersReset = ig.igMode == cigi::IgMode::resetStandby && lastMode_ != cigi::IgMode::resetStandby;
+  lastMode_ = ig.igMode;
+  if (entersReset) return restart(SessionReason::resetMode);
   if (from.sin_port != host_.sin_port) return restart(SessionReason::newPort);
   if (silentS > settings_.sessionGapS) return restart(SessionReason::gap);
   // Frame numbers in serial-number order (they wrap at 2^32), within a bounded window.

@@ -52,7 +52,7 @@ enum class SessionReason : std::uint8_t {
   newPort,     // the followed address from another source port (a restarted process)
   gap,         // the host was silent for longer than sessionGapS
   frameJump,   // a frame number far behind or far ahead of the last
-  resetMode,   // IG Control in Reset/Standby mode: the host is (re)starting
+  resetMode,   // IG Control entered Reset/Standby mode: the host is (re)starting
 };
 inline constexpr std::size_t kSessionReasonCount = 6;
 const char* toString(SessionReason r);
@@ -92,6 +92,7 @@ class HostSessions {
   sockaddr_in host_{};
   std::uint64_t sessions_ = 0;
   std::uint32_t lastFrame_ = 0;    // newest frame applied in this session
+  protocol::cigi::IgMode lastMode_ = protocol::cigi::IgMode::operate;
   Clock::time_point lastHeard_{};  // last datagram of the followed host, stale ones included
 };
 

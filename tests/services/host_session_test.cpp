@@ -115,7 +115,12 @@ TEST(HostSessions, NewPortSilenceAndResetStartSessions) {
   cigi::IgControl reset = frame(5);
   reset.igMode = cigi::IgMode::resetStandby;
   EXPECT_EQ(s.admit(address("10.0.0.5", 40001), reset, t += 33ms).reason, SessionReason::resetMode);
-  EXPECT_EQ(s.admit(address("10.0.0.5", 40001), frame(6), t += 33ms).admission, Admission::apply);
+  reset.hostFrameNumber = 6;
+  EXPECT_EQ(s.admit(address("10.0.0.5", 40001), reset, t += 33ms).admission, Admission::apply);  // held in reset
+  EXPECT_EQ(s.admit(address("10.0.0.5", 40001), frame(7), t += 33ms).admission, Admission::apply);
+  reset.hostFrameNumber = 8;
+  EXPECT_EQ(s.admit(address("10.0.0.5", 40001), reset, t += 33ms).reason, SessionReason::resetMode);  // reset again
+  EXPECT_EQ(s.sessions(), 5u);
 }
 
 // A stray or spoofed datagram from another address never interrupts a live host, whatever its

@@ -209,7 +209,7 @@ sky::ChannelConfig readChannel(TableReader& r, size_t index, std::string& node) 
     c.display.maxLuminance = d.number("max_luminance", c.display.maxLuminance, 1.0, 1e5);
     c.display.ambientLuminance = d.number("ambient_luminance", c.display.ambientLuminance, 0.0, 1e3);
     c.display.gamma = d.number("gamma", c.display.gamma, 1.0, 3.0);
-    const std::string tone = d.string("tone_operator", "tumblin_rushmeier", "\"histogram\" or \"tumblin_rushmeier\"");
+    const std::string tone = d.string("tone_operator", "histogram", "\"histogram\" or \"tumblin_rushmeier\"");
     if (tone == "histogram") c.display.toneOperator = sky::ToneOperator::Histogram;
     else if (tone == "tumblin_rushmeier") c.display.toneOperator = sky::ToneOperator::TumblinRushmeier;
     else d.fail(d.find("tone_operator"), "tone_operator", "expected \"histogram\" or \"tumblin_rushmeier\", got \"" + tone + "\"");

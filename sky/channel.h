@@ -16,7 +16,7 @@ enum class ToneOperator {
 // Wang, Ji & Zhang 2011, eq. 17 (after Tumblin & Rushmeier 1993): L_d = L_amb + L_dmax n^gamma,
 // and the viewer's adaptation to the display.
 struct DisplayParams {
-  ToneOperator toneOperator = ToneOperator::TumblinRushmeier;
+  ToneOperator toneOperator = ToneOperator::Histogram;
   double maxLuminance = 100.0;        // L_dmax, cd/m^2
   double ambientLuminance = 0.1;      // L_amb, cd/m^2
   double gamma = 2.2;

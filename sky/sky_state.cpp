@@ -161,8 +161,13 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
   SkyStateCaches own;
   s.extinction = (caches ? *caches : own).extinction(medium, observer.heightM);
   s.starField = starFieldOf(s);
-  if (s.ephemeris)
+  if (s.ephemeris) {
     s.moonDisc = std::make_shared<const night::MoonDisc>(night::makeMoonDisc(night::moonPlacement(*s.ephemeris), s.extinction));
+    const double albedo = s.conditions.atmosphere ? medium.groundAlbedo : s.conditions.groundAlbedo;
+    const glm::dvec3 e = night::nightDiffuseIlluminance(*s.ephemeris, s.extinction) +
+                         (s.starField ? night::horizontalIlluminance(*s.starField) : glm::dvec3(0.0));
+    s.nightGroundRadiance = albedo / std::numbers::pi * e;
+  }
   if (s.conditions.model != SkyModel::Physical)
     s.sky = makeAnalyticSky(s.conditions, s.sunAzimuth, s.sunAltitude, s.sunApparentAltitude);
   // The eye adapts to what it sees over the whole view sphere: sky and terrain, sunlit and

@@ -65,6 +65,11 @@ struct SkyState {
   // The moon's disc as the moon pass and the probe use it, built once per state here rather
   // than per channel on the render thread; null without an ephemeris (sun overridden).
   std::shared_ptr<const night::MoonDisc> moonDisc;
+  // The terrain's radiance under the night's own light (linear Rec.709 cd/m^2): the airglow,
+  // zodiacal light and stars on a horizontal Lambertian ground of the state's albedo,
+  // albedo E / pi. ~5e-5 cd/m^2 on a moonless night at a dark site; without it a moonless
+  // terrain would be black and the eye adapted to a sky over a void. Zero without an ephemeris.
+  glm::dvec3 nightGroundRadiance{0.0};
 };
 
 // The night's sources of a state, for the probe, the passes and tests: the moon's illuminance on

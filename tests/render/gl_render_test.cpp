@@ -19,6 +19,9 @@
 #include <memory>
 #include <numbers>
 #include <optional>
+#include <string>
+
+#include <unistd.h>
 
 using namespace skyig;
 using namespace skyig::render;
@@ -132,7 +135,7 @@ TEST_F(GlRender, ExrValuesEqualTheModelInCandelaPerSquareMetre) {
   const ChannelConfig c = channel(10.0);
   const SkyState s = state(30.0, 40.0, 25.0);
   renderer_->draw(s, c);
-  const std::string path = (std::filesystem::temp_directory_path() / "skyig_test_exr_values.exr").string();
+  const std::string path = (std::filesystem::temp_directory_path() / ("skyig_test_exr_values-" + std::to_string(::getpid()) + ".exr")).string();
   writeExr(path, renderer_->readHdr(), {{"skyig:channel", c.name}});
   const ExrFile file = readExr(path);
   std::filesystem::remove(path);
@@ -156,20 +159,33 @@ TEST_F(GlRender, ExrValuesEqualTheModelInCandelaPerSquareMetre) {
 // The 8-bit frame equals the CPU's tone reproduction of the CPU's radiance within the
 // +-1 LSB dither and rounding.
 TEST_F(GlRender, DisplayFrameEqualsCpuToneReproduction) {
-  const ChannelConfig c = channel(5.0);
-  const SkyState s = state(200.0, 230.0, 8.0);
-  renderer_->draw(s, c);
-  const DisplayImage im = renderer_->readDisplay();
-  const shader::DisplayModel d{c.display.maxLuminance, c.display.ambientLuminance, c.display.gamma,
-                               c.display.adaptationLuminance};
-  for (int y = 1; y < kH; y += 5)
-    for (int x = 1; x < kW; x += 5) {
-      const glm::dvec3 r = ray(s, c, x, y);
-      if (std::abs(r.z) < 2e-3) continue;
-      const glm::dvec3 n = shader::toneReproduce(analyticSkyRadiance(s.sky.params, r), s.adaptationLuminance, d);
-      for (int k = 0; k < 3; ++k)
-        EXPECT_NEAR(im.rgba[(static_cast<size_t>(y) * kW + x) * 4 + k], n[k] * 255.0, 2.0) << x << "," << y;
-    }
+  for (const ToneOperator op : {ToneOperator::Histogram, ToneOperator::TumblinRushmeier}) {
+    ChannelConfig c = channel(5.0);
+    c.display.toneOperator = op;
+    const SkyState s = state(200.0, 230.0, 8.0);
+    renderer_->draw(s, c);
+    const DisplayImage im = renderer_->readDisplay();
+    const shader::DisplayModel d{c.display.maxLuminance, c.display.ambientLuminance, c.display.gamma,
+                                 c.display.adaptationLuminance};
+    const eye::ToneCurve curve = toneCurveFor(s, c.display);
+    for (int y = 1; y < kH; y += 5)
+      for (int x = 1; x < kW; x += 5) {
+        const glm::dvec3 r = ray(s, c, x, y);
+        if (std::abs(r.z) < 2e-3) continue;
+        const glm::dvec3 world = analyticSkyRadiance(s.sky.params, r);
+        glm::dvec3 n;
+        if (op == ToneOperator::TumblinRushmeier) {
+          n = shader::toneReproduce(world, s.adaptationLuminance, d);
+        } else {
+          const glm::dvec3 xyY = shader::mesopicxyY(shader::rec709ToXyz(glm::max(world, glm::dvec3(0.0))));
+          n = shader::displayValues(
+              shader::toneReproduceLinearWithCurve(xyY, std::log10(curve.displayLuminance(xyY.z)), d), d);
+        }
+        for (int k = 0; k < 3; ++k)
+          EXPECT_NEAR(im.rgba[(static_cast<size_t>(y) * kW + x) * 4 + k], n[k] * 255.0, 2.0)
+              << (op == ToneOperator::Histogram ? "histogram " : "tumblin-rushmeier ") << x << "," << y;
+      }
+  }
 }
 
 // Looking along the horizon at sunset: no NaN or Inf anywhere, in either target.
@@ -188,7 +204,7 @@ TEST_F(GlRender, PngIsWrittenAndNotFlat) {
   const ChannelConfig c = channel(15.0);
   const SkyState s = state(250.0, 260.0, 20.0);
   renderer_->draw(s, c);
-  const std::string path = (std::filesystem::temp_directory_path() / "skyig_test_not_flat.png").string();
+  const std::string path = (std::filesystem::temp_directory_path() / ("skyig_test_not_flat-" + std::to_string(::getpid()) + ".png")).string();
   writePng(path, renderer_->readDisplay(), c.display.gamma);
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
@@ -416,7 +432,7 @@ TEST_F(GlRender, PhysicalTablesSwapAfterTheAnnouncedFrames) {
 // with the model's luminance, at noon, at sunset and in haze with its aureole, and no pixel of
 // the frame or of the file is infinite or NaN (half float overflowed at 65504).
 TEST_F(GlRender, SunDiscKeepsItsLuminanceInTheExr) {
-  const std::filesystem::path exr = std::filesystem::temp_directory_path() / "skyig_sun_disc.exr";
+  const std::filesystem::path exr = std::filesystem::temp_directory_path() / ("skyig_sun_disc-" + std::to_string(::getpid()) + ".exr");
   struct Case {
     double sunAltitude, visibilityKm;
   };

@@ -5,6 +5,7 @@
 // on the channel's resolution.
 #include "sky/atmosphere/table_cache.h"
 #include "render/gl/gl_context.h"
+#include "render/image_io.h"
 #include "render/sky_renderer.h"
 #include "shaders/night/star_physics.h"
 #include "tests/sky/night/star_test_support.h"
@@ -217,4 +218,67 @@ TEST_F(StarDisplay, DisplayedIntensityIsTheSameAt640And1920) {
     EXPECT_GT(a, 0.0);
     EXPECT_NEAR(a / b, 1.0, 0.1);
   }
+}
+
+// Orion on a moonless January night from Innsbruck, the real catalogue, a 1280x1024 channel of
+// 60 x 48 degrees: the displayed illuminance of its seven bright stars ranks as their
+// illuminance at the eye (after extinction), Rigel and Betelgeuse stand out in the 8-bit frame,
+// and Betelgeuse (B-V 1.85) is shown redder than Rigel (B-V -0.03). The frame is written to the
+// build tree (night-test-output/orion_displayed.png), to be looked at.
+TEST_F(StarDisplay, OrionRanksByMagnitudeOnTheDisplay) {
+  SkyState night = sky();
+  ObserverState o = night.observer;
+  SkyConditions c = night.conditions;
+  c.starCatalogue = std::make_shared<const night::StarCatalogue>(night_testing::catalogue(), o.utc);
+  const SkyState probe = buildSkyState(o, c);
+  const ephemeris::Star& rigelStar = *std::find_if(night_testing::catalogue().begin(), night_testing::catalogue().end(),
+                                                   [](const ephemeris::Star& s) { return s.hr == 1713; });
+  const ephemeris::BodyPosition rigel = ephemeris::starPosition(rigelStar, *probe.ephemeris);
+  o.attitude = Attitude{rigel.azimuthRad / kDeg, 0.0, 0.0};
+  ChannelConfig ch;
+  ch.width = 1280;
+  ch.height = 1024;
+  ch.offset = Attitude{0.0, rigel.altitudeRefractedRad / kDeg + 8.0, 0.0};
+  const SkyState s = buildSkyState(o, c);
+  renderer_->draw(s, ch);
+  const Frame f{renderer_->readPointSources(), renderer_->readDisplay(), ndcToWorld(eyeToEnu(o.attitude, ch.offset), ch.frustum)};
+  const auto dir = std::filesystem::path(SKYIG_BINARY_DIR) / "night-test-output";
+  std::filesystem::create_directories(dir);
+  // Orion's seven (HR): Rigel, Betelgeuse, Bellatrix, Alnilam, Alnitak, Saiph, Mintaka.
+  struct Shown {
+    int hr;
+    double worldLux, displayedLux;
+    glm::dvec3 direction;
+  };
+  std::vector<Shown> shown;
+  for (int hr : {1713, 2061, 1790, 1903, 1948, 2004, 1852}) {
+    const auto& all = s.starField->stars;
+    const ephemeris::Star& cat = *std::find_if(night_testing::catalogue().begin(), night_testing::catalogue().end(),
+                                               [hr](const ephemeris::Star& x) { return x.hr == hr; });
+    const ephemeris::BodyPosition p = ephemeris::starPosition(cat, *s.ephemeris);
+    const glm::dvec3 d = enuDirection(p.azimuthRad, p.altitudeRefractedRad);
+    const auto it = std::max_element(all.begin(), all.end(), [&](const night::PointSource& a, const night::PointSource& b) {
+      return glm::dot(a.direction, d) < glm::dot(b.direction, d);
+    });
+    shown.push_back({hr, it->illuminanceLux, displayedLux(f, it->direction, 0.3), it->direction});
+    std::printf("  HR %d: %.3g lux at the eye, displayed %.3g lux\n", hr, it->illuminanceLux, shown.back().displayedLux);
+  }
+  for (const Shown& a : shown)
+    for (const Shown& b : shown)
+      if (a.worldLux > 1.2 * b.worldLux) {
+        EXPECT_GT(a.displayedLux, b.displayedLux) << a.hr << " over " << b.hr;
+      }
+  // Colour: the displayed light around each of the two, red over blue.
+  auto redOverBlue = [&](const glm::dvec3& d) {
+    const glm::dvec2 px = pixelOf(f, d);
+    glm::dvec3 sum(0.0);
+    for (int y = static_cast<int>(px.y) - 3; y <= static_cast<int>(px.y) + 3; ++y)
+      for (int x = static_cast<int>(px.x) - 3; x <= static_cast<int>(px.x) + 3; ++x) {
+        const float* p = f.points.pixel(x, y);
+        sum += glm::dvec3(p[0], p[1], p[2]);
+      }
+    return sum.r / sum.b;
+  };
+  EXPECT_GT(redOverBlue(shown[1].direction), 2.0 * redOverBlue(shown[0].direction));
+  writePng((dir / "orion_displayed.png").string(), f.display, ch.display.gamma);
 }

@@ -129,11 +129,14 @@ void SkyRenderer::presentToDefaultFramebuffer(int windowWidth, int windowHeight)
                          windowWidth, windowHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
-HdrImage SkyRenderer::readHdr() const {
-  HdrImage image{hdr_->width(), hdr_->height(), {}};
+namespace {
+
+// A float target's pixels, top row first.
+HdrImage readFloatTarget(const RenderTarget& target) {
+  HdrImage image{target.width(), target.height(), {}};
   const size_t row = static_cast<size_t>(image.width) * 4;
   std::vector<float> bottomUp(row * static_cast<size_t>(image.height));
-  glGetTextureImage(hdr_->texture(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(bottomUp.size() * sizeof(float)),
+  glGetTextureImage(target.texture(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(bottomUp.size() * sizeof(float)),
                     bottomUp.data());
   image.rgba.resize(bottomUp.size());
   for (int y = 0; y < image.height; ++y)  // GL's rows start at the bottom, images' at the top
@@ -141,17 +144,11 @@ HdrImage SkyRenderer::readHdr() const {
   return image;
 }
 
-HdrImage SkyRenderer::readPointSources() const {
-  HdrImage image{pointSources_->width(), pointSources_->height(), {}};
-  const size_t row = static_cast<size_t>(image.width) * 4;
-  std::vector<float> bottomUp(row * static_cast<size_t>(image.height));
-  glGetTextureImage(pointSources_->texture(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(bottomUp.size() * sizeof(float)),
-                    bottomUp.data());
-  image.rgba.resize(bottomUp.size());
-  for (int y = 0; y < image.height; ++y)
-    std::copy_n(&bottomUp[static_cast<size_t>(image.height - 1 - y) * row], row, &image.rgba[static_cast<size_t>(y) * row]);
-  return image;
-}
+}  // namespace
+
+HdrImage SkyRenderer::readHdr() const { return readFloatTarget(*hdr_); }
+
+HdrImage SkyRenderer::readPointSources() const { return readFloatTarget(*pointSources_); }
 
 DisplayImage SkyRenderer::readDisplay() const {
   DisplayImage image{display_->width(), display_->height(), {}};

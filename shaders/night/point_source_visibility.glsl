@@ -70,18 +70,20 @@ Float maxWorldVisibility() {
   return illuminanceOfMagnitude(kBrightestSourceMagnitude) / pointSourceThresholdLux(kDarkestSkyCdM2);
 }
 
-// The largest visibility a display of black `ambientCdM2` and white `whiteCdM2` can give a
-// displayed star on its black: the PSF's peak, E_d / (2 pi sigma^2), reaches white.
-Float maxDisplayVisibility(Float ambientCdM2, Float whiteCdM2) {
+// The largest visibility a display of white `whiteCdM2` can give a star drawn on its luminance
+// `backgroundCdM2` there: the PSF's peak, E_d / (2 pi sigma^2), reaches white.
+Float maxDisplayVisibility(Float backgroundCdM2, Float whiteCdM2) {
   Float psfSolidAngle = 2.0 * PI * kDisplayedPsfSigmaRad * kDisplayedPsfSigmaRad;
-  return max((whiteCdM2 - ambientCdM2) * psfSolidAngle / pointSourceThresholdLux(ambientCdM2), 1.0);
+  return max((whiteCdM2 - backgroundCdM2) * psfSolidAngle / pointSourceThresholdLux(backgroundCdM2), 1.0);
 }
 
-// The exponent k of log V_d = k log V: 1 where the display has the range (a just-visible star is
-// just visible on the display, and every ratio is kept), else the display's range over the
-// world's (Ward Larson, Rushmeier & Piatko 1997's ceiling: compress, never exaggerate).
-Float displayedVisibilityExponent(Float ambientCdM2, Float whiteCdM2) {
-  return min(1.0, log(maxDisplayVisibility(ambientCdM2, whiteCdM2)) / log(maxWorldVisibility()));
+// The exponent k of log V_d = k log V for a star drawn where the display shows
+// `backgroundCdM2`: 1 where the display has the range (a just-visible star is just visible on
+// the display, and every ratio is kept), else the display's range there over the eye's (Ward
+// Larson, Rushmeier & Piatko 1997's ceiling: compress, never exaggerate). Stars on the same
+// displayed sky share it, so they rank by magnitude; none is pushed past white.
+Float displayedVisibilityExponent(Float backgroundCdM2, Float whiteCdM2) {
+  return min(1.0, log(maxDisplayVisibility(backgroundCdM2, whiteCdM2)) / log(maxWorldVisibility()));
 }
 
 // The illuminance (lux, at the viewer of the display) that a point source of illuminance

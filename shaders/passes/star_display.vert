@@ -35,7 +35,7 @@ void main() {
   float displayBackground = min(rec709Luminance(toneMapLinear(background)), white);
   float worldBackground = rec709Luminance(max(background, vec3(0.0)));
   float lux = displayedIlluminance(rec709Luminance(aRec709Lux), worldBackground, displayBackground,
-                                   displayedVisibilityExponent(display.y, white));
+                                   displayedVisibilityExponent(displayBackground, white));
   if (!(lux > 0.0)) return;  // below the eye's threshold: not shown
   float pixelSr = pixelSolidAngle(mat3(ndcToWorld), ndc, 4.0 * viewport.z * viewport.w);
   vSigmaPx = max(kDisplayedPsfSigmaRad / sqrt(pixelSr), kDisplayedPsfMinSigmaPx);

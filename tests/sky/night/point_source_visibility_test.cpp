@@ -54,9 +54,10 @@ TEST(PointSourceThreshold, RisesWithTheBackgroundWithoutAJump) {
   EXPECT_NEAR(shader::rodThresholdLux(crossing) / shader::coneThresholdLux(crossing), 1.0, 0.02);
 }
 
-// On the default display (white 100.1, black 0.1 cd/m^2) a star's displayed visibility spans 1
-// (just visible) to 3.1e3 while the eye's spans 1 to 4.1e4 (Venus on the darkest sky): the
-// exponent is log(3.1e3) / log(4.1e4) = 0.76, and a display with the range keeps exponent 1.
+// On the default display (white 100.1, black 0.1 cd/m^2) a star drawn on the display's black
+// has visibilities from 1 (just visible) to 3.1e3 while the eye's span 1 to 4.1e4 (Venus on the
+// darkest sky): the exponent is log(3.1e3) / log(4.1e4) = 0.76; on a brighter displayed sky the
+// range, and so the exponent, is smaller; a display with the range keeps exponent 1.
 TEST(PointSourceDisplay, CompressesTheWorldsVisibilityIntoTheDisplaysRange) {
   EXPECT_NEAR(shader::maxWorldVisibility(), 4.07e4, 0.05e4);
   EXPECT_NEAR(shader::maxDisplayVisibility(0.1, 100.1), 3.08e3, 0.05e3);
@@ -71,10 +72,17 @@ TEST(PointSourceDisplay, CompressesTheWorldsVisibilityIntoTheDisplaysRange) {
               shader::pointSourceThresholdLux(displaySky), 1e-3 * shader::pointSourceThresholdLux(displaySky));
   const double bright = shader::displayedIlluminance(100.0 * threshold, sky, displaySky, k);
   EXPECT_NEAR(bright / shader::pointSourceThresholdLux(displaySky), std::pow(100.0, k), 1e-6 * bright);
-  // The brightest source on the darkest sky, on the display's black, peaks at the display's white.
-  const double venus = shader::displayedIlluminance(shader::illuminanceOfMagnitude(-4.9), shader::kDarkestSkyCdM2, 0.1, k);
+  // The brightest source on the darkest sky peaks at the display's white, whatever the displayed
+  // sky around it: the exponent falls as the displayed sky brightens (0.69 at 1.2 cd/m^2).
   const double sigma = shader::kDisplayedPsfSigmaRad;
-  EXPECT_NEAR(venus / (2.0 * M_PI * sigma * sigma), 100.0, 1.0);
+  for (double displayed : {0.1, 1.2, 10.0, 50.0}) {
+    const double kHere = shader::displayedVisibilityExponent(displayed, 100.1);
+    EXPECT_LE(kHere, k);
+    const double venus =
+        shader::displayedIlluminance(shader::illuminanceOfMagnitude(-4.9), shader::kDarkestSkyCdM2, displayed, kHere);
+    EXPECT_NEAR(displayed + venus / (2.0 * M_PI * sigma * sigma), 100.1, 0.5) << displayed;
+  }
+  EXPECT_NEAR(shader::displayedVisibilityExponent(1.2, 100.1), 0.692, 0.005);
 }
 
 // Colour: a star the cones see ten times over keeps its chromaticity; one only the rods see is

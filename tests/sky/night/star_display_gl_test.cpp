@@ -109,6 +109,17 @@ class StarDisplay : public ::testing::Test {
     return sum;
   }
 
+  // The display luminance (cd/m^2) of the frame around `direction`: eq. 18 inverted, averaged
+  // over 9 x 9 pixels (the dither is +-1 LSB).
+  static double displayedSky(const Frame& f, const glm::dvec3& direction, const ChannelConfig& ch) {
+    const glm::dvec2 px = pixelOf(f, direction);
+    double n = 0.0;
+    for (int y = static_cast<int>(px.y) - 4; y <= static_cast<int>(px.y) + 4; ++y)
+      for (int x = static_cast<int>(px.x) - 4; x <= static_cast<int>(px.x) + 4; ++x)
+        n += f.display.rgba[(static_cast<std::size_t>(y) * f.display.width + x) * 4 + 1] / 255.0 / 81.0;
+    return ch.display.ambientLuminance + ch.display.maxLuminance * std::pow(n, ch.display.gamma);
+  }
+
   // The sky's luminance (cd/m^2, without stars) in `direction`.
   static double skyLuminance(const SkyState& state, const ChannelConfig& ch, const glm::dvec3& direction) {
     SkyState bare = state;
@@ -130,32 +141,38 @@ class StarDisplay : public ::testing::Test {
 
 // Eight stars of magnitude -4 to 5 at 40 degrees up on a moonless night: each brighter star
 // shows more light, and the ratio of two stars' displayed illuminances is their world ratio to
-// the power k = 0.757 that the default display's range allows (log V_d = k log V): five
-// magnitudes (a factor 100) become 100^0.757 = 32.6; the display spans visibilities of 1 to
-// 3.1e3 for the eye's 1 to 4.1e4.
+// the power k that the default display's range allows on the displayed sky around them
+// (log V_d = k log V; docs/night-sky-stars.md): k = 0.68 on Tumblin-Rushmeier's displayed sky of
+// 1.5 cd/m^2, where five magnitudes (a factor 100) become 100^0.68 = 23.
 TEST_F(StarDisplay, DisplayedStarContrastRanksWithMagnitude) {
   const SkyState night = sky();
-  const ChannelConfig ch = channel(320, 240);
   const double mags[] = {-4.0, -2.0, 0.0, 1.0, 2.0, 3.0, 4.0, 5.0};
   std::vector<night::PointSource> stars;
   for (int i = 0; i < 8; ++i) stars.push_back(source(180.0 - 14.0 + 4.0 * i, 40.0, mags[i]));
-  const Frame f = render(night, stars, ch);
-  const double k = shader::displayedVisibilityExponent(ch.display.ambientLuminance,
-                                                       ch.display.ambientLuminance + ch.display.maxLuminance);
-  std::vector<double> lux;
-  for (const auto& s : stars) lux.push_back(displayedLux(f, s.direction, 1.5));
-  const double b = skyLuminance(night, ch, stars[0].direction);
-  std::printf("night sky %.3g cd/m^2 (limiting magnitude %.2f), k %.3f\n", b, shader::limitingMagnitude(b), k);
-  for (int i = 0; i < 8; ++i) std::printf("  magnitude %+.0f: displayed %.3g lux\n", mags[i], lux[i]);
-  for (int i = 1; i < 8; ++i) {
-    EXPECT_GT(lux[i - 1], lux[i]) << mags[i];
-    EXPECT_GT(lux[i], 0.0) << mags[i];
+  // Both operators: the stars are drawn apart from the sky's mapping, against it.
+  for (ToneOperator op : {ToneOperator::TumblinRushmeier, ToneOperator::Histogram}) {
+    ChannelConfig ch = channel(320, 240);
+    ch.display.toneOperator = op;
+    SCOPED_TRACE(op == ToneOperator::Histogram ? "histogram" : "Tumblin-Rushmeier");
+    const Frame f = render(night, stars, ch);
+    const double white = ch.display.ambientLuminance + ch.display.maxLuminance;
+    const double k = shader::displayedVisibilityExponent(displayedSky(render(night, {}, ch), stars[2].direction, ch), white);
+    std::vector<double> lux;
+    for (const auto& s : stars) lux.push_back(displayedLux(f, s.direction, 1.5));
+    const double b = skyLuminance(night, ch, stars[0].direction);
+    std::printf("night sky %.3g cd/m^2 (limiting magnitude %.2f), k %.3f\n", b, shader::limitingMagnitude(b), k);
+    // k at the displayed night sky: below the 0.757 of the display's black, above 0.5.
+    EXPECT_LT(k, 0.757);
+    EXPECT_GT(k, 0.5);
+    for (int i = 0; i < 8; ++i) std::printf("  magnitude %+.0f: displayed %.3g lux\n", mags[i], lux[i]);
+    for (int i = 1; i < 8; ++i) {
+      EXPECT_GT(lux[i - 1], lux[i]) << mags[i];
+      EXPECT_GT(lux[i], 0.0) << mags[i];
+    }
+    // Same sky behind them (within a few per cent), so the ratios are k times the magnitudes.
+    EXPECT_NEAR(lux[2] / lux[7], std::pow(100.0, k), 0.1 * std::pow(100.0, k));
+    EXPECT_NEAR(lux[0] / lux[2], std::pow(10.0, 1.6 * k), 0.1 * std::pow(10.0, 1.6 * k));
   }
-  // Same sky behind them (within a few per cent), so the ratios are k times the magnitudes.
-  EXPECT_NEAR(lux[2] / lux[7], std::pow(100.0, k), 0.1 * std::pow(100.0, k));
-  EXPECT_NEAR(lux[0] / lux[2], std::pow(10.0, 1.6 * k), 0.1 * std::pow(10.0, 1.6 * k));
-  EXPECT_LT(k, 0.8);
-  EXPECT_GT(k, 0.7);
 }
 
 // A magnitude-6.5 star is not shown on a sky as bright as a suburban one (19 mag/arcsec^2,
@@ -221,9 +238,10 @@ TEST_F(StarDisplay, DisplayedIntensityIsTheSameAt640And1920) {
 }
 
 // Orion on a moonless January night from Innsbruck, the real catalogue, a 1280x1024 channel of
-// 60 x 48 degrees: the displayed illuminance of its seven bright stars ranks as their
-// illuminance at the eye (after extinction), Rigel and Betelgeuse stand out in the 8-bit frame,
-// and Betelgeuse (B-V 1.85) is shown redder than Rigel (B-V -0.03). The frame is written to the
+// 60 x 48 degrees: the displayed contrast of its seven bright stars (displayed visibility, the
+// displayed illuminance over the threshold at the displayed sky around each) ranks as their
+// visibility at the eye, and as their magnitude where they differ by more than 0.75 (the sky
+// behind them differs a little), and Betelgeuse (B-V 1.85) is shown redder than Rigel (B-V -0.03). The frame is written to the
 // build tree (night-test-output/orion_displayed.png), to be looked at.
 TEST_F(StarDisplay, OrionRanksByMagnitudeOnTheDisplay) {
   SkyState night = sky();
@@ -242,6 +260,10 @@ TEST_F(StarDisplay, OrionRanksByMagnitudeOnTheDisplay) {
   const SkyState s = buildSkyState(o, c);
   renderer_->draw(s, ch);
   const Frame f{renderer_->readPointSources(), renderer_->readDisplay(), ndcToWorld(eyeToEnu(o.attitude, ch.offset), ch.frustum)};
+  SkyState bare = s;  // the same frame without the stars: the skies behind them
+  bare.starField = nullptr;
+  renderer_->draw(bare, ch);
+  const Frame sky{renderer_->readHdr(), renderer_->readDisplay(), f.ndcToWorld};
   const auto dir = std::filesystem::path(SKYIG_BINARY_DIR) / "night-test-output";
   std::filesystem::create_directories(dir);
   // Orion's seven (HR): Rigel, Betelgeuse, Bellatrix, Alnilam, Alnitak, Saiph, Mintaka.
@@ -249,6 +271,7 @@ TEST_F(StarDisplay, OrionRanksByMagnitudeOnTheDisplay) {
     int hr;
     double worldLux, displayedLux;
     glm::dvec3 direction;
+    double visibility, displayedVisibility;
   };
   std::vector<Shown> shown;
   for (int hr : {1713, 2061, 1790, 1903, 1948, 2004, 1852}) {
@@ -260,14 +283,30 @@ TEST_F(StarDisplay, OrionRanksByMagnitudeOnTheDisplay) {
     const auto it = std::max_element(all.begin(), all.end(), [&](const night::PointSource& a, const night::PointSource& b) {
       return glm::dot(a.direction, d) < glm::dot(b.direction, d);
     });
-    shown.push_back({hr, it->illuminanceLux, displayedLux(f, it->direction, 0.3), it->direction});
-    std::printf("  HR %d: %.3g lux at the eye, displayed %.3g lux\n", hr, it->illuminanceLux, shown.back().displayedLux);
+    const glm::dvec2 px = pixelOf(sky, it->direction);
+    const float* hdr = sky.points.pixel(static_cast<int>(px.x), static_cast<int>(px.y));
+    const double background = shader::rec709Luminance(glm::dvec3(hdr[0], hdr[1], hdr[2]));
+    // Everything within 0.2 degrees, as measured on the display: Alnitak's companion (HR 1949,
+    // 2.4 arcsec away) and the like.
+    double worldLux = 0.0;
+    for (const auto& other : all) worldLux += glm::dot(other.direction, it->direction) > std::cos(0.2 * kDeg) ? other.illuminanceLux : 0.0;
+    const double displayed = displayedLux(f, it->direction, 0.2);
+    const double displayedBackground = displayedSky(sky, it->direction, ch);
+    shown.push_back({hr, worldLux, displayed, it->direction, worldLux / shader::pointSourceThresholdLux(background),
+                     displayed / shader::pointSourceThresholdLux(displayedBackground)});
+    std::printf("  HR %d: %.3g lux at the eye on %.3g cd/m^2, V %.1f; displayed %.3g lux on %.3g cd/m^2, V_d %.1f\n", hr,
+                worldLux, background, shown.back().visibility, displayed, displayedBackground,
+                shown.back().displayedVisibility);
   }
   for (const Shown& a : shown)
-    for (const Shown& b : shown)
-      if (a.worldLux > 1.2 * b.worldLux) {
-        EXPECT_GT(a.displayedLux, b.displayedLux) << a.hr << " over " << b.hr;
+    for (const Shown& b : shown) {
+      if (a.visibility > 1.2 * b.visibility) {
+        EXPECT_GT(a.displayedVisibility, b.displayedVisibility) << a.hr << " over " << b.hr;
       }
+      if (a.worldLux > 2.0 * b.worldLux) {
+        EXPECT_GT(a.displayedVisibility, b.displayedVisibility) << a.hr << " over " << b.hr;
+      }
+    }
   // Colour: the displayed light around each of the two, red over blue.
   auto redOverBlue = [&](const glm::dvec3& d) {
     const glm::dvec2 px = pixelOf(f, d);

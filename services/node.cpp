@@ -272,7 +272,12 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
         s.timestamp = ticks10us(frameEnd - start);
         s.timestampValid = true;
         const protocol::cigi::Packet packets[] = {s};
-        if (protocol::cigi::encodeMessage(packets, protocol::ByteOrder::big, sof).empty() && udp.sendTo(sof, *to))
+        // In the host's CIGI version: a 4.0 host reads a 4.0 Start of Frame (its first packet
+        // tells a CIGI 4 message by its 16-bit size and id), a 3.x host a 3.3 one.
+        const bool cigi4 = snapshot && snapshot->state.cigiMajorVersion == 4;
+        const std::string error = cigi4 ? protocol::cigi::encodeMessage4(packets, protocol::ByteOrder::big, sof)
+                                        : protocol::cigi::encodeMessage(packets, protocol::ByteOrder::big, sof);
+        if (error.empty() && udp.sendTo(sof, *to))
           stats.startOfFrameSent.fetch_add(1, std::memory_order_relaxed);
       }
       if (dump) dump->write(frame, snapshot, built->state, pose);

@@ -9,6 +9,7 @@
 #include "services/can_receiver.h"
 #include "services/cigi_receiver.h"
 #include "services/frame_files.h"
+#include "services/frame_metadata.h"
 #include "services/sky_worker.h"
 #include "services/recorder.h"
 #include "services/state_dump.h"
@@ -242,10 +243,9 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
         display.draw(built->state, pose, [&](const render::SkyRenderer& r, const sky::ChannelConfig& c) {
           const std::string stem = frameStem(opt.saveFramesDir, frame, built->state.observer.utc,
                                              pose.channels.size() > 1 ? c.name : "");
-          writeFrameFiles(r, stem, c, true, true,
-                          {{"skyig:utc", ephemeris::formatIso8601Utc(built->state.observer.utc)},
-                           {"skyig:channel", c.name},
-                           {"skyig:frame", std::to_string(frame)}});
+          render::ImageAttributes attributes = frameAttributes(built->state, pose.attitude, c);
+          attributes["skyig:frame"] = static_cast<double>(frame);  // an integer, exact to 2^53
+          writeFrameFiles(r, stem, c, true, true, attributes);
         });
       } else {
         display.draw(built->state, pose);

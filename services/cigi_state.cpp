@@ -22,6 +22,10 @@ bool validOwnship(const cigi::EntityControl& e) {
 
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
+// How closely skyig follows a CIGI 4.0 host's stated seconds: the clock runs on the host's
+// timestamps and is corrected only when it leaves this window around the stated instant.
+constexpr double kStatedSecondsResolutionS = 1e-3;
+
 }  // namespace
 
 ViewOverride& HostState::view(std::uint16_t id) {
@@ -49,6 +53,7 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
         return 0;
       }
       haveHostFrame_ = true;
+      state_.cigiMajorVersion = message.majorVersion;  // the node answers in the host's version
     }
   }
   for (const cigi::Packet& packet : message.packets) {
@@ -98,14 +103,18 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
             }
             if (!p.dateTimeValid) return;
             const auto date = cigi::splitDate(p.date);
-            if (!date || p.hour > 23 || p.minute > 59) {
+            // CIGI 4.0 adds the seconds (a float, 0 <= s < 60) that 3.3 lacks.
+            const bool withSeconds = message.majorVersion == 4;
+            if (!date || p.hour > 23 || p.minute > 59 ||
+                (withSeconds && !(std::isfinite(p.seconds) && p.seconds >= 0.0f && p.seconds < 60.0f))) {
               ++rejected;
               return;
             }
             state_.timeValid = true;
             // The continuous time is taken after any IG Control of this message was applied.
-            clock_.clock.observe({date->year, date->month, date->day, p.hour * 3600.0 + p.minute * 60.0},
-                                 clock_.continuousAt(arrival));
+            const double secondsOfDay = p.hour * 3600.0 + p.minute * 60.0 + (withSeconds ? static_cast<double>(p.seconds) : 0.0);
+            clock_.clock.observe({date->year, date->month, date->day, secondsOfDay}, clock_.continuousAt(arrival),
+                                 withSeconds ? kStatedSecondsResolutionS : 60.0);
             changed = true;
           } else if constexpr (std::is_same_v<T, cigi::AtmosphereControl>) {
             if (!std::isfinite(p.visibilityRangeM) || p.visibilityRangeM < 0.0f || !std::isfinite(p.airTemperatureC) ||

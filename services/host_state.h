@@ -33,6 +33,7 @@ struct ViewOverride {
 struct HostState {
   std::uint64_t updates = 0;          // host messages applied so far (0: nothing yet)
   std::uint32_t hostFrame = 0;        // IG Control host frame number of the last message
+  std::uint8_t cigiMajorVersion = 3;  // CIGI version of the last IG Control (3 or 4): SOF's version
   bool ownshipValid = false;
   sky::Ownship ownship;
   Clock::time_point ownshipTime{};    // arrival of the message that last set the ownship

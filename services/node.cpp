@@ -9,6 +9,7 @@
 #include "services/can_receiver.h"
 #include "services/cigi_receiver.h"
 #include "services/frame_files.h"
+#include "services/frame_metadata.h"
 #include "services/sky_worker.h"
 #include "services/recorder.h"
 #include "services/state_dump.h"
@@ -242,10 +243,9 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
         display.draw(built->state, pose, [&](const render::SkyRenderer& r, const sky::ChannelConfig& c) {
           const std::string stem = frameStem(opt.saveFramesDir, frame, built->state.observer.utc,
                                              pose.channels.size() > 1 ? c.name : "");
-          writeFrameFiles(r, stem, c, true, true,
-                          {{"skyig:utc", ephemeris::formatIso8601Utc(built->state.observer.utc)},
-                           {"skyig:channel", c.name},
-                           {"skyig:frame", std::to_string(frame)}});
+          render::ImageAttributes attributes = frameAttributes(built->state, pose.attitude, c);
+          attributes["skyig:frame"] = static_cast<double>(frame);  // an integer, exact to 2^53
+          writeFrameFiles(r, stem, c, true, true, attributes);
         });
       } else {
         display.draw(built->state, pose);
@@ -272,7 +272,12 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
         s.timestamp = ticks10us(frameEnd - start);
         s.timestampValid = true;
         const protocol::cigi::Packet packets[] = {s};
-        if (protocol::cigi::encodeMessage(packets, protocol::ByteOrder::big, sof).empty() && udp.sendTo(sof, *to))
+        // In the host's CIGI version: a 4.0 host reads a 4.0 Start of Frame (its first packet
+        // tells a CIGI 4 message by its 16-bit size and id), a 3.x host a 3.3 one.
+        const bool cigi4 = snapshot && snapshot->state.cigiMajorVersion == 4;
+        const std::string error = cigi4 ? protocol::cigi::encodeMessage4(packets, protocol::ByteOrder::big, sof)
+                                        : protocol::cigi::encodeMessage(packets, protocol::ByteOrder::big, sof);
+        if (error.empty() && udp.sendTo(sof, *to))
           stats.startOfFrameSent.fetch_add(1, std::memory_order_relaxed);
       }
       if (dump) dump->write(frame, snapshot, built->state, pose);

@@ -7,6 +7,7 @@
 #include "services/cigi_receiver.h"
 #include "services/recording_source.h"
 #include "services/frame_files.h"
+#include "services/frame_metadata.h"
 #include "services/sky_worker.h"
 #include "services/state_dump.h"
 #include "services/atmosphere_loader.h"
@@ -241,12 +242,11 @@ ReplayResult replay(const ReplayOptions& o) {
         renderer.draw(*lastSky, lastPose.attitude, c);
         if (!write) continue;
         const std::string stem = frameStem(o.outDir, k, lastSky->observer.utc, written > 1 ? c.name : "");
-        result.imagesWritten += static_cast<std::uint64_t>(writeFrameFiles(
-            renderer, stem, c, o.writeExr, o.writePng,
-            {{"skyig:utc", ephemeris::formatIso8601Utc(lastSky->observer.utc)},
-             {"skyig:channel", c.name},
-             {"skyig:frame", std::to_string(k)},
-             {"skyig:recording", std::filesystem::path(o.recording).filename().string()}}));
+        render::ImageAttributes attributes = frameAttributes(*lastSky, lastPose.attitude, c);
+        attributes["skyig:frame"] = static_cast<double>(k);  // an integer, exact to 2^53
+        attributes["skyig:recording"] = std::filesystem::path(o.recording).filename().string();
+        result.imagesWritten +=
+            static_cast<std::uint64_t>(writeFrameFiles(renderer, stem, c, o.writeExr, o.writePng, attributes));
       }
       glFinish();  // the frame is done when its pixels are, written or not
       if (dump) dump->write(k, frame.host.get(), *lastSky, lastPose);

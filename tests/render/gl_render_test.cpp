@@ -140,7 +140,7 @@ TEST_F(GlRender, ExrValuesEqualTheModelInCandelaPerSquareMetre) {
   const ExrFile file = readExr(path);
   std::filesystem::remove(path);
   EXPECT_EQ(file.whiteLuminance, 1.0f);
-  EXPECT_EQ(file.attributes.at("skyig:channel"), c.name);
+  EXPECT_EQ(std::get<std::string>(file.attributes.at("skyig:channel")), c.name);
   ASSERT_EQ(file.image.width, kW);
   int compared = 0;
   for (int y = 0; y < kH; ++y)

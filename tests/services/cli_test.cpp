@@ -8,12 +8,15 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
+#include <variant>
 
 #include <unistd.h>
 
@@ -79,10 +82,80 @@ TEST_F(Cli, RendersAnAnalyticSkyWithOnlyAnOutput) {
   const auto exr = skyig::render::readExr((dir_ / "sky.exr").string());
   EXPECT_EQ(exr.image.width, 64);
   EXPECT_EQ(exr.whiteLuminance, 1.0f);
-  EXPECT_EQ(exr.attributes.at("skyig:utc"), "2026-06-21T17:00:00.000Z");
-  EXPECT_EQ(exr.attributes.at("skyig:channel"), "front");
-  EXPECT_EQ(exr.attributes.at("skyig:sky_model"), "preetham");
+  EXPECT_EQ(std::get<std::string>(exr.attributes.at("skyig:utc")), "2026-06-21T17:00:00.000Z");
+  EXPECT_EQ(std::get<std::string>(exr.attributes.at("skyig:channel")), "front");
+  EXPECT_EQ(std::get<std::string>(exr.attributes.at("skyig:sky_model")), "preetham");
   EXPECT_TRUE(fs::file_size(dir_ / "sky.png") > 100);
+}
+
+// Each of the dome's five EXRs, read back with OpenEXR, names its own channel, offset and
+// frustum (not the ownship's yaw five times), stores numbers as float/double/int attributes and
+// uses OpenEXR's standard latitude, longitude, altitude, capDate, utcOffset and worldToCamera.
+TEST_F(Cli, DomeExrsRecordEachChannelsOwnGeometry) {
+  const Result r = run("render --config " + std::string(SKYIG_SOURCE_DIR) +
+                       "/config/dome5.toml --sky-model preetham --all-channels --size 16x16 --exr " +
+                       (dir_ / "dome.exr").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  struct Expected {
+    const char* name;
+    double yaw, pitch, left, right, down, up;
+  };
+  // config/dome5.toml
+  const Expected channels[] = {{"left", -60, 0, 30, 30, 20, 30},      {"centre", 0, 0, 30, 30, 20, 30},
+                               {"right", 60, 0, 30, 30, 20, 30},      {"chin-left", -25, -45, 25, 15, 20, 20},
+                               {"chin-right", 25, -45, 15, 25, 20, 20}};
+  for (const Expected& e : channels) {
+    SCOPED_TRACE(e.name);
+    const auto exr = skyig::render::readExr((dir_ / ("dome_" + std::string(e.name) + ".exr")).string());
+    const auto& a = exr.attributes;
+    EXPECT_EQ(std::get<std::string>(a.at("skyig:channel")), e.name);
+    EXPECT_EQ(std::get<double>(a.at("skyig:channel_yaw_deg")), e.yaw);
+    EXPECT_EQ(std::get<double>(a.at("skyig:channel_pitch_deg")), e.pitch);
+    EXPECT_EQ(std::get<double>(a.at("skyig:channel_roll_deg")), 0.0);
+    EXPECT_EQ(std::get<double>(a.at("skyig:frustum_left_deg")), e.left);
+    EXPECT_EQ(std::get<double>(a.at("skyig:frustum_right_deg")), e.right);
+    EXPECT_EQ(std::get<double>(a.at("skyig:frustum_down_deg")), e.down);
+    EXPECT_EQ(std::get<double>(a.at("skyig:frustum_up_deg")), e.up);
+    // The ownship (the configuration's default observer: Innsbruck, heading 180, pitch 5).
+    EXPECT_EQ(std::get<double>(a.at("skyig:ownship_yaw_deg")), 180.0);
+    EXPECT_EQ(std::get<double>(a.at("skyig:ownship_pitch_deg")), 5.0);
+    EXPECT_EQ(std::get<double>(a.at("skyig:latitude_deg")), 47.2603);
+    EXPECT_EQ(std::get<float>(a.at("latitude")), 47.2603f);
+    EXPECT_EQ(std::get<float>(a.at("longitude")), 11.3439f);
+    EXPECT_EQ(std::get<float>(a.at("altitude")), 581.0f);
+    EXPECT_EQ(std::get<std::string>(a.at("capDate")), "2026:06:21 17:00:00");
+    EXPECT_EQ(std::get<float>(a.at("utcOffset")), 0.0f);
+    EXPECT_EQ(std::get<int>(a.at("skyig:cie_type")), 12);
+    EXPECT_TRUE(std::holds_alternative<double>(a.at("skyig:sun_altitude_deg")));
+    // worldToCamera (row vectors, ENU world): the channel's boresight, the direction at yaw and
+    // pitch relative to the ownship's nose (roll 0), maps to the camera's +z; zenith is up.
+    const auto& m = std::get<skyig::render::Matrix44f>(a.at("worldToCamera")).m;
+    auto toCamera = [&](double e0, double n, double u) {
+      std::array<double, 3> c{};
+      for (std::size_t j = 0; j < 3; ++j) c[j] = e0 * double{m[0][j]} + n * double{m[1][j]} + u * double{m[2][j]};
+      return c;
+    };
+    // Ownship heading 180 pitch 5, then the channel's yaw and pitch in the body frame: with
+    // yaw first, the boresight is the nose direction turned by the channel's yaw in the
+    // ownship's (pitched) wing plane, then raised by its pitch. Built here from rotations about
+    // the body axes in plain trigonometry (no code of the renderer).
+    const double d = std::numbers::pi / 180.0;
+    const double cy = std::cos(e.yaw * d), sy = std::sin(e.yaw * d), cp = std::cos(e.pitch * d), sp = std::sin(e.pitch * d);
+    const double body[3] = {cp * cy, cp * sy, -sp};  // forward, right, down
+    // Body axes of the ownship in ENU for heading 180, pitch 5, roll 0.
+    const double p5 = 5.0 * d;
+    const double fwd[3] = {0.0, -std::cos(p5), std::sin(p5)}, right[3] = {-1.0, 0.0, 0.0},
+                 down[3] = {0.0, -std::sin(p5), -std::cos(p5)};
+    double enu[3];
+    for (int i = 0; i < 3; ++i) enu[i] = body[0] * fwd[i] + body[1] * right[i] + body[2] * down[i];
+    const auto boresight = toCamera(enu[0], enu[1], enu[2]);
+    EXPECT_NEAR(boresight[0], 0.0, 1e-6);
+    EXPECT_NEAR(boresight[1], 0.0, 1e-6);
+    EXPECT_NEAR(boresight[2], 1.0, 1e-6);
+    EXPECT_GT(toCamera(0, 0, 1)[1], 0.0);  // the zenith is up in every channel's image
+    EXPECT_EQ(m[3][0], 0.0f);              // no translation: the sky is at infinity
+    EXPECT_EQ(m[3][3], 1.0f);
+  }
 }
 
 TEST_F(Cli, AllChannelsWritesOneFilePerChannel) {

@@ -24,13 +24,6 @@ double seconds(Clock::duration d) { return std::chrono::duration<double>(d).coun
 
 }  // namespace
 
-ViewOverride& HostState::view(std::uint16_t id) {
-  for (ViewOverride& v : views)
-    if (v.viewId == id) return v;
-  views.push_back(ViewOverride{id, {}, {}, {}, {}, {}, {}, {}});
-  return views.back();
-}
-
 double HostClock::continuousAt(Clock::time_point t) const {
   // With host timestamps, the host's own clock (smooth, immune to network jitter); without,
   // the arrival time.
@@ -135,10 +128,14 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
               ++rejected;
               return;
             }
-            ViewOverride& v = state_.view(p.viewId);
-            if (p.yawEnable) v.yawDeg = p.yawDeg;
-            if (p.pitchEnable) v.pitchDeg = p.pitchDeg;
-            if (p.rollEnable) v.rollDeg = p.rollDeg;
+            ViewOverride* v = state_.views.entry(p.viewId, maxViews_);
+            if (!v) {
+              ++droppedViews_;
+              return;
+            }
+            if (p.yawEnable) v->yawDeg = p.yawDeg;
+            if (p.pitchEnable) v->pitchDeg = p.pitchDeg;
+            if (p.rollEnable) v->rollDeg = p.rollDeg;
             changed = true;
           } else if constexpr (std::is_same_v<T, cigi::ViewDefinition>) {
             // CIGI's half-angles are signed (left and bottom negative for a centred view);
@@ -150,11 +147,15 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
               ++rejected;
               return;
             }
-            ViewOverride& v = state_.view(p.viewId);
-            if (p.leftEnable) v.leftDeg = left;
-            if (p.rightEnable) v.rightDeg = right;
-            if (p.topEnable) v.upDeg = up;
-            if (p.bottomEnable) v.downDeg = down;
+            ViewOverride* v = state_.views.entry(p.viewId, maxViews_);
+            if (!v) {
+              ++droppedViews_;
+              return;
+            }
+            if (p.leftEnable) v->leftDeg = left;
+            if (p.rightEnable) v->rightDeg = right;
+            if (p.topEnable) v->upDeg = up;
+            if (p.bottomEnable) v->downDeg = down;
             changed = true;
           }
           // Environmental Region Control has nothing for a sky without regions yet.

@@ -176,6 +176,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   UdpSocket udp(opt.listen, opt.multicastGroup);  // always: Start of Frame goes out through it
   spdlog::info("listening for CIGI on {}", udp.localEndpoint().toString());
   CigiReceiver cigi(stats, host);
+  cigi.setMaxViews(static_cast<std::size_t>(opt.config.host.maxViews));
   std::unique_ptr<PcapRecorder> recorder;
   if (!opt.recordPath.empty()) {
     try {

@@ -169,6 +169,7 @@ void readHost(TableReader& r, HostLink& h) {
   h.syncTimeoutS = r.number("sync_timeout", h.syncTimeoutS, 0.001, 10.0);
   h.frameRateHz = r.number("frame_rate", h.frameRateHz, 1.0, 1000.0);
   h.canInterface = r.string("can_interface", h.canInterface);
+  h.maxViews = r.integer("max_views", h.maxViews, 1, static_cast<int>(kViewTableCapacity));
   r.rejectUnknownKeys();
 }
 

@@ -3,6 +3,7 @@
 // `skyig render`, and the display channels. Every value has a default, so an empty file (or
 // none) is a valid configuration.
 #include "protocol/canaerospace/identifiers.h"
+#include "services/host_state.h"
 #include "sky/channel.h"
 #include "sky/common/sky_conditions.h"
 #include "sky/atmosphere/conditions.h"
@@ -25,6 +26,7 @@ struct HostLink {
   double syncTimeoutS = 0.1;
   double frameRateHz = 60.0;            // headless pacing
   std::string canInterface;             // SocketCAN interface for a CANaerospace host; empty: none
+  int maxViews = static_cast<int>(kDefaultMaxViews);  // view ids 0..maxViews-1 kept (CIGI View Control)
 };
 
 // Tables of the physical sky (sky.model = "physical"): their size and cache ([sky]) and the

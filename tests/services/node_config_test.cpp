@@ -121,6 +121,8 @@ TEST(NodeConfig, NodesSelectTheirChannels) {
 TEST(NodeConfig, HostSectionErrors) {
   EXPECT_EQ(errorOf("[host]\nreply_port = 70000\n"), "bad.toml:2: host.reply_port: expected an integer in [1, 65535], got 70000");
   EXPECT_EQ(errorOf("[host]\nsynchronous = \"yes\"\n"), "bad.toml:2: host.synchronous: expected true or false, got 'yes'");
+  EXPECT_EQ(errorOf("[host]\nmax_views = 65\n"), "bad.toml:2: host.max_views: expected an integer in [1, 64], got 65");
+  EXPECT_EQ(parseNodeConfig("[host]\nmax_views = 4\n", "ok.toml").host.maxViews, 4);
   EXPECT_EQ(errorOf("[can_identifiers]\nheading = 4000\n"),
             "bad.toml:2: can_identifiers.heading: expected an integer in [0, 2047], got 4000");
 }

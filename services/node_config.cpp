@@ -112,6 +112,9 @@ void readSky(TableReader& r, skyig::sky::SkyConditions& sky, AtmosphereSettings&
   if (atmosphere.tables != "small" && atmosphere.tables != "medium" && atmosphere.tables != "default")
     r.fail(r.find("atmosphere_tables"), "atmosphere_tables", "expected " + std::string(kTables) + ", got \"" + atmosphere.tables + "\"");
   atmosphere.cacheDir = r.string("atmosphere_cache", atmosphere.cacheDir);
+  atmosphere.cacheMaxBytes = static_cast<std::uint64_t>(
+      r.integer("atmosphere_cache_max_mb", static_cast<int>(atmosphere.cacheMaxBytes >> 20), 0, 1 << 20)) << 20;
+  atmosphere.buildIntervalS = r.number("atmosphere_build_interval", atmosphere.buildIntervalS, 0.0, 86400.0);
   starCatalogue = r.string("star_catalogue", starCatalogue);
   r.rejectUnknownKeys();
 }

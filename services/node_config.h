@@ -41,6 +41,11 @@ struct AtmosphereSettings {
   // ([atmosphere] visibility_km, `render --visibility`); unset: the medium's own aerosols.
   std::optional<double> visibilityKm;
   std::string cacheDir;          // "" = $XDG_CACHE_HOME/skyig or ~/.cache/skyig
+  // The cache's size bound (least recently used tables evicted; 0: none) and at most one
+  // precompute for the host's conditions per buildIntervalS (0: no limit). A distinct
+  // visibility must also be held for the debounce time (services/host_atmosphere.h).
+  std::uint64_t cacheMaxBytes = 512ull << 20;
+  double buildIntervalS = 60.0;
 };
 
 // The default sky: the physical atmosphere (Bruneton & Neyret 2008, docs/atmosphere.md).

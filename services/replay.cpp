@@ -232,7 +232,7 @@ ReplayResult replay(const ReplayOptions& o) {
       lastNs = std::max(lastNs, e.timeNs);
     }
   }
-  const std::unique_ptr<atmosphere::AtmosphereUpdater> updater = makeAtmosphereUpdater(o.config);
+  const std::unique_ptr<atmosphere::AtmosphereUpdater> updater = makeAtmosphereUpdater(o.config, /*rateLimited=*/false);
   Feeder feeder(o, source, updater.get());
   const auto context = render::createHeadlessContext();
   render::SkyRenderer renderer;

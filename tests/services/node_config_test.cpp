@@ -140,6 +140,14 @@ TEST(NodeConfig, AtmosphereTablesAndStarCatalogue) {
             std::string::npos)
       << errorOf("[sky]\natmosphere_tables = \"huge\"\n");
   EXPECT_EQ(parseNodeConfig("[sky]\nstar_catalogue = \"none\"\n", "t.toml").starCataloguePath, "none");
+  // The cache's bound and the precompute rate: 512 MB and one a minute unless told otherwise.
+  EXPECT_EQ(parseNodeConfig("", "empty").atmosphere.cacheMaxBytes, 512ull << 20);
+  EXPECT_EQ(parseNodeConfig("", "empty").atmosphere.buildIntervalS, 60.0);
+  const NodeConfig bounded = parseNodeConfig("[sky]\natmosphere_cache_max_mb = 64\natmosphere_build_interval = 0\n", "t.toml");
+  EXPECT_EQ(bounded.atmosphere.cacheMaxBytes, 64ull << 20);
+  EXPECT_EQ(bounded.atmosphere.buildIntervalS, 0.0);
+  EXPECT_EQ(errorOf("[sky]\natmosphere_cache_max_mb = -1\n"),
+            "bad.toml:2: sky.atmosphere_cache_max_mb: expected an integer in [0, 1048576], got -1");
 }
 
 // [atmosphere] sets every parameter of the medium in the units it names; the defaults are

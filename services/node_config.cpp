@@ -206,8 +206,8 @@ sky::ChannelConfig readChannel(TableReader& r, size_t index, std::string& node) 
   c.frustum.downDeg = r.number("down", c.frustum.downDeg, 0.1, 89.0);
   c.frustum.upDeg = r.number("up", c.frustum.upDeg, 0.1, 89.0);
   c.monitor = r.string("monitor", c.monitor);
-  c.width = r.integer("width", c.width, 16, 16384);
-  c.height = r.integer("height", c.height, 16, 16384);
+  c.width = r.integer("width", c.width, sky::kMinChannelSide, sky::kMaxChannelSide);
+  c.height = r.integer("height", c.height, sky::kMinChannelSide, sky::kMaxChannelSide);
   if (const toml::table* t = subTable(r, "display")) {
     TableReader d(*t, r.prefix() + "display.", r.source());
     c.display.maxLuminance = d.number("max_luminance", c.display.maxLuminance, 1.0, 1e5);
@@ -300,11 +300,17 @@ std::vector<sky::ChannelConfig> NodeConfig::channelsOf(const std::string& name) 
 }
 
 NodeConfig loadNodeConfig(const std::string& path) {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw ConfigError(path + ": cannot open the configuration file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseNodeConfig(text.str(), path);
+  // Read with a bound: /dev/zero, a FIFO that never ends or a huge file is refused, not read
+  // into memory (a configuration is a few kilobytes).
+  std::string text(kMaxConfigBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxConfigBytes)
+    throw ConfigError(path + ": the configuration file is larger than " + std::to_string(kMaxConfigBytes >> 20) +
+                      " MiB (is it a configuration?)");
+  return parseNodeConfig(text, path);
 }
 
 }  // namespace skyig::services

@@ -81,6 +81,10 @@ class ConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The largest configuration file read (whatever the file: a FIFO or /dev/zero included).
+inline constexpr std::size_t kMaxConfigBytes = 1u << 20;
+
+// Throws ConfigError for a file that cannot be read, is larger than kMaxConfigBytes or is bad.
 NodeConfig loadNodeConfig(const std::string& path);
 NodeConfig parseNodeConfig(const std::string& text, const std::string& sourceName);
 

@@ -83,7 +83,7 @@ TEST(NodeConfig, DomeHasFiveChannelsWithChinWindows) {
 
 TEST(NodeConfig, OutOfRangeValueNamesFileLineKeyAndRange) {
   EXPECT_EQ(errorOf("[[channel]]\nname = \"a\"\nwidth = -5\n"),
-            "bad.toml:3: channel[0].width: expected an integer in [16, 16384], got -5");
+            "bad.toml:3: channel[0].width: expected an integer in [16, 8192], got -5");
   EXPECT_EQ(errorOf("[sky]\nturbidity = 40\n"), "bad.toml:2: sky.turbidity: expected a number in [1.7, 10], got 40");
 }
 

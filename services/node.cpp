@@ -12,6 +12,7 @@
 #include "services/sky_worker.h"
 #include "services/recorder.h"
 #include "services/state_dump.h"
+#include "services/warning_throttle.h"
 
 #include <glad/gl.h>
 #include <spdlog/spdlog.h>
@@ -45,7 +46,7 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
                 SkyWorker& worker, const std::atomic<bool>& stop) {
   std::shared_ptr<const HostSnapshot> snapshot;
   std::uint64_t seen = ~0ull;
-  auto lastWarning = Clock::now() - 1h;
+  WarningThrottle badState;
   auto lastStats = Clock::now();
   while (!stop.load(std::memory_order_relaxed)) {
     const auto now = Clock::now();
@@ -63,10 +64,9 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
       }
     } catch (const std::exception& e) {
       stats.rejectedValues.fetch_add(1, std::memory_order_relaxed);
-      if (now - lastWarning > 1s) {
-        spdlog::warn("host state not usable, keeping the last sky: {}", e.what());
-        lastWarning = now;
-      }
+      if (std::uint64_t heldBack = 0; badState.allow(now, &heldBack))
+        spdlog::warn("host state not usable, keeping the last sky: {}{}", e.what(),
+                     heldBack ? fmt::format(" ({} more since the last warning)", heldBack) : "");
     }
     if (!opt.statsPath.empty() && now - lastStats > std::chrono::duration<double>(opt.statsIntervalS)) {
       writeStatsFile(opt.statsPath, stats);

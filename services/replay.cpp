@@ -9,6 +9,7 @@
 #include "services/frame_files.h"
 #include "services/sky_worker.h"
 #include "services/state_dump.h"
+#include "services/warning_throttle.h"
 #include "services/atmosphere_loader.h"
 
 #include <glad/gl.h>
@@ -242,6 +243,7 @@ ReplayResult replay(const ReplayOptions& o) {
   const auto wallStart = std::chrono::steady_clock::now();
   std::optional<sky::SkyState> lastSky;
   FramePose lastPose;
+  WarningThrottle badState;
 
   std::future<Frame> next = std::async(std::launch::async, [&] { return feeder.prepare(0); });
   for (std::uint64_t k = 0;; ++k) {
@@ -251,7 +253,10 @@ ReplayResult replay(const ReplayOptions& o) {
     if (!last) next = std::async(std::launch::async, [&feeder, k] { return feeder.prepare(k + 1); });
     if (frame.sky) lastSky = frame.sky;
     lastPose = frame.pose;
-    if (!frame.error.empty()) spdlog::warn("frame {}: host state not usable, keeping the last sky: {}", k, frame.error);
+    // Throttled on the recording's clock: a replay's log reads as the node's would have.
+    if (std::uint64_t heldBack = 0; !frame.error.empty() && badState.allow(at(frame.timeNs), &heldBack))
+      spdlog::warn("frame {}: host state not usable, keeping the last sky: {}{}", k, frame.error,
+                   heldBack ? fmt::format(" ({} more since the last warning)", heldBack) : "");
     ++result.frames;
     const bool afterFrom = (!from.frame || k >= *from.frame) && (!from.utc || !lastSky || !before(lastSky->observer.utc, *from.utc));
     const bool pastTo = (to.frame && k > *to.frame) || (to.utc && lastSky && before(*to.utc, lastSky->observer.utc));

@@ -5,6 +5,7 @@
 #include "services/latest.h"
 #include "services/node_stats.h"
 #include "services/udp_socket.h"
+#include "services/warning_throttle.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 #include <atomic>
 #include <cstdio>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace skyig::services {
@@ -119,6 +121,58 @@ TEST(ViewTable, ViewControlFloodsKeepTheHostsDatagramsUnderAMillisecond) {
               hostUs.size(), p50, p99, hostUs.back(), floodUs.size(), floodUs.back());
   EXPECT_LT(p99, 1000.0);
   EXPECT_LE(latest.get()->state.views.size(), kDefaultMaxViews);
+}
+
+// Angles beyond CIGI 3.3's ranges (roll -180..180, pitch -90..90, yaw 0..360, also taken as
+// -180..180) are rejected and counted; the last good ownship stays.
+TEST(CigiRanges, RollBeyond180AndAbsurdYawAreRejectedAndCounted) {
+  CigiStateTracker t;
+  cigi::DecodedMessage m;
+  cigi::IgControl ig;
+  cigi::EntityControl own;
+  own.latitudeDeg = 47.0;
+  own.longitudeDeg = 11.0;
+  own.yawDeg = -90.0f;  // the -180..180 convention
+  m.packets = {ig, own};
+  EXPECT_EQ(t.apply(m, Clock::now()), 0);
+  EXPECT_EQ(t.state().ownship.attitude.yawDeg, -90.0);
+  for (const auto& [yaw, roll] : {std::pair{0.0f, 361.0f}, std::pair{3e38f, 0.0f}, std::pair{-181.0f, 0.0f},
+                                  std::pair{360.5f, 0.0f}, std::pair{0.0f, -180.5f}}) {
+    cigi::EntityControl bad = own;
+    bad.yawDeg = yaw;
+    bad.rollDeg = roll;
+    m.packets = {ig, bad};
+    EXPECT_EQ(t.apply(m, Clock::now()), 1) << "yaw " << yaw << " roll " << roll;
+    EXPECT_EQ(t.state().ownship.attitude.yawDeg, -90.0);
+    EXPECT_EQ(t.state().ownship.attitude.rollDeg, 0.0);
+  }
+  own.yawDeg = 359.0f;
+  own.rollDeg = 180.0f;
+  m.packets = {ig, own};
+  EXPECT_EQ(t.apply(m, Clock::now()), 0);
+  cigi::ViewControl v = viewControl(0, 3e38f);
+  m.packets = {ig, v};
+  EXPECT_EQ(t.apply(m, Clock::now()), 1);
+  v = viewControl(0, 10.0f);
+  v.rollEnable = true;
+  v.rollDeg = 361.0f;
+  m.packets = {ig, v};
+  EXPECT_EQ(t.apply(m, Clock::now()), 1);
+  EXPECT_EQ(t.state().views.find(0), nullptr);
+}
+
+// The first warning at once, then one a interval with the count held back.
+TEST(WarningThrottle, FirstThenOneSummaryPerInterval) {
+  WarningThrottle w(std::chrono::seconds(5));
+  const auto t0 = WarningThrottle::Clock::time_point{} + std::chrono::hours(1);
+  std::uint64_t heldBack = 99;
+  EXPECT_TRUE(w.allow(t0, &heldBack));
+  EXPECT_EQ(heldBack, 0u);
+  int logged = 0;
+  for (int i = 1; i <= 78 * 12; ++i)  // 78 a second for 12 s
+    logged += w.allow(t0 + std::chrono::milliseconds(i * 1000 / 78), &heldBack);
+  EXPECT_EQ(logged, 2);  // at 5 s and 10 s
+  EXPECT_EQ(heldBack, 78u * 5u - 1u);
 }
 
 }  // namespace

@@ -98,8 +98,9 @@ std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const Atmosphe
                                                                   const atmosphere::Conditions& conditions) {
   atmosphere::CacheResult cache;
   const auto start = std::chrono::steady_clock::now();
-  auto loaded = std::make_shared<const atmosphere::AtmosphereModel>(atmosphere::loadOrPrecompute(
-      modelConfig(settings, conditions), cacheDirectory(settings), &cache, atmosphereTableBuilder()));
+  auto loaded = std::make_shared<const atmosphere::AtmosphereModel>(
+      atmosphere::loadOrPrecompute(modelConfig(settings, conditions), cacheDirectory(settings), &cache,
+                                   atmosphereTableBuilder(), settings.cacheMaxBytes));
   if (cache.outcome != atmosphere::CacheOutcome::kLoaded)
     std::fprintf(stderr, "physical sky: precomputed the %s tables in %.1f s (%s); cached in %s\n", settings.tables.c_str(),
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), cache.reason.c_str(),
@@ -107,10 +108,13 @@ std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const Atmosphe
   return loaded;
 }
 
-std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config) {
+std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config, bool rateLimited) {
   if (config.sky.model != sky::SkyModel::Physical) return nullptr;
-  return std::make_unique<atmosphere::AtmosphereUpdater>(nodeModelConfig(config, {}),
-                                                         cacheDirectory(config.atmosphere), atmosphereTableBuilder());
+  atmosphere::UpdaterLimits limits;
+  limits.maxCacheBytes = config.atmosphere.cacheMaxBytes;
+  limits.minBuildIntervalS = rateLimited ? config.atmosphere.buildIntervalS : 0.0;
+  return std::make_unique<atmosphere::AtmosphereUpdater>(nodeModelConfig(config, {}), cacheDirectory(config.atmosphere),
+                                                         atmosphereTableBuilder(), limits);
 }
 
 void loadAtmosphereIfNeeded(NodeConfig& config) {

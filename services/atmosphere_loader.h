@@ -50,7 +50,10 @@ void loadAtmosphereIfNeeded(NodeConfig& config);
 // The background updater the sky worker (services/sky_worker.h) follows the host's visibility
 // and humidity with, in `serve` and `replay` alike: its first model is the configuration's
 // (from the cache loadAtmosphereIfNeeded filled), later ones are built by
-// atmosphereTableBuilder. Null unless the sky is physical.
-std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config);
+// atmosphereTableBuilder. Null unless the sky is physical. The cache keeps to
+// sky.atmosphere_cache_max_mb; with rateLimited (serve) at most one precompute per
+// sky.atmosphere_build_interval seconds; replay builds every held visibility (it waits for the
+// tables and follows the recording's clock, not this machine's).
+std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config, bool rateLimited = true);
 
 }  // namespace skyig::services

@@ -52,8 +52,10 @@ void CigiReceiver::handle(std::span<const std::uint8_t> datagram, const sockaddr
   }
   if (decoded_.packets.empty()) return;
   const std::uint64_t staleBefore = tracker_.staleMessages();
+  const std::uint64_t droppedViewsBefore = tracker_.droppedViews();
   const int rejected = tracker_.apply(decoded_, arrival);
   stats_.rejectedValues.fetch_add(static_cast<std::uint64_t>(rejected), std::memory_order_relaxed);
+  stats_.droppedViews.fetch_add(tracker_.droppedViews() - droppedViewsBefore, std::memory_order_relaxed);
   if (tracker_.staleMessages() != staleBefore) {
     stats_.staleMessages.fetch_add(1, std::memory_order_relaxed);
     return;  // nothing newer to publish
@@ -61,7 +63,7 @@ void CigiReceiver::handle(std::span<const std::uint8_t> datagram, const sockaddr
   const HostState& s = tracker_.state();
   if (s.ownshipValid && s.ownshipTime == arrival) predictor_.addSample(s.ownship, arrival, s.rates);
   // The sender travels with the state, so a frame answers the host whose state it shows.
-  out_.publish(HostSnapshot{s, predictor_, tracker_.clock(), from, Clock::now()});
+  out_.emplace(s, predictor_, tracker_.clock(), from, Clock::now());
   stats_.arrivalToVisible.add(std::chrono::duration<double, std::micro>(Clock::now() - arrival).count());
 }
 

@@ -31,6 +31,8 @@ class CigiReceiver {
   // and recorded arrival times.
   void handle(std::span<const std::uint8_t> datagram, const sockaddr_in& from, Clock::time_point arrival);
   void setRecorder(DatagramRecorder* recorder) { recorder_ = recorder; }
+  // host.max_views: View Controls for higher ids are counted (NodeStats::droppedViews).
+  void setMaxViews(std::size_t n) { tracker_.setMaxViews(n); }
 
  private:
   DatagramRecorder* recorder_ = nullptr;

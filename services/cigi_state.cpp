@@ -14,10 +14,18 @@ namespace {
 
 bool finite(double v) { return std::isfinite(v); }
 
+// CIGI 3.3 (Entity Control, View Control): roll -180..180, pitch -90..90, yaw 0..360 degrees.
+// Hosts also send yaw as -180..180, so yaw is taken in -180..360; beyond these (roll 361, yaw
+// 3e38) the value is rejected and counted, never wrapped into something the host did not mean.
+bool validAttitude(float yaw, float pitch, float roll) {
+  return std::isfinite(yaw) && std::isfinite(pitch) && std::isfinite(roll) && yaw >= -180.0f && yaw <= 360.0f &&
+         std::abs(pitch) <= 90.0f && std::abs(roll) <= 180.0f;
+}
+
 bool validOwnship(const cigi::EntityControl& e) {
   return finite(e.latitudeDeg) && std::abs(e.latitudeDeg) <= 90.0 && finite(e.longitudeDeg) &&
          std::abs(e.longitudeDeg) <= 360.0 && finite(e.altitudeM) && std::abs(e.altitudeM) < 1e7 &&
-         finite(e.yawDeg) && finite(e.pitchDeg) && finite(e.rollDeg) && std::abs(e.pitchDeg) <= 90.0f;
+         validAttitude(e.yawDeg, e.pitchDeg, e.rollDeg);
 }
 
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
@@ -27,13 +35,6 @@ double seconds(Clock::duration d) { return std::chrono::duration<double>(d).coun
 constexpr double kStatedSecondsResolutionS = 1e-3;
 
 }  // namespace
-
-ViewOverride& HostState::view(std::uint16_t id) {
-  for (ViewOverride& v : views)
-    if (v.viewId == id) return v;
-  views.push_back(ViewOverride{id, {}, {}, {}, {}, {}, {}, {}});
-  return views.back();
-}
 
 double HostClock::continuousAt(Clock::time_point t) const {
   // With host timestamps, the host's own clock (smooth, immune to network jitter); without,
@@ -139,15 +140,18 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
             changed = true;
           } else if constexpr (std::is_same_v<T, cigi::ViewControl>) {
             if (p.entityId != 0) return;
-            if (!std::isfinite(p.yawDeg) || !std::isfinite(p.pitchDeg) || !std::isfinite(p.rollDeg) ||
-                std::abs(p.pitchDeg) > 90.0f) {
+            if (!validAttitude(p.yawDeg, p.pitchDeg, p.rollDeg)) {
               ++rejected;
               return;
             }
-            ViewOverride& v = state_.view(p.viewId);
-            if (p.yawEnable) v.yawDeg = p.yawDeg;
-            if (p.pitchEnable) v.pitchDeg = p.pitchDeg;
-            if (p.rollEnable) v.rollDeg = p.rollDeg;
+            ViewOverride* v = state_.views.entry(p.viewId, maxViews_);
+            if (!v) {
+              ++droppedViews_;
+              return;
+            }
+            if (p.yawEnable) v->yawDeg = p.yawDeg;
+            if (p.pitchEnable) v->pitchDeg = p.pitchDeg;
+            if (p.rollEnable) v->rollDeg = p.rollDeg;
             changed = true;
           } else if constexpr (std::is_same_v<T, cigi::ViewDefinition>) {
             // CIGI's half-angles are signed (left and bottom negative for a centred view);
@@ -159,11 +163,15 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
               ++rejected;
               return;
             }
-            ViewOverride& v = state_.view(p.viewId);
-            if (p.leftEnable) v.leftDeg = left;
-            if (p.rightEnable) v.rightDeg = right;
-            if (p.topEnable) v.upDeg = up;
-            if (p.bottomEnable) v.downDeg = down;
+            ViewOverride* v = state_.views.entry(p.viewId, maxViews_);
+            if (!v) {
+              ++droppedViews_;
+              return;
+            }
+            if (p.leftEnable) v->leftDeg = left;
+            if (p.rightEnable) v->rightDeg = right;
+            if (p.topEnable) v->upDeg = up;
+            if (p.bottomEnable) v->downDeg = down;
             changed = true;
           }
           // Environmental Region Control has nothing for a sky without regions yet.

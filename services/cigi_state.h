@@ -4,6 +4,8 @@
 #include "services/host_state.h"
 #include "services/sim_clock.h"
 
+#include <algorithm>
+
 namespace skyig::services {
 
 // The host's clock as the receiver last knew it: the minutes the host stated (SimClock) and the
@@ -31,6 +33,10 @@ class CigiStateTracker {
   // Messages dropped because their host frame number was older than one already applied
   // (reordered datagrams must not move the ownship back in time).
   std::uint64_t staleMessages() const { return stale_; }
+  // View Control and View Definition packets for a view id at or above the maximum
+  // (host.max_views, at most kViewTableCapacity): counted and dropped.
+  void setMaxViews(std::size_t n) { maxViews_ = std::min(n, kViewTableCapacity); }
+  std::uint64_t droppedViews() const { return droppedViews_; }
 
   const HostState& state() const { return state_; }
   const HostClock& clock() const { return clock_; }
@@ -39,6 +45,8 @@ class CigiStateTracker {
   HostState state_;
   HostClock clock_;
   std::uint64_t stale_ = 0;
+  std::size_t maxViews_ = kDefaultMaxViews;
+  std::uint64_t droppedViews_ = 0;
   bool haveHostFrame_ = false;
   std::uint32_t lastTimestamp_ = 0;   // IG Control timestamp, 10 us ticks
 };

@@ -13,6 +13,7 @@
 #include "services/sky_worker.h"
 #include "services/recorder.h"
 #include "services/state_dump.h"
+#include "services/warning_throttle.h"
 
 #include <glad/gl.h>
 #include <spdlog/spdlog.h>
@@ -46,7 +47,7 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
                 SkyWorker& worker, const std::atomic<bool>& stop) {
   std::shared_ptr<const HostSnapshot> snapshot;
   std::uint64_t seen = ~0ull;
-  auto lastWarning = Clock::now() - 1h;
+  WarningThrottle badState;
   auto lastStats = Clock::now();
   while (!stop.load(std::memory_order_relaxed)) {
     const auto now = Clock::now();
@@ -64,10 +65,9 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
       }
     } catch (const std::exception& e) {
       stats.rejectedValues.fetch_add(1, std::memory_order_relaxed);
-      if (now - lastWarning > 1s) {
-        spdlog::warn("host state not usable, keeping the last sky: {}", e.what());
-        lastWarning = now;
-      }
+      if (std::uint64_t heldBack = 0; badState.allow(now, &heldBack))
+        spdlog::warn("host state not usable, keeping the last sky: {}{}", e.what(),
+                     heldBack ? fmt::format(" ({} more since the last warning)", heldBack) : "");
     }
     if (!opt.statsPath.empty() && now - lastStats > std::chrono::duration<double>(opt.statsIntervalS)) {
       writeStatsFile(opt.statsPath, stats);
@@ -177,6 +177,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   UdpSocket udp(opt.listen, opt.multicastGroup);  // always: Start of Frame goes out through it
   spdlog::info("listening for CIGI on {}", udp.localEndpoint().toString());
   CigiReceiver cigi(stats, host);
+  cigi.setMaxViews(static_cast<std::size_t>(opt.config.host.maxViews));
   std::unique_ptr<PcapRecorder> recorder;
   if (!opt.recordPath.empty()) {
     try {

@@ -70,6 +70,7 @@ nlohmann::json NodeStats::toJson() const {
       {"skipped_packets", skippedPackets.load()},
       {"rejected_values", rejectedValues.load()},
       {"stale_messages", staleMessages.load()},
+      {"dropped_views", droppedViews.load()},
       {"recorded_datagrams", recorded.load()},
       {"record_errors", recordErrors.load()},
       {"packets", packetsByType},

@@ -37,6 +37,7 @@ struct NodeStats {
   std::atomic<std::uint64_t> skippedPackets{0};
   std::atomic<std::uint64_t> rejectedValues{0};
   std::atomic<std::uint64_t> staleMessages{0};  // reordered: older than a host frame applied
+  std::atomic<std::uint64_t> droppedViews{0};   // View Control/Definition for ids >= host.max_views
   std::atomic<std::uint64_t> recorded{0};       // datagrams written by serve --record
   std::atomic<std::uint64_t> recordErrors{0};
   std::array<std::atomic<std::uint64_t>, protocol::cigi::kPacketTypeCount> packets{};

@@ -27,6 +27,12 @@ struct DisplayParams {
   bool operator==(const DisplayParams&) const = default;
 };
 
+// The channel sizes skyig renders, per side. GL 4.5 guarantees 16384-texel textures, but one
+// 16384 x 16384 float RGBA target alone is 4 GiB (the sky pass keeps several): refused when the
+// size is given (exit 2), not when the render target cannot be made (exit 3).
+inline constexpr int kMinChannelSide = 16;
+inline constexpr int kMaxChannelSide = 8192;
+
 struct ChannelConfig {
   std::string name = "front";
   Attitude offset;

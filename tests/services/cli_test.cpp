@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -391,4 +392,37 @@ TEST_F(Cli, RenderVisibilityHazesThePhysicalSky) {
   };
   EXPECT_GT(green("hazy.exr"), 1.5 * green("clear.exr"));
   EXPECT_EQ(run(common + (dir_ / "bad.exr").string() + " --visibility 0").exitCode, 2);
+}
+
+// A configuration is read with a bound: /dev/zero (which never ends) is refused at once.
+TEST_F(Cli, EndlessConfigurationIsRefusedWithABound) {
+  const auto start = std::chrono::steady_clock::now();
+  const Result r = run("render --sky-model preetham --config /dev/zero --size 16x16 --png " + (dir_ / "x.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("/dev/zero: the configuration file is larger than 1 MiB"), std::string::npos) << r.err;
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+// A size the renderer cannot allocate is refused when it is given, not when the target fails.
+TEST_F(Cli, OversizedChannelIsRefusedAtValidation) {
+  const Result r = run("render --sky-model preetham --size 16384x16384 --png " + (dir_ / "x.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("each in 16..8192"), std::string::npos) << r.err;
+  const fs::path config = write("big.toml", "[[channel]]\nwidth = 16384\n");
+  const Result c = run("render --sky-model preetham --config " + config.string() + " --png " + (dir_ / "x.png").string());
+  EXPECT_EQ(c.exitCode, 2);
+  EXPECT_NE(c.err.find("channel[0].width: expected an integer in [16, 8192]"), std::string::npos) << c.err;
+}
+
+// A year the ephemeris cannot serve is the observer's time at fault, and says its range.
+TEST_F(Cli, YearOutsideTheEphemerisNamesTheTimeNotTheCatalogue) {
+  for (const char* year : {"1000", "3000"}) {
+    const Result r = run("render --sky-model preetham --utc " + std::string(year) + "-06-21T12:00:00Z --size 16x16 --png " +
+                         (dir_ / "x.png").string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("observer's time"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("1900-2100 range of the ephemeris"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("star_catalogue"), std::string::npos) << r.err;
+  }
 }

@@ -171,10 +171,11 @@ TEST(CigiState, CelestialDateAndViewsApply) {
   EXPECT_NEAR(t.state().utc.secondsOfDay, 19 * 3600.0 + 30 * 60.0, 1e-3);
   EXPECT_NEAR(secondsOf(t.clock().utcAt(now + 2s)), 19 * 3600.0 + 30 * 60.0 + 2.0, 1e-3);
   ASSERT_EQ(t.state().views.size(), 1u);
-  EXPECT_EQ(*t.state().views[0].leftDeg, 20.0);
-  EXPECT_EQ(*t.state().views[0].rightDeg, 35.0);
-  EXPECT_EQ(*t.state().views[0].yawDeg, -60.0);
-  EXPECT_FALSE(t.state().views[0].upDeg.has_value());
+  ASSERT_NE(t.state().views.find(1), nullptr);
+  EXPECT_EQ(*t.state().views.find(1)->leftDeg, 20.0);
+  EXPECT_EQ(*t.state().views.find(1)->rightDeg, 35.0);
+  EXPECT_EQ(*t.state().views.find(1)->yawDeg, -60.0);
+  EXPECT_FALSE(t.state().views.find(1)->upDeg.has_value());
   cs.date = 2302026;  // 30 February
   m.packets = {ig, cs};
   EXPECT_EQ(t.apply(m, now), 1);

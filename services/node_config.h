@@ -38,7 +38,7 @@ struct AtmosphereSettings {
   // The visibility (km, Koschmieder) the tables are computed for until the host says otherwise
   // ([atmosphere] visibility_km, `render --visibility`); unset: the medium's own aerosols.
   std::optional<double> visibilityKm;
-  std::string cacheDir;          // "" = $XDG_CACHE_HOME/skyig or ~/.cache/skyig
+  std::string cacheDir;          // "" = $CACHE_DIRECTORY (systemd), else $XDG_CACHE_HOME/skyig or ~/.cache/skyig
 };
 
 // The default sky: the physical atmosphere (Bruneton & Neyret 2008, docs/atmosphere.md).

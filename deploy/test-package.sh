@@ -28,8 +28,13 @@ fi
 root=$(mktemp -d build-package/bookworm-root.XXXXXX)
 root=$(cd "$root" && pwd)
 cleanup() {
-  for m in proc dev/pts dev; do mountpoint -q "$root/$m" && umount -l "$root/$m"; done
-  rm -rf "$root"
+  for m in dev/pts dev proc; do mountpoint -q "$root/$m" && umount "$root/$m"; done
+  # Never delete through a mount left in place: that would be the machine's /dev.
+  if grep -q " $root/" /proc/mounts; then
+    echo "test-package: still mounted under $root; not removing it" >&2
+  else
+    rm -rf "$root"
+  fi
 }
 trap cleanup EXIT
 tar -C "$root" -xf "$base"
@@ -38,16 +43,18 @@ mount --bind /dev "$root/dev"
 mount --bind /dev/pts "$root/dev/pts"
 cp /etc/resolv.conf "$root/etc/resolv.conf"
 cp "$deb" "$root/tmp/skyig.deb"
-in_root() { chroot "$root" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root "$@"; }
+in_root() { chroot "$root" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root DEBIAN_FRONTEND=noninteractive "$@"; }
 
 in_root apt-get update -q
-DEBIAN_FRONTEND=noninteractive in_root apt-get install -y -q --no-install-recommends /tmp/skyig.deb
+in_root apt-get install -y -q --no-install-recommends /tmp/skyig.deb
 [ ! -e "$root$(pwd)" ] || { echo "test-package: the source tree is visible in the chroot" >&2; exit 1; }
 
 in_root getent passwd skyig
 in_root test -L /etc/systemd/system/multi-user.target.wants/skyig.service
 in_root dpkg-query -W -f='${Conffiles}\n' skyig | grep '/etc/skyig/skyig.toml' >/dev/null
-in_root skyig --version --caps | tee /dev/stderr | grep 'Data files:    /usr/share/skyig (beside the executable)' >/dev/null
+caps=$(in_root skyig --version --caps)
+echo "$caps"
+grep -q 'Data files:    /usr/share/skyig (beside the executable)' <<<"$caps"
 time in_root skyig render --png /tmp/x.png
 in_root test -s /tmp/x.png
 echo "test-package: $deb installs in a clean Debian 12 chroot and renders /tmp/x.png there"

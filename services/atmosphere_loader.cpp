@@ -81,6 +81,8 @@ atmosphere::TableBuilder atmosphereTableBuilder(PrecomputeDevice device) {
 
 std::filesystem::path cacheDirectory(const AtmosphereSettings& settings) {
   if (!settings.cacheDir.empty()) return settings.cacheDir;
+  if (const char* service = std::getenv("CACHE_DIRECTORY"); service && *service && *service != ':')
+    return std::string(service).substr(0, std::string(service).find(':'));
   if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "skyig";
   if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "skyig";
   return std::filesystem::temp_directory_path() / "skyig-cache";

@@ -30,7 +30,9 @@ PrecomputeDevice precomputeDeviceFromEnvironment();
 // Invalid configurations throw std::invalid_argument whatever the device.
 atmosphere::TableBuilder atmosphereTableBuilder(PrecomputeDevice device = precomputeDeviceFromEnvironment());
 
-// Where tables are cached: settings.cacheDir, else $XDG_CACHE_HOME/skyig or ~/.cache/skyig.
+// Where tables are cached: settings.cacheDir, else $CACHE_DIRECTORY (the directory systemd
+// made for the service's CacheDirectory=, /var/cache/skyig; the first of a ':'-separated list),
+// else $XDG_CACHE_HOME/skyig or ~/.cache/skyig.
 std::filesystem::path cacheDirectory(const AtmosphereSettings& settings);
 
 // The model `settings` describe under `conditions`: table size, scattering orders, and

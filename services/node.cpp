@@ -13,6 +13,7 @@
 #include "services/sky_worker.h"
 #include "services/recorder.h"
 #include "services/state_dump.h"
+#include "services/systemd_notify.h"
 #include "services/warning_throttle.h"
 
 #include <glad/gl.h>
@@ -221,6 +222,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
     std::uint64_t hostVersionShown = 0;
     Clock::time_point lastArrivalShown{};
     std::vector<std::uint8_t> sof;
+    SystemdNotifier systemd = SystemdNotifier::fromEnvironment();  // Type=notify: ready after frame 0, then the watchdog
     for (std::uint64_t frame = 0; !externalStop && (opt.frames == 0 || frame < opt.frames); ++frame) {
       if (opt.synchronous) {
         // Frame N follows the host's frame N (its sky built from it); a silent host does not
@@ -282,6 +284,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
           stats.startOfFrameSent.fetch_add(1, std::memory_order_relaxed);
       }
       if (dump) dump->write(frame, snapshot, built->state, pose);
+      systemd.frameDone(Clock::now());
       if (!opt.headless && display.closeRequested()) break;
     }
   }  // the threads are joined here

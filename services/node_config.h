@@ -40,7 +40,7 @@ struct AtmosphereSettings {
   // The visibility (km, Koschmieder) the tables are computed for until the host says otherwise
   // ([atmosphere] visibility_km, `render --visibility`); unset: the medium's own aerosols.
   std::optional<double> visibilityKm;
-  std::string cacheDir;          // "" = $XDG_CACHE_HOME/skyig or ~/.cache/skyig
+  std::string cacheDir;          // "" = $CACHE_DIRECTORY (systemd), else $XDG_CACHE_HOME/skyig or ~/.cache/skyig
   // The cache's size bound (least recently used tables evicted; 0: none) and at most one
   // precompute for the host's conditions per buildIntervalS (0: no limit). A distinct
   // visibility must also be held for the debounce time (services/host_atmosphere.h).

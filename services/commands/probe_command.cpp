@@ -126,7 +126,7 @@ void registerProbeCommand(CLI::App& app, int& exitCode) {
   c->add_option("--config", cli->configPath, "Node configuration (TOML): its [atmosphere] medium, table size and ground albedo")
       ->check(CLI::ExistingFile);
   c->add_option("--star-catalogue", cli->starCatalogue, "Star catalogue CSV for the stars_planets key (default: the bundled BSC5; none: planets only)");
-  c->add_option("--cache", cli->cacheDir, "Table cache directory (default: $XDG_CACHE_HOME/skyig or ~/.cache/skyig)");
+  c->add_option("--cache", cli->cacheDir, "Table cache directory (default: $CACHE_DIRECTORY, else $XDG_CACHE_HOME/skyig or ~/.cache/skyig)");
   c->callback([cli, &exitCode] { exitCode = run(*cli); });
 }
 

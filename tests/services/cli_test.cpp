@@ -221,6 +221,8 @@ TEST_F(Cli, VersionAndCaps) {
   EXPECT_NE(r.out.find("skyig 0."), std::string::npos);
   EXPECT_NE(r.out.find("GL renderer:"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("SocketCAN:"), std::string::npos) << r.out;
+  // The test programs point skyig at the staged data (tests/staged_data_dir.cpp).
+  EXPECT_NE(r.out.find("Data files:    " + std::string(SKYIG_BINARY_DIR) + "/share/skyig (SKYIG_DATA_DIR)\n"), std::string::npos) << r.out;
 }
 
 // `skyig probe` on the physical atmosphere, with the small tables the atmosphere tests share

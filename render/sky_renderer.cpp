@@ -43,6 +43,13 @@ ToneBlock toToneBlock(const skyig::sky::SkyState& state, const skyig::sky::Chann
   b.display = glm::vec4(glm::dvec4(d.maxLuminance, d.ambientLuminance, d.gamma, d.adaptationLuminance));
   const bool histogram = d.toneOperator == skyig::sky::ToneOperator::Histogram;
   b.adaptation = glm::vec4(static_cast<float>(state.adaptationLuminance), 1.0f, histogram ? 0.0f : 1.0f, 0.0f);
+  for (std::size_t i = 0; i < state.glare.size(); ++i) {
+    const skyig::sky::eye::GlareSource& g = state.glare[i];
+    b.glareDirection[i] = glm::vec4(glm::vec3(g.direction), static_cast<float>(g.angularRadiusRad * 180.0 / 3.14159265358979));
+    b.glareLux[i] = glm::vec4(glm::vec3(g.rec709Lux), 0.0f);
+  }
+  b.glareObserver = glm::vec4(static_cast<float>(skyig::sky::eye::kGlareObserverAgeYears),
+                              static_cast<float>(skyig::sky::eye::kGlareOcularPigmentation), 0.0f, 0.0f);
   if (histogram) {
     const skyig::sky::eye::ToneCurve curve = skyig::sky::toneCurveFor(state, d);
     b.curveRange = glm::vec4(static_cast<float>(curve.minLog10), static_cast<float>(curve.maxLog10), 0.0f, 0.0f);

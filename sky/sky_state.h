@@ -9,6 +9,7 @@
 #include "sky/atmosphere/extinction_profile.h"
 #include "sky/camera.h"
 #include "sky/channel.h"
+#include "sky/eye/glare.h"
 #include "sky/eye/tone_curve.h"
 #include "sky/observer.h"
 #include "sky/atmosphere/model.h"
@@ -70,6 +71,8 @@ struct SkyState {
   // albedo E / pi. ~5e-5 cd/m^2 on a moonless night at a dark site; without it a moonless
   // terrain would be black and the eye adapted to a sky over a void. Zero without an ephemeris.
   glm::dvec3 nightGroundRadiance{0.0};
+  // The sun and the moon as glare sources for the display (sky/eye/glare.h).
+  eye::GlareSources glare{};
 };
 
 // The night's sources of a state, for the probe, the passes and tests: the moon's illuminance on

@@ -4,9 +4,12 @@
 // histogram-adjusted curve (Ward Larson, Rushmeier & Piatko 1997), computed on the CPU from the
 // model for every channel alike (sky/eye/tone_curve.h); Tumblin & Rushmeier 1993 is selectable.
 // Stars and planets are not in the HDR image it maps: the displayed-star pass drew them, in
-// display luminance, into pointSourceImage, added here before the display's encoding.
+// display luminance, into pointSourceImage, added here before the display's encoding. The
+// veiling glare of the sun and the moon (tone/glare.glsl) is added to the world's light first:
+// it is the eye's, so it is shown but not written to the EXR.
 #include "common/uniforms.h"
 #include "tone/display_curve.glsl"
+#include "tone/glare.glsl"
 
 layout(binding = SKYIG_UNIT_HDR_IMAGE) uniform sampler2D hdrImage;
 // The displayed stars and planets (passes/star_display.vert): display cd/m^2 to add.
@@ -20,8 +23,22 @@ float hash12(vec2 p) {  // Hoskins, "Hash without sine" (2014), hash12
   return fract((p3.x + p3.y) * p3.z);
 }
 
+// The veil of the glare sources along this pixel's view.
+vec3 glareVeil(vec3 view) {
+  vec3 veil = vec3(0.0);
+  for (int i = 0; i < 2; ++i) {
+    if (max(glareLux[i].r, max(glareLux[i].g, glareLux[i].b)) <= 0.0) continue;
+    // atan of |cross| over dot: accurate at the small angles where acos of a float is not.
+    vec3 d = glareDirection[i].xyz;
+    float thetaDeg = degrees(atan(length(cross(view, d)), dot(view, d)));
+    veil += glareLux[i].rgb * veilingLuminancePerLux(thetaDeg, glareDirection[i].w, glareObserver.x, glareObserver.y);
+  }
+  return veil;
+}
+
 void main() {
-  vec3 world = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0).rgb;
+  vec3 view = normalize(mat3(ndcToWorld) * vec3(gl_FragCoord.xy * viewport.zw * 2.0 - 1.0, 1.0));
+  vec3 world = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0).rgb + glareVeil(view);
   DisplayModel model = toneDisplayModel();
   vec3 ld = toneMapLinear(world) + texelFetch(pointSourceImage, ivec2(gl_FragCoord.xy), 0).rgb;
   vec3 n = displayValues(compressToDisplay(ld, rec709Luminance(ld), model.ambientLuminance + model.maxLuminance), model);

@@ -172,7 +172,14 @@ TEST_F(GlRender, DisplayFrameEqualsCpuToneReproduction) {
       for (int x = 1; x < kW; x += 5) {
         const glm::dvec3 r = ray(s, c, x, y);
         if (std::abs(r.z) < 2e-3) continue;
-        const glm::dvec3 world = analyticSkyRadiance(s.sky.params, r);
+        // The eye's glare of the sun and moon is part of what is displayed (tone/glare.glsl).
+        glm::dvec3 world = analyticSkyRadiance(s.sky.params, r);
+        for (const eye::GlareSource& g : s.glare) {
+          const glm::dvec3 v = glm::normalize(r);
+          const double theta = std::atan2(glm::length(glm::cross(v, g.direction)), glm::dot(v, g.direction)) * 180.0 / std::numbers::pi;
+          world += g.rec709Lux * shader::veilingLuminancePerLux(theta, g.angularRadiusRad * 180.0 / std::numbers::pi,
+                                                               eye::kGlareObserverAgeYears, eye::kGlareOcularPigmentation);
+        }
         glm::dvec3 n;
         if (op == ToneOperator::TumblinRushmeier) {
           n = shader::toneReproduce(world, s.adaptationLuminance, d);

@@ -97,7 +97,8 @@ void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sk
     // The tables on screen may still be the previous model's while a new one uploads; both
     // share the planet, so the camera is the same.
     physical_->draw(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
-                    skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection, state.moonlightScale);
+                    skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection, state.moonlightScale,
+                    state.sunRefraction);
     return;
   }
   skyProgram_.use();

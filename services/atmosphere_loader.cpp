@@ -96,17 +96,20 @@ atmosphere::ModelConfig modelConfig(const AtmosphereSettings& settings, const at
   return model;
 }
 
-std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const AtmosphereSettings& settings,
-                                                                  const atmosphere::Conditions& conditions) {
+std::shared_ptr<const atmosphere::AtmosphereModel> loadNodeAtmosphere(const NodeConfig& config,
+                                                                      const atmosphere::Conditions& conditions,
+                                                                      atmosphere::CacheResult* result) {
   atmosphere::CacheResult cache;
   const auto start = std::chrono::steady_clock::now();
   auto loaded = std::make_shared<const atmosphere::AtmosphereModel>(
-      atmosphere::loadOrPrecompute(modelConfig(settings, conditions), cacheDirectory(settings), &cache,
-                                   atmosphereTableBuilder(), settings.cacheMaxBytes));
+      atmosphere::loadOrPrecompute(nodeModelConfig(config, conditions), cacheDirectory(config.atmosphere), &cache,
+                                   atmosphereTableBuilder(), config.atmosphere.cacheMaxBytes));
   if (cache.outcome != atmosphere::CacheOutcome::kLoaded)
-    std::fprintf(stderr, "physical sky: precomputed the %s tables in %.1f s (%s); cached in %s\n", settings.tables.c_str(),
+    std::fprintf(stderr, "physical sky: precomputed the %s tables in %.1f s (%s); cached in %s\n",
+                 config.atmosphere.tables.c_str(),
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), cache.reason.c_str(),
                  cache.path.string().c_str());
+  if (result) *result = cache;
   return loaded;
 }
 
@@ -121,10 +124,7 @@ std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeC
 
 void loadAtmosphereIfNeeded(NodeConfig& config) {
   if (config.sky.model != sky::SkyModel::Physical || config.sky.atmosphere) return;
-  atmosphere::Conditions conditions;
-  conditions.groundAlbedo = config.sky.groundAlbedo;
-  conditions.visibilityKm = config.atmosphere.visibilityKm;  // as nodeModelConfig: one cache key
-  config.sky.atmosphere = loadAtmosphere(config.atmosphere, conditions);
+  config.sky.atmosphere = loadNodeAtmosphere(config);
 }
 
 }  // namespace skyig::services

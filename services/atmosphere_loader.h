@@ -40,10 +40,14 @@ std::filesystem::path cacheDirectory(const AtmosphereSettings& settings);
 // node's updater and the probe find the same cache files.
 atmosphere::ModelConfig modelConfig(const AtmosphereSettings& settings, const atmosphere::Conditions& conditions);
 
-// modelConfig(settings, conditions) from the cache directory, or precomputed
-// (atmosphereTableBuilder) and cached there; says on stderr when it has to precompute.
-std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const AtmosphereSettings& settings,
-                                                                  const atmosphere::Conditions& conditions);
+// The node's model (nodeModelConfig: sky.ground_albedo and [atmosphere] visibility_km unless
+// `conditions` say otherwise) from its cache directory, or precomputed (atmosphereTableBuilder)
+// and cached there; says on stderr when it has to precompute. `render`, `serve`, `replay` and
+// `probe` all load through here, so one configuration is one cache file and one ground albedo.
+// `result`, when given, says whether the tables were loaded or precomputed.
+std::shared_ptr<const atmosphere::AtmosphereModel> loadNodeAtmosphere(const NodeConfig& config,
+                                                                      const atmosphere::Conditions& conditions = {},
+                                                                      atmosphere::CacheResult* result = nullptr);
 
 // Sets config.sky.atmosphere when config.sky.model is physical; prints to stderr when it has
 // to precompute.

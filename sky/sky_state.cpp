@@ -9,6 +9,7 @@
 #include "sky/night/moon_light.h"
 #include "sky/night/night_diffuse.h"
 #include "sky/atmosphere/physical_camera.h"
+#include "physics.h"  // SUN_ANGULAR_RADIUS
 
 #include <algorithm>
 #include <cmath>
@@ -174,7 +175,10 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
             "sun altitude " + num(sun->altitudeDeg) + " deg is outside [-90, 90]");
     s.sunAzimuth = sun->azimuthDeg * kDeg;
     s.sunAltitude = sun->altitudeDeg * kDeg;
-    s.sunApparentAltitude = s.sunAltitude;
+    // The override places the true sun, as the ephemeris does: the disc is seen lifted by the
+    // refraction of the observer's air.
+    s.sunApparentAltitude =
+        s.sunAltitude + ephemeris::refractionSaemundsson(s.sunAltitude, observer.pressureHpa, observer.temperatureC);
   } else {
     const ephemeris::Observer where = ephemerisObserver(observer);
     s.ephemeris = caches ? caches->ephemeris.compute(observer.utc, where) : ephemeris::computeEphemeris(observer.utc, where);
@@ -186,6 +190,9 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
     s.moonDirection = enuDirection(s.ephemeris->moon.azimuthRad, s.ephemeris->moon.altitudeRad);
     s.moonlightScale = night::moonlightScale(*s.ephemeris);
   }
+  const ephemeris::RefractionExpansion r = ephemeris::refractionExpansion(
+      s.sunApparentAltitude, s.sunAltitude, shader::SUN_ANGULAR_RADIUS, observer.pressureHpa, observer.temperatureC);
+  s.sunRefraction = {r.centreRad, r.refraction, r.slope, r.halfCurvature};
   if (s.conditions.model == SkyModel::Physical)
     require(s.conditions.atmosphere != nullptr, "the physical sky model needs its precomputed atmosphere");
   const atmosphere::Medium medium = s.conditions.atmosphere ? s.conditions.atmosphere->config().medium : atmosphere::Medium{};

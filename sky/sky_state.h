@@ -38,6 +38,10 @@ struct SkyState {
   double sunAzimuth = 0.0;           // radians, from north through east
   double sunAltitude = 0.0;          // radians, airless: lights the sky
   double sunApparentAltitude = 0.0;  // radians, refracted: where the disc is seen
+  // The refraction about the disc's apparent centre (apparent altitude, R, dR/dh, d2R/dh2 / 2;
+  // radians; ephemeris::refractionExpansion) the sun's disc is drawn through, refracted and
+  // flattened (shaders/common/refraction.glsl), as the moon's is.
+  glm::dvec4 sunRefraction{0.0};
   std::optional<ephemeris::SkyEphemeris> ephemeris;  // absent when the sun was overridden
   AnalyticSkyState sky;
   // What the pilot can see over the whole view sphere (sky, terrain, sun and moon), and the eye:

@@ -25,7 +25,7 @@ void SkyOptions::add(CLI::App& c) {
       ->check(CLI::Range(0.05, 280.0));
   c.add_option("--sun-azimuth", sunAzimuth, "Override the sun's azimuth, degrees from north through east")
       ->check(CLI::Range(-360.0, 360.0));
-  c.add_option("--sun-elevation", sunElevation, "Override the sun's elevation, degrees")->check(CLI::Range(-90.0, 90.0));
+  c.add_option("--sun-elevation", sunElevation, "Override the sun's true (airless) elevation, degrees; its disc is seen lifted by refraction")->check(CLI::Range(-90.0, 90.0));
 }
 
 NodeConfig SkyOptions::resolve() const {

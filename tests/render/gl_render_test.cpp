@@ -9,6 +9,7 @@
 #include "render/image_io.h"
 #include "render/sky_renderer.h"
 #include "shaders/physics.h"
+#include "ephemeris/refraction.h"
 
 #include <gtest/gtest.h>
 #include <png.h>
@@ -460,7 +461,9 @@ TEST_F(GlRender, SunDiscKeepsItsLuminanceInTheExr) {
     }
     const glm::dvec3 centre = rgb(im, kW / 2, kH / 2);
     const glm::dvec3 camera = physicalCamera(*model, s.observer.heightM);
-    const glm::dvec3 sun = enuDirection(s.sunAzimuth, s.sunAltitude);
+    // The disc's centre is seen where refraction lifts it, its light arriving along the view:
+    // the CPU model's sun there (the sky it lights differs by a part in 1e3 of the disc).
+    const glm::dvec3 sun = enuDirection(s.sunAzimuth, s.sunApparentAltitude);
     const glm::dvec3 view = ray(s, c, kW / 2, kH / 2);
     const glm::dvec3 expected = spectralView(*model, camera, view, sun);
     EXPECT_NEAR(shader::rec709Luminance(centre) / shader::rec709Luminance(expected), 1.0, 0.05)
@@ -469,4 +472,95 @@ TEST_F(GlRender, SunDiscKeepsItsLuminanceInTheExr) {
     EXPECT_GT(peak, 65504.0);  // what half float could not hold
   }
   std::filesystem::remove(exr);
+}
+
+// The setting sun is flattened by refraction as the real one is: with the true sun on the
+// horizon (seen at ~0.48 deg), its lower limb is lifted ~5.5 arcmin more than its upper, so the
+// disc is ~17% shorter than it is wide. Its extents in a 2-degree channel (~43 pixels across)
+// match the ephemeris' refraction (Saemundsson, evaluated exactly at each limb, not the
+// quadratic the shader uses) to a pixel, and the disc is smooth: limb darkening and the
+// transmittance along each pixel's own ray change by a few per cent between neighbours, and
+// nothing more (no speckle).
+TEST_F(GlRender, RefractionFlattensTheSettingSun) {
+  const auto model = smallModel();
+  const SkyState s = state(0.0, 200.0, 0.0, physicalConditions(model));
+  ChannelConfig c = channel(0.0, Frustum{1, 1, 0.75, 0.75});
+  c.offset = {200.0, s.sunApparentAltitude / kDeg, 0.0};
+  renderer_->draw(s, c);
+  while (renderer_->physicalPass()->current() != model.get()) renderer_->draw(s, c);
+  const HdrImage im = renderer_->readHdr();
+  const double perPixel = 2.0 * kDeg / kW;  // square pixels: 0.75 / 60 = 1 / 80 deg
+  const double radius = model->parameters(0).sun_angular_radius;
+  auto lum = [&](int x, int y) { return shader::rec709Luminance(rgb(im, x, y)); };
+  const double sky = std::max({lum(0, 0), lum(kW - 1, 0), lum(0, kH - 1), lum(kW - 1, kH - 1)});
+  ASSERT_GT(lum(kW / 2, kH / 2), 100.0 * sky) << "the sun is at the channel's centre";
+  // The disc's pixels along the column and the row through its brightest pixel.
+  int cx = kW / 2, cy = kH / 2;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      if (lum(x, y) > lum(cx, cy)) cx = x, cy = y;
+  auto onDisc = [&](int x, int y) { return lum(x, y) > 10.0 * sky; };
+  int top = cy, bottom = cy, left = cx, right = cx;  // y grows downwards
+  while (top > 0 && onDisc(cx, top - 1)) --top;
+  while (bottom < kH - 1 && onDisc(cx, bottom + 1)) ++bottom;
+  const int midRow = (top + bottom) / 2;
+  while (left > 0 && onDisc(left - 1, midRow)) --left;
+  while (right < kW - 1 && onDisc(right + 1, midRow)) ++right;
+  const double tall = bottom - top + 1, wide = right - left + 1;
+  // Where the true limbs are seen: h = a + R(a) at a = a0 +- radius.
+  const double a0 = s.sunAltitude;
+  auto seen = [&](double a) { return a + ephemeris::refractionSaemundsson(a, s.observer.pressureHpa, s.observer.temperatureC); };
+  const double expectedTall = (seen(a0 + radius) - seen(a0 - radius)) / perPixel, expectedWide = 2.0 * radius / perPixel;
+  std::printf("sun at %.3f deg apparent: %g x %g pixels, refraction gives %.2f x %.2f\n", s.sunApparentAltitude / kDeg,
+              wide, tall, expectedWide, expectedTall);
+  EXPECT_LT(expectedTall / expectedWide, 0.9) << "the refraction model flattens the disc";
+  EXPECT_NEAR(wide, expectedWide, 1.0);
+  EXPECT_NEAR(tall, expectedTall, 1.0);
+  // Smooth: within the inner 70% of the disc, each pixel within a few per cent of the mean of
+  // its neighbours on either side, across and along.
+  double worst = 0.0;
+  for (int y = top; y <= bottom; ++y)
+    for (int x = left; x <= right; ++x) {
+      const double u = (x - 0.5 * (left + right)) / (0.5 * wide), v = (y - 0.5 * (top + bottom)) / (0.5 * tall);
+      if (u * u + v * v > 0.7 * 0.7) continue;
+      const glm::dvec3 p = rgb(im, x, y);
+      for (const glm::ivec2 d : {glm::ivec2(1, 0), glm::ivec2(0, 1)}) {
+        const glm::dvec3 mean = 0.5 * (rgb(im, x - d.x, y - d.y) + rgb(im, x + d.x, y + d.y));
+        for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(p[k] - mean[k]) / shader::rec709Luminance(p));
+      }
+    }
+  std::printf("largest step from the neighbours' mean inside the disc: %.2e of the luminance\n", worst);
+  EXPECT_LT(worst, 0.02);
+}
+
+// In haze the sky brightens towards the horizon and meets the ground's aerial perspective there;
+// it has no dark line just above it. The line was the tables' last sky texel (the ray grazing
+// the ground), computed from a ratio of two transmittances that both underflow in single
+// precision (exp(-90) along the ground in a 10 km haze): up to half as bright as its neighbours,
+// 0.5 deg high. Looking towards the sun and away from it, the luminance of each row in the
+// 1.5 deg above the horizon is at least that of the darker of the ground just below the horizon
+// and the sky 1.5 deg up, less 5%.
+TEST_F(GlRender, HazyHorizonHasNoDarkLine) {
+  const auto model = smallModel(10.0);
+  for (double yaw : {300.0, 120.0}) {
+    const SkyState s = state(yaw, 300.0, 10.0, physicalConditions(model));
+    const glm::dvec3 camera = physicalCamera(*model, s.observer.heightM);
+    const double dip = std::acos(model->parameters(0).bottom_radius / glm::length(camera)) / kDeg;
+    ChannelConfig c = channel(0.5 - dip, Frustum{2, 2, 1.5, 1.5});  // 0.025 deg a row, the horizon 0.5 deg low
+    renderer_->draw(s, c);
+    while (renderer_->physicalPass()->current() != model.get()) renderer_->draw(s, c);
+    const HdrImage im = renderer_->readHdr();
+    const int x = kW / 2;
+    int horizon = 0;  // the first row (from the top) on the ground
+    while (horizon < kH && !groundPoint(*model, camera, ray(s, c, x, horizon))) ++horizon;
+    ASSERT_GT(horizon, 70);
+    ASSERT_LT(horizon, kH - 2);
+    const int rows = static_cast<int>(1.5 / 0.025);
+    const double ground = shader::rec709Luminance(rgb(im, x, horizon + 1));
+    const double above = shader::rec709Luminance(rgb(im, x, horizon - rows));
+    double darkest = above;
+    for (int y = horizon - rows; y < horizon; ++y) darkest = std::min(darkest, shader::rec709Luminance(rgb(im, x, y)));
+    std::printf("yaw %.0f: ground %.1f, sky 1.5 deg up %.1f, darkest row between %.1f cd/m^2\n", yaw, ground, above, darkest);
+    EXPECT_GT(darkest, 0.95 * std::min(ground, above)) << "looking at azimuth " << yaw;
+  }
 }

@@ -430,6 +430,7 @@ TEST_F(Cli, YearOutsideTheEphemerisNamesTheTimeNotTheCatalogue) {
     EXPECT_NE(r.err.find("1900-2100 range of the ephemeris"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("star_catalogue"), std::string::npos) << r.err;
   }
+}
 
 // `probe` and `render` of one configuration read one table file and one ground albedo: after
 // `render` has precomputed the tables into a fresh cache, `probe --config` loads them (no second

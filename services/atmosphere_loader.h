@@ -30,7 +30,9 @@ PrecomputeDevice precomputeDeviceFromEnvironment();
 // Invalid configurations throw std::invalid_argument whatever the device.
 atmosphere::TableBuilder atmosphereTableBuilder(PrecomputeDevice device = precomputeDeviceFromEnvironment());
 
-// Where tables are cached: settings.cacheDir, else $XDG_CACHE_HOME/skyig or ~/.cache/skyig.
+// Where tables are cached: settings.cacheDir, else $CACHE_DIRECTORY (the directory systemd
+// made for the service's CacheDirectory=, /var/cache/skyig; the first of a ':'-separated list),
+// else $XDG_CACHE_HOME/skyig or ~/.cache/skyig.
 std::filesystem::path cacheDirectory(const AtmosphereSettings& settings);
 
 // The model `settings` describe under `conditions`: table size, scattering orders, and
@@ -38,10 +40,14 @@ std::filesystem::path cacheDirectory(const AtmosphereSettings& settings);
 // node's updater and the probe find the same cache files.
 atmosphere::ModelConfig modelConfig(const AtmosphereSettings& settings, const atmosphere::Conditions& conditions);
 
-// modelConfig(settings, conditions) from the cache directory, or precomputed
-// (atmosphereTableBuilder) and cached there; says on stderr when it has to precompute.
-std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const AtmosphereSettings& settings,
-                                                                  const atmosphere::Conditions& conditions);
+// The node's model (nodeModelConfig: sky.ground_albedo and [atmosphere] visibility_km unless
+// `conditions` say otherwise) from its cache directory, or precomputed (atmosphereTableBuilder)
+// and cached there; says on stderr when it has to precompute. `render`, `serve`, `replay` and
+// `probe` all load through here, so one configuration is one cache file and one ground albedo.
+// `result`, when given, says whether the tables were loaded or precomputed.
+std::shared_ptr<const atmosphere::AtmosphereModel> loadNodeAtmosphere(const NodeConfig& config,
+                                                                      const atmosphere::Conditions& conditions = {},
+                                                                      atmosphere::CacheResult* result = nullptr);
 
 // Sets config.sky.atmosphere when config.sky.model is physical; prints to stderr when it has
 // to precompute.
@@ -50,7 +56,10 @@ void loadAtmosphereIfNeeded(NodeConfig& config);
 // The background updater the sky worker (services/sky_worker.h) follows the host's visibility
 // and humidity with, in `serve` and `replay` alike: its first model is the configuration's
 // (from the cache loadAtmosphereIfNeeded filled), later ones are built by
-// atmosphereTableBuilder. Null unless the sky is physical.
-std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config);
+// atmosphereTableBuilder. Null unless the sky is physical. The cache keeps to
+// sky.atmosphere_cache_max_mb; with rateLimited (serve) at most one precompute per
+// sky.atmosphere_build_interval seconds; replay builds every held visibility (it waits for the
+// tables and follows the recording's clock, not this machine's).
+std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config, bool rateLimited = true);
 
 }  // namespace skyig::services

@@ -9,17 +9,9 @@ namespace skyig::services {
 CigiReceiver::CigiReceiver(NodeStats& stats, Latest<HostSnapshot>& out, HostSessionSettings sessions)
     : stats_(stats), out_(out), sessions_(std::move(sessions)) {}
 
-bool CigiReceiver::Throttle::ready(Clock::time_point now) {
-  if (last != Clock::time_point{} && now - last <= std::chrono::seconds(1)) {
-    ++suppressed;
-    return false;
-  }
-  last = now;
-  return true;
-}
-
-std::string CigiReceiver::Throttle::heldBack() const {
-  return suppressed ? fmt::format(" ({} more since the last warning)", suppressed) : "";
+// How many warnings of one kind were held back since the last one logged, as a suffix.
+static std::string heldBackSuffix(std::uint64_t heldBack) {
+  return heldBack ? fmt::format(" ({} more since the last warning)", heldBack) : "";
 }
 
 void CigiReceiver::run(UdpSocket& socket, const std::atomic<bool>& stop) {
@@ -57,11 +49,9 @@ void CigiReceiver::handle(std::span<const std::uint8_t> datagram, const sockaddr
     // rest; half a frame would show a state the host never had. The next frame follows.
     stats_.malformedDatagrams.fetch_add(1, std::memory_order_relaxed);
     stats_.errors[static_cast<std::size_t>(decoded_.error->kind)].fetch_add(1, std::memory_order_relaxed);
-    if (malformedWarnings_.ready(arrival)) {
+    if (std::uint64_t heldBack = 0; malformedWarnings_.allow(arrival, &heldBack))
       spdlog::warn("malformed CIGI datagram from {}: {}{}", fromSockaddr(from).toString(), decoded_.error->describe(),
-                   malformedWarnings_.heldBack());
-      malformedWarnings_.suppressed = 0;
-    }
+                   heldBackSuffix(heldBack));
     return;
   }
   const auto* ig =
@@ -79,13 +69,11 @@ void CigiReceiver::handle(std::span<const std::uint8_t> datagram, const sockaddr
     case Admission::otherHost: {
       const bool outside = d.admission == Admission::notAllowed;
       (outside ? stats_.notAllowedDatagrams : stats_.otherHostDatagrams).fetch_add(1, std::memory_order_relaxed);
-      if (foreignWarnings_.ready(arrival)) {
+      if (std::uint64_t heldBack = 0; foreignWarnings_.allow(arrival, &heldBack))
         spdlog::warn("ignoring CIGI from {}: {}{}", fromSockaddr(from).toString(),
                      outside ? std::string("not in host.allowed")
                              : "following the host at " + fromSockaddr(sessions_.host()).toString(),
-                     foreignWarnings_.heldBack());
-        foreignWarnings_.suppressed = 0;
-      }
+                     heldBackSuffix(heldBack));
       return;
     }
     case Admission::newSession:
@@ -105,16 +93,18 @@ void CigiReceiver::handle(std::span<const std::uint8_t> datagram, const sockaddr
     case Admission::apply: break;
   }
   const std::uint64_t jumpsBefore = tracker_.timestampJumps();
+  const std::uint64_t droppedViewsBefore = tracker_.droppedViews();
   const int rejected = tracker_.apply(decoded_, arrival);
   stats_.timestampJumps.fetch_add(tracker_.timestampJumps() - jumpsBefore, std::memory_order_relaxed);
   stats_.rejectedValues.fetch_add(static_cast<std::uint64_t>(rejected), std::memory_order_relaxed);
+  stats_.droppedViews.fetch_add(tracker_.droppedViews() - droppedViewsBefore, std::memory_order_relaxed);
   const HostState& s = tracker_.state();
   if (s.ownshipValid && s.ownshipTime == arrival)
     predictor_.addSample(s.ownship, arrival, s.rates, tracker_.messageHostTime());
   else if (s.ownshipValid && !predictor_.valid())  // a new session that has not moved it yet: held
     predictor_.addSample(s.ownship, s.ownshipTime, {});
   // The session's host travels with the state, so a frame answers the host whose state it shows.
-  out_.publish(HostSnapshot{s, predictor_, tracker_.clock(), sessions_.host(), Clock::now()});
+  out_.emplace(s, predictor_, tracker_.clock(), sessions_.host(), Clock::now());
   stats_.arrivalToVisible.add(std::chrono::duration<double, std::micro>(Clock::now() - arrival).count());
 }
 

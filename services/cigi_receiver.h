@@ -8,6 +8,7 @@
 #include "services/latest.h"
 #include "services/node_stats.h"
 #include "services/udp_socket.h"
+#include "services/warning_throttle.h"
 
 #include <atomic>
 #include <mutex>
@@ -33,17 +34,10 @@ class CigiReceiver {
   // and recorded arrival times.
   void handle(std::span<const std::uint8_t> datagram, const sockaddr_in& from, Clock::time_point arrival);
   void setRecorder(DatagramRecorder* recorder) { recorder_ = recorder; }
+  // host.max_views: View Controls for higher ids are counted (NodeStats::droppedViews).
+  void setMaxViews(std::size_t n) { tracker_.setMaxViews(n); }
 
  private:
-  // At most one warning a second per kind, saying how many were held back: a flood of bad or
-  // foreign datagrams must not flood the log.
-  struct Throttle {
-    Clock::time_point last{};
-    std::uint64_t suppressed = 0;
-    bool ready(Clock::time_point now);
-    std::string heldBack() const;
-  };
-
   DatagramRecorder* recorder_ = nullptr;
   NodeStats& stats_;
   Latest<HostSnapshot>& out_;
@@ -51,7 +45,9 @@ class CigiReceiver {
   CigiStateTracker tracker_;
   OwnshipPredictor predictor_;
   protocol::cigi::DecodedMessage decoded_;
-  Throttle malformedWarnings_, foreignWarnings_;
+  // At most one warning a second per kind, saying how many were held back: a flood of bad or
+  // foreign datagrams must not flood the log.
+  WarningThrottle malformedWarnings_{std::chrono::seconds(1)}, foreignWarnings_{std::chrono::seconds(1)};
   std::uint32_t lastHostAddress_ = 0;  // the address of the last session's host (network order)
 };
 

@@ -4,6 +4,7 @@
 #include "services/host_state.h"
 #include "services/sim_clock.h"
 
+#include <algorithm>
 #include <optional>
 
 namespace skyig::services {
@@ -50,6 +51,10 @@ class CigiStateTracker {
   // Timestamps that did not continue the host's clock (more than kMaxTimestampBackS back or
   // kMaxTimestampStepS ahead): the clock went on from where it stood.
   std::uint64_t timestampJumps() const { return timestampJumps_; }
+  // View Control and View Definition packets for a view id at or above the maximum
+  // (host.max_views, at most kViewTableCapacity): counted and dropped.
+  void setMaxViews(std::size_t n) { maxViews_ = std::min(n, kViewTableCapacity); }
+  std::uint64_t droppedViews() const { return droppedViews_; }
 
   const HostState& state() const { return state_; }
   const HostClock& clock() const { return clock_; }
@@ -60,6 +65,8 @@ class CigiStateTracker {
   void anchorTimestamp(std::uint32_t timestamp, Clock::time_point arrival);
 
   bool sessionHasTimestamp_ = false;  // lastTimestamp_ belongs to the current session
+  std::size_t maxViews_ = kDefaultMaxViews;
+  std::uint64_t droppedViews_ = 0;
   std::uint32_t lastTimestamp_ = 0;   // IG Control timestamp, 10 us ticks
   std::optional<HostTime> messageHostTime_;
   std::uint64_t timestampJumps_ = 0;

@@ -46,6 +46,7 @@ struct NodeStats {
   std::atomic<std::uint64_t> otherHostDatagrams{0};
   std::atomic<std::uint64_t> notHostMessages{0};
   std::atomic<std::uint64_t> timestampJumps{0};  // IG Control timestamps that did not continue the host's clock
+  std::atomic<std::uint64_t> droppedViews{0};   // View Control/Definition for ids >= host.max_views
   std::atomic<std::uint64_t> recorded{0};       // datagrams written by serve --record
   std::atomic<std::uint64_t> recordErrors{0};
   std::array<std::atomic<std::uint64_t>, protocol::cigi::kPacketTypeCount> packets{};

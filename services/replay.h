@@ -28,6 +28,9 @@ struct ReplayOptions {
   std::optional<Endpoint> sendTo;   // re-transmit to a live IG instead of rendering
   bool skipBad = false;
   int port = 0;                     // only datagrams to this UDP port (0: all)
+  // A pause between two records longer than this (a host paused, a corrupt timestamp) is
+  // skipped: the next frame shows the next record, instead of 1/frame rate steps through it.
+  double maxGapS = 60.0;
   bool progress = true;
 };
 
@@ -36,6 +39,8 @@ struct ReplayResult {
   std::uint64_t frames = 0;           // frames computed
   std::uint64_t imagesWritten = 0;
   std::uint64_t skippedRecords = 0;   // bad records passed over (--skip-bad)
+  std::uint64_t skippedGaps = 0;      // pauses longer than maxGapS not rendered
+  double skippedGapSeconds = 0.0;
   double wallSeconds = 0.0;
 };
 

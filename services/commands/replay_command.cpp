@@ -108,7 +108,6 @@ struct ReplayCli {
 int runReplay(ReplayCli& cli) {
   ReplayOptions& o = cli.options;
   o.config = cli.configPath.empty() ? NodeConfig{} : loadNodeConfig(cli.configPath);
-  loadSkyData(o.config);
   if (!cli.size.empty())
     for (auto& c : o.config.channels) parseSize(cli.size, c.width, c.height);
   if (cli.exr || cli.png) o.writeExr = cli.exr, o.writePng = cli.png;
@@ -118,14 +117,20 @@ int runReplay(ReplayCli& cli) {
     } catch (const NetworkError& e) {
       throw ConfigError(std::string("--send: ") + e.what());
     }
+    // Port 0 is no one's: every datagram would be lost while the summary reported success.
+    if (o.sendTo->port == 0) throw ConfigError("--send: port 0 is not a destination (give the IG's ADDR:PORT, e.g. 127.0.0.1:8004)");
   }
   o.progress = !cli.quiet;
+  if (!o.sendTo) loadSkyData(o.config);  // --send renders nothing: no tables, no catalogue
   const ReplayResult r = replay(o);
   std::printf("replayed %llu host messages%s: %llu frames, %llu images in %.2f s (%.1f frames/s)%s\n",
               static_cast<unsigned long long>(r.events), o.sendTo ? (" to " + o.sendTo->toString()).c_str() : "",
               static_cast<unsigned long long>(r.frames), static_cast<unsigned long long>(r.imagesWritten), r.wallSeconds,
               r.wallSeconds > 0 ? static_cast<double>(r.frames) / r.wallSeconds : 0.0,
               r.skippedRecords ? (", skipped " + std::to_string(r.skippedRecords) + " bad records").c_str() : "");
+  if (r.skippedGaps)
+    std::printf("skipped %llu pauses longer than --max-gap %g s (%.3f s of recording time not rendered)\n",
+                static_cast<unsigned long long>(r.skippedGaps), o.maxGapS, r.skippedGapSeconds);
   return 0;
 }
 
@@ -165,6 +170,8 @@ void registerReplayCommand(CLI::App& app, int& exitCode) {
   c->add_option("--send", cli->sendTo, "Re-transmit the recording to a live IG at ADDR:PORT instead of rendering");
   c->add_option("--port", o.port, "Only datagrams to this UDP port (0: all)")->check(CLI::Range(0, 65535));
   c->add_flag("--skip-bad", o.skipBad, "Pass over bad records, counting them, instead of stopping");
+  c->add_option("--max-gap", o.maxGapS, "Skip pauses between records longer than this many seconds (60; 0: render them)")
+      ->check(CLI::Range(0.0, 1e9));
   c->add_flag("--quiet", cli->quiet, "No progress bar");
   c->callback([cli, &exitCode] { exitCode = runReplay(*cli); });
 }

@@ -9,11 +9,13 @@ AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial,
     : AtmosphereUpdater(initial, std::move(cacheDirectory), precomputeTablesOnCpu) {}
 
 AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial,
-                                     std::filesystem::path cacheDirectory, TableBuilder builder)
+                                     std::filesystem::path cacheDirectory, TableBuilder builder,
+                                     UpdaterLimits limits)
     : cacheDirectory_(std::move(cacheDirectory)),
       builder_(builder ? std::move(builder) : TableBuilder(precomputeTablesOnCpu)),
+      limits_(limits),
       current_(std::make_shared<const AtmosphereModel>(
-          loadOrPrecompute(initial, cacheDirectory_, nullptr, builder_))),
+          loadOrPrecompute(initial, cacheDirectory_, nullptr, builder_, limits.maxCacheBytes))),
       worker_([this] { run(); }) {}
 
 AtmosphereUpdater::~AtmosphereUpdater() {
@@ -29,6 +31,7 @@ void AtmosphereUpdater::request(const ModelConfig& config) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     pending_ = config;
+    ++requests_;
   }
   wake_.notify_all();
 }
@@ -48,6 +51,16 @@ std::string AtmosphereUpdater::lastError() const {
   return lastError_;
 }
 
+std::uint64_t AtmosphereUpdater::builds() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return builds_;
+}
+
+std::uint64_t AtmosphereUpdater::deferredBuilds() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return deferred_;
+}
+
 void AtmosphereUpdater::waitIdle() {
   std::unique_lock<std::mutex> lock(mutex_);
   idle_.wait(lock, [this] { return !busy_ && !pending_; });
@@ -59,17 +72,35 @@ void AtmosphereUpdater::run() {
     wake_.wait(lock, [this] { return stop_ || pending_.has_value(); });
     if (stop_) return;
     const ModelConfig config = *pending_;
+    // The rate limit: tables the cache lacks wait until the interval since the last build has
+    // passed, or until a newer request (perhaps one the cache holds) replaces them.
+    if (limits_.minBuildIntervalS > 0.0 && lastBuild_) {
+      const auto allowed = *lastBuild_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                             std::chrono::duration<double>(limits_.minBuildIntervalS));
+      if (std::chrono::steady_clock::now() < allowed && !cacheFileExists(cacheDirectory_, config)) {
+        ++deferred_;
+        const std::uint64_t seen = requests_;
+        wake_.wait_until(lock, allowed, [&] { return stop_ || requests_ != seen; });
+        continue;  // the same request (now allowed) or a newer one
+      }
+    }
     pending_.reset();
     busy_ = true;
     lock.unlock();  // compute without holding the lock: current() stays instant
     std::shared_ptr<const AtmosphereModel> model;
     std::string error;
+    CacheResult cache{CacheOutcome::kLoaded, "", {}};
     try {
-      model = std::make_shared<const AtmosphereModel>(loadOrPrecompute(config, cacheDirectory_, nullptr, builder_));
+      model = std::make_shared<const AtmosphereModel>(
+          loadOrPrecompute(config, cacheDirectory_, &cache, builder_, limits_.maxCacheBytes));
     } catch (const std::exception& e) {
       error = e.what();
     }
     lock.lock();
+    if (model && cache.outcome != CacheOutcome::kLoaded) {
+      lastBuild_ = std::chrono::steady_clock::now();
+      ++builds_;
+    }
     if (model) {
       current_ = std::move(model);
       ++generation_;

@@ -89,7 +89,7 @@ TEST(NodeConfig, DomeHasFiveChannelsWithChinWindows) {
 
 TEST(NodeConfig, OutOfRangeValueNamesFileLineKeyAndRange) {
   EXPECT_EQ(errorOf("[[channel]]\nname = \"a\"\nwidth = -5\n"),
-            "bad.toml:3: channel[0].width: expected an integer in [16, 16384], got -5");
+            "bad.toml:3: channel[0].width: expected an integer in [16, 8192], got -5");
   EXPECT_EQ(errorOf("[sky]\nturbidity = 40\n"), "bad.toml:2: sky.turbidity: expected a number in [1.7, 10], got 40");
 }
 
@@ -127,6 +127,8 @@ TEST(NodeConfig, NodesSelectTheirChannels) {
 TEST(NodeConfig, HostSectionErrors) {
   EXPECT_EQ(errorOf("[host]\nreply_port = 70000\n"), "bad.toml:2: host.reply_port: expected an integer in [1, 65535], got 70000");
   EXPECT_EQ(errorOf("[host]\nsynchronous = \"yes\"\n"), "bad.toml:2: host.synchronous: expected true or false, got 'yes'");
+  EXPECT_EQ(errorOf("[host]\nmax_views = 65\n"), "bad.toml:2: host.max_views: expected an integer in [1, 64], got 65");
+  EXPECT_EQ(parseNodeConfig("[host]\nmax_views = 4\n", "ok.toml").host.maxViews, 4);
   EXPECT_EQ(errorOf("[can_identifiers]\nheading = 4000\n"),
             "bad.toml:2: can_identifiers.heading: expected an integer in [0, 2047], got 4000");
   EXPECT_EQ(
@@ -158,6 +160,14 @@ TEST(NodeConfig, AtmosphereTablesAndStarCatalogue) {
             std::string::npos)
       << errorOf("[sky]\natmosphere_tables = \"huge\"\n");
   EXPECT_EQ(parseNodeConfig("[sky]\nstar_catalogue = \"none\"\n", "t.toml").starCataloguePath, "none");
+  // The cache's bound and the precompute rate: 512 MB and one a minute unless told otherwise.
+  EXPECT_EQ(parseNodeConfig("", "empty").atmosphere.cacheMaxBytes, 512ull << 20);
+  EXPECT_EQ(parseNodeConfig("", "empty").atmosphere.buildIntervalS, 60.0);
+  const NodeConfig bounded = parseNodeConfig("[sky]\natmosphere_cache_max_mb = 64\natmosphere_build_interval = 0\n", "t.toml");
+  EXPECT_EQ(bounded.atmosphere.cacheMaxBytes, 64ull << 20);
+  EXPECT_EQ(bounded.atmosphere.buildIntervalS, 0.0);
+  EXPECT_EQ(errorOf("[sky]\natmosphere_cache_max_mb = -1\n"),
+            "bad.toml:2: sky.atmosphere_cache_max_mb: expected an integer in [0, 1048576], got -1");
 }
 
 // [atmosphere] sets every parameter of the medium in the units it names; the defaults are

@@ -77,23 +77,41 @@ Float maxDisplayVisibility(Float backgroundCdM2, Float whiteCdM2) {
   return max((whiteCdM2 - backgroundCdM2) * psfSolidAngle / pointSourceThresholdLux(backgroundCdM2), 1.0);
 }
 
-// The exponent k of log V_d = k log V for a star drawn where the display shows
-// `backgroundCdM2`: 1 where the display has the range (a just-visible star is just visible on
-// the display, and every ratio is kept), else the display's range there over the eye's (Ward
-// Larson, Rushmeier & Piatko 1997's ceiling: compress, never exaggerate). Stars on the same
-// displayed sky share it, so they rank by magnitude; none is pushed past white.
+// Displayed visibility V_d for a world visibility V (WLRP97's ceiling idea for points: compress,
+// never exaggerate, and only where the display lacks the range). Up to a knee V_k the display
+// keeps V as it is (a just-visible star is just visible, a star 20x its threshold is 20x the
+// display's); above it, log V_d = log V_k + s (log V - log V_k), so that the brightest source
+// the eye meets (maxWorldVisibility) peaks at the display's white. The knee is the geometric
+// middle of the display's range, V_k = sqrt(V_d,max): the faint half of the display's range is
+// the eye's own, the bright half holds the rest in rank. (A single power V^k over the whole
+// range compressed the faint stars too and left a moonless sky's stars a code or two above it.)
+// The slope s for a star drawn where the display shows `backgroundCdM2`; 1 where the display
+// has the eye's range. Stars on the same displayed sky share it, so they rank by magnitude.
 Float displayedVisibilityExponent(Float backgroundCdM2, Float whiteCdM2) {
-  return min(1.0, log(maxDisplayVisibility(backgroundCdM2, whiteCdM2)) / log(maxWorldVisibility()));
+  Float range = log(maxDisplayVisibility(backgroundCdM2, whiteCdM2)), eye = log(maxWorldVisibility());
+  if (range >= eye) return 1.0;
+  return 0.5 * range / (eye - 0.5 * range);
+}
+
+// The knee V_k that goes with a slope s: from s = (L/2) / (L_eye - L/2), L = log V_d,max,
+// log V_k = L/2 = s L_eye / (1 + s).
+Float displayedVisibilityKnee(Float exponent) {
+  return exp(exponent * log(maxWorldVisibility()) / (1.0 + exponent));
+}
+
+Float displayedVisibility(Float visibility, Float exponent) {
+  Float knee = displayedVisibilityKnee(exponent);
+  return visibility <= knee ? visibility : knee * pow(visibility / knee, exponent);
 }
 
 // The illuminance (lux, at the viewer of the display) that a point source of illuminance
 // `worldLux` on a background of `worldBackgroundCdM2` gets on a display whose luminance around
-// it is `displayBackgroundCdM2`: the same visibility, V_d = V^k, and nothing below the
-// threshold (V < 1).
+// it is `displayBackgroundCdM2`: V_d = displayedVisibility(V), and nothing below the threshold
+// (V < 1).
 Float displayedIlluminance(Float worldLux, Float worldBackgroundCdM2, Float displayBackgroundCdM2, Float exponent) {
   Float v = worldLux / pointSourceThresholdLux(worldBackgroundCdM2);
   if (!(v > 1.0)) return 0.0;
-  return pow(v, exponent) * pointSourceThresholdLux(displayBackgroundCdM2);
+  return displayedVisibility(v, exponent) * pointSourceThresholdLux(displayBackgroundCdM2);
 }
 
 // How much of its colour the eye sees in a point source: 0 where only the rods detect it (the

@@ -56,24 +56,30 @@ TEST(PointSourceThreshold, RisesWithTheBackgroundWithoutAJump) {
 
 // On the default display (white 100.1, black 0.1 cd/m^2) a star drawn on the display's black
 // has visibilities from 1 (just visible) to 3.1e3 while the eye's span 1 to 4.1e4 (Venus on the
-// darkest sky): the exponent is log(3.1e3) / log(4.1e4) = 0.76; on a brighter displayed sky the
-// range, and so the exponent, is smaller; a display with the range keeps exponent 1.
+// darkest sky). The display keeps the eye's visibilities up to the knee sqrt(3.1e3) = 55.5 and
+// compresses above it with the slope s = log(55.5) / log(4.1e4 / 55.5) = 0.61; on a brighter
+// displayed sky the range, and so the knee and the slope, are smaller; a display with the range
+// keeps everything (slope 1).
 TEST(PointSourceDisplay, CompressesTheWorldsVisibilityIntoTheDisplaysRange) {
   EXPECT_NEAR(shader::maxWorldVisibility(), 4.07e4, 0.05e4);
   EXPECT_NEAR(shader::maxDisplayVisibility(0.1, 100.1), 3.08e3, 0.05e3);
   const double k = shader::displayedVisibilityExponent(0.1, 100.1);
-  EXPECT_NEAR(k, 0.757, 0.005);
+  EXPECT_NEAR(k, 0.609, 0.005);
+  EXPECT_NEAR(shader::displayedVisibilityKnee(k), std::sqrt(3.08e3), 1.0);
   EXPECT_EQ(shader::displayedVisibilityExponent(0.001, 1e5), 1.0);
-  // Below the threshold nothing; at it, the display's threshold; above, V_d = V^k.
+  // Below the threshold nothing; at it, the display's threshold; up to the knee V itself; above,
+  // the compressed rank.
   const double sky = 2e-4, displaySky = 0.5;
-  const double threshold = shader::pointSourceThresholdLux(sky);
+  const double threshold = shader::pointSourceThresholdLux(sky), shownThreshold = shader::pointSourceThresholdLux(displaySky);
   EXPECT_EQ(shader::displayedIlluminance(0.99 * threshold, sky, displaySky, k), 0.0);
-  EXPECT_NEAR(shader::displayedIlluminance(1.0001 * threshold, sky, displaySky, k),
-              shader::pointSourceThresholdLux(displaySky), 1e-3 * shader::pointSourceThresholdLux(displaySky));
-  const double bright = shader::displayedIlluminance(100.0 * threshold, sky, displaySky, k);
-  EXPECT_NEAR(bright / shader::pointSourceThresholdLux(displaySky), std::pow(100.0, k), 1e-6 * bright);
+  EXPECT_NEAR(shader::displayedIlluminance(1.0001 * threshold, sky, displaySky, k), shownThreshold, 1e-3 * shownThreshold);
+  EXPECT_NEAR(shader::displayedIlluminance(20.0 * threshold, sky, displaySky, k) / shownThreshold, 20.0, 1e-6);
+  const double knee = shader::displayedVisibilityKnee(k);
+  const double bright = shader::displayedIlluminance(1000.0 * threshold, sky, displaySky, k);
+  EXPECT_NEAR(bright / shownThreshold, knee * std::pow(1000.0 / knee, k), 1e-6 * bright / shownThreshold);
+  EXPECT_LT(bright / shownThreshold, 1000.0);
   // The brightest source on the darkest sky peaks at the display's white, whatever the displayed
-  // sky around it: the exponent falls as the displayed sky brightens (0.69 at 1.2 cd/m^2).
+  // sky around it: the slope falls as the displayed sky brightens (0.53 at 1.2 cd/m^2).
   const double sigma = shader::kDisplayedPsfSigmaRad;
   for (double displayed : {0.1, 1.2, 10.0, 50.0}) {
     const double kHere = shader::displayedVisibilityExponent(displayed, 100.1);
@@ -82,7 +88,7 @@ TEST(PointSourceDisplay, CompressesTheWorldsVisibilityIntoTheDisplaysRange) {
         shader::displayedIlluminance(shader::illuminanceOfMagnitude(-4.9), shader::kDarkestSkyCdM2, displayed, kHere);
     EXPECT_NEAR(displayed + venus / (2.0 * M_PI * sigma * sigma), 100.1, 0.5) << displayed;
   }
-  EXPECT_NEAR(shader::displayedVisibilityExponent(1.2, 100.1), 0.692, 0.005);
+  EXPECT_NEAR(shader::displayedVisibilityExponent(1.2, 100.1), 0.529, 0.005);
 }
 
 // Colour: a star the cones see ten times over keeps its chromaticity; one only the rods see is

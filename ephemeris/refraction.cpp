@@ -31,4 +31,26 @@ double refractionSaemundsson(double altitudeRad, double pressureHpa, double temp
   return std::max(arcmin, 0.0) * scale * fade / 60.0 / kDeg;
 }
 
+double refractionAtApparent(double apparentRad, double pressureHpa, double temperatureC) {
+  double a = apparentRad;
+  for (int i = 0; i < 60; ++i) {
+    const double next = apparentRad - refractionSaemundsson(a, pressureHpa, temperatureC);
+    if (next == a) break;
+    a = next;
+  }
+  return apparentRad - a;
+}
+
+RefractionExpansion refractionExpansion(double apparentRad, double airlessRad, double radiusRad,
+                                        double pressureHpa, double temperatureC) {
+  if (!(std::isfinite(radiusRad) && radiusRad > 0.0))
+    throw std::invalid_argument("refraction: disc radius " + std::to_string(radiusRad) + " rad is not positive");
+  const double h0 = apparentRad, step = radiusRad;
+  const double r0 = apparentRad - airlessRad;
+  const double up = refractionAtApparent(h0 + step, pressureHpa, temperatureC);
+  const double down = refractionAtApparent(h0 - step, pressureHpa, temperatureC);
+  const double centre = refractionAtApparent(h0, pressureHpa, temperatureC);  // the same formula's, for the curvature
+  return {h0, r0, (up - down) / (2.0 * step), (up - 2.0 * centre + down) / (2.0 * step * step)};
+}
+
 }  // namespace skyig::ephemeris

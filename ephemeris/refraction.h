@@ -28,4 +28,24 @@ inline constexpr double kRefractionZeroRad = -5.0 * 3.14159265358979323846 / 180
 // or a temperature at or below -273.15 C.
 double refractionSaemundsson(double altitudeRad, double pressureHpa, double temperatureC);
 
+// The same refraction as a function of the apparent altitude h (h = a + R(a)), inverted by
+// fixed-point iteration to convergence (|dR/da| < 0.3 wherever R is defined: under 40 steps to
+// the last bit). Throws as refractionSaemundsson.
+double refractionAtApparent(double apparentRad, double pressureHpa, double temperatureC);
+
+// refractionAtApparent to second order about a disc's apparent centre h0 (its airless altitude
+// a0: the lift there is exactly h0 - a0, as the ephemeris or the caller placed it), for drawing a
+// disc of about `radiusRad` (the sun's, the moon's) refracted and flattened as it is seen:
+// R(h) = refraction + slope (h - h0) + halfCurvature (h - h0)^2, by central differences over the
+// radius (shaders/common/refraction.glsl, unrefractView). Over half a degree the third-order term
+// is below 0.01 arcmin.
+struct RefractionExpansion {
+  double centreRad = 0.0;      // h0, apparent
+  double refraction = 0.0;     // R(h0)
+  double slope = 0.0;          // dR/dh at h0
+  double halfCurvature = 0.0;  // d2R/dh2 / 2 at h0
+};
+RefractionExpansion refractionExpansion(double apparentRad, double airlessRad, double radiusRad,
+                                        double pressureHpa, double temperatureC);
+
 }  // namespace skyig::ephemeris

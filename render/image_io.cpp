@@ -1,6 +1,10 @@
 #include "render/image_io.h"
 
 #include <ImfChromaticitiesAttribute.h>
+#include <ImfDoubleAttribute.h>
+#include <ImfFloatAttribute.h>
+#include <ImfIntAttribute.h>
+#include <ImfMatrixAttribute.h>
 #include <ImfHeader.h>
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -16,6 +20,8 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "render/output_file.h"
@@ -34,6 +40,38 @@ extern "C" void appendPngBytes(png_structp png, png_bytep data, png_size_t lengt
 }
 extern "C" void flushPngBytes(png_structp) {}
 
+void insertAttribute(Imf::Header& header, const std::string& name, const AttributeValue& value) {
+  std::visit(
+      [&](const auto& v) {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::string>) header.insert(name, Imf::StringAttribute(v));
+        else if constexpr (std::is_same_v<T, int>) header.insert(name, Imf::IntAttribute(v));
+        else if constexpr (std::is_same_v<T, float>) header.insert(name, Imf::FloatAttribute(v));
+        else if constexpr (std::is_same_v<T, double>) header.insert(name, Imf::DoubleAttribute(v));
+        else {
+          Imath::M44f m;
+          for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c) m[r][c] = v.m[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)];
+          header.insert(name, Imf::M44fAttribute(m));
+        }
+      },
+      value);
+}
+
+std::optional<AttributeValue> readAttribute(const Imf::Attribute& a) {
+  if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&a)) return AttributeValue(s->value());
+  if (const auto* i = dynamic_cast<const Imf::IntAttribute*>(&a)) return AttributeValue(i->value());
+  if (const auto* f = dynamic_cast<const Imf::FloatAttribute*>(&a)) return AttributeValue(f->value());
+  if (const auto* d = dynamic_cast<const Imf::DoubleAttribute*>(&a)) return AttributeValue(d->value());
+  if (const auto* m = dynamic_cast<const Imf::M44fAttribute*>(&a)) {
+    Matrix44f out;
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) out.m[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] = m->value()[r][c];
+    return AttributeValue(out);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 void checkWritable(const std::string& path) { checkOutputPath(path); }
@@ -46,7 +84,7 @@ void writeExr(const std::string& path, const HdrImage& image, const ImageAttribu
     Imf::Header header(image.width, image.height);
     Imf::addChromaticities(header, Imf::Chromaticities());  // Rec.709 primaries, D65 white
     Imf::addWhiteLuminance(header, 1.0f);                  // one unit = 1 cd/m^2
-    for (const auto& [key, value] : attributes) header.insert(key, Imf::StringAttribute(value));
+    for (const auto& [key, value] : attributes) insertAttribute(header, key, value);
     // 32-bit float: the sun's disc (1.6e9 cd/m^2) and a moonless sky (1e-4) both keep their
     // values; half float overflows at 65504 and turned the sun into +Inf.
     const char* names[] = {"R", "G", "B", "A"};
@@ -92,8 +130,7 @@ ExrFile readExr(const std::string& path) {
     file.readPixels(dw.min.y, dw.max.y);
     if (Imf::hasWhiteLuminance(file.header())) out.whiteLuminance = Imf::whiteLuminance(file.header());
     for (auto it = file.header().begin(); it != file.header().end(); ++it)
-      if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
-        out.attributes[it.name()] = s->value();
+      if (auto value = readAttribute(it.attribute())) out.attributes[it.name()] = std::move(*value);
     return out;
   } catch (const std::exception& e) {
     throw ImageIoError("cannot read " + path + ": " + e.what());

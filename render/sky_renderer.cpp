@@ -43,6 +43,13 @@ ToneBlock toToneBlock(const skyig::sky::SkyState& state, const skyig::sky::Chann
   b.display = glm::vec4(glm::dvec4(d.maxLuminance, d.ambientLuminance, d.gamma, d.adaptationLuminance));
   const bool histogram = d.toneOperator == skyig::sky::ToneOperator::Histogram;
   b.adaptation = glm::vec4(static_cast<float>(state.adaptationLuminance), 1.0f, histogram ? 0.0f : 1.0f, 0.0f);
+  for (std::size_t i = 0; i < state.glare.size(); ++i) {
+    const skyig::sky::eye::GlareSource& g = state.glare[i];
+    b.glareDirection[i] = glm::vec4(glm::vec3(g.direction), static_cast<float>(g.angularRadiusRad * 180.0 / 3.14159265358979));
+    b.glareLux[i] = glm::vec4(glm::vec3(g.rec709Lux), 0.0f);
+  }
+  b.glareObserver = glm::vec4(static_cast<float>(skyig::sky::eye::kGlareObserverAgeYears),
+                              static_cast<float>(skyig::sky::eye::kGlareOcularPigmentation), 0.0f, 0.0f);
   if (histogram) {
     const skyig::sky::eye::ToneCurve curve = skyig::sky::toneCurveFor(state, d);
     b.curveRange = glm::vec4(static_cast<float>(curve.minLog10), static_cast<float>(curve.maxLog10), 0.0f, 0.0f);
@@ -69,6 +76,7 @@ void SkyRenderer::ensureTargets(int width, int height) {
   if (hdr_ && hdr_->width() == width && hdr_->height() == height) return;
   hdr_ = std::make_unique<RenderTarget>(width, height, GL_RGBA32F);
   display_ = std::make_unique<RenderTarget>(width, height, GL_RGBA8);
+  pointSources_ = std::make_unique<RenderTarget>(width, height, GL_RGBA16F);
 }
 
 void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
@@ -89,7 +97,8 @@ void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sk
     // The tables on screen may still be the previous model's while a new one uploads; both
     // share the planet, so the camera is the same.
     physical_->draw(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
-                    skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection, state.moonlightScale);
+                    skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection, state.moonlightScale,
+                    state.sunRefraction);
     return;
   }
   skyProgram_.use();
@@ -102,14 +111,25 @@ void SkyRenderer::draw(const skyig::sky::SkyState& state, const skyig::sky::Atti
   if (state.ephemeris) (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, channel);
   if (state.ephemeris) (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
   if (!stars_) stars_ = std::make_unique<StarPass>();
-  stars_->draw(state.starField, skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(attitude, channel.offset), channel.frustum));
+  const glm::dmat3 ndcToWorld = skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(attitude, channel.offset), channel.frustum);
   glBindVertexArray(emptyVao_);
   toneBlock_.upload(toToneBlock(state, channel));
   toneBlock_.bind();
+  // Stars and planets as displayed, against the sky without them; the tone pass adds them to
+  // the mapped sky, so it never maps a star as if it were sky (docs/night-sky-stars.md).
+  const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(pointSources_->framebuffer(), GL_COLOR, 0, none);
+  pointSources_->bindForDrawing();
+  stars_->drawDisplayed(state.starField, ndcToWorld, hdr_->texture());
+  glBindVertexArray(emptyVao_);
   display_->bindForDrawing();
   toneProgram_.use();
   glBindTextureUnit(SKYIG_UNIT_HDR_IMAGE, hdr_->texture());
+  glBindTextureUnit(SKYIG_UNIT_POINT_SOURCES, pointSources_->texture());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  // Then into the HDR image in absolute units, every value kept for the EXR.
+  hdr_->bindForDrawing();
+  stars_->draw(state.starField, ndcToWorld);
 }
 
 void SkyRenderer::presentToDefaultFramebuffer(int windowWidth, int windowHeight) const {
@@ -117,17 +137,26 @@ void SkyRenderer::presentToDefaultFramebuffer(int windowWidth, int windowHeight)
                          windowWidth, windowHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
-HdrImage SkyRenderer::readHdr() const {
-  HdrImage image{hdr_->width(), hdr_->height(), {}};
+namespace {
+
+// A float target's pixels, top row first.
+HdrImage readFloatTarget(const RenderTarget& target) {
+  HdrImage image{target.width(), target.height(), {}};
   const size_t row = static_cast<size_t>(image.width) * 4;
   std::vector<float> bottomUp(row * static_cast<size_t>(image.height));
-  glGetTextureImage(hdr_->texture(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(bottomUp.size() * sizeof(float)),
+  glGetTextureImage(target.texture(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(bottomUp.size() * sizeof(float)),
                     bottomUp.data());
   image.rgba.resize(bottomUp.size());
   for (int y = 0; y < image.height; ++y)  // GL's rows start at the bottom, images' at the top
     std::copy_n(&bottomUp[static_cast<size_t>(image.height - 1 - y) * row], row, &image.rgba[static_cast<size_t>(y) * row]);
   return image;
 }
+
+}  // namespace
+
+HdrImage SkyRenderer::readHdr() const { return readFloatTarget(*hdr_); }
+
+HdrImage SkyRenderer::readPointSources() const { return readFloatTarget(*pointSources_); }
 
 DisplayImage SkyRenderer::readDisplay() const {
   DisplayImage image{display_->width(), display_->height(), {}};

@@ -46,6 +46,9 @@ class SkyRenderer {
 
   HdrImage readHdr() const;
   DisplayImage readDisplay() const;
+  // The displayed stars and planets of the last frame, display cd/m^2 that the tone pass added
+  // to the mapped sky (linear Rec.709; zero where there is none).
+  HdrImage readPointSources() const;
 
  private:
   void ensureTargets(int width, int height);
@@ -62,6 +65,7 @@ class SkyRenderer {
   std::unique_ptr<NightDiffusePass> nightDiffuse_;  // Milky Way, zodiacal light, airglow
   std::unique_ptr<RenderTarget> hdr_;
   std::unique_ptr<RenderTarget> display_;
+  std::unique_ptr<RenderTarget> pointSources_;  // displayed stars, display cd/m^2 (StarPass::drawDisplayed)
 };
 
 }  // namespace skyig::render

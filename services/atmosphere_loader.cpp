@@ -130,6 +130,8 @@ atmosphere::TableBuilder atmosphereTableBuilder(PrecomputeDevice device) {
 
 std::filesystem::path cacheDirectory(const AtmosphereSettings& settings) {
   if (!settings.cacheDir.empty()) return settings.cacheDir;
+  if (const char* service = std::getenv("CACHE_DIRECTORY"); service && *service && *service != ':')
+    return std::string(service).substr(0, std::string(service).find(':'));
   if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "skyig";
   if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "skyig";
   return std::filesystem::temp_directory_path() / "skyig-cache";
@@ -143,38 +145,38 @@ atmosphere::ModelConfig modelConfig(const AtmosphereSettings& settings, const at
   return model;
 }
 
-std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const AtmosphereSettings& settings,
-                                                                  const atmosphere::Conditions& conditions,
-                                                                  const std::atomic<bool>* stop) {
+std::shared_ptr<const atmosphere::AtmosphereModel> loadNodeAtmosphere(const NodeConfig& config,
+                                                                      const atmosphere::Conditions& conditions,
+                                                                      atmosphere::CacheResult* result,
+                                                                      const std::atomic<bool>* stop) {
   atmosphere::CacheResult cache;
   const auto start = std::chrono::steady_clock::now();
   auto loaded = std::make_shared<const atmosphere::AtmosphereModel>(
-      atmosphere::loadOrPrecompute(modelConfig(settings, conditions), cacheDirectory(settings), &cache,
-                                   atmosphereTableBuilder(), {atmosphere::CancelToken(stop), {}}));
+      atmosphere::loadOrPrecompute(nodeModelConfig(config, conditions), cacheDirectory(config.atmosphere), &cache,
+                                   atmosphereTableBuilder(), config.atmosphere.cacheMaxBytes,
+                                   {atmosphere::CancelToken(stop), {}}));
   if (cache.outcome != atmosphere::CacheOutcome::kLoaded)
-    std::fprintf(stderr, "physical sky: precomputed the %s tables in %.1f s (%s); cached in %s\n", settings.tables.c_str(),
+    std::fprintf(stderr, "physical sky: precomputed the %s tables in %.1f s (%s); cached in %s\n",
+                 config.atmosphere.tables.c_str(),
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), cache.reason.c_str(),
                  cache.path.string().c_str());
+  if (result) *result = cache;
   return loaded;
 }
 
-std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config,
+std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config, bool rateLimited,
                                                                      const std::atomic<bool>* stop) {
   if (config.sky.model != sky::SkyModel::Physical) return nullptr;
+  atmosphere::UpdaterLimits limits;
+  limits.maxCacheBytes = config.atmosphere.cacheMaxBytes;
+  limits.minBuildIntervalS = rateLimited ? config.atmosphere.buildIntervalS : 0.0;
   return std::make_unique<atmosphere::AtmosphereUpdater>(nodeModelConfig(config, {}), cacheDirectory(config.atmosphere),
-                                                         atmosphereTableBuilder(), stop);
-}
-
-atmosphere::Conditions configuredConditions(const NodeConfig& config) {
-  atmosphere::Conditions conditions;
-  conditions.groundAlbedo = config.sky.groundAlbedo;
-  conditions.visibilityKm = config.atmosphere.visibilityKm;  // as nodeModelConfig: one cache key
-  return conditions;
+                                                         atmosphereTableBuilder(), limits, stop);
 }
 
 void loadAtmosphereIfNeeded(NodeConfig& config, const std::atomic<bool>* stop) {
   if (config.sky.model != sky::SkyModel::Physical || config.sky.atmosphere) return;
-  config.sky.atmosphere = loadAtmosphere(config.atmosphere, configuredConditions(config), stop);
+  config.sky.atmosphere = loadNodeAtmosphere(config, {}, nullptr, stop);
 }
 
 }  // namespace skyig::services

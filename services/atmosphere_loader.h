@@ -31,7 +31,9 @@ PrecomputeDevice precomputeDeviceFromEnvironment();
 // Invalid configurations throw std::invalid_argument whatever the device.
 atmosphere::TableBuilder atmosphereTableBuilder(PrecomputeDevice device = precomputeDeviceFromEnvironment());
 
-// Where tables are cached: settings.cacheDir, else $XDG_CACHE_HOME/skyig or ~/.cache/skyig.
+// Where tables are cached: settings.cacheDir, else $CACHE_DIRECTORY (the directory systemd
+// made for the service's CacheDirectory=, /var/cache/skyig; the first of a ':'-separated list),
+// else $XDG_CACHE_HOME/skyig or ~/.cache/skyig.
 std::filesystem::path cacheDirectory(const AtmosphereSettings& settings);
 
 // The model `settings` describe under `conditions`: table size, scattering orders, and
@@ -39,28 +41,30 @@ std::filesystem::path cacheDirectory(const AtmosphereSettings& settings);
 // node's updater and the probe find the same cache files.
 atmosphere::ModelConfig modelConfig(const AtmosphereSettings& settings, const atmosphere::Conditions& conditions);
 
-// modelConfig(settings, conditions) from the cache directory, or precomputed
-// (atmosphereTableBuilder) and cached there; says on stderr when it has to precompute. Once
-// `stop` is set (a signalled command) a precompute ends within a slice: atmosphere::Cancelled.
-std::shared_ptr<const atmosphere::AtmosphereModel> loadAtmosphere(const AtmosphereSettings& settings,
-                                                                  const atmosphere::Conditions& conditions,
-                                                                  const std::atomic<bool>* stop = nullptr);
-
-// The conditions a configuration's own tables are built for: its sky.ground_albedo and
-// [atmosphere] visibility_km (as nodeModelConfig with no host conditions). render, probe, serve
-// and replay all ask with these, so one configuration's tables are one cache file.
-atmosphere::Conditions configuredConditions(const NodeConfig& config);
+// The node's model (nodeModelConfig: sky.ground_albedo and [atmosphere] visibility_km unless
+// `conditions` say otherwise) from its cache directory, or precomputed (atmosphereTableBuilder)
+// and cached there; says on stderr when it has to precompute. `render`, `serve`, `replay` and
+// `probe` all load through here, so one configuration is one cache file and one ground albedo.
+// `result`, when given, says whether the tables were loaded or precomputed. Once `stop` is set
+// (a signalled command) a precompute ends within a slice: atmosphere::Cancelled.
+std::shared_ptr<const atmosphere::AtmosphereModel> loadNodeAtmosphere(const NodeConfig& config,
+                                                                      const atmosphere::Conditions& conditions = {},
+                                                                      atmosphere::CacheResult* result = nullptr,
+                                                                      const std::atomic<bool>* stop = nullptr);
 
 // Sets config.sky.atmosphere when config.sky.model is physical; prints to stderr when it has
-// to precompute; `stop` as loadAtmosphere.
+// to precompute; `stop` as loadNodeAtmosphere.
 void loadAtmosphereIfNeeded(NodeConfig& config, const std::atomic<bool>* stop = nullptr);
 
 // The background updater the sky worker (services/sky_worker.h) follows the host's visibility
 // and humidity with, in `serve` and `replay` alike: its first model is the configuration's
 // (from the cache loadAtmosphereIfNeeded filled), later ones are built by
-// atmosphereTableBuilder. Null unless the sky is physical. `stop` (the command's signal flag)
-// ends its precomputes and waits at once (atmosphere/updater.h).
-std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config,
+// atmosphereTableBuilder. Null unless the sky is physical. The cache keeps to
+// sky.atmosphere_cache_max_mb; with rateLimited (serve) at most one precompute per
+// sky.atmosphere_build_interval seconds; replay builds every held visibility (it waits for the
+// tables and follows the recording's clock, not this machine's). `stop` (the command's signal
+// flag) ends its precomputes and waits at once (atmosphere/updater.h).
+std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config, bool rateLimited = true,
                                                                      const std::atomic<bool>* stop = nullptr);
 
 }  // namespace skyig::services

@@ -1,5 +1,6 @@
 #include "services/caps.h"
 
+#include "ephemeris/data_files.h"
 #include "render/gl/gl_context.h"
 #include "services/version.h"
 
@@ -7,7 +8,9 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <sstream>
 
 namespace skyig::services {
@@ -20,6 +23,20 @@ std::string socketFamilySupport(int family, int type, int protocol) {
   if (fd < 0) return std::string("unavailable (") + std::strerror(errno) + ")";
   ::close(fd);
   return "available";
+}
+
+// The data directory this process reads (ephemeris/data_files.h) and how it was chosen, so an
+// installed node shows it reads its own prefix's share/skyig.
+std::string dataDirectorySupport() {
+  try {
+    const std::filesystem::path dir = ephemeris::dataDirectory();
+    const char* environment = std::getenv("SKYIG_DATA_DIR");
+    const bool complete = std::filesystem::is_regular_file(dir / "bsc5.csv");
+    return dir.string() + (environment && *environment ? " (SKYIG_DATA_DIR)" : " (beside the executable)") +
+           (complete ? "" : ", bsc5.csv missing");
+  } catch (const ephemeris::DataFileError& e) {
+    return std::string("unknown: ") + e.what();
+  }
 }
 
 }  // namespace
@@ -44,7 +61,8 @@ std::string capsText() {
     out << "GL:            unavailable headless: " << e.what() << "\n";
   }
   out << "UDP sockets:   " << socketFamilySupport(AF_INET, SOCK_DGRAM, 0) << "\n"
-      << "SocketCAN:     " << socketFamilySupport(29 /* PF_CAN */, SOCK_RAW, 1 /* CAN_RAW */) << "\n";
+      << "SocketCAN:     " << socketFamilySupport(29 /* PF_CAN */, SOCK_RAW, 1 /* CAN_RAW */) << "\n"
+      << "Data files:    " << dataDirectorySupport() << "\n";
   return out.str();
 }
 

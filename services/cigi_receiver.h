@@ -1,11 +1,14 @@
 #pragma once
-// The receiver thread of a CIGI node: datagrams in, decoded, applied to the host state and
-// published whole (latest wins). Malformed input is counted and logged at a limited rate;
-// the last good state is kept.
+// The receiver thread of a CIGI node: datagrams in, decoded, admitted by the host session
+// (services/host_session.h: who may drive, restarts, reordering), applied to the host state and
+// published whole (latest wins). A malformed datagram is rejected whole, counted and logged at
+// a limited rate; the last good state is kept.
+#include "services/host_session.h"
 #include "services/host_snapshot.h"
 #include "services/latest.h"
 #include "services/node_stats.h"
 #include "services/udp_socket.h"
+#include "services/warning_throttle.h"
 
 #include <atomic>
 #include <mutex>
@@ -24,23 +27,28 @@ class DatagramRecorder {
 
 class CigiReceiver {
  public:
-  CigiReceiver(NodeStats& stats, Latest<HostSnapshot>& out);
+  CigiReceiver(NodeStats& stats, Latest<HostSnapshot>& out, HostSessionSettings sessions = {});
   // Receives from `socket` until stop is set (checks it at least every 50 ms).
   void run(UdpSocket& socket, const std::atomic<bool>& stop);
   // Handles one datagram: the loop's body, and what replay feeds with recorded datagrams
   // and recorded arrival times.
   void handle(std::span<const std::uint8_t> datagram, const sockaddr_in& from, Clock::time_point arrival);
   void setRecorder(DatagramRecorder* recorder) { recorder_ = recorder; }
+  // host.max_views: View Controls for higher ids are counted (NodeStats::droppedViews).
+  void setMaxViews(std::size_t n) { tracker_.setMaxViews(n); }
 
  private:
   DatagramRecorder* recorder_ = nullptr;
   NodeStats& stats_;
   Latest<HostSnapshot>& out_;
+  HostSessions sessions_;
   CigiStateTracker tracker_;
   OwnshipPredictor predictor_;
   protocol::cigi::DecodedMessage decoded_;
-  Clock::time_point lastWarning_{};
-  std::uint64_t suppressedWarnings_ = 0;
+  // At most one warning a second per kind, saying how many were held back: a flood of bad or
+  // foreign datagrams must not flood the log.
+  WarningThrottle malformedWarnings_{std::chrono::seconds(1)}, foreignWarnings_{std::chrono::seconds(1)};
+  std::uint32_t lastHostAddress_ = 0;  // the address of the last session's host (network order)
 };
 
 }  // namespace skyig::services

@@ -14,21 +14,37 @@ namespace {
 
 bool finite(double v) { return std::isfinite(v); }
 
+// CIGI 3.3 (Entity Control, View Control): roll -180..180, pitch -90..90, yaw 0..360 degrees.
+// Hosts also send yaw as -180..180, so yaw is taken in -180..360; beyond these (roll 361, yaw
+// 3e38) the value is rejected and counted, never wrapped into something the host did not mean.
+bool validAttitude(float yaw, float pitch, float roll) {
+  return std::isfinite(yaw) && std::isfinite(pitch) && std::isfinite(roll) && yaw >= -180.0f && yaw <= 360.0f &&
+         std::abs(pitch) <= 90.0f && std::abs(roll) <= 180.0f;
+}
+
 bool validOwnship(const cigi::EntityControl& e) {
   return finite(e.latitudeDeg) && std::abs(e.latitudeDeg) <= 90.0 && finite(e.longitudeDeg) &&
          std::abs(e.longitudeDeg) <= 360.0 && finite(e.altitudeM) && std::abs(e.altitudeM) < 1e7 &&
-         finite(e.yawDeg) && finite(e.pitchDeg) && finite(e.rollDeg) && std::abs(e.pitchDeg) <= 90.0f;
+         validAttitude(e.yawDeg, e.pitchDeg, e.rollDeg);
 }
 
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
+// How closely skyig follows a CIGI 4.0 host's stated seconds: the clock runs on the host's
+// timestamps and is corrected only when it leaves this window around the stated instant.
+constexpr double kStatedSecondsResolutionS = 1e-3;
+
 }  // namespace
 
-ViewOverride& HostState::view(std::uint16_t id) {
-  for (ViewOverride& v : views)
-    if (v.viewId == id) return v;
-  views.push_back(ViewOverride{id, {}, {}, {}, {}, {}, {}, {}});
-  return views.back();
+void CigiStateTracker::anchorTimestamp(std::uint32_t timestamp, Clock::time_point arrival) {
+  clock_.timestampBaseS = clock_.continuousAt(arrival);
+  clock_.timestampArrival = arrival;
+  clock_.haveTimestamp = true;
+  lastTimestamp_ = timestamp;
+  sessionHasTimestamp_ = true;
+  rateAnchorS_ = clock_.timestampBaseS;
+  rateAnchorArrival_ = arrival;
+  rate_.reset();
 }
 
 double HostClock::continuousAt(Clock::time_point t) const {
@@ -41,16 +57,9 @@ double HostClock::continuousAt(Clock::time_point t) const {
 int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_point arrival) {
   int rejected = 0;
   bool changed = false;
-  if (!message.packets.empty()) {
-    if (const auto* ig = std::get_if<cigi::IgControl>(&message.packets.front())) {
-      // Serial-number order (wraps at 2^32): a frame behind the last one is stale.
-      if (haveHostFrame_ && static_cast<std::int32_t>(ig->hostFrameNumber - state_.hostFrame) < 0) {
-        ++stale_;
-        return 0;
-      }
-      haveHostFrame_ = true;
-    }
-  }
+  messageHostTime_.reset();
+  if (!message.packets.empty() && std::holds_alternative<cigi::IgControl>(message.packets.front()))
+    state_.cigiMajorVersion = message.majorVersion;  // the node answers in the host's version
   for (const cigi::Packet& packet : message.packets) {
     std::visit(
         [&](const auto& p) {
@@ -58,12 +67,28 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
           if constexpr (std::is_same_v<T, cigi::IgControl>) {
             state_.hostFrame = p.hostFrameNumber;
             if (p.timestampValid) {
-              // 32-bit 10 us ticks wrap every 11.9 hours: unwrap by the difference.
-              const double step = clock_.haveTimestamp ? static_cast<std::uint32_t>(p.timestamp - lastTimestamp_) * 1e-5 : 0.0;
-              clock_.timestampBaseS = clock_.haveTimestamp ? clock_.timestampBaseS + step : p.timestamp * 1e-5;
-              lastTimestamp_ = p.timestamp;
-              clock_.timestampArrival = arrival;
-              clock_.haveTimestamp = true;
+              // 32-bit 10 us ticks wrap every 11.9 hours: the step is the signed difference
+              // (a wrap is a small step forward, one tick back is one tick back), and bounded.
+              const double step = static_cast<std::int32_t>(p.timestamp - lastTimestamp_) * 1e-5;
+              if (!sessionHasTimestamp_ || step < -kMaxTimestampBackS || step > kMaxTimestampStepS) {
+                // A session's first timestamp, or a re-based host clock: the clock goes on from
+                // where it stands, so neither moves the sim clock.
+                if (sessionHasTimestamp_) ++timestampJumps_;
+                anchorTimestamp(p.timestamp, arrival);
+              } else if (step >= 0.0) {
+                clock_.timestampBaseS += step;
+                clock_.timestampArrival = arrival;
+                lastTimestamp_ = p.timestamp;
+                if (arrival - rateAnchorArrival_ >= std::chrono::seconds(1)) {
+                  const double rate = (clock_.timestampBaseS - rateAnchorS_) / seconds(arrival - rateAnchorArrival_);
+                  rate_ = rate > 0.0 ? std::optional(rate) : std::nullopt;
+                  rateAnchorS_ = clock_.timestampBaseS;
+                  rateAnchorArrival_ = arrival;
+                }
+                if (rate_) messageHostTime_ = HostTime{clock_.timestampBaseS, *rate_};
+              }
+              // A small step back (jitter of the host's clock) is ignored: the host's time
+              // never runs backwards, and the next step is taken from the newest timestamp.
             }
             changed = true;
           } else if constexpr (std::is_same_v<T, cigi::EntityControl>) {
@@ -98,14 +123,18 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
             }
             if (!p.dateTimeValid) return;
             const auto date = cigi::splitDate(p.date);
-            if (!date || p.hour > 23 || p.minute > 59) {
+            // CIGI 4.0 adds the seconds (a float, 0 <= s < 60) that 3.3 lacks.
+            const bool withSeconds = message.majorVersion == 4;
+            if (!date || p.hour > 23 || p.minute > 59 ||
+                (withSeconds && !(std::isfinite(p.seconds) && p.seconds >= 0.0f && p.seconds < 60.0f))) {
               ++rejected;
               return;
             }
             state_.timeValid = true;
             // The continuous time is taken after any IG Control of this message was applied.
-            clock_.clock.observe({date->year, date->month, date->day, p.hour * 3600.0 + p.minute * 60.0},
-                                 clock_.continuousAt(arrival));
+            const double secondsOfDay = p.hour * 3600.0 + p.minute * 60.0 + (withSeconds ? static_cast<double>(p.seconds) : 0.0);
+            clock_.clock.observe({date->year, date->month, date->day, secondsOfDay}, clock_.continuousAt(arrival),
+                                 withSeconds ? kStatedSecondsResolutionS : 60.0);
             changed = true;
           } else if constexpr (std::is_same_v<T, cigi::AtmosphereControl>) {
             if (!std::isfinite(p.visibilityRangeM) || p.visibilityRangeM < 0.0f || !std::isfinite(p.airTemperatureC) ||
@@ -130,15 +159,18 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
             changed = true;
           } else if constexpr (std::is_same_v<T, cigi::ViewControl>) {
             if (p.entityId != 0) return;
-            if (!std::isfinite(p.yawDeg) || !std::isfinite(p.pitchDeg) || !std::isfinite(p.rollDeg) ||
-                std::abs(p.pitchDeg) > 90.0f) {
+            if (!validAttitude(p.yawDeg, p.pitchDeg, p.rollDeg)) {
               ++rejected;
               return;
             }
-            ViewOverride& v = state_.view(p.viewId);
-            if (p.yawEnable) v.yawDeg = p.yawDeg;
-            if (p.pitchEnable) v.pitchDeg = p.pitchDeg;
-            if (p.rollEnable) v.rollDeg = p.rollDeg;
+            ViewOverride* v = state_.views.entry(p.viewId, maxViews_);
+            if (!v) {
+              ++droppedViews_;
+              return;
+            }
+            if (p.yawEnable) v->yawDeg = p.yawDeg;
+            if (p.pitchEnable) v->pitchDeg = p.pitchDeg;
+            if (p.rollEnable) v->rollDeg = p.rollDeg;
             changed = true;
           } else if constexpr (std::is_same_v<T, cigi::ViewDefinition>) {
             // CIGI's half-angles are signed (left and bottom negative for a centred view);
@@ -150,11 +182,15 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
               ++rejected;
               return;
             }
-            ViewOverride& v = state_.view(p.viewId);
-            if (p.leftEnable) v.leftDeg = left;
-            if (p.rightEnable) v.rightDeg = right;
-            if (p.topEnable) v.upDeg = up;
-            if (p.bottomEnable) v.downDeg = down;
+            ViewOverride* v = state_.views.entry(p.viewId, maxViews_);
+            if (!v) {
+              ++droppedViews_;
+              return;
+            }
+            if (p.leftEnable) v->leftDeg = left;
+            if (p.rightEnable) v->rightDeg = right;
+            if (p.topEnable) v->upDeg = up;
+            if (p.bottomEnable) v->downDeg = down;
             changed = true;
           }
           // Environmental Region Control has nothing for a sky without regions yet.

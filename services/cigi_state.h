@@ -4,6 +4,9 @@
 #include "services/host_state.h"
 #include "services/sim_clock.h"
 
+#include <algorithm>
+#include <optional>
+
 namespace skyig::services {
 
 // The host's clock as the receiver last knew it: the minutes the host stated (SimClock) and the
@@ -22,15 +25,36 @@ struct HostClock {
   std::optional<ephemeris::UtcTime> utcAt(Clock::time_point t) const { return clock.at(continuousAt(t)); }
 };
 
+// A timestamp step is bounded: further back than this (s) or further ahead than that is not
+// the next tick of the same clock (a host whose clock was re-based), and the clock goes on from
+// where it stands. Ahead allows a time-lapse host stamping its sim clock (the emulator's
+// --speed 1e5 at 30 Hz steps 3333 s); back allows jitter (a reordered frame never gets here).
+inline constexpr double kMaxTimestampBackS = 1.0;
+inline constexpr double kMaxTimestampStepS = 3600.0;
+
 class CigiStateTracker {
  public:
   // Applies every well-formed packet of a message received at `arrival`. Invalid values
   // (NaN, out-of-range angles, impossible dates) are skipped and counted; the rest of the
-  // state is kept. Returns the number of rejected values.
+  // state is kept. Returns the number of rejected values. Which messages are applied, in
+  // which order, is the receiver's call (services/host_session.h): the tracker takes each
+  // IG Control timestamp as the next step of the current session's clock.
   int apply(const protocol::cigi::DecodedMessage& message, Clock::time_point arrival);
-  // Messages dropped because their host frame number was older than one already applied
-  // (reordered datagrams must not move the ownship back in time).
-  std::uint64_t staleMessages() const { return stale_; }
+  // The next message starts a new host session: its timestamp does not continue the last
+  // one's, so the host's clock is re-anchored where it stands (it never jumps).
+  void startSession() { sessionHasTimestamp_ = false; }
+  // The host's time of the last message applied (s, on the continuous clock) and how fast the
+  // host's clock runs (host seconds per local second, measured over a second or more: 1 for a
+  // host that stamps real time, 90 for a 90x time-lapse that stamps its sim clock), when its IG
+  // Control carried a timestamp that continued the clock and the rate is known.
+  std::optional<HostTime> messageHostTime() const { return messageHostTime_; }
+  // Timestamps that did not continue the host's clock (more than kMaxTimestampBackS back or
+  // kMaxTimestampStepS ahead): the clock went on from where it stood.
+  std::uint64_t timestampJumps() const { return timestampJumps_; }
+  // View Control and View Definition packets for a view id at or above the maximum
+  // (host.max_views, at most kViewTableCapacity): counted and dropped.
+  void setMaxViews(std::size_t n) { maxViews_ = std::min(n, kViewTableCapacity); }
+  std::uint64_t droppedViews() const { return droppedViews_; }
 
   const HostState& state() const { return state_; }
   const HostClock& clock() const { return clock_; }
@@ -38,9 +62,18 @@ class CigiStateTracker {
  private:
   HostState state_;
   HostClock clock_;
-  std::uint64_t stale_ = 0;
-  bool haveHostFrame_ = false;
+  void anchorTimestamp(std::uint32_t timestamp, Clock::time_point arrival);
+
+  bool sessionHasTimestamp_ = false;  // lastTimestamp_ belongs to the current session
+  std::size_t maxViews_ = kDefaultMaxViews;
+  std::uint64_t droppedViews_ = 0;
   std::uint32_t lastTimestamp_ = 0;   // IG Control timestamp, 10 us ticks
+  std::optional<HostTime> messageHostTime_;
+  std::uint64_t timestampJumps_ = 0;
+  // The host clock's rate, from the continuous time at an anchor a second or more back.
+  double rateAnchorS_ = 0.0;
+  Clock::time_point rateAnchorArrival_{};
+  std::optional<double> rate_;
 };
 
 }  // namespace skyig::services

@@ -5,10 +5,10 @@
 #include "ephemeris/time.h"
 #include "sky/observer.h"
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <optional>
-#include <vector>
 
 namespace skyig::services {
 
@@ -22,6 +22,13 @@ struct OwnshipRates {
   double rollRate = 0.0, pitchRate = 0.0, yawRate = 0.0;
 };
 
+// A moment on the host's own clock (its IG Control timestamps): seconds, and how fast that
+// clock runs, in host seconds per local second.
+struct HostTime {
+  double seconds = 0.0;
+  double rate = 1.0;
+};
+
 // A channel's eyepoint rotation and frustum as the host set them (CIGI View Control and View
 // Definition); view ID n is the node's n-th channel. Unset parts keep the configuration's.
 struct ViewOverride {
@@ -30,9 +37,39 @@ struct ViewOverride {
   std::optional<double> leftDeg, rightDeg, upDeg, downDeg;  // skyig's half-angles
 };
 
+// The most view ids a node keeps (host.max_views is at most this). The table is a fixed array
+// indexed by id, so applying a View Control is O(1) and a snapshot copies a few kilobytes
+// whatever the host sends; ids at or above the configured maximum are counted and dropped.
+inline constexpr std::size_t kViewTableCapacity = 64;
+inline constexpr std::size_t kDefaultMaxViews = 32;  // host.max_views
+
+class ViewTable {
+ public:
+  // The entry of `id`, created on first use; null when id >= limit.
+  ViewOverride* entry(std::uint16_t id, std::size_t limit) {
+    if (id >= limit || id >= kViewTableCapacity) return nullptr;
+    if (!(used_ & (1ull << id))) {
+      entries_[id] = ViewOverride{id, {}, {}, {}, {}, {}, {}, {}};
+      used_ |= 1ull << id;
+    }
+    return &entries_[id];
+  }
+  // The entry of `id` if the host set one.
+  const ViewOverride* find(std::size_t id) const {
+    return id < kViewTableCapacity && (used_ & (1ull << id)) ? &entries_[id] : nullptr;
+  }
+  std::size_t size() const { return static_cast<std::size_t>(__builtin_popcountll(used_)); }
+
+ private:
+  std::array<ViewOverride, kViewTableCapacity> entries_{};
+  std::uint64_t used_ = 0;  // bit id: entries_[id] was set by the host
+  static_assert(kViewTableCapacity <= 64, "one bit per id in used_");
+};
+
 struct HostState {
   std::uint64_t updates = 0;          // host messages applied so far (0: nothing yet)
   std::uint32_t hostFrame = 0;        // IG Control host frame number of the last message
+  std::uint8_t cigiMajorVersion = 3;  // CIGI version of the last IG Control (3 or 4): SOF's version
   bool ownshipValid = false;
   sky::Ownship ownship;
   Clock::time_point ownshipTime{};    // arrival of the message that last set the ownship
@@ -47,8 +84,7 @@ struct HostState {
   // CIGI Celestial Sphere Control: star field intensity / 100, 0 while the field is disabled.
   double starFieldIntensity = 1.0;
   Clock::time_point received{};       // arrival of the last applied message
-  std::vector<ViewOverride> views;
-  ViewOverride& view(std::uint16_t id);
+  ViewTable views;
 };
 
 }  // namespace skyig::services

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <utility>
 
 namespace skyig::services {
 
@@ -13,6 +14,12 @@ class Latest {
  public:
   void publish(T value) {
     value_.store(std::make_shared<const T>(std::move(value)), std::memory_order_release);
+    version_.fetch_add(1, std::memory_order_acq_rel);
+  }
+  // Builds the snapshot in place: a large value is copied once, not into a temporary first.
+  template <typename... Args>
+  void emplace(Args&&... args) {
+    value_.store(std::make_shared<const T>(std::forward<Args>(args)...), std::memory_order_release);
     version_.fetch_add(1, std::memory_order_acq_rel);
   }
   std::shared_ptr<const T> get() const { return value_.load(std::memory_order_acquire); }

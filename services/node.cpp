@@ -9,9 +9,12 @@
 #include "services/can_receiver.h"
 #include "services/cigi_receiver.h"
 #include "services/frame_files.h"
+#include "services/frame_metadata.h"
 #include "services/sky_worker.h"
 #include "services/recorder.h"
 #include "services/state_dump.h"
+#include "services/systemd_notify.h"
+#include "services/warning_throttle.h"
 
 #include <glad/gl.h>
 #include <spdlog/spdlog.h>
@@ -45,7 +48,7 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
                 SkyWorker& worker, const std::atomic<bool>& stop) {
   std::shared_ptr<const HostSnapshot> snapshot;
   std::uint64_t seen = ~0ull;
-  auto lastWarning = Clock::now() - 1h;
+  WarningThrottle badState;
   auto lastStats = Clock::now();
   while (!stop.load(std::memory_order_relaxed)) {
     const auto now = Clock::now();
@@ -63,10 +66,9 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
       }
     } catch (const std::exception& e) {
       stats.rejectedValues.fetch_add(1, std::memory_order_relaxed);
-      if (now - lastWarning > 1s) {
-        spdlog::warn("host state not usable, keeping the last sky: {}", e.what());
-        lastWarning = now;
-      }
+      if (std::uint64_t heldBack = 0; badState.allow(now, &heldBack))
+        spdlog::warn("host state not usable, keeping the last sky: {}{}", e.what(),
+                     heldBack ? fmt::format(" ({} more since the last warning)", heldBack) : "");
     }
     if (!opt.statsPath.empty() && now - lastStats > std::chrono::duration<double>(opt.statsIntervalS)) {
       writeStatsFile(opt.statsPath, stats);
@@ -175,7 +177,8 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   // up before any thread starts.
   UdpSocket udp(opt.listen, opt.multicastGroup);  // always: Start of Frame goes out through it
   spdlog::info("listening for CIGI on {}", udp.localEndpoint().toString());
-  CigiReceiver cigi(stats, host);
+  CigiReceiver cigi(stats, host, opt.config.host.session);
+  cigi.setMaxViews(static_cast<std::size_t>(opt.config.host.maxViews));
   std::unique_ptr<PcapRecorder> recorder;
   if (!opt.recordPath.empty()) {
     try {
@@ -200,7 +203,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   if (opt.canInterface) spdlog::info("reading CANaerospace from {}", *opt.canInterface);
   // The physical sky follows the host's visibility and humidity through a background updater
   // (from the cache the configuration's tables were just loaded from).
-  const std::unique_ptr<atmosphere::AtmosphereUpdater> updater = makeAtmosphereUpdater(opt.config, &externalStop);
+  const std::unique_ptr<atmosphere::AtmosphereUpdater> updater = makeAtmosphereUpdater(opt.config, /*rateLimited=*/true, &externalStop);
   SkyWorker worker(opt.config, updater.get(), stats);  // the worker thread's: its caches are its own
   sky.publish(BuiltSky{worker.build(nullptr, Clock::now()), nullptr, 0});  // frame 0 already has a sky
 
@@ -225,6 +228,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
     std::uint64_t hostVersionShown = 0;
     Clock::time_point lastArrivalShown{};
     std::vector<std::uint8_t> sof;
+    SystemdNotifier systemd = SystemdNotifier::fromEnvironment();  // Type=notify: ready after frame 0, then the watchdog
     for (std::uint64_t frame = 0; !externalStop && (opt.frames == 0 || frame < opt.frames); ++frame) {
       if (opt.synchronous) {
         // Frame N follows the host's frame N (its sky built from it); a silent host does not
@@ -248,10 +252,9 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
         display.draw(built->state, pose, [&](const render::SkyRenderer& r, const sky::ChannelConfig& c) {
           const std::string stem = frameStem(opt.saveFramesDir, frame, built->state.observer.utc,
                                              pose.channels.size() > 1 ? c.name : "");
-          writeFrameFiles(r, stem, c, true, true,
-                          {{"skyig:utc", ephemeris::formatIso8601Utc(built->state.observer.utc)},
-                           {"skyig:channel", c.name},
-                           {"skyig:frame", std::to_string(frame)}});
+          render::ImageAttributes attributes = frameAttributes(built->state, pose.attitude, c);
+          attributes["skyig:frame"] = static_cast<double>(frame);  // an integer, exact to 2^53
+          writeFrameFiles(r, stem, c, true, true, attributes);
         });
       } else {
         display.draw(built->state, pose);
@@ -264,10 +267,15 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
         lastArrivalShown = snapshot->state.received;
       }
 
-      // Start of Frame: to --reply-to, else back to the host's address on the reply port.
+      // Start of Frame: to the configured host (host.reply_to, --reply-to), else to the
+      // followed host's address on the reply port while it is alive: only an allowed sender
+      // that won a session is answered, and one datagram from a spoofed source gets at most a
+      // session gap's worth of frames, never a stream.
       std::optional<sockaddr_in> to;
       if (opt.replyTo) to = toSockaddr(*opt.replyTo);
-      else if (snapshot && snapshot->sender) {
+      else if (snapshot && snapshot->sender &&
+               frameEnd - snapshot->state.received <=
+                   std::chrono::duration<double>(opt.config.host.session.sessionGapS)) {
         to = *snapshot->sender;
         to->sin_port = htons(opt.replyPort);
       }
@@ -278,10 +286,16 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
         s.timestamp = ticks10us(frameEnd - start);
         s.timestampValid = true;
         const protocol::cigi::Packet packets[] = {s};
-        if (protocol::cigi::encodeMessage(packets, protocol::ByteOrder::big, sof).empty() && udp.sendTo(sof, *to))
+        // In the host's CIGI version: a 4.0 host reads a 4.0 Start of Frame (its first packet
+        // tells a CIGI 4 message by its 16-bit size and id), a 3.x host a 3.3 one.
+        const bool cigi4 = snapshot && snapshot->state.cigiMajorVersion == 4;
+        const std::string error = cigi4 ? protocol::cigi::encodeMessage4(packets, protocol::ByteOrder::big, sof)
+                                        : protocol::cigi::encodeMessage(packets, protocol::ByteOrder::big, sof);
+        if (error.empty() && udp.sendTo(sof, *to))
           stats.startOfFrameSent.fetch_add(1, std::memory_order_relaxed);
       }
       if (dump) dump->write(frame, snapshot, built->state, pose);
+      systemd.frameDone(Clock::now());
       if (!opt.headless && display.closeRequested()) break;
     }
   }  // the threads are joined here

@@ -17,7 +17,7 @@ struct NodeOptions {
   NodeConfig config;
   Endpoint listen{"0.0.0.0", 8004};                 // host -> IG
   std::optional<std::string> multicastGroup;
-  std::optional<Endpoint> replyTo;                  // Start of Frame; default: the sender's address
+  std::optional<Endpoint> replyTo;                  // Start of Frame; default: the followed host's address
   std::uint16_t replyPort = 8005;                   //   ... on this port
   bool headless = true;
   std::uint64_t frames = 0;                         // stop after this many (0: until signalled)

@@ -113,6 +113,9 @@ void readSky(TableReader& r, skyig::sky::SkyConditions& sky, AtmosphereSettings&
   if (atmosphere.tables != "small" && atmosphere.tables != "medium" && atmosphere.tables != "default")
     r.fail(r.find("atmosphere_tables"), "atmosphere_tables", "expected " + std::string(kTables) + ", got \"" + atmosphere.tables + "\"");
   atmosphere.cacheDir = r.string("atmosphere_cache", atmosphere.cacheDir);
+  atmosphere.cacheMaxBytes = static_cast<std::uint64_t>(
+      r.integer("atmosphere_cache_max_mb", static_cast<int>(atmosphere.cacheMaxBytes >> 20), 0, 1 << 20)) << 20;
+  atmosphere.buildIntervalS = r.number("atmosphere_build_interval", atmosphere.buildIntervalS, 0.0, 86400.0);
   starCatalogue = r.string("star_catalogue", starCatalogue);
   r.rejectUnknownKeys();
 }
@@ -174,10 +177,38 @@ void readHost(TableReader& r, HostLink& h) {
     r.fail(r.find("multicast_group"), "multicast_group",
            "expected an IPv4 multicast address (224.0.0.0 to 239.255.255.255), got \"" + h.multicastGroup + "\"");
   h.replyPort = r.integer("reply_port", h.replyPort, 1, 65535);
+  h.replyTo = r.string("reply_to", h.replyTo, "\"ADDRESS:PORT\" or \"\"");
+  if (!h.replyTo.empty()) {
+    try {
+      parseEndpoint(h.replyTo);
+    } catch (const NetworkError& e) {
+      r.fail(r.find("reply_to"), "reply_to", e.what());
+    }
+  }
+  if (const toml::node* n = r.find("allowed")) {
+    const toml::array* list = n->as_array();
+    if (!list) r.fail(n, "allowed", "expected a list of IPv4 addresses or CIDR blocks, e.g. [\"10.0.0.0/8\"]");
+    if (list->empty())
+      r.fail(n, "allowed", "an empty list would ignore every host; [\"0.0.0.0/0\"] accepts any address");
+    h.session.allowed.clear();
+    for (const toml::node& item : *list) {
+      const std::optional<std::string> text = item.value<std::string>();
+      if (!text) r.fail(&item, "allowed", "expected a list of strings (\"A.B.C.D\" or \"A.B.C.D/N\")");
+      try {
+        h.session.allowed.push_back(parseAddressRange(*text));
+      } catch (const std::invalid_argument& e) {
+        r.fail(&item, "allowed", e.what());
+      }
+    }
+  }
+  h.session.sessionGapS = r.number("session_gap", h.session.sessionGapS, 0.05, 3600.0);
+  h.session.staleFrames =
+      static_cast<std::uint32_t>(r.integer("stale_frames", static_cast<int>(h.session.staleFrames), 0, 100000));
   h.synchronous = r.boolean("synchronous", h.synchronous);
   h.syncTimeoutS = r.number("sync_timeout", h.syncTimeoutS, 0.001, 10.0);
   h.frameRateHz = r.number("frame_rate", h.frameRateHz, 1.0, 1000.0);
   h.canInterface = r.string("can_interface", h.canInterface);
+  h.maxViews = r.integer("max_views", h.maxViews, 1, static_cast<int>(kViewTableCapacity));
   r.rejectUnknownKeys();
 }
 
@@ -211,14 +242,14 @@ sky::ChannelConfig readChannel(TableReader& r, size_t index, std::string& node) 
   c.frustum.downDeg = r.number("down", c.frustum.downDeg, 0.1, 89.0);
   c.frustum.upDeg = r.number("up", c.frustum.upDeg, 0.1, 89.0);
   c.monitor = r.string("monitor", c.monitor);
-  c.width = r.integer("width", c.width, 16, 16384);
-  c.height = r.integer("height", c.height, 16, 16384);
+  c.width = r.integer("width", c.width, sky::kMinChannelSide, sky::kMaxChannelSide);
+  c.height = r.integer("height", c.height, sky::kMinChannelSide, sky::kMaxChannelSide);
   if (const toml::table* t = subTable(r, "display")) {
     TableReader d(*t, r.prefix() + "display.", r.source());
     c.display.maxLuminance = d.number("max_luminance", c.display.maxLuminance, 1.0, 1e5);
     c.display.ambientLuminance = d.number("ambient_luminance", c.display.ambientLuminance, 0.0, 1e3);
     c.display.gamma = d.number("gamma", c.display.gamma, 1.0, 3.0);
-    const std::string tone = d.string("tone_operator", "tumblin_rushmeier", "\"histogram\" or \"tumblin_rushmeier\"");
+    const std::string tone = d.string("tone_operator", "histogram", "\"histogram\" or \"tumblin_rushmeier\"");
     if (tone == "histogram") c.display.toneOperator = sky::ToneOperator::Histogram;
     else if (tone == "tumblin_rushmeier") c.display.toneOperator = sky::ToneOperator::TumblinRushmeier;
     else d.fail(d.find("tone_operator"), "tone_operator", "expected \"histogram\" or \"tumblin_rushmeier\", got \"" + tone + "\"");
@@ -305,11 +336,17 @@ std::vector<sky::ChannelConfig> NodeConfig::channelsOf(const std::string& name) 
 }
 
 NodeConfig loadNodeConfig(const std::string& path) {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw ConfigError(path + ": cannot open the configuration file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseNodeConfig(text.str(), path);
+  // Read with a bound: /dev/zero, a FIFO that never ends or a huge file is refused, not read
+  // into memory (a configuration is a few kilobytes).
+  std::string text(kMaxConfigBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxConfigBytes)
+    throw ConfigError(path + ": the configuration file is larger than " + std::to_string(kMaxConfigBytes >> 20) +
+                      " MiB (is it a configuration?)");
+  return parseNodeConfig(text, path);
 }
 
 }  // namespace skyig::services

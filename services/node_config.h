@@ -3,6 +3,8 @@
 // `skyig render`, and the display channels. Every value has a default, so an empty file (or
 // none) is a valid configuration.
 #include "protocol/canaerospace/identifiers.h"
+#include "services/host_session.h"
+#include "services/host_state.h"
 #include "sky/channel.h"
 #include "sky/common/sky_conditions.h"
 #include "sky/atmosphere/conditions.h"
@@ -20,11 +22,15 @@ namespace skyig::services {
 struct HostLink {
   std::string listen = "0.0.0.0:8004";  // CIGI host -> IG
   std::string multicastGroup;           // empty: unicast
-  int replyPort = 8005;                 // Start of Frame goes back to the sender on this port
+  int replyPort = 8005;                 // Start of Frame goes back to the host's address on this port
+  std::string replyTo;                  // "ADDR:PORT": Start of Frame goes there instead; "" = the host's address
+  // Who may drive the node, how a restart and reordering are told apart (services/host_session.h).
+  HostSessionSettings session;
   bool synchronous = false;             // render frame N after the host's frame N
   double syncTimeoutS = 0.1;
   double frameRateHz = 60.0;            // headless pacing
   std::string canInterface;             // SocketCAN interface for a CANaerospace host; empty: none
+  int maxViews = static_cast<int>(kDefaultMaxViews);  // view ids 0..maxViews-1 kept (CIGI View Control)
 };
 
 // Tables of the physical sky (sky.model = "physical"): their size and cache ([sky]) and the
@@ -38,7 +44,12 @@ struct AtmosphereSettings {
   // The visibility (km, Koschmieder) the tables are computed for until the host says otherwise
   // ([atmosphere] visibility_km, `render --visibility`); unset: the medium's own aerosols.
   std::optional<double> visibilityKm;
-  std::string cacheDir;          // "" = $XDG_CACHE_HOME/skyig or ~/.cache/skyig
+  std::string cacheDir;          // "" = $CACHE_DIRECTORY (systemd), else $XDG_CACHE_HOME/skyig or ~/.cache/skyig
+  // The cache's size bound (least recently used tables evicted; 0: none) and at most one
+  // precompute for the host's conditions per buildIntervalS (0: no limit). A distinct
+  // visibility must also be held for the debounce time (services/host_atmosphere.h).
+  std::uint64_t cacheMaxBytes = 512ull << 20;
+  double buildIntervalS = 60.0;
 };
 
 // The default sky: the physical atmosphere (Bruneton & Neyret 2008, docs/atmosphere.md).
@@ -74,6 +85,10 @@ class ConfigError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The largest configuration file read (whatever the file: a FIFO or /dev/zero included).
+inline constexpr std::size_t kMaxConfigBytes = 1u << 20;
+
+// Throws ConfigError for a file that cannot be read, is larger than kMaxConfigBytes or is bad.
 NodeConfig loadNodeConfig(const std::string& path);
 NodeConfig parseNodeConfig(const std::string& text, const std::string& sourceName);
 

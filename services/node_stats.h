@@ -5,6 +5,7 @@
 #include "protocol/canaerospace/state_decoder.h"
 #include "protocol/cigi/decoder.h"
 #include "protocol/cigi/packets.h"
+#include "services/host_session.h"
 
 #include <nlohmann/json.hpp>
 
@@ -37,6 +38,15 @@ struct NodeStats {
   std::atomic<std::uint64_t> skippedPackets{0};
   std::atomic<std::uint64_t> rejectedValues{0};
   std::atomic<std::uint64_t> staleMessages{0};  // reordered: older than a host frame applied
+  // Host sessions (services/host_session.h): sessions started, by reason; datagrams from
+  // senders outside host.allowed, from another address while the host is alive, and messages
+  // that are no host's (an IG's Start of Frame); all dropped.
+  std::array<std::atomic<std::uint64_t>, kSessionReasonCount> sessions{};
+  std::atomic<std::uint64_t> notAllowedDatagrams{0};
+  std::atomic<std::uint64_t> otherHostDatagrams{0};
+  std::atomic<std::uint64_t> notHostMessages{0};
+  std::atomic<std::uint64_t> timestampJumps{0};  // IG Control timestamps that did not continue the host's clock
+  std::atomic<std::uint64_t> droppedViews{0};   // View Control/Definition for ids >= host.max_views
   std::atomic<std::uint64_t> recorded{0};       // datagrams written by serve --record
   std::atomic<std::uint64_t> recordErrors{0};
   std::array<std::atomic<std::uint64_t>, protocol::cigi::kPacketTypeCount> packets{};

@@ -12,18 +12,49 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kA = 6378137.0;              // WGS84 semi-major axis, m
 constexpr double kE2 = 6.69437999014e-3;      // WGS84 first eccentricity squared
 
-// Advances a geodetic position by a north-east-down displacement (m), with the WGS84
-// meridian and prime-vertical radii of curvature at the start point (exact to first order,
-// i.e. well under a millimetre for a frame's motion).
-void moveNed(sky::Ownship& o, double north, double east, double down) {
-  const double s = std::sin(o.latitudeDeg * kDeg);
+// The WGS84 meridian and prime-vertical radii of curvature (m) at a latitude and height.
+void radii(double latitudeDeg, double heightM, double& meridian, double& primeVertical) {
+  const double s = std::sin(latitudeDeg * kDeg);
   const double w = std::sqrt(1.0 - kE2 * s * s);
-  const double meridian = kA * (1.0 - kE2) / (w * w * w) + o.heightM;
-  const double primeVertical = kA / w + o.heightM;
+  meridian = kA * (1.0 - kE2) / (w * w * w) + heightM;
+  primeVertical = kA / w + heightM;
+}
+
+// Advances a geodetic position by a north-east-down displacement (m), with the radii of
+// curvature at the start point (exact to first order, i.e. well under a millimetre for a
+// frame's motion).
+void moveNed(sky::Ownship& o, double north, double east, double down) {
+  double meridian = 0.0, primeVertical = 0.0;
+  radii(o.latitudeDeg, o.heightM, meridian, primeVertical);
   o.latitudeDeg += north / meridian / kDeg;
   o.longitudeDeg += east / (primeVertical * std::max(std::cos(o.latitudeDeg * kDeg), 1e-6)) / kDeg;
   o.heightM -= down;
 }
+
+// Back into the ranges of a pose. Past a pole the path goes on down the far meridian, heading
+// the other way; past vertical the nose comes over the top (pitch 95 is pitch 85 facing back,
+// upside down).
+void normalise(sky::Ownship& o) {
+  if (o.latitudeDeg > 90.0 || o.latitudeDeg < -90.0) {
+    o.latitudeDeg = std::copysign(180.0, o.latitudeDeg) - o.latitudeDeg;
+    o.longitudeDeg += 180.0;
+    o.attitude.yawDeg += 180.0;
+  }
+  o.latitudeDeg = std::clamp(o.latitudeDeg, -90.0, 90.0);  // a step of more than 180 degrees cannot happen
+  o.attitude.pitchDeg = wrap180(o.attitude.pitchDeg);
+  if (o.attitude.pitchDeg > 90.0 || o.attitude.pitchDeg < -90.0) {
+    o.attitude.pitchDeg = std::copysign(180.0, o.attitude.pitchDeg) - o.attitude.pitchDeg;
+    o.attitude.yawDeg += 180.0;
+    o.attitude.rollDeg += 180.0;
+  }
+  o.longitudeDeg = wrap180(o.longitudeDeg);
+  o.attitude.yawDeg = std::fmod(o.attitude.yawDeg, 360.0);
+  if (o.attitude.yawDeg < 0.0) o.attitude.yawDeg += 360.0;
+  if (o.attitude.yawDeg >= 360.0) o.attitude.yawDeg = 0.0;  // fmod(-1e-17) + 360
+  o.attitude.rollDeg = wrap180(o.attitude.rollDeg);
+}
+
+double bounded(double v, double limit) { return std::clamp(v, -limit, limit); }
 
 }  // namespace
 
@@ -34,48 +65,85 @@ double wrap180(double deg) {
   return deg;
 }
 
-void OwnshipPredictor::addSample(const sky::Ownship& ownship, Clock::time_point time, const OwnshipRates& rates) {
-  if (count_ > 0 && time <= lastTime_) return;
-  previous_ = last_;
-  previousTime_ = lastTime_;
-  last_ = ownship;
-  lastTime_ = time;
-  rates_ = rates;
-  count_ = std::min(count_ + 1, 2);
+void OwnshipPredictor::addSample(const sky::Ownship& ownship, Clock::time_point arrival, const OwnshipRates& rates,
+                                 std::optional<HostTime> hostTime) {
+  const Sample& last = samples_[static_cast<std::size_t>(newest_)];
+  if (count_ > 0 && (arrival < last.arrival || (arrival == last.arrival && !hostTime))) return;
+  if (count_ > 0 && hostTime && last.hostTime && hostTime->seconds <= last.hostTime->seconds) return;
+  newest_ = (newest_ + 1) % kHistory;
+  samples_[static_cast<std::size_t>(newest_)] = {ownship, arrival, hostTime};
+  count_ = std::min(count_ + 1, kHistory);
+  moving_ = false;
+  if (rates.valid) {
+    // Rate Control: the host's own velocities, body axes turned into north-east-down by the
+    // attitude when it sends them so.
+    const sky::Attitude& a = ownship.attitude;
+    double n = rates.x, e = rates.y, d = rates.z;
+    if (rates.bodyAxes) {
+      const double cy = std::cos(a.yawDeg * kDeg), sy = std::sin(a.yawDeg * kDeg);
+      const double cp = std::cos(a.pitchDeg * kDeg), sp = std::sin(a.pitchDeg * kDeg);
+      const double cr = std::cos(a.rollDeg * kDeg), sr = std::sin(a.rollDeg * kDeg);
+      n = cy * cp * rates.x + (cy * sp * sr - sy * cr) * rates.y + (cy * sp * cr + sy * sr) * rates.z;
+      e = sy * cp * rates.x + (sy * sp * sr + cy * cr) * rates.y + (sy * sp * cr - cy * sr) * rates.z;
+      d = -sp * rates.x + cp * sr * rates.y + cp * cr * rates.z;
+    }
+    motion_ = {n, e, d, rates.yawRate, rates.pitchRate, rates.rollRate};
+    moving_ = true;
+  } else {
+    estimate();
+  }
+  if (!moving_) return;
+  const double ground = std::hypot(motion_.north, motion_.east);
+  if (ground > kMaxGroundSpeedMps) {
+    motion_.north *= kMaxGroundSpeedMps / ground;
+    motion_.east *= kMaxGroundSpeedMps / ground;
+  }
+  motion_.down = bounded(motion_.down, kMaxVerticalSpeedMps);
+  motion_.yaw = bounded(motion_.yaw, kMaxYawRateDegps);
+  motion_.pitch = bounded(motion_.pitch, kMaxPitchRateDegps);
+  motion_.roll = bounded(motion_.roll, kMaxRollRateDegps);
+}
+
+// The velocity between the newest sample and the newest earlier one far enough back in time:
+// on the host's clock when both carry it, else on the arrival clock.
+void OwnshipPredictor::estimate() {
+  const Sample& b = samples_[static_cast<std::size_t>(newest_)];
+  for (int back = 1; back < count_; ++back) {
+    const Sample& a = samples_[static_cast<std::size_t>((newest_ - back + kHistory) % kHistory)];
+    // On the host's clock, in local seconds (the newest rate: one rate for both ends).
+    const bool hostClock = a.hostTime && b.hostTime;
+    const double span = hostClock ? (b.hostTime->seconds - a.hostTime->seconds) / b.hostTime->rate
+                                  : std::chrono::duration<double>(b.arrival - a.arrival).count();
+    if (span > kMaxSpanS) return;  // further back is older still
+    if (span < (hostClock ? kMinHostSpanS : kMinArrivalSpanS)) continue;
+    double meridian = 0.0, primeVertical = 0.0;
+    radii(a.ownship.latitudeDeg, a.ownship.heightM, meridian, primeVertical);
+    const sky::Ownship& p = a.ownship;
+    const sky::Ownship& q = b.ownship;
+    motion_.north = (q.latitudeDeg - p.latitudeDeg) * kDeg * meridian / span;
+    motion_.east =
+        wrap180(q.longitudeDeg - p.longitudeDeg) * kDeg * primeVertical * std::cos(p.latitudeDeg * kDeg) / span;
+    motion_.down = -(q.heightM - p.heightM) / span;
+    motion_.yaw = wrap180(q.attitude.yawDeg - p.attitude.yawDeg) / span;
+    motion_.pitch = (q.attitude.pitchDeg - p.attitude.pitchDeg) / span;
+    motion_.roll = wrap180(q.attitude.rollDeg - p.attitude.rollDeg) / span;
+    moving_ = true;
+    return;
+  }
 }
 
 sky::Ownship OwnshipPredictor::at(Clock::time_point t) const {
   if (count_ == 0) return {};
-  const double dt = std::clamp(std::chrono::duration<double>(t - lastTime_).count(), 0.0, maxAheadS_);
-  sky::Ownship o = last_;
-  if (dt == 0.0) return o;
-  if (rates_.valid) {
-    double n = rates_.x, e = rates_.y, d = rates_.z;
-    if (rates_.bodyAxes) {  // body (x forward, y right, z down) to NED by the attitude
-      const double cy = std::cos(o.attitude.yawDeg * kDeg), sy = std::sin(o.attitude.yawDeg * kDeg);
-      const double cp = std::cos(o.attitude.pitchDeg * kDeg), sp = std::sin(o.attitude.pitchDeg * kDeg);
-      const double cr = std::cos(o.attitude.rollDeg * kDeg), sr = std::sin(o.attitude.rollDeg * kDeg);
-      n = cy * cp * rates_.x + (cy * sp * sr - sy * cr) * rates_.y + (cy * sp * cr + sy * sr) * rates_.z;
-      e = sy * cp * rates_.x + (sy * sp * sr + cy * cr) * rates_.y + (sy * sp * cr - cy * sr) * rates_.z;
-      d = -sp * rates_.x + cp * sr * rates_.y + cp * cr * rates_.z;
-    }
-    moveNed(o, n * dt, e * dt, d * dt);
-    o.attitude.yawDeg += rates_.yawRate * dt;
-    o.attitude.pitchDeg = std::clamp(o.attitude.pitchDeg + rates_.pitchRate * dt, -90.0, 90.0);
-    o.attitude.rollDeg += rates_.rollRate * dt;
-  } else if (count_ == 2) {
-    const double span = std::chrono::duration<double>(lastTime_ - previousTime_).count();
-    if (span <= 0.0 || span > 1.0) return o;  // samples too far apart to say how it moves
-    const double k = dt / span;
-    o.latitudeDeg += (last_.latitudeDeg - previous_.latitudeDeg) * k;
-    o.longitudeDeg += wrap180(last_.longitudeDeg - previous_.longitudeDeg) * k;
-    o.heightM += (last_.heightM - previous_.heightM) * k;
-    o.attitude.yawDeg += wrap180(last_.attitude.yawDeg - previous_.attitude.yawDeg) * k;
-    o.attitude.pitchDeg = std::clamp(o.attitude.pitchDeg + (last_.attitude.pitchDeg - previous_.attitude.pitchDeg) * k, -90.0, 90.0);
-    o.attitude.rollDeg += wrap180(last_.attitude.rollDeg - previous_.attitude.rollDeg) * k;
+  const Sample& last = samples_[static_cast<std::size_t>(newest_)];
+  sky::Ownship o = last.ownship;
+  const double dt = std::clamp(std::chrono::duration<double>(t - last.arrival).count(), 0.0, maxAheadS_);
+  if (moving_ && dt > 0.0) {
+    moveNed(o, motion_.north * dt, motion_.east * dt, motion_.down * dt);
+    o.attitude.yawDeg += motion_.yaw * dt;
+    o.attitude.pitchDeg += motion_.pitch * dt;
+    o.attitude.rollDeg += motion_.roll * dt;
   }
-  o.attitude.yawDeg = std::fmod(o.attitude.yawDeg + 360.0, 360.0);
-  o.attitude.rollDeg = wrap180(o.attitude.rollDeg);
+  normalise(o);
   return o;
 }
 

@@ -45,7 +45,14 @@ bool RecordingSource::next(HostEvent& out) {
     if (status == pcap::CaptureReader::Status::end) return false;
     if (status == pcap::CaptureReader::Status::error) throw RecordingError(path_ + ": " + capture_->error().message);
     pcap::UdpDatagram d;
-    if (pcap::parseUdpFrame(record_.linkType, record_.data, d) != pcap::FrameError::none) {
+    const pcap::FrameError frameError = pcap::parseUdpFrame(record_.linkType, record_.data, d);
+    // One link type for the whole classic file: not one record of it could be read. (A pcapng
+    // file may hold other interfaces beside the host's: their records are passed over.)
+    if (frameError == pcap::FrameError::unsupportedLinkType && format_ == protocol::RecordingFormat::pcap)
+      throw RecordingError(path_ + ": pcap link type " + std::to_string(record_.linkType) +
+                           " is not supported: skyig reads NULL (0), ETHERNET (1), RAW (101), LINUX_SLL (113), "
+                           "IPV4 (228) and LINUX_SLL2 (276) captures");
+    if (frameError != pcap::FrameError::none) {
       ++nonUdp_;  // ARP, TCP and the like in a Wireshark capture: not the host's
       continue;
     }

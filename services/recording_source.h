@@ -37,12 +37,15 @@ class RecordingSource {
   // Opens and identifies the file; throws RecordingError when it is not a recording.
   RecordingSource(const std::string& path, bool skipBad);
   // The next event, or false at the end. Throws RecordingError at a bad record unless
-  // skipBad, in which case bad records are counted and passed over.
+  // skipBad, in which case bad records are counted and passed over, and for a classic pcap
+  // file of a link type skyig cannot parse (whatever skipBad: nothing in it could be read).
   bool next(HostEvent& out);
   protocol::RecordingFormat format() const { return format_; }
   std::uint64_t skipped() const;
   std::vector<std::string> skippedMessages() const;
   std::uint64_t nonUdpFrames() const { return nonUdp_; }
+  // False for a FIFO or a pipe: read once, front to back (no first pass for the progress).
+  bool seekable() const { return file_.seekable(); }
 
  private:
   std::string path_;

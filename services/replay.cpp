@@ -7,8 +7,10 @@
 #include "services/cigi_receiver.h"
 #include "services/recording_source.h"
 #include "services/frame_files.h"
+#include "services/frame_metadata.h"
 #include "services/sky_worker.h"
 #include "services/state_dump.h"
+#include "services/warning_throttle.h"
 #include "services/atmosphere_loader.h"
 
 #include <glad/gl.h>
@@ -109,21 +111,30 @@ class Feeder {
   Feeder(const ReplayOptions& o, RecordingSource& source, atmosphere::AtmosphereUpdater* updater)
       : options_(o),
         source_(source),
-        cigi_(stats_, latest_),
+        cigi_(stats_, latest_, o.config.host.session),
         can_(-1, o.config.canIdentifiers, stats_, latest_),
         worker_(o.config, updater, stats_),
         channels_(o.config.channelsOf(o.config.nodeName)) {
+    cigi_.setMaxViews(static_cast<std::size_t>(o.config.host.maxViews));
     haveEvent_ = source_.next(event_);
     firstNs_ = haveEvent_ ? event_.timeNs : 0;
   }
   bool exhausted() const { return !haveEvent_; }
   std::int64_t firstNs() const { return firstNs_; }
   std::uint64_t events() const { return events_; }
+  std::uint64_t gaps() const { return gaps_; }
+  double gapSeconds() const { return gapSeconds_; }
+
+  // Frame k's instant on the recording's clock: k frame periods after the first record, plus
+  // the pauses skipped before it.
+  std::int64_t frameTimeNs(std::uint64_t number) const {
+    return firstNs_ + skippedNs_ + static_cast<std::int64_t>(std::llround(static_cast<double>(number) * 1e9 / options_.frameRateHz));
+  }
 
   Frame prepare(std::uint64_t number) {
     Frame f;
     f.number = number;
-    f.timeNs = firstNs_ + static_cast<std::int64_t>(std::llround(static_cast<double>(number) * 1e9 / options_.frameRateHz));
+    f.timeNs = frameTimeNs(number);
     while (haveEvent_ && event_.timeNs <= f.timeNs) {
       if (event_.kind == HostEvent::Kind::canFrame) {
         can_.handle(event_.frame, at(event_.timeNs));
@@ -131,7 +142,20 @@ class Feeder {
         cigi_.handle(event_.payload, event_.from, at(event_.timeNs));
       }
       ++events_;
+      lastRecord_ = event_.record;
       haveEvent_ = source_.next(event_);
+    }
+    // A pause longer than --max-gap (a paused host, a corrupt timestamp far ahead): the next
+    // frame is the next record's instant, not one of the 1/frame-rate steps through the pause.
+    const auto maxGapNs = static_cast<std::int64_t>(options_.maxGapS * 1e9);
+    if (haveEvent_ && options_.maxGapS > 0.0 && event_.timeNs - f.timeNs > maxGapNs) {
+      const std::int64_t skip = event_.timeNs - frameTimeNs(number + 1);
+      skippedNs_ += skip;
+      ++gaps_;
+      gapSeconds_ += static_cast<double>(skip) * 1e-9;
+      spdlog::warn("replay: skipped {:.3f} s without records after record {} (longer than --max-gap {} s); frame {} "
+                   "shows record {}",
+                   static_cast<double>(skip) * 1e-9, lastRecord_, options_.maxGapS, number + 1, event_.record);
     }
     f.host = latest_.get();
     const Clock::time_point t = at(f.timeNs);
@@ -158,6 +182,10 @@ class Feeder {
   bool haveEvent_ = false;
   std::int64_t firstNs_ = 0;
   std::uint64_t events_ = 0;
+  std::int64_t skippedNs_ = 0;
+  std::uint64_t gaps_ = 0;
+  double gapSeconds_ = 0.0;
+  std::uint64_t lastRecord_ = 0;
   SkyWorker worker_;
   const std::vector<sky::ChannelConfig> channels_;  // the node's: view n of the host is the n-th
 };
@@ -236,9 +264,10 @@ ReplayResult replay(const ReplayOptions& o) {
 
   if (!o.dumpStatePath.empty()) render::checkWritable(o.dumpStatePath);
   RecordingSource source(o.recording, o.skipBad);
-  // The last record's time, for the progress bar: a first pass over the file (cheap).
+  // The last record's time, for the progress bar: a first pass over the file (cheap); none
+  // over a stream (a FIFO), which can be read only once.
   std::int64_t lastNs = 0, firstNs = 0;
-  {
+  if (source.seekable()) {
     RecordingSource scan(o.recording, true);
     HostEvent e;
     bool first = true;
@@ -247,7 +276,8 @@ ReplayResult replay(const ReplayOptions& o) {
       lastNs = std::max(lastNs, e.timeNs);
     }
   }
-  const std::unique_ptr<atmosphere::AtmosphereUpdater> updater = makeAtmosphereUpdater(o.config, o.stop);
+  const std::unique_ptr<atmosphere::AtmosphereUpdater> updater =
+      makeAtmosphereUpdater(o.config, /*rateLimited=*/false, o.stop);
   Feeder feeder(o, source, updater.get());
   const auto context = render::createHeadlessContext();
   render::SkyRenderer renderer;
@@ -259,6 +289,7 @@ ReplayResult replay(const ReplayOptions& o) {
   const auto wallStart = std::chrono::steady_clock::now();
   std::optional<sky::SkyState> lastSky;
   FramePose lastPose;
+  WarningThrottle badState;
 
   std::future<Frame> next = std::async(std::launch::async, [&] { return feeder.prepare(0); });
   for (std::uint64_t k = 0;; ++k) {
@@ -268,7 +299,10 @@ ReplayResult replay(const ReplayOptions& o) {
     if (!last) next = std::async(std::launch::async, [&feeder, k] { return feeder.prepare(k + 1); });
     if (frame.sky) lastSky = frame.sky;
     lastPose = frame.pose;
-    if (!frame.error.empty()) spdlog::warn("frame {}: host state not usable, keeping the last sky: {}", k, frame.error);
+    // Throttled on the recording's clock: a replay's log reads as the node's would have.
+    if (std::uint64_t heldBack = 0; !frame.error.empty() && badState.allow(at(frame.timeNs), &heldBack))
+      spdlog::warn("frame {}: host state not usable, keeping the last sky: {}{}", k, frame.error,
+                   heldBack ? fmt::format(" ({} more since the last warning)", heldBack) : "");
     ++result.frames;
     const bool afterFrom = (!from.frame || k >= *from.frame) && (!from.utc || !lastSky || !before(lastSky->observer.utc, *from.utc));
     const bool pastTo = (to.frame && k > *to.frame) || (to.utc && lastSky && before(*to.utc, lastSky->observer.utc));
@@ -286,12 +320,11 @@ ReplayResult replay(const ReplayOptions& o) {
         renderer.draw(*lastSky, lastPose.attitude, c);
         if (!write) continue;
         const std::string stem = frameStem(o.outDir, k, lastSky->observer.utc, written > 1 ? c.name : "");
-        result.imagesWritten += static_cast<std::uint64_t>(writeFrameFiles(
-            renderer, stem, c, o.writeExr, o.writePng,
-            {{"skyig:utc", ephemeris::formatIso8601Utc(lastSky->observer.utc)},
-             {"skyig:channel", c.name},
-             {"skyig:frame", std::to_string(k)},
-             {"skyig:recording", std::filesystem::path(o.recording).filename().string()}}));
+        render::ImageAttributes attributes = frameAttributes(*lastSky, lastPose.attitude, c);
+        attributes["skyig:frame"] = static_cast<double>(k);  // an integer, exact to 2^53
+        attributes["skyig:recording"] = std::filesystem::path(o.recording).filename().string();
+        result.imagesWritten +=
+            static_cast<std::uint64_t>(writeFrameFiles(renderer, stem, c, o.writeExr, o.writePng, attributes));
       }
       glFinish();  // the frame is done when its pixels are, written or not
       if (dump) dump->write(k, frame.host.get(), *lastSky, lastPose);
@@ -302,6 +335,8 @@ ReplayResult replay(const ReplayOptions& o) {
   }
   progress.update(result.stopped ? shown : 1.0, result.frames, true);
   result.events = feeder.events();
+  result.skippedGaps = feeder.gaps();
+  result.skippedGapSeconds = feeder.gapSeconds();
   result.skippedRecords = source.skipped();
   for (const auto& m : source.skippedMessages()) spdlog::warn("skipped: {}", m);
   result.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();

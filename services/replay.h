@@ -29,6 +29,9 @@ struct ReplayOptions {
   std::optional<Endpoint> sendTo;   // re-transmit to a live IG instead of rendering
   bool skipBad = false;
   int port = 0;                     // only datagrams to this UDP port (0: all)
+  // A pause between two records longer than this (a host paused, a corrupt timestamp) is
+  // skipped: the next frame shows the next record, instead of 1/frame rate steps through it.
+  double maxGapS = 60.0;
   bool progress = true;
   // Set (by a signal) to end the replay after the frame in hand: what was written stays, the
   // result says how far it got. Also ends a wait for tables.
@@ -40,6 +43,8 @@ struct ReplayResult {
   std::uint64_t frames = 0;           // frames computed
   std::uint64_t imagesWritten = 0;
   std::uint64_t skippedRecords = 0;   // bad records passed over (--skip-bad)
+  std::uint64_t skippedGaps = 0;      // pauses longer than maxGapS not rendered
+  double skippedGapSeconds = 0.0;
   double wallSeconds = 0.0;
   bool stopped = false;  // ended early by ReplayOptions::stop
 };

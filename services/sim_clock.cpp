@@ -1,22 +1,26 @@
 #include "services/sim_clock.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace skyig::services {
 
-void SimClock::observe(const ephemeris::UtcTime& stated, double continuousS) {
+void SimClock::observe(const ephemeris::UtcTime& stated, double continuousS, double resolutionS) {
   const double statedDay = ephemeris::julianDayAt0h(stated.year, stated.month, stated.day);
-  const double minute = std::floor(stated.secondsOfDay / 60.0) * 60.0;
+  // The start of the window the host's statement allows: the minute for CIGI 3.3, the stated
+  // instant itself when the host states seconds.
+  const double windowStart = resolutionS >= 60.0 ? std::floor(stated.secondsOfDay / 60.0) * 60.0 : stated.secondsOfDay;
   if (!valid_) {
-    // First statement: assume the start of the minute; the first rollover will correct it.
+    // First statement: assume the start of the window; for a minute, the first rollover will
+    // correct it.
     valid_ = true;
     dayStartJd_ = statedDay;
     anchorS_ = continuousS;
-    offsetS_ = minute;
+    offsetS_ = windowStart;
     return;
   }
   // The window the host allows, in seconds since our day start, and what the clock shows.
-  const double lo = (statedDay - dayStartJd_) * 86400.0 + minute, hi = lo + 60.0;
+  const double lo = (statedDay - dayStartJd_) * 86400.0 + windowStart, hi = lo + resolutionS;
   const double shown = (continuousS - anchorS_) * speed_ + offsetS_;
   if (shown < lo - 90.0 || shown > hi + 90.0) {  // a new scenario time: start again from it
     anchorS_ = continuousS;
@@ -24,7 +28,7 @@ void SimClock::observe(const ephemeris::UtcTime& stated, double continuousS) {
   } else if (shown < lo) {
     offsetS_ += lo - shown;  // the host's minute began later than we thought
   } else if (shown >= hi) {
-    offsetS_ -= shown - (hi - 1e-3);  // we ran ahead of the host's minute
+    offsetS_ -= shown - (hi - std::min(1e-3, resolutionS / 2));  // we ran ahead of the host's window
   }
 }
 

@@ -13,8 +13,11 @@ namespace skyig::services {
 
 class SimClock {
  public:
-  // Host's stated date and minute of day, and the continuous time (s) it was stated at.
-  void observe(const ephemeris::UtcTime& dateAndMinute, double continuousS);
+  // Host's stated date and time of day, the continuous time (s) it was stated at, and how
+  // finely the host states it: CIGI 3.3 gives the minute (60 s: the clock may run anywhere
+  // inside it), CIGI 4.0 adds a float seconds field (a small window: the clock is pinned to
+  // the stated instant and only corrected when it drifts out of the window).
+  void observe(const ephemeris::UtcTime& stated, double continuousS, double resolutionS = 60.0);
   // UTC at a continuous time; nullopt before the first observation.
   std::optional<ephemeris::UtcTime> at(double continuousS) const;
   void setSpeed(double simSecondsPerSecond) { speed_ = simSecondsPerSecond; }

@@ -1,9 +1,11 @@
 #include "services/sky_data.h"
 
 #include "ephemeris/data_files.h"
+#include "ephemeris/time_scales.h"
 #include "services/atmosphere_loader.h"
 
 #include <exception>
+#include <stdexcept>
 
 namespace skyig::services {
 
@@ -13,6 +15,13 @@ std::string starCataloguePath(const std::string& configured) {
 
 std::shared_ptr<const sky::night::StarCatalogue> loadConfiguredStarCatalogue(const std::string& configured,
                                                                               const ephemeris::UtcTime& epoch) {
+  // The catalogue's proper motion needs the epoch on the ephemeris' time scales: a year
+  // outside their range is the observer's time at fault, not the catalogue.
+  try {
+    (void)ephemeris::timeScales(epoch);
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError("the observer's time (observer.utc or --utc): " + std::string(e.what()));
+  }
   if (configured == "none") return nullptr;
   try {
     const std::string path = configured.empty() ? ephemeris::requireDataFile("bsc5.csv") : configured;

@@ -112,9 +112,11 @@ FramePose SkyWorker::poseAt(const HostSnapshot* host, Clock::time_point t,
   FramePose pose{observerAt(host, t).attitude, channels};
   if (!host) return pose;
   // CIGI View Control and View Definition: view n is the node's n-th channel.
-  for (const ViewOverride& v : host->state.views) {
-    if (v.viewId >= pose.channels.size()) continue;
-    sky::ChannelConfig& c = pose.channels[v.viewId];
+  for (std::size_t id = 0; id < pose.channels.size(); ++id) {
+    const ViewOverride* found = host->state.views.find(id);
+    if (!found) continue;
+    const ViewOverride& v = *found;
+    sky::ChannelConfig& c = pose.channels[id];
     if (v.yawDeg) c.offset.yawDeg = *v.yawDeg;
     if (v.pitchDeg) c.offset.pitchDeg = *v.pitchDeg;
     if (v.rollDeg) c.offset.rollDeg = *v.rollDeg;

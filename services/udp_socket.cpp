@@ -63,15 +63,24 @@ Endpoint fromSockaddr(const sockaddr_in& a) {
 UdpSocket::UdpSocket(const Endpoint& local, const std::optional<std::string>& multicastGroup) {
   fd_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
   if (fd_ < 0) fail("socket(AF_INET, SOCK_DGRAM)");
-  const int one = 1;
-  ::setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);  // several nodes on one host
+  if (multicastGroup) {
+    // The nodes of a dome on one machine share the group's port. A unicast port is never
+    // shared: with SO_REUSEADDR a second process could bind it and silently take the stream.
+    const int one = 1;
+    ::setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
+  }
   const int buffer = 4 << 20;  // absorb bursts while a frame renders
   ::setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &buffer, sizeof buffer);
   const sockaddr_in a = toSockaddr(local);
   if (::bind(fd_, reinterpret_cast<const sockaddr*>(&a), sizeof a) != 0) {
-    const std::string what = "bind " + local.toString();
+    const int error = errno;
     ::close(fd_);
-    fail(what);
+    if (error == EADDRINUSE)
+      throw NetworkError("bind " + local.toString() +
+                         ": the port is in use by another process (another skyig serve or record?); " +
+                         "stop it or choose another --listen");
+    errno = error;
+    fail("bind " + local.toString());
   }
   if (multicastGroup) {
     ip_mreq m{};

@@ -13,4 +13,5 @@
 #include "tone/scotopic.glsl"
 #include "tone/threshold.glsl"
 #include "tone/tone_reproduction.glsl"
+#include "tone/glare.glsl"
 #include "common/glsl_cpp_end.h"

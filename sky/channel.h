@@ -16,7 +16,7 @@ enum class ToneOperator {
 // Wang, Ji & Zhang 2011, eq. 17 (after Tumblin & Rushmeier 1993): L_d = L_amb + L_dmax n^gamma,
 // and the viewer's adaptation to the display.
 struct DisplayParams {
-  ToneOperator toneOperator = ToneOperator::TumblinRushmeier;
+  ToneOperator toneOperator = ToneOperator::Histogram;
   double maxLuminance = 100.0;        // L_dmax, cd/m^2
   double ambientLuminance = 0.1;      // L_amb, cd/m^2
   double gamma = 2.2;
@@ -26,6 +26,12 @@ struct DisplayParams {
   double adaptationLuminance = 10.0;
   bool operator==(const DisplayParams&) const = default;
 };
+
+// The channel sizes skyig renders, per side. GL 4.5 guarantees 16384-texel textures, but one
+// 16384 x 16384 float RGBA target alone is 4 GiB (the sky pass keeps several): refused when the
+// size is given (exit 2), not when the render target cannot be made (exit 3).
+inline constexpr int kMinChannelSide = 16;
+inline constexpr int kMaxChannelSide = 8192;
 
 struct ChannelConfig {
   std::string name = "front";

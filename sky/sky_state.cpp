@@ -9,6 +9,7 @@
 #include "sky/night/moon_light.h"
 #include "sky/night/night_diffuse.h"
 #include "sky/atmosphere/physical_camera.h"
+#include "physics.h"  // SUN_ANGULAR_RADIUS
 
 #include <algorithm>
 #include <cmath>
@@ -82,6 +83,37 @@ std::shared_ptr<const night::StarField> starFieldOf(const SkyState& s) {
 }
 
 
+// The sun's illuminance at the eye after the atmosphere (the model's direct irradiance at normal
+// incidence, or the analytic sky's disc radiance times its solid angle) and the moon's (its
+// irradiance above the atmosphere times the transmittance along its apparent direction).
+eye::GlareSources glareSources(const SkyState& s) {
+  eye::GlareSources g{};
+  eye::GlareSource& sun = g[0];
+  sun.direction = enuDirection(s.sunAzimuth, s.sunApparentAltitude);
+  if (s.conditions.model == SkyModel::Physical && s.conditions.atmosphere) {
+    const atmosphere::AtmosphereModel& model = *s.conditions.atmosphere;
+    const glm::dvec3 airless = enuDirection(s.sunAzimuth, s.sunAltitude);
+    const glm::dvec3 camera = atmosphere::physicalCamera(model, s.observer.heightM);
+    sun.angularRadiusRad = model.parameters(0).sun_angular_radius;
+    sun.rec709Lux = glm::max(model.converter().toRec709(model.sunIrradiance(camera, airless, airless)), glm::dvec3(0.0));
+  } else if (s.conditions.model != SkyModel::Physical) {
+    sun.angularRadiusRad = std::acos(std::clamp(s.sky.params.cosSunRadius, -1.0, 1.0));
+    // The analytic models keep the disc's radiance below the horizon; the earth hides it.
+    if (s.sunApparentAltitude > -sun.angularRadiusRad)
+      sun.rec709Lux = s.sky.params.sunRadiance * (2.0 * std::numbers::pi * (1.0 - s.sky.params.cosSunRadius));
+  }
+  if (s.moonDisc) {
+    const night::MoonDisc& m = *s.moonDisc;
+    eye::GlareSource& moon = g[1];
+    moon.direction = m.centreSeen;
+    moon.angularRadiusRad = m.angularRadiusRad;
+    const glm::dvec3 t = m.extinction ? glm::max(m.extinction->rec709(std::asin(std::clamp(m.centreSeen.z, -1.0, 1.0))), glm::dvec3(0.0))
+                                      : glm::dvec3(m.centreSeen.z > 0.0 ? 1.0 : 0.0);
+    moon.rec709Lux = m.irradianceRec709 * t;
+  }
+  return g;
+}
+
 }  // namespace
 
 std::shared_ptr<const atmosphere::ExtinctionProfile> SkyStateCaches::extinction(const atmosphere::Medium& medium,
@@ -143,7 +175,10 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
             "sun altitude " + num(sun->altitudeDeg) + " deg is outside [-90, 90]");
     s.sunAzimuth = sun->azimuthDeg * kDeg;
     s.sunAltitude = sun->altitudeDeg * kDeg;
-    s.sunApparentAltitude = s.sunAltitude;
+    // The override places the true sun, as the ephemeris does: the disc is seen lifted by the
+    // refraction of the observer's air.
+    s.sunApparentAltitude =
+        s.sunAltitude + ephemeris::refractionSaemundsson(s.sunAltitude, observer.pressureHpa, observer.temperatureC);
   } else {
     const ephemeris::Observer where = ephemerisObserver(observer);
     s.ephemeris = caches ? caches->ephemeris.compute(observer.utc, where) : ephemeris::computeEphemeris(observer.utc, where);
@@ -155,16 +190,25 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
     s.moonDirection = enuDirection(s.ephemeris->moon.azimuthRad, s.ephemeris->moon.altitudeRad);
     s.moonlightScale = night::moonlightScale(*s.ephemeris);
   }
+  const ephemeris::RefractionExpansion r = ephemeris::refractionExpansion(
+      s.sunApparentAltitude, s.sunAltitude, shader::SUN_ANGULAR_RADIUS, observer.pressureHpa, observer.temperatureC);
+  s.sunRefraction = {r.centreRad, r.refraction, r.slope, r.halfCurvature};
   if (s.conditions.model == SkyModel::Physical)
     require(s.conditions.atmosphere != nullptr, "the physical sky model needs its precomputed atmosphere");
   const atmosphere::Medium medium = s.conditions.atmosphere ? s.conditions.atmosphere->config().medium : atmosphere::Medium{};
   SkyStateCaches own;
   s.extinction = (caches ? *caches : own).extinction(medium, observer.heightM);
   s.starField = starFieldOf(s);
-  if (s.ephemeris)
+  if (s.ephemeris) {
     s.moonDisc = std::make_shared<const night::MoonDisc>(night::makeMoonDisc(night::moonPlacement(*s.ephemeris), s.extinction));
+    const double albedo = s.conditions.atmosphere ? medium.groundAlbedo : s.conditions.groundAlbedo;
+    const glm::dvec3 e = night::nightDiffuseIlluminance(*s.ephemeris, s.extinction) +
+                         (s.starField ? night::horizontalIlluminance(*s.starField) : glm::dvec3(0.0));
+    s.nightGroundRadiance = albedo / std::numbers::pi * e;
+  }
   if (s.conditions.model != SkyModel::Physical)
     s.sky = makeAnalyticSky(s.conditions, s.sunAzimuth, s.sunAltitude, s.sunApparentAltitude);
+  s.glare = glareSources(s);
   // The eye adapts to what it sees over the whole view sphere: sky and terrain, sunlit and
   // moonlit, with the night's own light (sky/view_sphere.h); its log-mean is the scene's level.
   const ViewSphere sphere = viewSphere(s);

@@ -9,6 +9,7 @@
 #include "sky/atmosphere/extinction_profile.h"
 #include "sky/camera.h"
 #include "sky/channel.h"
+#include "sky/eye/glare.h"
 #include "sky/eye/tone_curve.h"
 #include "sky/observer.h"
 #include "sky/atmosphere/model.h"
@@ -37,6 +38,10 @@ struct SkyState {
   double sunAzimuth = 0.0;           // radians, from north through east
   double sunAltitude = 0.0;          // radians, airless: lights the sky
   double sunApparentAltitude = 0.0;  // radians, refracted: where the disc is seen
+  // The refraction about the disc's apparent centre (apparent altitude, R, dR/dh, d2R/dh2 / 2;
+  // radians; ephemeris::refractionExpansion) the sun's disc is drawn through, refracted and
+  // flattened (shaders/common/refraction.glsl), as the moon's is.
+  glm::dvec4 sunRefraction{0.0};
   std::optional<ephemeris::SkyEphemeris> ephemeris;  // absent when the sun was overridden
   AnalyticSkyState sky;
   // What the pilot can see over the whole view sphere (sky, terrain, sun and moon), and the eye:
@@ -65,6 +70,13 @@ struct SkyState {
   // The moon's disc as the moon pass and the probe use it, built once per state here rather
   // than per channel on the render thread; null without an ephemeris (sun overridden).
   std::shared_ptr<const night::MoonDisc> moonDisc;
+  // The terrain's radiance under the night's own light (linear Rec.709 cd/m^2): the airglow,
+  // zodiacal light and stars on a horizontal Lambertian ground of the state's albedo,
+  // albedo E / pi. ~5e-5 cd/m^2 on a moonless night at a dark site; without it a moonless
+  // terrain would be black and the eye adapted to a sky over a void. Zero without an ephemeris.
+  glm::dvec3 nightGroundRadiance{0.0};
+  // The sun and the moon as glare sources for the display (sky/eye/glare.h).
+  eye::GlareSources glare{};
 };
 
 // The night's sources of a state, for the probe, the passes and tests: the moon's illuminance on

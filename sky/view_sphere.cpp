@@ -59,6 +59,7 @@ ViewSphere viewSphere(const SkyState& s) {
         l = shader::rec709Luminance(analyticSkyLightOnly(s.sky.params, view));
       }
       if (night && view.z > 0.0) l += shader::rec709Luminance(night::nightDiffuseRadiance(*night, view).total());
+      if (view.z < 0.0) l += shader::rec709Luminance(s.nightGroundRadiance);
       h.add(l, cell);
       sum += l;
     }
@@ -73,10 +74,16 @@ ViewSphere viewSphere(const SkyState& s) {
   const double sunRadius = model ? model->parameters(0).sun_angular_radius : 0.2666 * kPi / 180.0;
   const double sunDisc = model ? model->converter().luminance(model->sunDiscRadiance(camera, sun, sun))
                                : shader::rec709Luminance(s.sky.params.sunRadiance);
-  h.add(sunDisc, kPi * sunRadius * sunRadius);
+  // A disc no brighter than the sky around it (the moon by day, the sun below the horizon seen
+  // through the earth) is not a highlight and, a few millionths of the sphere, changes nothing
+  // else; left out, it cannot stretch the scene's range downwards.
+  auto addHighlight = [&](double cdM2, double solidAngle) {
+    if (std::log10(std::max(cdM2, 1e-30)) > brightest) h.add(cdM2, solidAngle);
+  };
+  addHighlight(sunDisc, kPi * sunRadius * sunRadius);
   if (s.moonDisc) {
     const night::MoonRadiance m = night::moonDiscRadiance(*s.moonDisc, s.moonDisc->centreSeen);
-    h.add(m.luminanceCdM2, kPi * s.moonDisc->angularRadiusRad * s.moonDisc->angularRadiusRad);
+    addHighlight(m.luminanceCdM2, kPi * s.moonDisc->angularRadiusRad * s.moonDisc->angularRadiusRad);
   }
   return out;
 }

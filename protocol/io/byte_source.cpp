@@ -30,17 +30,53 @@ bool FileSource::open(const std::string& path) {
     error_ = path + ": " + std::strerror(errno);
     return false;
   }
+  position_ = 0;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    stream_ = true;  // a FIFO or a pipe: its size is what has been read so far
+    fillStreamTo(kStreamLookahead);
+    return error_.empty();
+  }
   const auto s = std::filesystem::file_size(path, ec);
   if (ec) {
     error_ = path + ": " + ec.message();
     return false;
   }
   size_ = s;
-  position_ = 0;
   return true;
 }
 
+void FileSource::fillStreamTo(std::uint64_t end) {
+  std::uint8_t chunk[65536];
+  while (!streamEnded_ && size_ < end) {
+    const std::size_t n = std::fread(chunk, 1, static_cast<std::size_t>(std::min<std::uint64_t>(sizeof chunk, end - size_)), file_);
+    window_.insert(window_.end(), chunk, chunk + n);
+    size_ += n;
+    if (n == 0) {
+      if (std::ferror(file_) != 0) error_ = path_ + ": read at byte " + std::to_string(size_) + ": " + std::strerror(errno);
+      streamEnded_ = true;
+    }
+  }
+}
+
 std::size_t FileSource::readAt(std::uint64_t offset, std::span<std::uint8_t> dst) {
+  if (file_ != nullptr && stream_ && !dst.empty()) {
+    if (offset < windowStart_) {
+      error_ = path_ + ": a stream (FIFO or pipe) cannot be read again at byte " + std::to_string(offset) +
+               " (kept from byte " + std::to_string(windowStart_) + ")";
+      return 0;
+    }
+    fillStreamTo(offset + dst.size() + kStreamLookahead);
+    if (offset >= size_) return 0;
+    const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(dst.size(), size_ - offset));
+    std::memcpy(dst.data(), window_.data() + (offset - windowStart_), n);
+    // Forget what lies well behind the reader (erased in large steps: amortised O(1) a byte).
+    if (offset > windowStart_ + 2 * kStreamKeep) {
+      const std::uint64_t drop = offset - kStreamKeep - windowStart_;
+      window_.erase(window_.begin(), window_.begin() + static_cast<std::ptrdiff_t>(drop));
+      windowStart_ += drop;
+    }
+    return n;
+  }
   if (file_ == nullptr || offset >= size_ || dst.empty()) return 0;
   if (offset != position_) {
     if (std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0) {

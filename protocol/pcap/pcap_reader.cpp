@@ -17,6 +17,8 @@ RecordError makeError(RecordError::Kind kind, std::uint64_t number, std::uint64_
 
 // How far from the last good record a candidate header's time may lie when resynchronising.
 constexpr std::int64_t kResyncWindowNs = 86400LL * 1000000000LL;
+// How many following records must also read as records when no good record came before.
+constexpr int kResyncChainWithoutAnchor = 8;
 
 }  // namespace
 
@@ -134,14 +136,24 @@ bool Reader::plausibleAt(std::uint64_t offset) {
   std::uint32_t incl = 0;
   std::int64_t ts = 0;
   if (checkRecordHeader(offset, 0, &incl, &ts, false)) return false;
-  if (lastTimestampNs_ && (ts < *lastTimestampNs_ - kResyncWindowNs || ts > *lastTimestampNs_ + kResyncWindowNs))
-    return false;
-  // The record after it must fit too (or the file ends right there).
-  const std::uint64_t next = offset + kRecordHeaderSize + incl;
-  if (next == source_.size()) return true;
-  std::uint32_t incl2 = 0;
-  std::int64_t ts2 = 0;
-  return !checkRecordHeader(next, 0, &incl2, &ts2, false).has_value();
+  // Near the last good record's time; before any good record (the first one is corrupt),
+  // near this candidate's own.
+  const std::int64_t anchor = lastTimestampNs_.value_or(ts);
+  if (ts < anchor - kResyncWindowNs || ts > anchor + kResyncWindowNs) return false;
+  // The records after it must fit too (or the file ends right there): one after a good record,
+  // kResyncChainWithoutAnchor without one, since any 16 bytes of zeros inside a frame read as an
+  // empty record at time 0 and a chain of them as more.
+  const int chain = lastTimestampNs_ ? 1 : kResyncChainWithoutAnchor;
+  std::uint64_t next = offset + kRecordHeaderSize + incl;
+  for (int k = 0; k < chain; ++k) {
+    if (next == source_.size()) return true;
+    std::uint32_t incl2 = 0;
+    std::int64_t ts2 = 0;
+    if (checkRecordHeader(next, 0, &incl2, &ts2, false).has_value()) return false;
+    if (ts2 < anchor - kResyncWindowNs || ts2 > anchor + kResyncWindowNs) return false;
+    next += kRecordHeaderSize + incl2;
+  }
+  return true;
 }
 
 std::optional<std::uint64_t> Reader::resynchronise(std::uint64_t from) {

@@ -2,7 +2,8 @@
 // Reads classic pcap files in either byte order, micro- or nanosecond timestamps. Errors
 // name the record (1-based) and the byte offset of its header. With skipBad, a bad record
 // is counted and skipped: the reader searches forward for the next plausible record header
-// (sane timestamp near the last good one, lengths that fit) and goes on from there.
+// (sane timestamp near the last good one, lengths that fit; with no good one before it,
+// eight valid headers following it) and goes on from there.
 #include <cstdint>
 #include <optional>
 #include <vector>

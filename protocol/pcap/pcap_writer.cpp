@@ -1,5 +1,7 @@
 #include "protocol/pcap/pcap_writer.h"
 
+#include <algorithm>
+
 namespace skyig::protocol::pcap {
 
 bool Writer::fail(std::string message) {
@@ -27,9 +29,12 @@ bool Writer::open() {
 bool Writer::writeRecord(std::int64_t timestampNs, std::span<const std::uint8_t> frame, std::uint32_t originalLength) {
   if (!error_.empty()) return false;
   if (timestampNs < 0) return fail("pcap writer: negative timestamp " + std::to_string(timestampNs) + " ns");
-  if (frame.size() > options_.snapLength)
-    return fail("pcap writer: record of " + std::to_string(frame.size()) + " bytes exceeds the snap length " +
-                std::to_string(options_.snapLength));
+  if (frame.size() > 0xFFFFFFFFu) return fail("pcap writer: record of " + std::to_string(frame.size()) + " bytes");
+  if (originalLength == 0) originalLength = static_cast<std::uint32_t>(frame.size());
+  if (frame.size() > options_.snapLength) {
+    frame = frame.first(options_.snapLength);
+    ++truncated_;
+  }
   const auto seconds = static_cast<std::uint64_t>(timestampNs / 1000000000);
   if (seconds > 0xFFFFFFFFu) return fail("pcap writer: timestamp " + std::to_string(timestampNs) + " ns after 2106");
   const auto ns = static_cast<std::uint32_t>(timestampNs % 1000000000);
@@ -40,7 +45,7 @@ bool Writer::writeRecord(std::int64_t timestampNs, std::span<const std::uint8_t>
   storeU32(buffer_.data() + 0, static_cast<std::uint32_t>(seconds), o);
   storeU32(buffer_.data() + 4, fraction, o);
   storeU32(buffer_.data() + 8, captured, o);
-  storeU32(buffer_.data() + 12, originalLength == 0 ? captured : originalLength, o);
+  storeU32(buffer_.data() + 12, std::max(originalLength, captured), o);
   std::copy(frame.begin(), frame.end(), buffer_.begin() + kRecordHeaderSize);
   if (!sink_.write(buffer_)) return fail("pcap writer: record " + std::to_string(records_ + 1) + ": " + sink_.error());
   ++records_;

@@ -56,7 +56,8 @@ NightDiffusePass::NightDiffusePass()
     : program_("passes/fullscreen.vert", "passes/night_diffuse.frag"),
       enuToJ2000Location_(glGetUniformLocation(program_.id(), "enuToJ2000")),
       sunLocation_(glGetUniformLocation(program_.id(), "sunJ2000")),
-      airglowLocation_(glGetUniformLocation(program_.id(), "airglowZenith")) {
+      airglowLocation_(glGetUniformLocation(program_.id(), "airglowZenith")),
+      groundLocation_(glGetUniformLocation(program_.id(), "nightGroundRadiance")) {
   milkyWay_ = uploadMilkyWay(*skyig::sky::night::MilkyWayMap::standard());
   zodiacal_ = uploadZodiacal();
   const glm::vec3 sun(skyig::sky::night::sunlightRec709());
@@ -70,10 +71,10 @@ NightDiffusePass::~NightDiffusePass() {
 
 void NightDiffusePass::draw(const skyig::sky::SkyState& state) {
   const auto sky = skyig::sky::nightDiffuseSky(state);
-  if (sky) draw(*sky);
+  if (sky) draw(*sky, state.nightGroundRadiance);
 }
 
-void NightDiffusePass::draw(const skyig::sky::night::NightDiffuseSky& sky) {
+void NightDiffusePass::draw(const skyig::sky::night::NightDiffuseSky& sky, const glm::dvec3& groundRadiance) {
   extinction_.use(sky.extinction);
   const GLuint p = program_.id();
   const glm::mat3 m(sky.enuToJ2000);
@@ -81,6 +82,8 @@ void NightDiffusePass::draw(const skyig::sky::night::NightDiffuseSky& sky) {
   const glm::vec3 sun(sky.sunJ2000), airglow(sky.airglowZenith);
   glProgramUniform3fv(p, sunLocation_, 1, glm::value_ptr(sun));
   glProgramUniform3fv(p, airglowLocation_, 1, glm::value_ptr(airglow));
+  const glm::vec3 ground(groundRadiance);
+  glProgramUniform3fv(p, groundLocation_, 1, glm::value_ptr(ground));
   glBindTextureUnit(SKYIG_UNIT_MILKY_WAY, milkyWay_);
   glBindTextureUnit(SKYIG_UNIT_ZODIACAL, zodiacal_);
   extinction_.bind(SKYIG_UNIT_NIGHT_EXTINCTION);

@@ -23,16 +23,18 @@ class NightDiffusePass {
   NightDiffusePass(const NightDiffusePass&) = delete;
   NightDiffusePass& operator=(const NightDiffusePass&) = delete;
 
-  // Adds the state's diffuse night light to the bound target; the frame block must be bound.
+  // Adds the state's diffuse night light to the bound target, and below the horizon the
+  // terrain's radiance under it (SkyState::nightGroundRadiance); the frame block must be bound.
   // Draws nothing for a state without an ephemeris (no J2000 frame).
   void draw(const skyig::sky::SkyState& state);
-  void draw(const skyig::sky::night::NightDiffuseSky& sky);
+  void draw(const skyig::sky::night::NightDiffuseSky& sky, const glm::dvec3& groundRadiance = glm::dvec3(0.0));
 
  private:
   GlProgram program_;
   GLint enuToJ2000Location_ = -1;
   GLint sunLocation_ = -1;
   GLint airglowLocation_ = -1;
+  GLint groundLocation_ = -1;
   GLuint milkyWay_ = 0;
   GLuint zodiacal_ = 0;
   ExtinctionTexture extinction_;

@@ -43,6 +43,7 @@ PhysicalSkyPass::Program::Program(const char* fragment)
     : program("passes/fullscreen.vert", fragment),
       camera(glGetUniformLocation(program.id(), "camera")),
       sun(glGetUniformLocation(program.id(), "sunDirectionP")),
+      sunRefraction(glGetUniformLocation(program.id(), "sunRefraction")),
       moonOn(glGetUniformLocation(program.id(), "moonlightOn")),
       moonDirection(glGetUniformLocation(program.id(), "moonDirectionP")),
       moonScale(glGetUniformLocation(program.id(), "moonlightScale")),
@@ -202,7 +203,7 @@ void PhysicalSkyPass::stepUpload() {
 }
 
 void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirection, const glm::dvec3& moonDirection,
-                           const glm::dvec3& moonlightScale) {
+                           const glm::dvec3& moonlightScale, const glm::dvec4& sunRefraction) {
   stepUpload();
   if (!current_.model) throw std::logic_error("PhysicalSkyPass::draw before use()");
   // The camera inside the atmosphere (every IG frame): what every pixel shares, in double, once.
@@ -220,8 +221,14 @@ void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
     const double h = std::sqrt(a.top_radius * a.top_radius - a.bottom_radius * a.bottom_radius);
     glProgramUniform4f(p, program.radii, static_cast<float>(r), static_cast<float>(rho), static_cast<float>(h),
                        static_cast<float>(sunUvwz.w));
+    // The cone the refracted disc can fall in, around the airless sun: its radius, the lift of
+    // its centre and the change of that lift across it, with room to spare. Only the pixels
+    // within it take unrefractView's transcendentals.
+    const double radius = a.sun_angular_radius;
+    const double reach = radius + std::abs(sunRefraction.y) +
+                         2.0 * (std::abs(sunRefraction.z) * radius + std::abs(sunRefraction.w) * radius * radius);
     glProgramUniform3f(p, program.angles, static_cast<float>(sunUvwz.y), static_cast<float>(moonUvwz.y),
-                       static_cast<float>(std::cos(a.sun_angular_radius)));
+                       static_cast<float>(std::cos(1.1 * reach)));
     // This frame's slices of the tables at r and each light's u_mu_s, into small targets; the
     // caller's target and viewport come back after.
     ensureSlices();
@@ -240,6 +247,8 @@ void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   }
   glProgramUniform3fv(p, program.camera, 1, &f3(camera)[0]);
   glProgramUniform3fv(p, program.sun, 1, &f3(sunDirection)[0]);
+  const glm::vec4 refraction(sunRefraction);
+  glProgramUniform4fv(p, program.sunRefraction, 1, &refraction[0]);
   glProgramUniform1i(p, program.moonOn, moon ? 1 : 0);
   if (moon) {
     glProgramUniform3fv(p, program.moonDirection, 1, &f3(moonDirection)[0]);

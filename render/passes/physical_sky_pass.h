@@ -33,11 +33,13 @@ class PhysicalSkyPass {
   void use(std::shared_ptr<const atmosphere::AtmosphereModel> model);
   // Uploads the pending model's next slices (swapping it in once complete), then draws into
   // the bound target: camera in metres from the planet's centre, the sun's and the moon's
-  // directions, all in the local east-north-up frame; a zero moonlightScale skips the moon.
-  // The frame block must be bound.
+  // directions (airless), all in the local east-north-up frame; a zero moonlightScale skips the
+  // moon. sunRefraction is the refraction about the sun's apparent centre (SkyState::
+  // sunRefraction; zero: none) the disc is drawn through. The frame block must be bound.
   void draw(const glm::dvec3& camera, const glm::dvec3& sunDirection,
             const glm::dvec3& moonDirection = glm::dvec3(0.0, 0.0, 1.0),
-            const glm::dvec3& moonlightScale = glm::dvec3(0.0));
+            const glm::dvec3& moonlightScale = glm::dvec3(0.0),
+            const glm::dvec4& sunRefraction = glm::dvec4(0.0));
 
   const atmosphere::AtmosphereModel* current() const { return current_.model.get(); }
   const atmosphere::AtmosphereModel* pending() const { return pending_ ? pending_->set.model.get() : nullptr; }
@@ -74,7 +76,7 @@ class PhysicalSkyPass {
   struct Program {
     explicit Program(const char* fragment);
     GlProgram program;
-    GLint camera, sun, moonOn, moonDirection, moonScale, radii, angles;
+    GLint camera, sun, sunRefraction, moonOn, moonDirection, moonScale, radii, angles;
   };
 
   // This frame's 2D slice of the scattering tables for one light (physical_sky_slice.frag).

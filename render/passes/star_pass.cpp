@@ -9,8 +9,10 @@
 
 namespace skyig::render {
 
-StarPass::StarPass() : program_("passes/star.vert", "passes/star.frag") {
+StarPass::StarPass()
+    : program_("passes/star.vert", "passes/star.frag"), displayProgram_("passes/star_display.vert", "passes/star.frag") {
   worldToNdcLocation_ = glGetUniformLocation(program_.id(), "uWorldToNdc");
+  displayWorldToNdcLocation_ = glGetUniformLocation(displayProgram_.id(), "uWorldToNdc");
   glCreateVertexArrays(1, &vao_);
   glCreateBuffers(1, &buffer_);
   glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, 6 * sizeof(float));
@@ -41,20 +43,34 @@ void StarPass::upload(const skyig::sky::night::StarField& field) {
   count_ = static_cast<GLsizei>(data.size() / 6);
 }
 
-void StarPass::draw(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld) {
-  if (!field) return;
+bool StarPass::prepare(const std::shared_ptr<const skyig::sky::night::StarField>& field, const GlProgram& program,
+                       GLint worldToNdcLocation, const glm::dmat3& ndcToWorld) {
+  if (!field) return false;
   if (field != uploaded_) {
     upload(*field);
     uploaded_ = field;
   }
-  if (count_ == 0) return;
-  program_.use();
+  if (count_ == 0) return false;
+  program.use();
   const glm::mat3 worldToNdc(glm::inverse(ndcToWorld));
-  glUniformMatrix3fv(worldToNdcLocation_, 1, GL_FALSE, glm::value_ptr(worldToNdc));
+  glUniformMatrix3fv(worldToNdcLocation, 1, GL_FALSE, glm::value_ptr(worldToNdc));
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
   glBindVertexArray(vao_);
+  return true;
+}
+
+void StarPass::draw(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld) {
+  if (!prepare(field, program_, worldToNdcLocation_, ndcToWorld)) return;
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count_);
+  glDisable(GL_BLEND);
+}
+
+void StarPass::drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field,
+                             const glm::dmat3& ndcToWorld, GLuint background) {
+  if (!prepare(field, displayProgram_, displayWorldToNdcLocation_, ndcToWorld)) return;
+  glBindTextureUnit(SKYIG_UNIT_STAR_BACKGROUND, background);
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count_);
   glDisable(GL_BLEND);
 }

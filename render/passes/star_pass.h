@@ -1,7 +1,11 @@
 #pragma once
-// The GL pass that adds stars and planets (sky/night/star_field.h) to the HDR target, after
-// the sky pass: a quad per source carrying a normalised PSF, so each source's energy on screen equals its
-// illuminance at any resolution and field of view (shaders/night/star_psf.glsl).
+// The GL passes of stars and planets (sky/night/star_field.h), a quad per source carrying a
+// normalised PSF:
+// - draw(): into the HDR target, after the sky, in absolute units: each source's energy on
+//   screen equals its illuminance at any resolution and field of view (shaders/night/star_psf.glsl);
+// - drawDisplayed(): into the display's point-source target, in display luminance, as the eye
+//   sees them: visibility against the sky behind them kept on the display, a PSF of a fixed
+//   angle (shaders/night/point_source_visibility.glsl, docs/night-sky-stars.md).
 #include "render/gl/gl_program.h"
 #include "sky/night/star_field.h"
 
@@ -21,11 +25,20 @@ class StarPass {
   // Adds the field's sources into the bound target. The frame block must be bound and hold
   // `ndcToWorld`. The field is uploaded when it differs from the last one drawn.
   void draw(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld);
+  // Adds the field's sources as displayed into the bound target. The frame and tone blocks must
+  // be bound; `background` is the HDR image of the sky without the sources (cd/m^2).
+  void drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
+                     GLuint background);
 
  private:
   void upload(const skyig::sky::night::StarField& field);
+  // Uploads a new field, sets the blending and the program's view; false when there is nothing to draw.
+  bool prepare(const std::shared_ptr<const skyig::sky::night::StarField>& field, const GlProgram& program,
+               GLint worldToNdcLocation, const glm::dmat3& ndcToWorld);
   GlProgram program_;
+  GlProgram displayProgram_;
   GLint worldToNdcLocation_ = -1;
+  GLint displayWorldToNdcLocation_ = -1;
   GLuint vao_ = 0;
   GLuint buffer_ = 0;
   GLsizei count_ = 0;

@@ -118,8 +118,8 @@ void registerBenchCommand(CLI::App& app, int& exitCode) {
   auto opt = std::make_shared<BenchOptions>();
   CLI::App* c = app.add_subcommand("bench", "Time the sky pass of one channel, headless");
   opt->sky.add(*c);
-  c->add_option("--width", opt->width, "Frame width")->check(CLI::Range(16, 16384));
-  c->add_option("--height", opt->height, "Frame height")->check(CLI::Range(16, 16384));
+  c->add_option("--width", opt->width, "Frame width")->check(CLI::Range(sky::kMinChannelSide, sky::kMaxChannelSide));
+  c->add_option("--height", opt->height, "Frame height")->check(CLI::Range(sky::kMinChannelSide, sky::kMaxChannelSide));
   c->add_option("--frames", opt->frames, "Timed frames")->check(CLI::Range(1, 100000));
   c->add_flag("--json", opt->json, "Print the figures as JSON");
   c->callback([opt, &exitCode] { exitCode = run(*opt); });

@@ -25,7 +25,7 @@ void SkyOptions::add(CLI::App& c) {
       ->check(CLI::Range(0.05, 280.0));
   c.add_option("--sun-azimuth", sunAzimuth, "Override the sun's azimuth, degrees from north through east")
       ->check(CLI::Range(-360.0, 360.0));
-  c.add_option("--sun-elevation", sunElevation, "Override the sun's elevation, degrees")->check(CLI::Range(-90.0, 90.0));
+  c.add_option("--sun-elevation", sunElevation, "Override the sun's true (airless) elevation, degrees; its disc is seen lifted by refraction")->check(CLI::Range(-90.0, 90.0));
 }
 
 NodeConfig SkyOptions::resolve() const {
@@ -63,9 +63,10 @@ std::optional<sky::SunOverride> SkyOptions::sunOverride() const {
 void parseSize(const std::string& text, int& width, int& height) {
   int w = 0, h = 0;
   char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 16 ||
-      h < 16 || w > 16384 || h > 16384)
-    throw ConfigError("--size: expected WIDTHxHEIGHT with each in 16..16384, got \"" + text + "\"");
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
+      w < sky::kMinChannelSide || h < sky::kMinChannelSide || w > sky::kMaxChannelSide || h > sky::kMaxChannelSide)
+    throw ConfigError("--size: expected WIDTHxHEIGHT with each in " + std::to_string(sky::kMinChannelSide) + ".." +
+                      std::to_string(sky::kMaxChannelSide) + ", got \"" + text + "\"");
   width = w;
   height = h;
 }

@@ -23,7 +23,8 @@ struct SkyOptions {
   std::optional<sky::SunOverride> sunOverride() const;
 };
 
-// "WIDTHxHEIGHT" with each in 16..16384 (--size); throws ConfigError naming the flag.
+// "WIDTHxHEIGHT" with each in sky::kMinChannelSide..kMaxChannelSide (16..8192, --size);
+// throws ConfigError naming the flag.
 void parseSize(const std::string& text, int& width, int& height);
 
 }  // namespace skyig::services

@@ -1,15 +1,17 @@
 #include "services/commands/host_command.h"
 
 #include "protocol/cigi/date.h"
+#include "protocol/cigi/decoder.h"
 #include "protocol/cigi/encoder.h"
 #include "services/host_path.h"
 #include "services/node_config.h"
 #include "services/udp_socket.h"
 
 #include <cmath>
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <memory>
-#include <thread>
 
 namespace skyig::services {
 
@@ -30,6 +32,7 @@ struct HostOptions {
   bool swapPairs = false;
   bool loop = false;
   bool littleEndian = false;
+  int cigiVersion = 3;  // 3: CIGI 3.3; 4: CIGI 4.0
 };
 
 // Adds seconds to a UTC instant across days (time-lapse runs may pass midnight).
@@ -75,15 +78,73 @@ std::vector<std::uint8_t> message(std::uint32_t frame, double pathTime, const Ho
   cs.date = *cigi::composeDate({utc.year, utc.month, utc.day});
   cs.hour = static_cast<std::uint8_t>(utc.secondsOfDay / 3600.0);
   cs.minute = static_cast<std::uint8_t>(std::fmod(utc.secondsOfDay, 3600.0) / 60.0);
+  cs.seconds = static_cast<float>(std::fmod(utc.secondsOfDay, 60.0));  // sent by CIGI 4.0 only
   cigi::AtmosphereControl a;
   a.visibilityRangeM = static_cast<float>(o.visibilityM);
-  const cigi::Packet packets[] = {ig, e, rc, cs, a};
+  const auto order = o.littleEndian ? protocol::ByteOrder::little : protocol::ByteOrder::big;
   std::vector<std::uint8_t> bytes;
-  const std::string error =
-      cigi::encodeMessage(packets, o.littleEndian ? protocol::ByteOrder::little : protocol::ByteOrder::big, bytes);
+  std::string error;
+  if (o.cigiVersion == 4) {
+    // skyig's CIGI 4.0 subset has no Rate Control (4.0 moved rates to Velocity Control).
+    const cigi::Packet packets[] = {ig, e, cs, a};
+    error = cigi::encodeMessage4(packets, order, bytes);
+  } else {
+    const cigi::Packet packets[] = {ig, e, rc, cs, a};
+    error = cigi::encodeMessage(packets, order, bytes);
+  }
   if (!error.empty()) throw std::runtime_error("encoding host message: " + error);
   return bytes;
 }
+
+// The Start of Frame messages the IG sends back to the host's socket.
+struct StartOfFrameLog {
+  std::uint64_t received = 0;
+  std::uint64_t other = 0;  // datagrams that are not a well-formed Start of Frame message
+  std::vector<std::uint8_t> lastBytes;
+  cigi::DecodedMessage last;
+
+  void add(std::span<const std::uint8_t> bytes) {
+    cigi::DecodedMessage m = cigi::decodeMessage(bytes);
+    if (!m.ok() || m.packets.empty() || !std::holds_alternative<cigi::StartOfFrame>(m.packets.front())) {
+      ++other;
+      return;
+    }
+    ++received;
+    lastBytes.assign(bytes.begin(), bytes.end());
+    last = std::move(m);
+  }
+
+  // Receives until `until`, so the host reads the IG's answers while it waits for its next frame.
+  void receiveUntil(UdpSocket& socket, std::chrono::steady_clock::time_point until) {
+    std::array<std::uint8_t, 2048> buffer{};
+    sockaddr_in from{};
+    for (;;) {
+      const auto now = std::chrono::steady_clock::now();
+      const auto left = std::chrono::ceil<std::chrono::milliseconds>(until - now);
+      const std::size_t n = socket.receive(buffer, from, std::max(left, std::chrono::milliseconds(0)));
+      if (n > 0) add(std::span(buffer.data(), n));
+      else if (std::chrono::steady_clock::now() >= until) return;
+    }
+  }
+
+  void print() const {
+    if (received == 0 && other == 0) return;
+    std::printf("host: %llu Start of Frame received, %llu other datagrams\n", static_cast<unsigned long long>(received),
+                static_cast<unsigned long long>(other));
+    if (received == 0) return;
+    const auto& s = std::get<cigi::StartOfFrame>(last.packets.front());
+    std::printf("host: last Start of Frame: CIGI %u.%u, IG frame %u, last host frame %u, timestamp %u\n",
+                static_cast<unsigned>(last.majorVersion), static_cast<unsigned>(last.minorVersion), s.igFrameNumber,
+                s.lastHostFrameNumber, s.timestamp);
+    std::string hex;
+    for (std::uint8_t b : lastBytes) {
+      char buf[4];
+      std::snprintf(buf, sizeof buf, "%s%02X", hex.empty() ? "" : " ", b);
+      hex += buf;
+    }
+    std::printf("host: last Start of Frame bytes: %s\n", hex.c_str());
+  }
+};
 
 int run(const HostOptions& o) {
   const HostPath path = HostPath::load(o.pathFile);
@@ -104,8 +165,9 @@ int run(const HostOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   std::uint64_t sent = 0, dropped = 0;
   std::vector<std::uint8_t> held;  // --swap-pairs: the even frame waits for the odd one
+  StartOfFrameLog sof;
   for (std::uint32_t k = 0; k < frames; ++k) {
-    std::this_thread::sleep_until(t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(period * k));
+    sof.receiveUntil(socket, t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(period * k));
     // Path time from the frame number, not the wall clock: the flight is reproducible.
     const double t = k / o.rateHz;
     const double pathTime = o.loop ? std::fmod(t, path.durationS()) : t;
@@ -127,6 +189,7 @@ int run(const HostOptions& o) {
   std::printf("host: %u frames over %.1f s to %s: %llu sent, %llu dropped%s\n", frames, duration, to.toString().c_str(),
               static_cast<unsigned long long>(sent), static_cast<unsigned long long>(dropped),
               o.swapPairs ? ", pairs swapped" : "");
+  sof.print();
   return 0;
 }
 
@@ -149,6 +212,10 @@ void registerHostCommand(CLI::App& app, int& exitCode) {
   c->add_flag("--swap-pairs", o->swapPairs, "Send datagrams in swapped pairs (reordering test)");
   c->add_flag("--loop", o->loop, "Fly the path round and round for --duration");
   c->add_flag("--little-endian", o->littleEndian, "Send in little-endian byte order (the magic number says so)");
+  c->add_option("--cigi", o->cigiVersion,
+                "CIGI version to send: 3 (3.3) or 4 (4.0: IG Control, Entity Position Control, Celestial Sphere "
+                "Control with seconds, Atmosphere Control) (3)")
+      ->check(CLI::IsMember({3, 4}));
   c->callback([o, &exitCode] { exitCode = run(*o); });
 }
 

@@ -74,21 +74,19 @@ int run(const ProbeCli& cli) {
   }
   if (request.views.empty()) request.views.push_back({0.0, 0.0});  // the zenith
 
-  // The node's atmosphere ([atmosphere], sky.atmosphere_tables, sky.ground_albedo,
-  // visibility_km) from the configuration given, as render and serve see it (one cache key for
-  // the same tables); the flags override it.
+  // The node's atmosphere as `render` and `serve` load it (loadNodeAtmosphere: [atmosphere],
+  // sky.atmosphere_tables, sky.ground_albedo, [atmosphere] visibility_km; the embedded defaults
+  // without a configuration), so the probe reads the same tables from the same cache file; the
+  // flags override it.
   NodeConfig node = cli.configPath.empty() ? NodeConfig{} : loadNodeConfig(cli.configPath);
   if (cli.tables) node.atmosphere.tables = *cli.tables;
   if (cli.cacheDir) node.atmosphere.cacheDir = *cli.cacheDir;
   if (cli.orders) node.atmosphere.scatteringOrders = *cli.orders;
-  if (cli.visibilityKm) node.atmosphere.visibilityKm = cli.visibilityKm;
+  if (cli.visibilityKm) node.atmosphere.visibilityKm = *cli.visibilityKm;
   if (cli.groundAlbedo) node.sky.groundAlbedo = *cli.groundAlbedo;
-  atmosphere::Conditions conditions = configuredConditions(node);
-  // Without a configuration the ground is the medium's own (Bruneton's 0.1, the reference
-  // values' sky) unless --ground-albedo says otherwise.
-  if (cli.configPath.empty() && !cli.groundAlbedo) conditions.groundAlbedo.reset();
+  atmosphere::Conditions conditions;
   if (cli.humidityPct) conditions.relativeHumidity = *cli.humidityPct / 100.0;
-  const auto model = loadAtmosphere(node.atmosphere, conditions);
+  const auto model = loadNodeAtmosphere(node, conditions);
   if (!place) {
     std::printf("%s\n", probeJson(atmosphere::probe(*model, request)).dump(2).c_str());
     return 0;
@@ -115,9 +113,9 @@ void registerProbeCommand(CLI::App& app, int& exitCode) {
   c->add_option("--utc", cli->utc, "UTC date and time");
   c->add_option("--view", cli->views, "A view direction ZENITH,AZIMUTH in degrees (repeatable; default: the zenith)");
   c->add_option("--views", cli->viewsFile, "A file of view directions, one ZENITH,AZIMUTH a line")->check(CLI::ExistingFile);
-  c->add_option("--visibility", cli->visibilityKm, "Visibility, km (Koschmieder; default: the clear medium's)")->check(CLI::Range(0.05, 280.0));
+  c->add_option("--visibility", cli->visibilityKm, "Visibility, km (Koschmieder; default: the configuration's, else the clear medium's)")->check(CLI::Range(0.05, 280.0));
   c->add_option("--humidity", cli->humidityPct, "Relative humidity, percent")->check(CLI::Range(0.0, 99.0));
-  c->add_option("--ground-albedo", cli->groundAlbedo, "Ground albedo, 0..1")->check(CLI::Range(0.0, 1.0));
+  c->add_option("--ground-albedo", cli->groundAlbedo, "Ground albedo, 0..1 (default: the configuration's sky.ground_albedo, 0.2 without one)")->check(CLI::Range(0.0, 1.0));
   c->add_flag("--irradiance", cli->irradiance, "Add the direct-sun and sky illuminance on a horizontal surface");
   c->add_option("--tables", cli->tables, "Table size: medium (the node's default), small (seconds; coarse at sunset) or default (Bruneton's)")
       ->check(CLI::IsMember({"small", "medium", "default"}));
@@ -125,7 +123,7 @@ void registerProbeCommand(CLI::App& app, int& exitCode) {
   c->add_option("--config", cli->configPath, "Node configuration (TOML): its [atmosphere] medium, table size and ground albedo")
       ->check(CLI::ExistingFile);
   c->add_option("--star-catalogue", cli->starCatalogue, "Star catalogue CSV for the stars_planets key (default: the bundled BSC5; none: planets only)");
-  c->add_option("--cache", cli->cacheDir, "Table cache directory (default: $XDG_CACHE_HOME/skyig or ~/.cache/skyig)");
+  c->add_option("--cache", cli->cacheDir, "Table cache directory (default: $CACHE_DIRECTORY, else $XDG_CACHE_HOME/skyig or ~/.cache/skyig)");
   c->callback([cli, &exitCode] { exitCode = run(*cli); });
 }
 

@@ -6,8 +6,8 @@
 #include "render/output_file.h"
 #include "render/sky_renderer.h"
 #include "services/commands/common_options.h"
+#include "services/frame_metadata.h"
 #include "services/sky_data.h"
-#include "services/version.h"
 
 #include <spdlog/spdlog.h>
 
@@ -36,34 +36,6 @@ struct RenderOptions {
 std::string perChannelPath(const std::string& path, const std::string& channel) {
   const std::filesystem::path p(path);
   return (p.parent_path() / (p.stem().string() + "_" + channel + p.extension().string())).string();
-}
-
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
-render::ImageAttributes attributesOf(const sky::SkyState& s, const sky::ChannelConfig& c) {
-  const auto& o = s.observer;
-  return {
-      {"skyig:version", std::string(kVersion)},
-      {"skyig:utc", ephemeris::formatIso8601Utc(o.utc)},
-      {"skyig:latitude_deg", fixed(o.latitudeDeg, 6)},
-      {"skyig:longitude_deg", fixed(o.longitudeDeg, 6)},
-      {"skyig:altitude_m", fixed(o.heightM, 2)},
-      {"skyig:yaw_deg", fixed(o.attitude.yawDeg, 3)},
-      {"skyig:pitch_deg", fixed(o.attitude.pitchDeg, 3)},
-      {"skyig:roll_deg", fixed(o.attitude.rollDeg, 3)},
-      {"skyig:channel", c.name},
-      {"skyig:sky_model", std::string(sky::toString(s.conditions.model))},
-      {"skyig:cie_type", std::to_string(s.conditions.cieType)},
-      {"skyig:turbidity", fixed(s.conditions.turbidity, 3)},
-      {"skyig:sun_azimuth_deg", fixed(s.sunAzimuth / kDeg, 4)},
-      {"skyig:sun_altitude_deg", fixed(s.sunAltitude / kDeg, 4)},
-      {"skyig:adaptation_cd_m2", fixed(s.adaptationLuminance, 6)},
-      {"skyig:units", "linear Rec.709, Y in cd/m^2"},
-  };
 }
 
 int run(const RenderOptions& opt) {
@@ -114,7 +86,8 @@ int run(const RenderOptions& opt) {
   for (const auto& c : channels) {
     const auto start = std::chrono::steady_clock::now();
     renderer.draw(state, c);
-    if (!opt.exrPath.empty()) render::writeExr(outPath(opt.exrPath, c), renderer.readHdr(), attributesOf(state, c));
+    if (!opt.exrPath.empty()) render::writeExr(outPath(opt.exrPath, c), renderer.readHdr(),
+                                               frameAttributes(state, state.observer.attitude, c));
     if (!opt.pngPath.empty()) render::writePng(outPath(opt.pngPath, c), renderer.readDisplay(), c.display.gamma);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(report, "channel %s: %dx%d in %.1f ms ->%s%s\n", c.name.c_str(), c.width, c.height, ms,
@@ -133,7 +106,7 @@ void registerRenderCommand(CLI::App& app, int& exitCode) {
   c->add_option("--channel", opt->channel, "Channel to render (default: the first)");
   c->add_flag("--all-channels", opt->allChannels, "Render every channel, one file each (NAME_CHANNEL.ext)");
   c->add_option("--size", opt->size, "Override the channel resolution, WIDTHxHEIGHT");
-  c->add_option("--exr", opt->exrPath, "OpenEXR output: half RGBA, linear Rec.709, values in cd/m^2");
+  c->add_option("--exr", opt->exrPath, "OpenEXR output: float RGBA, linear Rec.709, values in cd/m^2");
   c->add_option("--png", opt->pngPath, "PNG output: 8-bit, tone reproduced for the channel's display");
   c->callback([opt, &exitCode] { exitCode = run(*opt); });
 }

@@ -123,11 +123,13 @@ int runReplay(ReplayCli& cli) {
     } catch (const NetworkError& e) {
       throw ConfigError(std::string("--send: ") + e.what());
     }
+    // Port 0 is no one's: every datagram would be lost while the summary reported success.
+    if (o.sendTo->port == 0) throw ConfigError("--send: port 0 is not a destination (give the IG's ADDR:PORT, e.g. 127.0.0.1:8004)");
   }
   o.progress = !cli.quiet;
   ReplayResult r;
   try {
-    loadSkyData(o.config, o.stop);
+    if (!o.sendTo) loadSkyData(o.config, o.stop);  // --send renders nothing: no tables, no catalogue
     r = replay(o);
   } catch (const atmosphere::Cancelled&) {
     r.stopped = true;  // signalled while the tables were being built: nothing replayed
@@ -138,6 +140,9 @@ int runReplay(ReplayCli& cli) {
               r.wallSeconds > 0 ? static_cast<double>(r.frames) / r.wallSeconds : 0.0,
               r.skippedRecords ? (", skipped " + std::to_string(r.skippedRecords) + " bad records").c_str() : "");
   if (r.stopped) std::printf("stopped by a signal before the end of the recording\n");
+  if (r.skippedGaps)
+    std::printf("skipped %llu pauses longer than --max-gap %g s (%.3f s of recording time not rendered)\n",
+                static_cast<unsigned long long>(r.skippedGaps), o.maxGapS, r.skippedGapSeconds);
   return 0;
 }
 
@@ -177,6 +182,8 @@ void registerReplayCommand(CLI::App& app, int& exitCode) {
   c->add_option("--send", cli->sendTo, "Re-transmit the recording to a live IG at ADDR:PORT instead of rendering");
   c->add_option("--port", o.port, "Only datagrams to this UDP port (0: all)")->check(CLI::Range(0, 65535));
   c->add_flag("--skip-bad", o.skipBad, "Pass over bad records, counting them, instead of stopping");
+  c->add_option("--max-gap", o.maxGapS, "Skip pauses between records longer than this many seconds (60; 0: render them)")
+      ->check(CLI::Range(0.0, 1e9));
   c->add_flag("--quiet", cli->quiet, "No progress bar");
   c->callback([cli, &exitCode] { exitCode = runReplay(*cli); });
 }

@@ -37,6 +37,8 @@ int run(const ServeOptions& o) {
   try {
     opt.listen = parseEndpoint(o.listen.empty() ? h.listen : o.listen);
     if (!o.replyTo.empty()) opt.replyTo = parseEndpoint(o.replyTo);
+    else if (!h.replyTo.empty())
+      opt.replyTo = parseEndpoint(h.replyTo);  // checked when the file was read
   } catch (const NetworkError& e) {
     throw ConfigError(std::string(o.listen.empty() && o.replyTo.empty() ? "host.listen: " : "--listen/--reply-to: ") + e.what());
   }
@@ -82,7 +84,9 @@ void registerServeCommand(CLI::App& app, int& exitCode) {
   c->add_option("--node", o->node, "This node's name: renders the channels assigned to it (default: [node] name)");
   c->add_flag("--headless", o->headless, "Render offscreen through EGL instead of windows");
   c->add_option("--listen", o->listen, "Host-to-IG address ADDR:PORT (default: host.listen, 0.0.0.0:8004)");
-  c->add_option("--reply-to", o->replyTo, "Where Start of Frame goes, ADDR:PORT (default: the sender, port host.reply_port)");
+  c->add_option("--reply-to", o->replyTo,
+                "Where Start of Frame goes, ADDR:PORT (default: host.reply_to, else the followed host's address, port "
+                "host.reply_port)");
   c->add_option("--can", o->canInterface, "Also read CANaerospace from this SocketCAN interface, e.g. can0");
   c->add_option("--frames", o->frames, "Stop after N frames (default: run until SIGINT/SIGTERM)");
   c->add_flag("--sync", o->synchronous, "Synchronous mode: render frame N after the host's frame N (with a timeout)");

@@ -82,13 +82,29 @@ vec3 packedSkyRec709(IN(AtmosphereParameters) atm, IN(sampler3D) scattering_pack
                                light_direction);
 }
 
+// Where a view falls on the sun's disc: sin(angle from the centre) / sin(radius), below 1 on
+// the disc, from the chord |view - sun| = 2 sin(angle / 2) rather than from 1 - cos^2. In single
+// precision the cosine of a quarter degree, 1 - 1e-5, is known to 6e-8 only: the limb would be
+// ragged by 0.02 deg (a pixel and a half of a 40-pixel disc) and the limb darkening noisy.
+Float sunDiscFraction(IN(vec3) disc_ray, IN(vec3) sun_direction, Float sin_radius) {
+  if (dot(disc_ray, sun_direction) <= 0.0) return 2.0;
+  vec3 d = disc_ray - sun_direction;
+  Float chord2 = dot(d, d);
+  return sqrt(max(chord2 * (1.0 - 0.25 * chord2), 0.0)) / sin_radius;
+}
+
 // The limb-darkened, attenuated sun disc in XYZ (cd/m^2 for Y), the limb darkening exponent
-// per XYZ channel (sun-weighted mean of the spectral exponents).
-vec3 packedSunDiscXyz(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_xyz,
-                      IN(vec3) solar_irradiance_xyz, IN(vec3) limb_darkening_xyz,
-                      IN(vec3) camera_position, IN(vec3) view_ray, IN(vec3) sun_direction) {
-  Float cos_angle = dot(view_ray, sun_direction);
-  if (cos_angle < cos(atm.sun_angular_radius)) {
+// per XYZ channel (sun-weighted mean of the spectral exponents). The disc is where disc_ray,
+// the airless direction the pixel sees (shaders/common/refraction.glsl: unrefractView), falls
+// within the sun's radius; its light reaches the camera along view_ray, the apparent direction,
+// and is attenuated by that ray's own transmittance: the lower limb of a setting sun redder and
+// dimmer than the upper, smoothly, as the transmittance table is.
+vec3 packedRefractedSunDiscXyz(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_xyz,
+                               IN(vec3) solar_irradiance_xyz, IN(vec3) limb_darkening_xyz,
+                               IN(vec3) camera_position, IN(vec3) view_ray, IN(vec3) disc_ray,
+                               IN(vec3) sun_direction) {
+  Float x = sunDiscFraction(disc_ray, sun_direction, sin(atm.sun_angular_radius));
+  if (x >= 1.0) {
     return vec3(0.0);
   }
   Float r = length(camera_position);
@@ -109,12 +125,19 @@ vec3 packedSunDiscXyz(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_
                                                dot(entry, view_ray) / atm.top_radius);
     }
   }
-  Float x = min(sqrt(max(1.0 - cos_angle * cos_angle, 0.0)) / sin(atm.sun_angular_radius), 1.0);
   Float mu = sqrt(max(1.0 - x * x, 0.0));
   vec3 a = limb_darkening_xyz;
   vec3 darkening = vec3(pow(mu, a.x), pow(mu, a.y), pow(mu, a.z)) * (a + vec3(2.0)) * 0.5;
   return solar_irradiance_xyz / (ATMOSPHERE_PI * atm.sun_angular_radius * atm.sun_angular_radius) *
          darkening * vec3(t.x, t.y, t.z);
+}
+
+// The same without refraction (a camera in space sees the sun along its own direction).
+vec3 packedSunDiscXyz(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_xyz,
+                      IN(vec3) solar_irradiance_xyz, IN(vec3) limb_darkening_xyz,
+                      IN(vec3) camera_position, IN(vec3) view_ray, IN(vec3) sun_direction) {
+  return packedRefractedSunDiscXyz(atm, transmittance_xyz, solar_irradiance_xyz, limb_darkening_xyz,
+                                   camera_position, view_ray, view_ray, sun_direction);
 }
 
 // The Lambertian ground at distance d along view_ray (camera inside the atmosphere, the ray

@@ -71,16 +71,30 @@ vec4 transmittanceToTopAtmosphereBoundary(IN(AtmosphereParameters) atm,
   return texture(transmittance_texture, transmittanceUvFromRMu(atm, r, mu));
 }
 
-// Transmittance between (r, mu) and the point at distance d along the ray. A ray that hits
-// the ground is looked up reversed (-mu), so neither factor of the ratio crosses the ground.
+// Transmittance between (r, mu) and the point at distance d along the ray, as a ratio of two
+// lookups of the transmittance to the top (Bruneton 2017, GetTransmittance). A ray that hits the
+// ground is looked up reversed (-mu), so neither factor of the ratio crosses the ground. A ray
+// that dips (mu < 0) and rises again without meeting it is split at its lowest point: up to
+// there the segment is looked up reversed from each end, two upward rays through thin air;
+// beyond, it is the segment to the lowest point times the one from there (horizontal) on. The
+// plain ratio T(r, mu) / T(r_d, mu_d) would divide two transmittances that both hold the densest
+// air at the lowest point: grazing the ground in a 10 km haze that is exp(-90), below single
+// precision, and the sky's last texel above the horizon came out up to half as bright as its
+// neighbours (a dark line 0.5 deg high just above the horizon).
 vec4 transmittanceAlongRay(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_texture,
                            Float r, Float mu, Float d, bool ray_r_mu_intersects_ground) {
   Float r_d = radiusAtDistance(atm, r, mu, d);
   Float mu_d = atmClampCosine((r * mu + d) / r_d);
-  if (ray_r_mu_intersects_ground) {
+  if (ray_r_mu_intersects_ground || (mu < 0.0 && mu_d <= 0.0)) {
     return min(transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r_d, -mu_d) /
                    transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r, -mu),
                vec4(1.0));
+  }
+  if (mu < 0.0) {
+    Float r_low = atmClampRadius(atm, r * sqrt(max(1.0 - mu * mu, 0.0)));
+    vec4 low = transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r_low, 0.0);
+    return min(low / transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r, -mu), vec4(1.0)) *
+           min(low / transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r_d, mu_d), vec4(1.0));
   }
   return min(transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r, mu) /
                  transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r_d, mu_d),

@@ -54,8 +54,14 @@
 #define SKYIG_UNIT_MOON_ALBEDO 20
 #define SKYIG_UNIT_MOON_EXTINCTION 21  // ExtinctionTexture
 
-// Tone reproduction (passes/tone.frag, SkyRenderer): the HDR target, its only texture.
+// Tone reproduction (passes/tone.frag, SkyRenderer): the HDR target, and the displayed stars
+// and planets to add (display cd/m^2).
 #define SKYIG_UNIT_HDR_IMAGE 0
+#define SKYIG_UNIT_POINT_SOURCES 1
+
+// The displayed-star pass (passes/star_display.vert, StarPass::drawDisplayed): the HDR target
+// without stars, read per star for the sky it sits on.
+#define SKYIG_UNIT_STAR_BACKGROUND 0
 
 // Image units of the GPU precompute (atmosphere/*.comp): each program numbers what it writes
 // from 0 (at most four tables), and a table written by two programs keeps one unit in both

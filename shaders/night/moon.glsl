@@ -13,6 +13,7 @@
 // integrate it numerically). Hapke's opposition surge B(g) is a factor of the phase angle
 // alone: it would change the total only, which eq. 9 fixes, so it is left out (B = 1).
 #include "common/constants.glsl"
+#include "common/refraction.glsl"
 
 // C_a of eq. 9 (Jensen et al. 2001) and the radiance coefficient 4 C_a / (3 pi) that makes
 // the Lommel-Seeliger disc integral equal eq. 9.
@@ -54,21 +55,6 @@ vec3 moonSurfaceRadiance(IN(vec3) n, IN(vec3) towardObserver, IN(vec3) towardSun
   Float mu = dot(n, towardObserver);
   Float earthshine = mu > 0.0 ? 0.5 : 0.0;
   return albedo * (sunlitScale * lommelSeeliger(dot(n, towardSun), mu) + earthshineScale * earthshine);
-}
-
-// The airless direction of a seen view. Refraction lifts a point seen at apparent altitude h by
-// R(h) = r.y + r.z (h - r.x) + r.w (h - r.x)^2: the ephemeris' own refraction (Saemundsson, at
-// the observer's pressure and temperature, ephemeris/refraction.h) expanded to second order about
-// the disc's apparent centre r.x (sky/night/moon_disc.cpp), so the disc sits where the ephemeris
-// puts it and is flattened near the horizon as the real one is. Over the disc's half degree the
-// third-order term is below 0.01 arcmin.
-vec3 unrefractView(IN(vec3) view, IN(vec4) r) {
-  Float horizontal = sqrt(view.x * view.x + view.y * view.y);
-  if (horizontal < 1e-6) return view;
-  Float h = asin(clamp(view.z, -1.0, 1.0));
-  Float dh = h - r.x;
-  Float airless = h - (r.y + r.z * dh + r.w * dh * dh);
-  return vec3(view.x / horizontal * cos(airless), view.y / horizontal * cos(airless), sin(airless));
 }
 
 // Fraction of a pixel of angular size `pixel` inside the limb, `inside` radians within it:

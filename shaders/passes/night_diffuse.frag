@@ -1,7 +1,8 @@
 // The diffuse night light, added to the sky pass's radiance (blend ONE, ONE): the Milky Way and
 // the unresolved stars (a calibrated panorama, S10 per channel), the zodiacal light (Leinert et
 // al. 1998 table 17, S10) and the airglow (van Rhijn), all dimmed by the transmittance to space
-// along the view. The CPU twin is sky/night/night_diffuse.h.
+// along the view. Below the horizon, the terrain as that light shows it (SkyState::
+// nightGroundRadiance). The CPU twin is sky/night/night_diffuse.h.
 #include "common/bindings.h"
 #include "night/units.glsl"
 #include "night/milky_way.glsl"
@@ -12,6 +13,7 @@ uniform mat3 enuToJ2000;
 uniform vec3 sunJ2000;
 uniform vec3 sunlightRec709;   // luminance 1
 uniform vec3 airglowZenith;    // linear Rec.709, cd/m^2
+uniform vec3 nightGroundRadiance;  // linear Rec.709, cd/m^2: the terrain under the night's light
 layout(binding = SKYIG_UNIT_MILKY_WAY) uniform sampler2D milkyWayS10;
 layout(binding = SKYIG_UNIT_ZODIACAL) uniform sampler2D zodiacalS10;
 layout(binding = SKYIG_UNIT_NIGHT_EXTINCTION) uniform sampler1D extinctionRec709;
@@ -42,5 +44,5 @@ void main() {
   vec2 lonLat = helioEclipticCoordinates(j2000, sunJ2000);
   vec3 zodiacal = s10ToCdM2(texture(zodiacalS10, zodiacalTexCoord(lonLat)).r) * sunlightRec709;
   vec3 airglow = airglowRadiance(airglowZenith, view.z);
-  outRadiance = vec4(t * (milkyWay + zodiacal + airglow), 0.0);
+  outRadiance = vec4(t * (milkyWay + zodiacal + airglow) + (view.z < 0.0 ? nightGroundRadiance : vec3(0.0)), 0.0);
 }

@@ -60,8 +60,12 @@ vec3 insideRec709(vec3 view) {
     rgb += packedGroundReflectionRec709(atm, transmittanceXyz, irradianceXyz, solarIrradianceXyz,
                                         groundAlbedo, camera, view, d, sunDirectionP);
   } else if (nu >= frameAngles.z) {
-    rgb += xyzToRec709Linear(packedSunDiscXyz(atm, transmittanceXyz, solarIrradianceXyz,
-                                              limbDarkeningXyz, camera, view, sunDirectionP));
+    // The disc as seen: refracted and flattened (common/refraction.glsl), where the airless
+    // direction this pixel sees falls on the airless sun.
+    vec3 airless = unrefractView(view, sunRefraction);
+    rgb += xyzToRec709Linear(packedRefractedSunDiscXyz(atm, transmittanceXyz, solarIrradianceXyz,
+                                                       limbDarkeningXyz, camera, view, airless,
+                                                       sunDirectionP));
   }
   if (moonlightOn) {
     float nu_moon = dot(view, moonDirectionP);

@@ -13,11 +13,13 @@ uniform mat3 uWorldToNdc;  // the inverse of ndcToWorld
 
 flat out vec2 vCentrePx;
 flat out vec3 vRadiancePerWeight;
+flat out float vSigmaPx;
 
 void main() {
   vec3 p = uWorldToNdc * aDirection;
   vCentrePx = vec2(0.0);
   vRadiancePerWeight = vec3(0.0);
+  vSigmaPx = kStarPsfSigmaPx;
   if (p.z <= 0.0) {  // behind the eye: a degenerate quad outside the clip volume
     gl_Position = vec4(0.0, 0.0, 2.0, 1.0);
     return;

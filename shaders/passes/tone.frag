@@ -3,10 +3,17 @@
 // a hash of the pixel, so frames are deterministic. The default mapping is the scene's
 // histogram-adjusted curve (Ward Larson, Rushmeier & Piatko 1997), computed on the CPU from the
 // model for every channel alike (sky/eye/tone_curve.h); Tumblin & Rushmeier 1993 is selectable.
+// Stars and planets are not in the HDR image it maps: the displayed-star pass drew them, in
+// display luminance, into pointSourceImage, added here before the display's encoding. The
+// veiling glare of the sun and the moon (tone/glare.glsl) is added to the world's light first:
+// it is the eye's, so it is shown but not written to the EXR.
 #include "common/uniforms.h"
-#include "tone/tone_reproduction.glsl"
+#include "tone/display_curve.glsl"
+#include "tone/glare.glsl"
 
 layout(binding = SKYIG_UNIT_HDR_IMAGE) uniform sampler2D hdrImage;
+// The displayed stars and planets (passes/star_display.vert): display cd/m^2 to add.
+layout(binding = SKYIG_UNIT_POINT_SOURCES) uniform sampler2D pointSourceImage;
 in vec2 vTexCoord;
 layout(location = SKYIG_OUTPUT_COLOR) out vec4 outDisplay;
 
@@ -16,27 +23,25 @@ float hash12(vec2 p) {  // Hoskins, "Hash without sine" (2014), hash12
   return fract((p3.x + p3.y) * p3.z);
 }
 
-float curvePoint(int i) { return curve[i >> 2][i & 3]; }
-
-// The curve's display log10 luminance at a world luminance: linear between its 64 points,
-// held at its ends (ToneCurve::displayLuminance on the CPU).
-float curveAt(float worldLuminance) {
-  float b = log(max(worldLuminance, 1e-30)) * 0.4342944819;
-  float x = clamp((b - curveRange.x) / (curveRange.y - curveRange.x) * 63.0, 0.0, 63.0);
-  int i = min(int(x), 62);
-  return mix(curvePoint(i), curvePoint(i + 1), x - float(i));
+// The veil of the glare sources along this pixel's view.
+vec3 glareVeil(vec3 view) {
+  vec3 veil = vec3(0.0);
+  for (int i = 0; i < 2; ++i) {
+    if (max(glareLux[i].r, max(glareLux[i].g, glareLux[i].b)) <= 0.0) continue;
+    // atan of |cross| over dot: accurate at the small angles where acos of a float is not.
+    vec3 d = glareDirection[i].xyz;
+    float thetaDeg = degrees(atan(length(cross(view, d)), dot(view, d)));
+    veil += glareLux[i].rgb * veilingLuminancePerLux(thetaDeg, glareDirection[i].w, glareObserver.x, glareObserver.y);
+  }
+  return veil;
 }
 
 void main() {
-  vec3 world = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0).rgb;
-  DisplayModel model = DisplayModel(display.x, display.y, display.z, display.w);
-  vec3 n;
-  if (adaptation.z > 0.5) {
-    n = toneReproduce(world, adaptation.x, model);
-  } else {
-    vec3 xyY = mesopicxyY(rec709ToXyz(max(world, vec3(0.0))));
-    n = displayValues(toneReproduceLinearWithCurve(xyY, curveAt(xyY.z), model), model);
-  }
+  vec3 view = normalize(mat3(ndcToWorld) * vec3(gl_FragCoord.xy * viewport.zw * 2.0 - 1.0, 1.0));
+  vec3 world = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0).rgb + glareVeil(view);
+  DisplayModel model = toneDisplayModel();
+  vec3 ld = toneMapLinear(world) + texelFetch(pointSourceImage, ivec2(gl_FragCoord.xy), 0).rgb;
+  vec3 n = displayValues(compressToDisplay(ld, rec709Luminance(ld), model.ambientLuminance + model.maxLuminance), model);
   float dither = (hash12(gl_FragCoord.xy) + hash12(gl_FragCoord.xy + 71.7) - 1.0) * adaptation.y;
   outDisplay = vec4(clamp(n + dither / 255.0, 0.0, 1.0), 1.0);
 }

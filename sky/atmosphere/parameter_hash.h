@@ -10,7 +10,9 @@
 namespace skyig::atmosphere {
 
 // Bump when the GLSL physics or the precomputation changes the tables it produces.
-inline constexpr std::uint32_t kPhysicsRevision = 1;
+// 2: transmittanceAlongRay splits a dipping ray at its lowest point (the sky's horizon texel in
+//    haze was computed from a ratio of two underflowing transmittances).
+inline constexpr std::uint32_t kPhysicsRevision = 2;
 
 class Fnv1a64 {
  public:

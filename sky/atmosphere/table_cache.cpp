@@ -1,5 +1,6 @@
 #include "sky/atmosphere/table_cache.h"
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <chrono>
@@ -233,21 +234,69 @@ AtmosphereModel loadOrPrecompute(const ModelConfig& config,
   return loadOrPrecompute(config, directory, result, TableBuilder(precomputeTablesOnCpu));
 }
 
-AtmosphereModel loadOrPrecompute(const ModelConfig& config, const std::filesystem::path& directory, CacheResult* result,
-                                 const TableBuilder& builder, const PrecomputeControl& control) {
+AtmosphereModel loadOrPrecompute(const ModelConfig& config,
+                                 const std::filesystem::path& directory, CacheResult* result,
+                                 const TableBuilder& builder, std::uint64_t maxCacheBytes,
+                                 const PrecomputeControl& control) {
   const auto path = cacheFilePath(directory, config);
-  const FileLock lock(path, control.cancel);
-  std::string reason;
-  if (auto tables = readTableCache(path, config, &reason)) {
-    if (result) *result = {CacheOutcome::kLoaded, "", path};
-    return AtmosphereModel(config, std::move(*tables));
+  std::optional<AtmosphereModel> model;
+  {
+    const FileLock lock(path, control.cancel);
+    std::string reason;
+    if (auto tables = readTableCache(path, config, &reason)) {
+      std::error_code ec;  // the last use, for least-recently-used eviction (best effort)
+      std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), ec);
+      if (result) *result = {CacheOutcome::kLoaded, "", path};
+      return AtmosphereModel(config, std::move(*tables));
+    }
+    const bool existed = std::filesystem::exists(path);
+    std::vector<GroupTables> tables = builder(config, control);  // validates the config (or throws)
+    roundTablesToFloat(tables);
+    writeTableCache(path, config, tables);
+    if (result) *result = {existed ? CacheOutcome::kRebuilt : CacheOutcome::kComputed, reason, path};
+    model.emplace(config, std::move(tables));
+  }  // unlocked before evicting: the lock files of evicted tables go too
+  if (maxCacheBytes > 0) evictLeastRecentlyUsed(directory, maxCacheBytes, path);
+  return std::move(*model);
+}
+
+bool cacheFileExists(const std::filesystem::path& directory, const ModelConfig& config) {
+  std::error_code ec;
+  return std::filesystem::exists(cacheFilePath(directory, config), ec);
+}
+
+std::vector<std::filesystem::path> evictLeastRecentlyUsed(const std::filesystem::path& directory,
+                                                          std::uint64_t maxBytes,
+                                                          const std::filesystem::path& keep) {
+  struct Entry {
+    std::filesystem::file_time_type used;
+    std::uint64_t bytes;
+    std::filesystem::path path;
+  };
+  std::vector<Entry> files;
+  std::uint64_t total = 0;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(directory, ec)) {
+    std::error_code fe;
+    if (e.path().extension() != ".skyatm" || !e.is_regular_file(fe)) continue;
+    const auto bytes = e.file_size(fe);
+    const auto used = e.last_write_time(fe);
+    if (fe) continue;  // removed meanwhile by another process
+    files.push_back({used, bytes, e.path()});
+    total += bytes;
   }
-  const bool existed = std::filesystem::exists(path);
-  std::vector<GroupTables> tables = builder(config, control);  // validates the config (or throws)
-  roundTablesToFloat(tables);
-  writeTableCache(path, config, tables);
-  if (result) *result = {existed ? CacheOutcome::kRebuilt : CacheOutcome::kComputed, reason, path};
-  return AtmosphereModel(config, std::move(tables));
+  std::sort(files.begin(), files.end(), [](const Entry& a, const Entry& b) { return a.used < b.used; });
+  std::vector<std::filesystem::path> removed;
+  for (const Entry& f : files) {
+    if (total <= maxBytes) break;
+    if (std::filesystem::equivalent(f.path, keep, ec)) continue;
+    if (std::filesystem::remove(f.path, ec)) {
+      std::filesystem::remove(f.path.string() + ".lock", ec);
+      total -= f.bytes;
+      removed.push_back(f.path);
+    }
+  }
+  return removed;
 }
 
 }  // namespace skyig::atmosphere

@@ -67,14 +67,31 @@ using TableBuilder = std::function<std::vector<GroupTables>(const ModelConfig&, 
 // The CPU precompute (precompute.h) of every group; steps are named "group 2/4: ...".
 std::vector<GroupTables> precomputeTablesOnCpu(const ModelConfig& config, const PrecomputeControl& control = {});
 
-// Loads the model's tables from `directory` if a valid file matches the config; otherwise
-// precomputes them (with `builder`, the CPU by default), writes the file and returns the model.
-// While another process computes the same file this waits for it; `control.cancel` ends the
-// wait and the precompute alike (Cancelled, nothing written).
+// Loads the model's tables from `directory` if a valid file matches the config (and touches
+// it: its modification time is its last use); otherwise precomputes them (with `builder`, the
+// CPU by default), writes the file and returns the model. With maxCacheBytes > 0 the files
+// least recently used are then removed until the cache holds at most that many bytes
+// (evictLeastRecentlyUsed); the file just written stays whatever its size. While another
+// process computes the same file this waits for it; `control.cancel` ends the wait and the
+// precompute alike (Cancelled, nothing written).
 AtmosphereModel loadOrPrecompute(const ModelConfig& config,
                                  const std::filesystem::path& directory,
                                  CacheResult* result = nullptr);
-AtmosphereModel loadOrPrecompute(const ModelConfig& config, const std::filesystem::path& directory, CacheResult* result,
-                                 const TableBuilder& builder, const PrecomputeControl& control = {});
+AtmosphereModel loadOrPrecompute(const ModelConfig& config,
+                                 const std::filesystem::path& directory, CacheResult* result,
+                                 const TableBuilder& builder, std::uint64_t maxCacheBytes = 0,
+                                 const PrecomputeControl& control = {});
+
+// True when `directory` has a file for the config (valid or not: reading it costs as much as
+// loading it).
+bool cacheFileExists(const std::filesystem::path& directory, const ModelConfig& config);
+
+// Removes the least recently used cache files (*.skyatm, oldest modification time first) and
+// their lock files until the *.skyatm files of `directory` total at most maxBytes; never
+// `keep`. Returns the files removed. A file another process still reads stays readable to it
+// (POSIX unlink); one it needs again is computed again.
+std::vector<std::filesystem::path> evictLeastRecentlyUsed(const std::filesystem::path& directory,
+                                                          std::uint64_t maxBytes,
+                                                          const std::filesystem::path& keep);
 
 }  // namespace skyig::atmosphere

@@ -87,7 +87,10 @@ ToneCurve histogramAdjustment(const LuminanceHistogram& histogram, const Display
                                  display.minCdM2, display.maxCdM2));
   };
   const double dMin = std::log10(display.minCdM2);
-  const double dMax = std::max(matched(worldMax), dMin + 0.5), dRange = dMax - dMin;
+  // The extended scene tops out a little below the display's white, so that only the discs and
+  // their glare reach it and an extended bright area keeps its hue (kHighlightHeadroomLog10).
+  const double dTop = std::log10(display.maxCdM2) - kHighlightHeadroomLog10;
+  const double dMax = std::max(std::min(matched(worldMax), dTop), dMin + 0.5), dRange = dMax - dMin;
 
   ToneCurve curve;
   curve.minLog10 = worldMin;
@@ -150,7 +153,12 @@ ToneCurve histogramAdjustment(const LuminanceHistogram& histogram, const Display
   // contrasts (slope 1 in log luminance) about its level, placed at the level's matched
   // luminance.
   curve.linear = true;
-  const double anchor = matched(std::log10(level)) - std::log10(level);
+  // Placed at the level's matched luminance, but never so high that the scene's brightest
+  // extended part passes dMax (a twilight glow 10x the sky would turn white) nor, where the
+  // range allows, so low that its darkest part falls below the display's black.
+  const double matchedAnchor = matched(std::log10(level)) - std::log10(level);
+  const double highest = dMax - worldMax, lowest = dMin - worldMin;
+  const double anchor = std::min(std::max(matchedAnchor, lowest), highest);
   for (int k = 0; k < ToneCurve::kPoints; ++k) {
     const double bw = worldMin + (curve.maxLog10 - worldMin) * k / (ToneCurve::kPoints - 1);
     curve.displayLog10[static_cast<std::size_t>(k)] = static_cast<float>(std::min(bw + anchor + gain, std::log10(display.maxCdM2) + 3.0));

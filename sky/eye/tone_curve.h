@@ -37,6 +37,12 @@ struct LuminanceHistogram {
   double logMean() const;
 };
 
+// How far below the display's white (log10) the brightest extended part of a scene is shown:
+// 0.1, i.e. 80% of white, leaving the top for the sun's and moon's discs and their glare. Above
+// ~80% of white a saturated colour cannot keep its hue (its brightest channel clips) and turns
+// to white along it (shaders/tone/tone_reproduction.glsl, compressToDisplay).
+inline constexpr double kHighlightHeadroomLog10 = 0.1;
+
 // The range the display can show: black (its ambient) to white, cd/m^2, and the luminance its
 // viewer is adapted to (Tumblin & Rushmeier's L_a(d)).
 struct DisplayRange {

@@ -64,6 +64,40 @@ void opening(std::vector<glm::vec3>& image, int width, int height, int r) {
   extremumFilter(image, width, height, r, true, false);
 }
 
+// One pass of a separable (2r+1)-texel box filter, with the edges of extremumFilter (rows wrap,
+// columns clamp).
+void boxFilter(std::vector<glm::vec3>& image, int width, int height, int r, bool alongRows) {
+  const int lines = alongRows ? height : width, length = alongRows ? width : height;
+  const std::size_t stride = alongRows ? 1 : static_cast<std::size_t>(width);
+  std::vector<glm::dvec3> padded(static_cast<std::size_t>(length + 2 * r));
+  for (int l = 0; l < lines; ++l) {
+    const std::size_t base = alongRows ? static_cast<std::size_t>(l) * static_cast<std::size_t>(width) : static_cast<std::size_t>(l);
+    for (int i = -r; i < length + r; ++i) {
+      const int j = alongRows ? (i + length) % length : std::clamp(i, 0, length - 1);
+      padded[static_cast<std::size_t>(i + r)] = glm::dvec3(image[base + static_cast<std::size_t>(j) * stride]);
+    }
+    glm::dvec3 sum(0.0);
+    for (int d = 0; d < 2 * r; ++d) sum += padded[static_cast<std::size_t>(d)];
+    for (int i = 0; i < length; ++i) {
+      sum += padded[static_cast<std::size_t>(i + 2 * r)];
+      image[base + static_cast<std::size_t>(i) * stride] = glm::vec3(sum / static_cast<double>(2 * r + 1));
+      sum -= padded[static_cast<std::size_t>(i)];
+    }
+  }
+}
+
+// The opening leaves a mosaic: each local maximum of its erosion becomes a flat (2r+1)^2-texel
+// plateau, with a step to the next (0.9 deg squares, wider in RA away from the equator, which a
+// display with the eye's contrast shows as blocks). Two passes of a box of the same width (a
+// 4r+1-texel triangle, 0.9 deg at half maximum, no finer than the opening already made the map)
+// turn the steps into smooth ramps, with the map's mean kept.
+void smoothPlateaus(std::vector<glm::vec3>& image, int width, int height, int r) {
+  for (int pass = 0; pass < 2; ++pass) {
+    boxFilter(image, width, height, r, true);
+    boxFilter(image, width, height, r, false);
+  }
+}
+
 }  // namespace
 
 MilkyWayMap::MilkyWayMap(const std::string& pngPath) {
@@ -78,6 +112,7 @@ MilkyWayMap::MilkyWayMap(const std::string& pngPath) {
     texels_[i] = glm::vec3(glm::dvec3(lut[rgb[3 * i]], lut[rgb[3 * i + 1]], lut[rgb[3 * i + 2]]));
   // 2 pixels either side: 5 x 0.176 deg, wider than the catalogue stars' images in the map.
   opening(texels_, width_, height_, 2);
+  smoothPlateaus(texels_, width_, height_, 2);
 
   // Calibration: the mean over |b| >= 60 deg (solid-angle weighted) and the 99th percentile
   // within |b| <= 10 deg of the linear luminance. sin b per pixel from per-row and per-column

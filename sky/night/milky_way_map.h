@@ -5,7 +5,9 @@
 //  1. decode sRGB to linear;
 //  2. remove the stars skyig draws from its catalogue (V <= 6.5) with a grey opening (a 5x5
 //     minimum then maximum filter, 0.9 deg): a star's image is a few pixels wide, the Milky
-//     Way's structure wider, so the opening keeps the band and drops the point sources;
+//     Way's structure wider, so the opening keeps the band and drops the point sources; then
+//     smooth the opening's flat 5x5 plateaus (two 5-texel box passes), which would otherwise
+//     show as 1-2 deg blocks;
 //  3. calibrate: an affine map of the map's luminance so that its mean over |b| >= 60 deg is
 //     the integrated light of the stars fainter than the naked-eye limit at the galactic poles,
 //     and its 99th percentile within |b| <= 10 deg that of the brightest Milky Way star clouds

@@ -109,23 +109,13 @@ double cachedAlbedoNormalisation(const MoonDisc& d, const MoonAlbedo& albedo) {
   return cache.value;
 }
 
-// Refraction as a function of the apparent altitude h, from the ephemeris' function of the
-// airless altitude a (h = a + R(a)), inverted by fixed-point iteration: |dR/da| < 0.3 wherever
-// R is defined, so eight steps leave well under a micro-arcsecond.
-double refractionAtApparent(double h, const MoonPlacement& p) {
-  double a = h;
-  for (int i = 0; i < 8; ++i) a = h - ephemeris::refractionSaemundsson(a, p.pressureHpa, p.temperatureC);
-  return h - a;
-}
-
-// The second-order expansion of refractionAtApparent about the disc's apparent centre, by
-// central differences over the disc's radius (shaders/night/moon.glsl, unrefractView). At the
-// centre itself it is the ephemeris' own lift, so the disc is drawn where the ephemeris says.
+// The ephemeris' refraction about the disc's apparent centre (shaders/common/refraction.glsl,
+// unrefractView), over the moon's radius: at the centre it is the ephemeris' own lift, so the
+// disc is drawn where the ephemeris says.
 glm::dvec4 refractionNear(const MoonPlacement& p) {
-  const double h0 = p.altitudeRefractedRad, step = 0.0045;  // ~ the moon's angular radius
-  const double r0 = p.altitudeRefractedRad - p.altitudeRad;
-  const double up = refractionAtApparent(h0 + step, p), down = refractionAtApparent(h0 - step, p);
-  return {h0, r0, (up - down) / (2.0 * step), (up - 2.0 * refractionAtApparent(h0, p) + down) / (2.0 * step * step)};
+  const ephemeris::RefractionExpansion r =
+      ephemeris::refractionExpansion(p.altitudeRefractedRad, p.altitudeRad, 0.0045, p.pressureHpa, p.temperatureC);
+  return {r.centreRad, r.refraction, r.slope, r.halfCurvature};
 }
 
 }  // namespace

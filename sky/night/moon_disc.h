@@ -51,7 +51,7 @@ struct MoonDisc {
   glm::dvec3 sunlitScale{0.0};           // cd/m^2 per unit albedo x Lommel-Seeliger factor
   glm::dvec3 earthshineScale{0.0};       // cd/m^2 per unit albedo x 1/2
   // Refraction near the disc as a function of apparent altitude h: (h0, R(h0), R'(h0), R''(h0)/2),
-  // radians, for shaders/night/moon.glsl's unrefractView.
+  // radians, for shaders/common/refraction.glsl's unrefractView.
   glm::dvec4 refraction{0.0};
   glm::dvec3 irradianceRec709{0.0};      // the disc's irradiance above the atmosphere, lux per channel
   std::shared_ptr<const atmosphere::ExtinctionProfile> extinction;  // null: no atmosphere

@@ -64,6 +64,16 @@ NightDiffuseRadiance nightDiffuseRadiance(const NightDiffuseSky& sky, const glm:
 double meanNightDiffuseLuminance(const ephemeris::SkyEphemeris& sky,
                                  std::shared_ptr<const atmosphere::ExtinctionProfile> extinction);
 
+// The diffuse night light's illuminance on a horizontal surface at the observer (linear Rec.709
+// lux per channel, luminance-weighted sum = lux): E = integral of L cos(theta) dOmega over the
+// upper hemisphere, from the same directions and light as meanNightDiffuseLuminance (the Milky
+// Way at its floor). With the resolved stars (sky/night/star_field.h horizontalIlluminance) it
+// is what lights the terrain on a moonless night: ~1e-3 lux at a dark site, airglow about half
+// of it (Roach & Gordon 1973; the "starlight" illuminance of 1-2e-3 lux often quoted includes
+// airglow and zodiacal light).
+glm::dvec3 nightDiffuseIlluminance(const ephemeris::SkyEphemeris& sky,
+                                   std::shared_ptr<const atmosphere::ExtinctionProfile> extinction);
+
 // The extinction factor (linear Rec.709) of a view, as the GL pass samples it.
 glm::dvec3 nightExtinction(const NightDiffuseSky& sky, const glm::dvec3& viewEnu);
 

@@ -86,4 +86,11 @@ StarField buildStarField(const StarCatalogue* catalogue, const ephemeris::SkyEph
   return field;
 }
 
+glm::dvec3 horizontalIlluminance(const StarField& field) {
+  glm::dvec3 e(0.0);
+  for (const auto* list : {&field.stars, &field.planets})
+    for (const PointSource& p : *list) e += p.rec709Lux * std::max(p.direction.z, 0.0);
+  return e;
+}
+
 }  // namespace skyig::sky::night

@@ -43,6 +43,12 @@ struct StarFieldOptions {
 StarField buildStarField(const StarCatalogue* catalogue, const ephemeris::SkyEphemeris& sky,
                          const atmosphere::ExtinctionProfile& extinction, const StarFieldOptions& options);
 
+// The illuminance of all the field's stars and planets on a horizontal surface at the observer
+// (linear Rec.709 lux per channel): the sum of each one's illuminance times the sine of its
+// altitude. About 3e-4 lux for the whole sky of a dark site (Roach & Gordon 1973: the
+// integrated starlight is of the order of the zodiacal light's).
+glm::dvec3 horizontalIlluminance(const StarField& field);
+
 // The apparent direction of an airless ENU unit vector, lifted by refraction (Saemundsson) at
 // `pressureHpa` and `temperatureC`, azimuth unchanged.
 glm::dvec3 refractedDirection(const glm::dvec3& airless, double pressureHpa, double temperatureC);

@@ -159,6 +159,20 @@ TEST(Cigi4, StartOfFrame) {
   EXPECT_EQ(std::get<StartOfFrame>(d.packets.at(0)), s);
 }
 
+// The Start of Frame the node sends a CIGI 4.0 host (docs/protocol.md's example): big-endian,
+// operate, timestamp valid, WGS-84, minor version 0, no condition flags.
+TEST(Cigi4, StartOfFrameAsTheNodeSendsIt) {
+  StartOfFrame s;
+  s.igFrameNumber = 258;
+  s.timestamp = 100000;
+  s.timestampValid = true;
+  s.lastHostFrameNumber = 30;
+  const std::vector<Packet> packets{s};
+  std::vector<std::uint8_t> b;
+  ASSERT_EQ(encodeMessage4(packets, ByteOrder::big, b), "");
+  EXPECT_EQ(toHex(b), toHex(hexBytes("00 18 FF FF 04 00 00 05 | 00 00 01 02 00 01 86 A0 | 00 00 00 1E 00 00 00 00")));
+}
+
 TEST(Cigi4, UnknownPacketsSkippedAndErrorsNamed) {
   std::vector<std::uint8_t> b = encode4(ig4(), ByteOrder::little);
   // A CIGI 4 Entity Control (id 0x25, 16 bytes) skyig does not decode, then a 4-byte tail.

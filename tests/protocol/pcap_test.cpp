@@ -47,9 +47,10 @@ TEST(Pcap, FileAndRecordHeadersAreByteExact) {
   opt.linkType = kLinkRaw;
   Writer w(sink, opt);
   ASSERT_TRUE(w.open());
-  // magic A1B2C3D4, version 2.4, thiszone 0, sigfigs 0, snaplen 65535, link type 101.
+  // magic A1B2C3D4, version 2.4, thiszone 0, sigfigs 0, snaplen 262144 (libpcap's default:
+  // any UDP datagram fits), link type 101.
   EXPECT_EQ(toHex(sink.data), toHex(hexBytes("A1 B2 C3 D4 00 02 00 04 | 00 00 00 00 00 00 00 00 |"
-                                             "00 00 FF FF 00 00 00 65")));
+                                             "00 04 00 00 00 00 00 65")));
   const std::vector<std::uint8_t> frame{0xDE, 0xAD, 0xBE, 0xEF};
   ASSERT_TRUE(w.writeRecord(1700000000LL * 1000000000LL + 123456789, frame));
   // 1700000000 = 0x6553F100; 123456789 ns -> 123456 us = 0x0001E240; lengths 4 and 4.
@@ -65,7 +66,7 @@ TEST(Pcap, LittleEndianNanosecondHeader) {
   Writer w(sink, opt);
   ASSERT_TRUE(w.open());
   EXPECT_EQ(toHex(sink.data), toHex(hexBytes("4D 3C B2 A1 02 00 04 00 | 00 00 00 00 00 00 00 00 |"
-                                             "FF FF 00 00 01 00 00 00")));
+                                             "00 00 04 00 01 00 00 00")));
 }
 
 TEST(Pcap, UdpFrameHeadersAndChecksums) {
@@ -317,12 +318,47 @@ TEST(Pcap, WriterRejectsBadInput) {
   ASSERT_TRUE(w.open());
   EXPECT_FALSE(w.writeRecord(-1, payload(4, 0)));
   EXPECT_NE(w.error().find("negative timestamp -1"), std::string::npos) << w.error();
-  Writer w2(sink, WriterOptions{kLinkEthernet, Precision::micro, ByteOrder::little, 100, 0});
-  ASSERT_TRUE(w2.open());
-  EXPECT_FALSE(w2.writeRecord(0, payload(101, 0)));
-  EXPECT_NE(w2.error().find("snap length 100"), std::string::npos) << w2.error();
   Writer w3(sink, WriterOptions{kLinkLinuxSll, Precision::micro, ByteOrder::little, 65535, 0});
   EXPECT_FALSE(w3.open());
+}
+
+// A frame longer than the snap length is cut there, with its original length in the record
+// header (tcpdump's behaviour), counted, and the writer goes on: never a failed recording.
+TEST(Pcap, FrameBeyondTheSnapLengthIsTruncatedNotFatal) {
+  io::MemorySink sink;
+  Writer w(sink, WriterOptions{kLinkRaw, Precision::micro, ByteOrder::little, 100, 0});
+  ASSERT_TRUE(w.open());
+  EXPECT_TRUE(w.writeRecord(0, payload(101, 0)));
+  EXPECT_TRUE(w.writeRecord(1000, payload(20, 0)));
+  EXPECT_EQ(w.truncated(), 1u);
+  EXPECT_EQ(w.records(), 2u);
+  io::MemorySource source(sink.data);
+  Reader r(source);
+  ASSERT_TRUE(r.open());
+  Record rec;
+  ASSERT_EQ(r.next(rec), Reader::Status::record);
+  EXPECT_EQ(rec.data.size(), 100u);
+  EXPECT_EQ(rec.originalLength, 101u);
+  ASSERT_EQ(r.next(rec), Reader::Status::record);
+  EXPECT_EQ(rec.data.size(), 20u);
+}
+
+// The largest UDP payload IPv4 carries (65,507 bytes) in an Ethernet frame fits the default
+// snap length whole.
+TEST(Pcap, LargestUdpDatagramIsRecordedWhole) {
+  io::MemorySink sink;
+  Writer w(sink);
+  ASSERT_TRUE(w.open());
+  ASSERT_TRUE(w.writeUdp(0, kHost, kIg, payload(65507, 7))) << w.error();
+  EXPECT_EQ(w.truncated(), 0u);
+  io::MemorySource source(sink.data);
+  Reader r(source);
+  ASSERT_TRUE(r.open());
+  Record rec;
+  ASSERT_EQ(r.next(rec), Reader::Status::record);
+  UdpDatagram d;
+  ASSERT_EQ(parseUdpFrame(rec.linkType, rec.data, d), FrameError::none);
+  EXPECT_EQ(d.payload.size(), 65507u);
 }
 
 }  // namespace

@@ -62,7 +62,7 @@ std::vector<ProgramCase> programs() {
        {frame, block("AnalyticSkyBlock", SKYIG_BINDING_SKY), radiance}},
       {{"passes/fullscreen.vert", "passes/tone.frag"},
        {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
-        output("outDisplay", SKYIG_OUTPUT_COLOR)}},
+        sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), output("outDisplay", SKYIG_OUTPUT_COLOR)}},
       // PhysicalSkyPass: inside the atmosphere, from space, and this frame's slices.
       {{"passes/fullscreen.vert", "passes/physical_sky.frag"},
        {frame, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE),
@@ -89,6 +89,9 @@ std::vector<ProgramCase> programs() {
       {{"passes/star.vert", "passes/star.frag"},
        {frame, input("aDirection", SKYIG_ATTRIB_STAR_DIRECTION), input("aRec709Lux", SKYIG_ATTRIB_STAR_REC709_LUX),
         radiance}},
+      {{"passes/star_display.vert", "passes/star.frag"},
+       {frame, block("ToneBlock", SKYIG_BINDING_TONE), input("aDirection", SKYIG_ATTRIB_STAR_DIRECTION),
+        input("aRec709Lux", SKYIG_ATTRIB_STAR_REC709_LUX), sampler("hdrImage", SKYIG_UNIT_STAR_BACKGROUND), radiance}},
       // AtmosphereGpuPrecompute, in the order it runs them.
       {{"atmosphere/precompute_transmittance.comp"}, {image("transmittance_out", SKYIG_IMAGE_TRANSMITTANCE)}},
       {{"atmosphere/precompute_direct_irradiance.comp"},

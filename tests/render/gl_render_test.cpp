@@ -9,6 +9,7 @@
 #include "render/image_io.h"
 #include "render/sky_renderer.h"
 #include "shaders/physics.h"
+#include "ephemeris/refraction.h"
 
 #include <gtest/gtest.h>
 #include <png.h>
@@ -19,6 +20,9 @@
 #include <memory>
 #include <numbers>
 #include <optional>
+#include <string>
+
+#include <unistd.h>
 
 using namespace skyig;
 using namespace skyig::render;
@@ -132,12 +136,12 @@ TEST_F(GlRender, ExrValuesEqualTheModelInCandelaPerSquareMetre) {
   const ChannelConfig c = channel(10.0);
   const SkyState s = state(30.0, 40.0, 25.0);
   renderer_->draw(s, c);
-  const std::string path = (std::filesystem::temp_directory_path() / "skyig_test_exr_values.exr").string();
+  const std::string path = (std::filesystem::temp_directory_path() / ("skyig_test_exr_values-" + std::to_string(::getpid()) + ".exr")).string();
   writeExr(path, renderer_->readHdr(), {{"skyig:channel", c.name}});
   const ExrFile file = readExr(path);
   std::filesystem::remove(path);
   EXPECT_EQ(file.whiteLuminance, 1.0f);
-  EXPECT_EQ(file.attributes.at("skyig:channel"), c.name);
+  EXPECT_EQ(std::get<std::string>(file.attributes.at("skyig:channel")), c.name);
   ASSERT_EQ(file.image.width, kW);
   int compared = 0;
   for (int y = 0; y < kH; ++y)
@@ -156,20 +160,40 @@ TEST_F(GlRender, ExrValuesEqualTheModelInCandelaPerSquareMetre) {
 // The 8-bit frame equals the CPU's tone reproduction of the CPU's radiance within the
 // +-1 LSB dither and rounding.
 TEST_F(GlRender, DisplayFrameEqualsCpuToneReproduction) {
-  const ChannelConfig c = channel(5.0);
-  const SkyState s = state(200.0, 230.0, 8.0);
-  renderer_->draw(s, c);
-  const DisplayImage im = renderer_->readDisplay();
-  const shader::DisplayModel d{c.display.maxLuminance, c.display.ambientLuminance, c.display.gamma,
-                               c.display.adaptationLuminance};
-  for (int y = 1; y < kH; y += 5)
-    for (int x = 1; x < kW; x += 5) {
-      const glm::dvec3 r = ray(s, c, x, y);
-      if (std::abs(r.z) < 2e-3) continue;
-      const glm::dvec3 n = shader::toneReproduce(analyticSkyRadiance(s.sky.params, r), s.adaptationLuminance, d);
-      for (int k = 0; k < 3; ++k)
-        EXPECT_NEAR(im.rgba[(static_cast<size_t>(y) * kW + x) * 4 + k], n[k] * 255.0, 2.0) << x << "," << y;
-    }
+  for (const ToneOperator op : {ToneOperator::Histogram, ToneOperator::TumblinRushmeier}) {
+    ChannelConfig c = channel(5.0);
+    c.display.toneOperator = op;
+    const SkyState s = state(200.0, 230.0, 8.0);
+    renderer_->draw(s, c);
+    const DisplayImage im = renderer_->readDisplay();
+    const shader::DisplayModel d{c.display.maxLuminance, c.display.ambientLuminance, c.display.gamma,
+                                 c.display.adaptationLuminance};
+    const eye::ToneCurve curve = toneCurveFor(s, c.display);
+    for (int y = 1; y < kH; y += 5)
+      for (int x = 1; x < kW; x += 5) {
+        const glm::dvec3 r = ray(s, c, x, y);
+        if (std::abs(r.z) < 2e-3) continue;
+        // The eye's glare of the sun and moon is part of what is displayed (tone/glare.glsl).
+        glm::dvec3 world = analyticSkyRadiance(s.sky.params, r);
+        for (const eye::GlareSource& g : s.glare) {
+          const glm::dvec3 v = glm::normalize(r);
+          const double theta = std::atan2(glm::length(glm::cross(v, g.direction)), glm::dot(v, g.direction)) * 180.0 / std::numbers::pi;
+          world += g.rec709Lux * shader::veilingLuminancePerLux(theta, g.angularRadiusRad * 180.0 / std::numbers::pi,
+                                                               eye::kGlareObserverAgeYears, eye::kGlareOcularPigmentation);
+        }
+        glm::dvec3 n;
+        if (op == ToneOperator::TumblinRushmeier) {
+          n = shader::toneReproduce(world, s.adaptationLuminance, d);
+        } else {
+          const glm::dvec3 xyY = shader::mesopicxyY(shader::rec709ToXyz(glm::max(world, glm::dvec3(0.0))));
+          n = shader::displayValues(
+              shader::toneReproduceLinearWithCurve(xyY, std::log10(curve.displayLuminance(xyY.z)), d), d);
+        }
+        for (int k = 0; k < 3; ++k)
+          EXPECT_NEAR(im.rgba[(static_cast<size_t>(y) * kW + x) * 4 + k], n[k] * 255.0, 2.0)
+              << (op == ToneOperator::Histogram ? "histogram " : "tumblin-rushmeier ") << x << "," << y;
+      }
+  }
 }
 
 // Looking along the horizon at sunset: no NaN or Inf anywhere, in either target.
@@ -188,7 +212,7 @@ TEST_F(GlRender, PngIsWrittenAndNotFlat) {
   const ChannelConfig c = channel(15.0);
   const SkyState s = state(250.0, 260.0, 20.0);
   renderer_->draw(s, c);
-  const std::string path = (std::filesystem::temp_directory_path() / "skyig_test_not_flat.png").string();
+  const std::string path = (std::filesystem::temp_directory_path() / ("skyig_test_not_flat-" + std::to_string(::getpid()) + ".png")).string();
   writePng(path, renderer_->readDisplay(), c.display.gamma);
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
@@ -416,7 +440,7 @@ TEST_F(GlRender, PhysicalTablesSwapAfterTheAnnouncedFrames) {
 // with the model's luminance, at noon, at sunset and in haze with its aureole, and no pixel of
 // the frame or of the file is infinite or NaN (half float overflowed at 65504).
 TEST_F(GlRender, SunDiscKeepsItsLuminanceInTheExr) {
-  const std::filesystem::path exr = std::filesystem::temp_directory_path() / "skyig_sun_disc.exr";
+  const std::filesystem::path exr = std::filesystem::temp_directory_path() / ("skyig_sun_disc-" + std::to_string(::getpid()) + ".exr");
   struct Case {
     double sunAltitude, visibilityKm;
   };
@@ -437,7 +461,9 @@ TEST_F(GlRender, SunDiscKeepsItsLuminanceInTheExr) {
     }
     const glm::dvec3 centre = rgb(im, kW / 2, kH / 2);
     const glm::dvec3 camera = physicalCamera(*model, s.observer.heightM);
-    const glm::dvec3 sun = enuDirection(s.sunAzimuth, s.sunAltitude);
+    // The disc's centre is seen where refraction lifts it, its light arriving along the view:
+    // the CPU model's sun there (the sky it lights differs by a part in 1e3 of the disc).
+    const glm::dvec3 sun = enuDirection(s.sunAzimuth, s.sunApparentAltitude);
     const glm::dvec3 view = ray(s, c, kW / 2, kH / 2);
     const glm::dvec3 expected = spectralView(*model, camera, view, sun);
     EXPECT_NEAR(shader::rec709Luminance(centre) / shader::rec709Luminance(expected), 1.0, 0.05)
@@ -446,4 +472,95 @@ TEST_F(GlRender, SunDiscKeepsItsLuminanceInTheExr) {
     EXPECT_GT(peak, 65504.0);  // what half float could not hold
   }
   std::filesystem::remove(exr);
+}
+
+// The setting sun is flattened by refraction as the real one is: with the true sun on the
+// horizon (seen at ~0.48 deg), its lower limb is lifted ~5.5 arcmin more than its upper, so the
+// disc is ~17% shorter than it is wide. Its extents in a 2-degree channel (~43 pixels across)
+// match the ephemeris' refraction (Saemundsson, evaluated exactly at each limb, not the
+// quadratic the shader uses) to a pixel, and the disc is smooth: limb darkening and the
+// transmittance along each pixel's own ray change by a few per cent between neighbours, and
+// nothing more (no speckle).
+TEST_F(GlRender, RefractionFlattensTheSettingSun) {
+  const auto model = smallModel();
+  const SkyState s = state(0.0, 200.0, 0.0, physicalConditions(model));
+  ChannelConfig c = channel(0.0, Frustum{1, 1, 0.75, 0.75});
+  c.offset = {200.0, s.sunApparentAltitude / kDeg, 0.0};
+  renderer_->draw(s, c);
+  while (renderer_->physicalPass()->current() != model.get()) renderer_->draw(s, c);
+  const HdrImage im = renderer_->readHdr();
+  const double perPixel = 2.0 * kDeg / kW;  // square pixels: 0.75 / 60 = 1 / 80 deg
+  const double radius = model->parameters(0).sun_angular_radius;
+  auto lum = [&](int x, int y) { return shader::rec709Luminance(rgb(im, x, y)); };
+  const double sky = std::max({lum(0, 0), lum(kW - 1, 0), lum(0, kH - 1), lum(kW - 1, kH - 1)});
+  ASSERT_GT(lum(kW / 2, kH / 2), 100.0 * sky) << "the sun is at the channel's centre";
+  // The disc's pixels along the column and the row through its brightest pixel.
+  int cx = kW / 2, cy = kH / 2;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      if (lum(x, y) > lum(cx, cy)) cx = x, cy = y;
+  auto onDisc = [&](int x, int y) { return lum(x, y) > 10.0 * sky; };
+  int top = cy, bottom = cy, left = cx, right = cx;  // y grows downwards
+  while (top > 0 && onDisc(cx, top - 1)) --top;
+  while (bottom < kH - 1 && onDisc(cx, bottom + 1)) ++bottom;
+  const int midRow = (top + bottom) / 2;
+  while (left > 0 && onDisc(left - 1, midRow)) --left;
+  while (right < kW - 1 && onDisc(right + 1, midRow)) ++right;
+  const double tall = bottom - top + 1, wide = right - left + 1;
+  // Where the true limbs are seen: h = a + R(a) at a = a0 +- radius.
+  const double a0 = s.sunAltitude;
+  auto seen = [&](double a) { return a + ephemeris::refractionSaemundsson(a, s.observer.pressureHpa, s.observer.temperatureC); };
+  const double expectedTall = (seen(a0 + radius) - seen(a0 - radius)) / perPixel, expectedWide = 2.0 * radius / perPixel;
+  std::printf("sun at %.3f deg apparent: %g x %g pixels, refraction gives %.2f x %.2f\n", s.sunApparentAltitude / kDeg,
+              wide, tall, expectedWide, expectedTall);
+  EXPECT_LT(expectedTall / expectedWide, 0.9) << "the refraction model flattens the disc";
+  EXPECT_NEAR(wide, expectedWide, 1.0);
+  EXPECT_NEAR(tall, expectedTall, 1.0);
+  // Smooth: within the inner 70% of the disc, each pixel within a few per cent of the mean of
+  // its neighbours on either side, across and along.
+  double worst = 0.0;
+  for (int y = top; y <= bottom; ++y)
+    for (int x = left; x <= right; ++x) {
+      const double u = (x - 0.5 * (left + right)) / (0.5 * wide), v = (y - 0.5 * (top + bottom)) / (0.5 * tall);
+      if (u * u + v * v > 0.7 * 0.7) continue;
+      const glm::dvec3 p = rgb(im, x, y);
+      for (const glm::ivec2 d : {glm::ivec2(1, 0), glm::ivec2(0, 1)}) {
+        const glm::dvec3 mean = 0.5 * (rgb(im, x - d.x, y - d.y) + rgb(im, x + d.x, y + d.y));
+        for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(p[k] - mean[k]) / shader::rec709Luminance(p));
+      }
+    }
+  std::printf("largest step from the neighbours' mean inside the disc: %.2e of the luminance\n", worst);
+  EXPECT_LT(worst, 0.02);
+}
+
+// In haze the sky brightens towards the horizon and meets the ground's aerial perspective there;
+// it has no dark line just above it. The line was the tables' last sky texel (the ray grazing
+// the ground), computed from a ratio of two transmittances that both underflow in single
+// precision (exp(-90) along the ground in a 10 km haze): up to half as bright as its neighbours,
+// 0.5 deg high. Looking towards the sun and away from it, the luminance of each row in the
+// 1.5 deg above the horizon is at least that of the darker of the ground just below the horizon
+// and the sky 1.5 deg up, less 5%.
+TEST_F(GlRender, HazyHorizonHasNoDarkLine) {
+  const auto model = smallModel(10.0);
+  for (double yaw : {300.0, 120.0}) {
+    const SkyState s = state(yaw, 300.0, 10.0, physicalConditions(model));
+    const glm::dvec3 camera = physicalCamera(*model, s.observer.heightM);
+    const double dip = std::acos(model->parameters(0).bottom_radius / glm::length(camera)) / kDeg;
+    ChannelConfig c = channel(0.5 - dip, Frustum{2, 2, 1.5, 1.5});  // 0.025 deg a row, the horizon 0.5 deg low
+    renderer_->draw(s, c);
+    while (renderer_->physicalPass()->current() != model.get()) renderer_->draw(s, c);
+    const HdrImage im = renderer_->readHdr();
+    const int x = kW / 2;
+    int horizon = 0;  // the first row (from the top) on the ground
+    while (horizon < kH && !groundPoint(*model, camera, ray(s, c, x, horizon))) ++horizon;
+    ASSERT_GT(horizon, 70);
+    ASSERT_LT(horizon, kH - 2);
+    const int rows = static_cast<int>(1.5 / 0.025);
+    const double ground = shader::rec709Luminance(rgb(im, x, horizon + 1));
+    const double above = shader::rec709Luminance(rgb(im, x, horizon - rows));
+    double darkest = above;
+    for (int y = horizon - rows; y < horizon; ++y) darkest = std::min(darkest, shader::rec709Luminance(rgb(im, x, y)));
+    std::printf("yaw %.0f: ground %.1f, sky 1.5 deg up %.1f, darkest row between %.1f cd/m^2\n", yaw, ground, above, darkest);
+    EXPECT_GT(darkest, 0.95 * std::min(ground, above)) << "looking at azimuth " << yaw;
+  }
 }

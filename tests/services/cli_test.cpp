@@ -8,12 +8,19 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <array>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
+#include <variant>
+
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -35,7 +42,8 @@ std::string slurp(const fs::path& p) {
 class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("skyig_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ = fs::temp_directory_path() / ("skyig_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                                           "-" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -76,10 +84,80 @@ TEST_F(Cli, RendersAnAnalyticSkyWithOnlyAnOutput) {
   const auto exr = skyig::render::readExr((dir_ / "sky.exr").string());
   EXPECT_EQ(exr.image.width, 64);
   EXPECT_EQ(exr.whiteLuminance, 1.0f);
-  EXPECT_EQ(exr.attributes.at("skyig:utc"), "2026-06-21T17:00:00.000Z");
-  EXPECT_EQ(exr.attributes.at("skyig:channel"), "front");
-  EXPECT_EQ(exr.attributes.at("skyig:sky_model"), "preetham");
+  EXPECT_EQ(std::get<std::string>(exr.attributes.at("skyig:utc")), "2026-06-21T17:00:00.000Z");
+  EXPECT_EQ(std::get<std::string>(exr.attributes.at("skyig:channel")), "front");
+  EXPECT_EQ(std::get<std::string>(exr.attributes.at("skyig:sky_model")), "preetham");
   EXPECT_TRUE(fs::file_size(dir_ / "sky.png") > 100);
+}
+
+// Each of the dome's five EXRs, read back with OpenEXR, names its own channel, offset and
+// frustum (not the ownship's yaw five times), stores numbers as float/double/int attributes and
+// uses OpenEXR's standard latitude, longitude, altitude, capDate, utcOffset and worldToCamera.
+TEST_F(Cli, DomeExrsRecordEachChannelsOwnGeometry) {
+  const Result r = run("render --config " + std::string(SKYIG_SOURCE_DIR) +
+                       "/config/dome5.toml --sky-model preetham --all-channels --size 16x16 --exr " +
+                       (dir_ / "dome.exr").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  struct Expected {
+    const char* name;
+    double yaw, pitch, left, right, down, up;
+  };
+  // config/dome5.toml
+  const Expected channels[] = {{"left", -60, 0, 30, 30, 20, 30},      {"centre", 0, 0, 30, 30, 20, 30},
+                               {"right", 60, 0, 30, 30, 20, 30},      {"chin-left", -25, -45, 25, 15, 20, 20},
+                               {"chin-right", 25, -45, 15, 25, 20, 20}};
+  for (const Expected& e : channels) {
+    SCOPED_TRACE(e.name);
+    const auto exr = skyig::render::readExr((dir_ / ("dome_" + std::string(e.name) + ".exr")).string());
+    const auto& a = exr.attributes;
+    EXPECT_EQ(std::get<std::string>(a.at("skyig:channel")), e.name);
+    EXPECT_EQ(std::get<double>(a.at("skyig:channel_yaw_deg")), e.yaw);
+    EXPECT_EQ(std::get<double>(a.at("skyig:channel_pitch_deg")), e.pitch);
+    EXPECT_EQ(std::get<double>(a.at("skyig:channel_roll_deg")), 0.0);
+    EXPECT_EQ(std::get<double>(a.at("skyig:frustum_left_deg")), e.left);
+    EXPECT_EQ(std::get<double>(a.at("skyig:frustum_right_deg")), e.right);
+    EXPECT_EQ(std::get<double>(a.at("skyig:frustum_down_deg")), e.down);
+    EXPECT_EQ(std::get<double>(a.at("skyig:frustum_up_deg")), e.up);
+    // The ownship (the configuration's default observer: Innsbruck, heading 180, pitch 5).
+    EXPECT_EQ(std::get<double>(a.at("skyig:ownship_yaw_deg")), 180.0);
+    EXPECT_EQ(std::get<double>(a.at("skyig:ownship_pitch_deg")), 5.0);
+    EXPECT_EQ(std::get<double>(a.at("skyig:latitude_deg")), 47.2603);
+    EXPECT_EQ(std::get<float>(a.at("latitude")), 47.2603f);
+    EXPECT_EQ(std::get<float>(a.at("longitude")), 11.3439f);
+    EXPECT_EQ(std::get<float>(a.at("altitude")), 581.0f);
+    EXPECT_EQ(std::get<std::string>(a.at("capDate")), "2026:06:21 17:00:00");
+    EXPECT_EQ(std::get<float>(a.at("utcOffset")), 0.0f);
+    EXPECT_EQ(std::get<int>(a.at("skyig:cie_type")), 12);
+    EXPECT_TRUE(std::holds_alternative<double>(a.at("skyig:sun_altitude_deg")));
+    // worldToCamera (row vectors, ENU world): the channel's boresight, the direction at yaw and
+    // pitch relative to the ownship's nose (roll 0), maps to the camera's +z; zenith is up.
+    const auto& m = std::get<skyig::render::Matrix44f>(a.at("worldToCamera")).m;
+    auto toCamera = [&](double e0, double n, double u) {
+      std::array<double, 3> c{};
+      for (std::size_t j = 0; j < 3; ++j) c[j] = e0 * double{m[0][j]} + n * double{m[1][j]} + u * double{m[2][j]};
+      return c;
+    };
+    // Ownship heading 180 pitch 5, then the channel's yaw and pitch in the body frame: with
+    // yaw first, the boresight is the nose direction turned by the channel's yaw in the
+    // ownship's (pitched) wing plane, then raised by its pitch. Built here from rotations about
+    // the body axes in plain trigonometry (no code of the renderer).
+    const double d = std::numbers::pi / 180.0;
+    const double cy = std::cos(e.yaw * d), sy = std::sin(e.yaw * d), cp = std::cos(e.pitch * d), sp = std::sin(e.pitch * d);
+    const double body[3] = {cp * cy, cp * sy, -sp};  // forward, right, down
+    // Body axes of the ownship in ENU for heading 180, pitch 5, roll 0.
+    const double p5 = 5.0 * d;
+    const double fwd[3] = {0.0, -std::cos(p5), std::sin(p5)}, right[3] = {-1.0, 0.0, 0.0},
+                 down[3] = {0.0, -std::sin(p5), -std::cos(p5)};
+    double enu[3];
+    for (int i = 0; i < 3; ++i) enu[i] = body[0] * fwd[i] + body[1] * right[i] + body[2] * down[i];
+    const auto boresight = toCamera(enu[0], enu[1], enu[2]);
+    EXPECT_NEAR(boresight[0], 0.0, 1e-6);
+    EXPECT_NEAR(boresight[1], 0.0, 1e-6);
+    EXPECT_NEAR(boresight[2], 1.0, 1e-6);
+    EXPECT_GT(toCamera(0, 0, 1)[1], 0.0);  // the zenith is up in every channel's image
+    EXPECT_EQ(m[3][0], 0.0f);              // no translation: the sky is at infinity
+    EXPECT_EQ(m[3][3], 1.0f);
+  }
 }
 
 TEST_F(Cli, AllChannelsWritesOneFilePerChannel) {
@@ -144,13 +222,17 @@ TEST_F(Cli, VersionAndCaps) {
   EXPECT_NE(r.out.find("skyig 0."), std::string::npos);
   EXPECT_NE(r.out.find("GL renderer:"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("SocketCAN:"), std::string::npos) << r.out;
+  // The test programs point skyig at the staged data (tests/staged_data_dir.cpp).
+  EXPECT_NE(r.out.find("Data files:    " + std::string(SKYIG_BINARY_DIR) + "/share/skyig (SKYIG_DATA_DIR)\n"), std::string::npos) << r.out;
 }
 
 // `skyig probe` on the physical atmosphere, with the small tables the atmosphere tests share
-// through the build tree's cache: the clear-sky reference values of Bruneton's 2017 defaults.
+// through the build tree's cache: the clear-sky reference values of Bruneton's 2017 defaults,
+// his ground albedo 0.1 included (without it the probe takes the node's, 0.2, as `render` does,
+// and the zenith measured 1911 cd/m^2, outside the reference's 10%).
 TEST_F(Cli, ProbeReportsTheClearAtmosphere) {
   const std::string cache = std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache";
-  const Result r = run("probe --sun-zenith 30 --sun-azimuth 180 --view 0,0 --view 95,180 --irradiance --cache " + cache);
+  const Result r = run("probe --sun-zenith 30 --sun-azimuth 180 --view 0,0 --view 95,180 --irradiance --ground-albedo 0.1 --cache " + cache);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   const auto& zenith = j["views"][0];
@@ -410,4 +492,66 @@ TEST_F(Cli, RenderAfterProbeOfTheSameConfigurationDoesNotPrecomputeAgain) {
   int files = 0;
   for (const auto& entry : fs::directory_iterator(cache)) files += entry.path().extension() == ".skyatm";
   EXPECT_EQ(files, 1);
+}
+
+// A configuration is read with a bound: /dev/zero (which never ends) is refused at once.
+TEST_F(Cli, EndlessConfigurationIsRefusedWithABound) {
+  const auto start = std::chrono::steady_clock::now();
+  const Result r = run("render --sky-model preetham --config /dev/zero --size 16x16 --png " + (dir_ / "x.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("/dev/zero: the configuration file is larger than 1 MiB"), std::string::npos) << r.err;
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+// A size the renderer cannot allocate is refused when it is given, not when the target fails.
+TEST_F(Cli, OversizedChannelIsRefusedAtValidation) {
+  const Result r = run("render --sky-model preetham --size 16384x16384 --png " + (dir_ / "x.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("each in 16..8192"), std::string::npos) << r.err;
+  const fs::path config = write("big.toml", "[[channel]]\nwidth = 16384\n");
+  const Result c = run("render --sky-model preetham --config " + config.string() + " --png " + (dir_ / "x.png").string());
+  EXPECT_EQ(c.exitCode, 2);
+  EXPECT_NE(c.err.find("channel[0].width: expected an integer in [16, 8192]"), std::string::npos) << c.err;
+}
+
+// A year the ephemeris cannot serve is the observer's time at fault, and says its range.
+TEST_F(Cli, YearOutsideTheEphemerisNamesTheTimeNotTheCatalogue) {
+  for (const char* year : {"1000", "3000"}) {
+    const Result r = run("render --sky-model preetham --utc " + std::string(year) + "-06-21T12:00:00Z --size 16x16 --png " +
+                         (dir_ / "x.png").string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("observer's time"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("1900-2100 range of the ephemeris"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("star_catalogue"), std::string::npos) << r.err;
+  }
+}
+
+// `probe` and `render` of one configuration read one table file and one ground albedo: after
+// `render` has precomputed the tables into a fresh cache, `probe --config` loads them (no second
+// precompute), and the ground it reports 30 degrees below the horizon, sky in-scatter plus the
+// reflected ground, is the rendered pixel's luminance. The configuration's albedo 0.3 (not the
+// medium's default 0.1 nor the sky's 0.2) makes the ground half as bright again as 0.2 would, so
+// a probe with another albedo misses the 5% it is held to by far.
+TEST_F(Cli, ProbeAndRenderShareTheTablesAndTheGroundAlbedo) {
+  const fs::path cache = dir_ / "cache";
+  const fs::path config = write("small.toml", "[sky]\natmosphere_tables = \"small\"\nground_albedo = 0.3\n"
+                                              "atmosphere_cache = \"" + cache.string() + "\"\n[[channel]]\nname = \"front\"\n"
+                                              "width = 33\nheight = 25\nup = 2\ndown = 2\nleft = 2\nright = 2\n");
+  const Result rendered = run("render --config " + config.string() + " --alt 500 --sun-azimuth 180 --sun-elevation 30 "
+                              "--yaw 0 --pitch -30 --exr " + (dir_ / "ground.exr").string());
+  ASSERT_EQ(rendered.exitCode, 0) << rendered.err;
+  ASSERT_NE(rendered.err.find("precomputed"), std::string::npos) << "a fresh cache: the render precomputes";
+  const Result probed = run("probe --config " + config.string() + " --alt 500 --sun-zenith 60 --sun-azimuth 180 --view 120,0");
+  ASSERT_EQ(probed.exitCode, 0) << probed.err;
+  EXPECT_EQ(probed.err.find("precomputed"), std::string::npos) << probed.err;
+  const auto j = nlohmann::json::parse(probed.out);
+  const auto& view = j["views"][0];
+  ASSERT_FALSE(view["ground"].is_null());
+  const double probe = view["sky"]["luminance_cd_m2"].get<double>() + view["ground"]["luminance_cd_m2"].get<double>();
+  const auto image = skyig::render::readExr((dir_ / "ground.exr").string()).image;
+  const auto rgb = image.pixel(16, 12);
+  const double render = 0.2126 * double{rgb[0]} + 0.7152 * double{rgb[1]} + 0.0722 * double{rgb[2]};
+  std::printf("ground 30 deg down: render %.1f cd/m^2, probe %.1f cd/m^2\n", render, probe);
+  EXPECT_NEAR(render, probe, 0.05 * probe);
 }

@@ -50,6 +50,12 @@ TEST(NodeConfig, DocumentedDefaultsEqualBuiltInDefaults) {
   EXPECT_EQ(file.host.syncTimeoutS, builtIn.host.syncTimeoutS);
   EXPECT_EQ(file.host.frameRateHz, builtIn.host.frameRateHz);
   EXPECT_EQ(file.host.canInterface, builtIn.host.canInterface);
+  EXPECT_EQ(file.host.replyTo, builtIn.host.replyTo);
+  ASSERT_EQ(file.host.session.allowed.size(), builtIn.host.session.allowed.size());
+  for (std::size_t i = 0; i < file.host.session.allowed.size(); ++i)
+    EXPECT_EQ(file.host.session.allowed[i].toString(), builtIn.host.session.allowed[i].toString());
+  EXPECT_EQ(file.host.session.sessionGapS, builtIn.host.session.sessionGapS);
+  EXPECT_EQ(file.host.session.staleFrames, builtIn.host.session.staleFrames);
   EXPECT_EQ(file.canIdentifiers.bodyPitch, builtIn.canIdentifiers.bodyPitch);
   EXPECT_EQ(file.canIdentifiers.heading, builtIn.canIdentifiers.heading);
   EXPECT_EQ(file.canIdentifiers.latitude, builtIn.canIdentifiers.latitude);
@@ -83,7 +89,7 @@ TEST(NodeConfig, DomeHasFiveChannelsWithChinWindows) {
 
 TEST(NodeConfig, OutOfRangeValueNamesFileLineKeyAndRange) {
   EXPECT_EQ(errorOf("[[channel]]\nname = \"a\"\nwidth = -5\n"),
-            "bad.toml:3: channel[0].width: expected an integer in [16, 16384], got -5");
+            "bad.toml:3: channel[0].width: expected an integer in [16, 8192], got -5");
   EXPECT_EQ(errorOf("[sky]\nturbidity = 40\n"), "bad.toml:2: sky.turbidity: expected a number in [1.7, 10], got 40");
 }
 
@@ -121,8 +127,24 @@ TEST(NodeConfig, NodesSelectTheirChannels) {
 TEST(NodeConfig, HostSectionErrors) {
   EXPECT_EQ(errorOf("[host]\nreply_port = 70000\n"), "bad.toml:2: host.reply_port: expected an integer in [1, 65535], got 70000");
   EXPECT_EQ(errorOf("[host]\nsynchronous = \"yes\"\n"), "bad.toml:2: host.synchronous: expected true or false, got 'yes'");
+  EXPECT_EQ(errorOf("[host]\nmax_views = 65\n"), "bad.toml:2: host.max_views: expected an integer in [1, 64], got 65");
+  EXPECT_EQ(parseNodeConfig("[host]\nmax_views = 4\n", "ok.toml").host.maxViews, 4);
   EXPECT_EQ(errorOf("[can_identifiers]\nheading = 4000\n"),
             "bad.toml:2: can_identifiers.heading: expected an integer in [0, 2047], got 4000");
+  EXPECT_EQ(
+      errorOf("[host]\nallowed = [\"10.0.0.0/8\",\n  \"10.1.2.3/8\"]\n"),
+      "bad.toml:3: host.allowed: \"10.1.2.3/8\": address bits set beyond the /8 prefix (did you mean 10.0.0.0/8?)");
+  EXPECT_EQ(errorOf("[host]\nallowed = []\n"),
+            "bad.toml:2: host.allowed: an empty list would ignore every host; [\"0.0.0.0/0\"] accepts any address");
+  EXPECT_EQ(errorOf("[host]\nreply_to = \"host:8005\"\n"),
+            "bad.toml:2: host.reply_to: \"host:8005\" is not an IPv4 ADDRESS:PORT");
+  EXPECT_EQ(errorOf("[host]\nsession_gap = 0\n"),
+            "bad.toml:2: host.session_gap: expected a number in [0.05, 3600], got 0");
+  const NodeConfig c = parseNodeConfig(
+      "[host]\nallowed = [\"192.168.7.20\", \"10.9.0.0/16\"]\nreply_to = \"192.168.7.20:8005\"\n", "ok");
+  ASSERT_EQ(c.host.session.allowed.size(), 2u);
+  EXPECT_EQ(c.host.session.allowed[1].toString(), "10.9.0.0/16");
+  EXPECT_EQ(c.host.replyTo, "192.168.7.20:8005");
 }
 
 TEST(NodeConfig, MissingFile) {
@@ -138,6 +160,14 @@ TEST(NodeConfig, AtmosphereTablesAndStarCatalogue) {
             std::string::npos)
       << errorOf("[sky]\natmosphere_tables = \"huge\"\n");
   EXPECT_EQ(parseNodeConfig("[sky]\nstar_catalogue = \"none\"\n", "t.toml").starCataloguePath, "none");
+  // The cache's bound and the precompute rate: 512 MB and one a minute unless told otherwise.
+  EXPECT_EQ(parseNodeConfig("", "empty").atmosphere.cacheMaxBytes, 512ull << 20);
+  EXPECT_EQ(parseNodeConfig("", "empty").atmosphere.buildIntervalS, 60.0);
+  const NodeConfig bounded = parseNodeConfig("[sky]\natmosphere_cache_max_mb = 64\natmosphere_build_interval = 0\n", "t.toml");
+  EXPECT_EQ(bounded.atmosphere.cacheMaxBytes, 64ull << 20);
+  EXPECT_EQ(bounded.atmosphere.buildIntervalS, 0.0);
+  EXPECT_EQ(errorOf("[sky]\natmosphere_cache_max_mb = -1\n"),
+            "bad.toml:2: sky.atmosphere_cache_max_mb: expected an integer in [0, 1048576], got -1");
 }
 
 // [atmosphere] sets every parameter of the medium in the units it names; the defaults are

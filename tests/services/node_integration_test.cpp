@@ -18,10 +18,12 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 #include <thread>
 
 using namespace skyig::services;
@@ -200,6 +202,133 @@ TEST_F(NodeIntegration, StartOfFrameGoesBackToTheHost) {
     lastIgFrame = sof->igFrameNumber;
   }
   node.stop();
+}
+
+// Start of Frame answers only the followed host: a sender outside host.allowed (here a spoofed
+// 127.0.0.2 listening on the reply port) gets nothing however long the node runs, and is
+// counted; the allowed host that then speaks is answered on its own address.
+TEST_F(NodeIntegration, StartOfFrameNeverGoesToASenderOutsideAllowed) {
+  UdpSocket spoofed({"127.0.0.2", 0});
+  const std::uint16_t replyPort = spoofed.localEndpoint().port;
+  UdpSocket host({"127.0.0.1", replyPort});
+  const std::uint16_t port = freeLoopbackPort();
+  NodeOptions o = smallNode(port, dir_ / "dump.jsonl");
+  o.replyPort = replyPort;
+  o.config.host.session.allowed = {parseAddressRange("127.0.0.1/32")};
+  NodeRun node(o);
+  ASSERT_TRUE(node.waitUntilRendering());
+  cigi::IgControl ig;
+  ig.hostFrameNumber = 7;
+  const cigi::Packet packets[] = {ig};
+  std::vector<std::uint8_t> bytes;
+  ASSERT_EQ(cigi::encodeMessage(packets, skyig::protocol::ByteOrder::big, bytes), "");
+  ASSERT_TRUE(spoofed.sendTo(bytes, toSockaddr({"127.0.0.1", port})));
+  ASSERT_TRUE(waitUntil([&] { return node.stats.notAllowedDatagrams.load() == 1; }));
+  ASSERT_TRUE(waitForFrames(node.stats.frames, 10));
+  std::array<std::uint8_t, 2048> buffer{};
+  sockaddr_in from{};
+  EXPECT_EQ(spoofed.receive(buffer, from, 300ms), 0u);
+  EXPECT_EQ(node.stats.startOfFrameSent.load(), 0u);
+  ASSERT_TRUE(host.sendTo(bytes, toSockaddr({"127.0.0.1", port})));
+  const std::size_t n = host.receive(buffer, from, 2000ms);
+  ASSERT_GT(n, 0u);
+  const cigi::DecodedMessage m = cigi::decodeMessage(std::span(buffer.data(), n));
+  ASSERT_TRUE(m.ok());
+  ASSERT_NE(std::get_if<cigi::StartOfFrame>(&m.packets.front()), nullptr);
+  EXPECT_EQ(std::get<cigi::StartOfFrame>(m.packets.front()).lastHostFrameNumber, 7u);
+  EXPECT_EQ(spoofed.receive(buffer, from, 100ms), 0u);
+  node.stop();
+}
+
+namespace {
+// Runs `command`, returns its standard output.
+std::string outputOf(const std::string& command) {
+  std::string out;
+  FILE* p = popen(command.c_str(), "r");
+  if (!p) return out;
+  char buf[512];
+  while (std::fgets(buf, sizeof buf, p)) out += buf;
+  EXPECT_EQ(pclose(p), 0) << command;
+  return out;
+}
+
+// "00 18 FF FF" -> bytes.
+std::vector<std::uint8_t> parseHex(const std::string& text) {
+  std::vector<std::uint8_t> bytes;
+  std::istringstream in(text);
+  std::string b;
+  while (in >> b) bytes.push_back(static_cast<std::uint8_t>(std::stoul(b, nullptr, 16)));
+  return bytes;
+}
+
+std::uint32_t bigEndianU32(const std::vector<std::uint8_t>& b, std::size_t off) {
+  return (std::uint32_t{b[off]} << 24) | (std::uint32_t{b[off + 1]} << 16) | (std::uint32_t{b[off + 2]} << 8) | b[off + 3];
+}
+}  // namespace
+
+// A CIGI 4.0 host is answered in CIGI 4.0: `skyig host --cigi 4` flies into the node, reads the
+// node's Start of Frame on its own socket and prints the last one; its bytes follow the 4.0
+// layout (u16 size 24, u16 id 0xFFFF, major 4, no byte-swap magic; CIGI 4.0 ICD as CCL 4.0's
+// CigiSOFV4 packs it). The host's 4.0 seconds reach the sky's clock: started at 19:00:30, the
+// node shows 19:00:30 and more, where a 3.3 host (minutes only) would give 19:00:00.
+TEST_F(NodeIntegration, Cigi4HostGetsCigi4StartOfFrameBack) {
+  const std::uint16_t port = freeLoopbackPort();
+  const std::uint16_t hostPort = freeLoopbackPort();
+  NodeOptions o = smallNode(port, dir_ / "dump.jsonl");
+  o.replyPort = hostPort;
+  o.statsPath = (dir_ / "stats.json").string();
+  NodeRun node(o);
+  ASSERT_TRUE(node.waitUntilRendering());
+  const std::string out = outputOf(std::string(SKYIG_EXECUTABLE) + " host --cigi 4 --path " + SKYIG_SOURCE_DIR +
+                                   "/config/circuit.csv --rate 30 --duration 1 --start-utc 2026-06-21T19:00:30Z --to 127.0.0.1:" +
+                                   std::to_string(port) + " --bind 127.0.0.1:" + std::to_string(hostPort));
+  ASSERT_TRUE(waitForFrames(node.stats.frames, 3));
+  node.stop();
+  ASSERT_TRUE(node.error.empty()) << node.error;
+  EXPECT_EQ(node.stats.malformedDatagrams.load(), 0u);
+  EXPECT_EQ(node.stats.datagrams.load(), 31u);  // 1 s at 30 Hz, frames 0..30
+  const std::string tag = "host: last Start of Frame bytes: ";
+  const auto at = out.find(tag);
+  ASSERT_NE(at, std::string::npos) << out;
+  const std::vector<std::uint8_t> b = parseHex(out.substr(at + tag.size(), out.find('\n', at) - at - tag.size()));
+  ASSERT_EQ(b.size(), 24u) << out;
+  // Size 24, id 0xFFFF, major 4, database 0, reserved, IG mode operate (1) | timestamp valid
+  // (bit 2) | minor 0 (bits 4-7), all big-endian as the node writes.
+  EXPECT_EQ(std::vector<std::uint8_t>(b.begin(), b.begin() + 8), (std::vector<std::uint8_t>{0x00, 0x18, 0xFF, 0xFF, 0x04, 0x00, 0x00, 0x05}));
+  const std::uint32_t igFrame = bigEndianU32(b, 8), timestamp = bigEndianU32(b, 12), lastHostFrame = bigEndianU32(b, 16);
+  EXPECT_GT(igFrame, 0u);
+  EXPECT_GT(timestamp, 0u);  // 10 us ticks since the node started
+  EXPECT_LE(lastHostFrame, 30u);
+  EXPECT_GT(lastHostFrame, 0u);  // an answer to a host frame that came after the first
+  EXPECT_EQ(bigEndianU32(b, 20), 0u);  // no overframing, paging or excess-data condition
+  // The codec reads the same bytes as a 4.0 Start of Frame with those fields.
+  const cigi::DecodedMessage m = cigi::decodeMessage(b);
+  ASSERT_TRUE(m.ok()) << m.error->describe();
+  EXPECT_EQ(m.majorVersion, 4);
+  const auto& sof = std::get<cigi::StartOfFrame>(m.packets.at(0));
+  EXPECT_EQ(sof.igFrameNumber, igFrame);
+  EXPECT_EQ(sof.lastHostFrameNumber, lastHostFrame);
+  EXPECT_EQ(sof.timestamp, timestamp);
+  EXPECT_NE(out.find("Start of Frame: CIGI 4.0, IG frame " + std::to_string(igFrame)), std::string::npos) << out;
+  // The host's seconds: every dumped frame with a host time is 19:00:30 or later (and the run lasts seconds).
+  int withTime = 0;
+  for (const auto& line : readStateDump(dir_ / "dump.jsonl")) {
+    if (line["host_frame"].is_null()) continue;
+    const std::string utc = line["used"]["utc"].get<std::string>();
+    EXPECT_TRUE(utc >= "2026-06-21T19:00:30" && utc < "2026-06-21T19:00:40") << utc;
+    ++withTime;
+  }
+  EXPECT_GT(withTime, 10);
+  // The statistics name their counters in snake_case, units in the name.
+  std::ifstream statsFile(dir_ / "stats.json");
+  const nlohmann::json stats = nlohmann::json::parse(statsFile);
+  EXPECT_EQ(stats["datagrams"].get<std::uint64_t>(), 31u);
+  EXPECT_EQ(stats["packets"]["ig_control"].get<std::uint64_t>(), 31u);
+  EXPECT_EQ(stats["packets"]["celestial_sphere_control"].get<std::uint64_t>(), 31u);
+  EXPECT_EQ(stats["errors"]["wrong_packet_size"].get<std::uint64_t>(), 0u);
+  EXPECT_GT(stats["start_of_frame_sent"].get<std::uint64_t>(), 0u);
+  EXPECT_TRUE(stats["latency"]["frame_render"].contains("p50_us"));
+  EXPECT_TRUE(stats["can"].contains("pending_double_half"));
 }
 
 // 100 000 malformed datagrams, in bursts at full speed: the node keeps rendering, counts them,

@@ -1,6 +1,8 @@
-// The node's pure parts: the sim clock, ownship prediction, applying CIGI to the host state,
+// The node's pure parts: the sim clock, applying CIGI to the host state,
 // scripted paths.
 #include "protocol/cigi/date.h"
+#include "protocol/cigi/decoder.h"
+#include "protocol/cigi/encoder.h"
 #include "services/cigi_state.h"
 #include "services/host_path.h"
 #include "services/node_config.h"
@@ -62,39 +64,6 @@ TEST(SimClock, CrossesMidnight) {
   EXPECT_NEAR(t->secondsOfDay, 30.0, 1e-3);
 }
 
-// With Rate Control, a 30 Hz host sampled by a 60 Hz IG moves smoothly: half a host frame
-// after a sample the ownship has moved half a frame's worth.
-TEST(OwnshipPredictor, DeadReckonsWithHostRates) {
-  OwnshipPredictor p;
-  const auto t0 = Clock::now();
-  OwnshipRates r;
-  r.valid = true;
-  r.x = 50.0;        // 50 m/s north
-  r.yawRate = 6.0;   // deg/s
-  p.addSample({45.0, 7.0, 1000.0, {350.0, 0.0, 0.0}}, t0, r);
-  const skyig::sky::Ownship o = p.at(t0 + std::chrono::microseconds(16667));
-  EXPECT_NEAR((o.latitudeDeg - 45.0) * 111132.0, 50.0 * 0.016667, 0.01);  // metres of latitude at 45 deg
-  EXPECT_NEAR(o.attitude.yawDeg, 350.1, 1e-3);
-  // Across north the heading wraps.
-  EXPECT_NEAR(p.at(t0 + 200ms).attitude.yawDeg, 351.2, 1e-3);
-  // A silent host: prediction stops after 0.25 s.
-  EXPECT_NEAR(p.at(t0 + 10s).latitudeDeg, p.at(t0 + 250ms).latitudeDeg, 1e-12);
-}
-
-TEST(OwnshipPredictor, ExtrapolatesFromTwoSamplesWithoutRates) {
-  OwnshipPredictor p;
-  const auto t0 = Clock::now();
-  p.addSample({45.0, 7.0, 1000.0, {359.0, 0.0, 10.0}}, t0, {});
-  p.addSample({45.0, 7.0, 1003.0, {1.0, 0.0, 12.0}}, t0 + 100ms, {});
-  const skyig::sky::Ownship o = p.at(t0 + 150ms);
-  EXPECT_NEAR(o.heightM, 1004.5, 1e-9);
-  EXPECT_NEAR(o.attitude.yawDeg, 2.0, 1e-9);  // 359 -> 1 is +2 deg, not -358
-  EXPECT_NEAR(o.attitude.rollDeg, 13.0, 1e-9);
-  // An older sample is ignored.
-  p.addSample({0.0, 0.0, 0.0, {0.0, 0.0, 0.0}}, t0 + 50ms, {});
-  EXPECT_NEAR(p.at(t0 + 100ms).heightM, 1003.0, 1e-9);
-}
-
 namespace {
 cigi::DecodedMessage messageOf(std::uint32_t frame, const cigi::EntityControl& e) {
   cigi::DecodedMessage m;
@@ -127,20 +96,6 @@ TEST(CigiState, OwnshipIsEntityZeroAndBadValuesKeepTheLastGood) {
   EXPECT_EQ(t.state().ownship.attitude.yawDeg, 90.0);
 }
 
-TEST(CigiState, ReorderedOlderFramesAreDropped) {
-  CigiStateTracker t;
-  cigi::EntityControl e;
-  e.latitudeDeg = 2.0;
-  t.apply(messageOf(11, e), Clock::now());
-  e.latitudeDeg = 1.0;
-  t.apply(messageOf(10, e), Clock::now());  // arrives late
-  EXPECT_EQ(t.state().ownship.latitudeDeg, 2.0);
-  EXPECT_EQ(t.staleMessages(), 1u);
-  e.latitudeDeg = 3.0;
-  t.apply(messageOf(0x7fffff00u + 11, e), Clock::now());  // far ahead (less than 2^31) is newer
-  EXPECT_EQ(t.state().ownship.latitudeDeg, 3.0);
-}
-
 TEST(CigiState, CelestialDateAndViewsApply) {
   CigiStateTracker t;
   cigi::DecodedMessage m;
@@ -169,10 +124,11 @@ TEST(CigiState, CelestialDateAndViewsApply) {
   EXPECT_NEAR(t.state().utc.secondsOfDay, 19 * 3600.0 + 30 * 60.0, 1e-3);
   EXPECT_NEAR(secondsOf(t.clock().utcAt(now + 2s)), 19 * 3600.0 + 30 * 60.0 + 2.0, 1e-3);
   ASSERT_EQ(t.state().views.size(), 1u);
-  EXPECT_EQ(*t.state().views[0].leftDeg, 20.0);
-  EXPECT_EQ(*t.state().views[0].rightDeg, 35.0);
-  EXPECT_EQ(*t.state().views[0].yawDeg, -60.0);
-  EXPECT_FALSE(t.state().views[0].upDeg.has_value());
+  ASSERT_NE(t.state().views.find(1), nullptr);
+  EXPECT_EQ(*t.state().views.find(1)->leftDeg, 20.0);
+  EXPECT_EQ(*t.state().views.find(1)->rightDeg, 35.0);
+  EXPECT_EQ(*t.state().views.find(1)->yawDeg, -60.0);
+  EXPECT_FALSE(t.state().views.find(1)->upDeg.has_value());
   cs.date = 2302026;  // 30 February
   m.packets = {ig, cs};
   EXPECT_EQ(t.apply(m, now), 1);
@@ -191,4 +147,50 @@ TEST(HostPath, InterpolatesHeadingTheShortWayAndNamesBadLines) {
     EXPECT_EQ(std::string(e.what()), "p.csv:2: expected 7 numbers: time_s, latitude, longitude, altitude_m, yaw, pitch, roll");
   }
   EXPECT_THROW(HostPath::parse("0,47,11,600,350,0,0\n0,47,11,600,350,0,0\n", "p.csv"), ConfigError);
+}
+
+// A CIGI 4.0 host states the seconds (a float the 3.3 Celestial Sphere Control lacks): the
+// clock starts at the stated instant, not at the start of the minute, runs on the host's IG
+// Control timestamps (at their 4.0 offset), and the node will answer in 4.0. The same
+// statement in 3.3 gives the minute only.
+TEST(CigiState, Cigi4SecondsAndTimestampSetTheClockAndTheReplyVersion) {
+  cigi::IgControl ig;
+  ig.hostFrameNumber = 7;
+  ig.timestamp = 100000;  // 1 s
+  ig.timestampValid = true;
+  cigi::CelestialSphereControl cs;
+  cs.date = *cigi::composeDate({2026, 6, 21});
+  cs.hour = 19;
+  cs.minute = 30;
+  cs.seconds = 42.25f;
+  auto through = [](bool v4, const std::vector<cigi::Packet>& packets) {  // the bytes as sent, decoded
+    std::vector<std::uint8_t> bytes;
+    EXPECT_EQ(v4 ? cigi::encodeMessage4(packets, skyig::protocol::ByteOrder::little, bytes)
+                 : cigi::encodeMessage(packets, skyig::protocol::ByteOrder::little, bytes),
+              "");
+    return cigi::decodeMessage(bytes);
+  };
+  const auto now = Clock::now();
+  CigiStateTracker t4;
+  EXPECT_EQ(t4.apply(through(true, {ig, cs}), now), 0);
+  EXPECT_EQ(t4.state().cigiMajorVersion, 4);
+  EXPECT_NEAR(t4.state().utc.secondsOfDay, 19 * 3600.0 + 30 * 60.0 + 42.25, 1e-3);
+  // Half a second later by the host's timestamp, the host states 42.75 s: the clock agrees.
+  ig.hostFrameNumber = 8;
+  ig.timestamp = 150000;
+  cs.seconds = 42.75f;
+  EXPECT_EQ(t4.apply(through(true, {ig, cs}), now + 500ms), 0);
+  EXPECT_NEAR(secondsOf(t4.clock().utcAt(now + 500ms)), 19 * 3600.0 + 30 * 60.0 + 42.75, 1e-3);
+  EXPECT_NEAR(secondsOf(t4.clock().utcAt(now + 1500ms)), 19 * 3600.0 + 30 * 60.0 + 43.75, 1e-3);
+  // Seconds outside [0, 60) are rejected and the clock kept.
+  ig.hostFrameNumber = 9;
+  cs.seconds = 60.0f;
+  EXPECT_EQ(t4.apply(through(true, {ig, cs}), now + 500ms), 1);
+
+  CigiStateTracker t3;
+  ig.hostFrameNumber = 7;
+  cs.seconds = 42.25f;  // not on the wire in 3.3
+  EXPECT_EQ(t3.apply(through(false, {ig, cs}), now), 0);
+  EXPECT_EQ(t3.state().cigiMajorVersion, 3);
+  EXPECT_NEAR(t3.state().utc.secondsOfDay, 19 * 3600.0 + 30 * 60.0, 1e-3);
 }

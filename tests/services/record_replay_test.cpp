@@ -4,6 +4,7 @@
 // it skips.
 #include "protocol/canaerospace/state_encoder.h"
 #include "protocol/candump/candump.h"
+#include "protocol/cigi/encoder.h"
 #include "protocol/io/byte_sink.h"
 #include "services/node.h"
 #include "services/recorder.h"
@@ -13,9 +14,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
+#include <csignal>
 #include <cstdlib>
 #include <functional>
 #include <filesystem>
@@ -278,4 +283,137 @@ TEST_F(RecordReplay, SendRetransmitsTheRecording) {
   replayer.join();
   EXPECT_EQ(received, 801u);
   EXPECT_EQ(bytes, 801u * 152u);
+}
+
+// Each recording defect of tests/data (make_defect_recordings.py) and what skyig does with it.
+namespace {
+std::string defect(const std::string& name) { return std::string(SKYIG_SOURCE_DIR) + "/tests/data/" + name; }
+
+// A CIGI datagram as big as UDP over IPv4 carries: an IG Control and View Controls.
+std::vector<std::uint8_t> largestDatagram() {
+  namespace cigi = skyig::protocol::cigi;
+  std::vector<cigi::Packet> packets{cigi::IgControl{}};
+  while (packets.size() < 2047) packets.push_back(cigi::ViewControl{});
+  std::vector<std::uint8_t> bytes;
+  EXPECT_EQ(cigi::encodeMessage(packets, skyig::protocol::ByteOrder::big, bytes), "");
+  return bytes;
+}
+}  // namespace
+
+// A 65,496-byte datagram exceeded the old 65,535-byte snap length with its headers and ended
+// the recording; now serve --record keeps it whole and goes on.
+TEST_F(RecordReplay, ServeRecordsTheLargestDatagramWhole) {
+  const std::uint16_t port = freeLoopbackPort();
+  NodeOptions o;
+  o.config.sky.model = skyig::sky::SkyModel::Preetham;
+  o.config.channels.front().width = 16;
+  o.config.channels.front().height = 16;
+  o.listen = {"127.0.0.1", port};
+  o.recordPath = (dir_ / "big.pcap").string();
+  NodeStats stats;
+  std::atomic<bool> stop{false};
+  std::thread node([&] { runNode(o, stats, stop); });
+  EXPECT_TRUE(waitUntil([&] { return stats.frames.load() > 0; }));
+  UdpSocket host({"127.0.0.1", 0});
+  const std::vector<std::uint8_t> big = largestDatagram();
+  ASSERT_GT(big.size(), 65494u);
+  for (int i = 0; i < 3; ++i) host.sendTo(big, toSockaddr({"127.0.0.1", port}));
+  EXPECT_TRUE(waitUntil([&] { return stats.datagrams.load() >= 3; }));
+  stop = true;
+  node.join();
+  EXPECT_EQ(stats.recordErrors.load(), 0u);
+  EXPECT_EQ(stats.recorded.load(), 3u);
+  const CommandResult r = skyig("replay " + (dir_ / "big.pcap").string() + " --quiet --size 16x16");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("replayed 3 host messages"), std::string::npos) << r.out;
+}
+
+TEST_F(RecordReplay, RecordKeepsTheLargestDatagramWhole) {
+  const std::uint16_t port = freeLoopbackPort();
+  const fs::path out = dir_ / "big.pcap";
+  std::thread recorder([&] {
+    EXPECT_EQ(std::system((std::string(SKYIG_EXECUTABLE) + " record --listen 127.0.0.1:" + std::to_string(port) +
+                           " --out " + out.string() + " --count 2 --duration 20 2>/dev/null >/dev/null").c_str()), 0);
+  });
+  UdpSocket host({"127.0.0.1", 0});
+  const std::vector<std::uint8_t> big = largestDatagram();
+  // Until the recorder has both (it binds a moment after starting).
+  const auto end = std::chrono::steady_clock::now() + 20s;
+  while (std::chrono::steady_clock::now() < end && !(fs::exists(out) && fs::file_size(out) >= 24 + 2 * (16 + 42 + big.size()))) {
+    host.sendTo(big, toSockaddr({"127.0.0.1", port}));
+    std::this_thread::sleep_for(100ms);
+  }
+  recorder.join();
+  const CommandResult r = skyig("replay " + out.string() + " --quiet --size 16x16");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("replayed 2 host messages"), std::string::npos) << r.out;
+}
+
+TEST_F(RecordReplay, LargeDatagramRecordingReplays) {
+  const CommandResult r = skyig("replay " + defect("large_datagram.pcap") + " --quiet --size 16x16");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("replayed 11 host messages"), std::string::npos) << r.out;
+}
+
+// A timestamp 1e6 s ahead used to be rendered at 30 frames a second of recording time (30
+// million frames); the pause is skipped and said so.
+TEST_F(RecordReplay, MillionSecondGapIsSkippedInSeconds) {
+  const auto start = std::chrono::steady_clock::now();
+  const CommandResult r = skyig("replay " + defect("time_gap.pcap") + " --quiet --size 16x16");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_LT(seconds, 60.0);
+  EXPECT_NE(r.out.find("replayed 40 host messages: 60 frames"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("skipped 1 pauses longer than --max-gap 60 s (1000000.000 s"), std::string::npos) << r.out;
+  EXPECT_NE((r.out + r.err).find("after record 20"), std::string::npos) << r.out << r.err;  // the log's warning
+}
+
+TEST_F(RecordReplay, SkipBadResynchronisesWhenTheFirstRecordIsCorrupt) {
+  const CommandResult strict = skyig("replay " + defect("corrupt_first_record.pcap") + " --quiet --size 16x16");
+  EXPECT_EQ(strict.exitCode, 2);
+  EXPECT_NE(strict.err.find("record 1 at byte 24"), std::string::npos) << strict.err;
+  const CommandResult r = skyig("replay " + defect("corrupt_first_record.pcap") + " --quiet --size 16x16 --skip-bad");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("replayed 39 host messages"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("skipped 1 bad records"), std::string::npos) << r.out;
+}
+
+TEST_F(RecordReplay, UnknownLinkTypeExitsTwoAndSaysWhich) {
+  for (const char* extra : {"", " --skip-bad", " --send 127.0.0.1:9"}) {
+    const CommandResult r = skyig("replay " + defect("unknown_link_type.pcap") + " --quiet --size 16x16" + extra);
+    EXPECT_EQ(r.exitCode, 2) << extra;
+    EXPECT_NE(r.err.find("pcap link type 147 is not supported"), std::string::npos) << r.err;
+  }
+}
+
+TEST_F(RecordReplay, SendToPortZeroExitsTwo) {
+  const CommandResult r = skyig("replay " + kRecording + " --quiet --send 127.0.0.1:0");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("--send: port 0"), std::string::npos) << r.err;
+}
+
+// A FIFO fed by another thread is read as a stream, once, front to back.
+TEST_F(RecordReplay, ReplayReadsAFifoAsAStream) {
+  const fs::path fifo = dir_ / "host.fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::signal(SIGPIPE, SIG_IGN);  // a replay that stopped reading must fail the test, not kill it
+  std::thread feeder([&] {
+    const std::string bytes = slurp(kRecording);
+    int fd = -1;
+    const auto end = std::chrono::steady_clock::now() + 30s;  // until the replay opens it
+    while ((fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK)) < 0 && std::chrono::steady_clock::now() < end)
+      std::this_thread::sleep_for(10ms);
+    ASSERT_GE(fd, 0) << "the replay never opened the FIFO";
+    ::fcntl(fd, F_SETFL, 0);  // blocking writes from here on
+    for (std::size_t done = 0; done < bytes.size();) {
+      const ssize_t n = ::write(fd, bytes.data() + done, std::min<std::size_t>(4096, bytes.size() - done));
+      if (n <= 0) break;
+      done += static_cast<std::size_t>(n);
+    }
+    ::close(fd);
+  });
+  const CommandResult r = skyig("replay " + fifo.string() + " --quiet --size 16x16 --frame-rate 2");
+  feeder.join();
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("replayed 801 host messages"), std::string::npos) << r.out;
 }

@@ -43,8 +43,9 @@ height = 48
 // Host frame k of the stream: a helicopter hovering over Innsbruck at night, nose 25 deg up.
 // From frame 30 on the host dims the stars to 30 %, turns view 0 by 40 deg to the right, brings
 // the visibility down to 12 km and sets a cold high-pressure air mass.
-std::vector<std::uint8_t> hostDatagram(std::uint32_t k) {
-  const bool changed = k >= 30;
+// `minuteOfDay` sets the sim clock (UTC) instead, for a time-lapse.
+std::vector<std::uint8_t> hostDatagram(std::uint32_t k, int minuteOfDay = -1) {
+  const bool changed = minuteOfDay < 0 && k >= 30;
   cigi::IgControl ig;
   ig.hostFrameNumber = k;
   ig.timestamp = k * 3333;  // 30 Hz in 10 us ticks
@@ -57,8 +58,8 @@ std::vector<std::uint8_t> hostDatagram(std::uint32_t k) {
   own.pitchDeg = 25.0f;
   cigi::CelestialSphereControl sky;
   sky.date = 1152026;  // 15 January 2026
-  sky.hour = 21;
-  sky.minute = 30;
+  sky.hour = static_cast<std::uint8_t>(minuteOfDay < 0 ? 21 : minuteOfDay / 60);
+  sky.minute = static_cast<std::uint8_t>(minuteOfDay < 0 ? 30 : minuteOfDay % 60);
   sky.starFieldIntensityPct = changed ? 30.0f : 100.0f;
   cigi::AtmosphereControl air;
   air.visibilityRangeM = changed ? 12000.0f : 50000.0f;
@@ -175,4 +176,66 @@ TEST(ReplayEqualsServe, ReplayUsesTheHostsStarsViewsAirAndVisibilityAsTheNodeDid
   }
   EXPECT_LE(off, a.rgb.size() / 200) << "worst difference " << worst << " codes";
   fs::remove_all(dir);
+}
+
+// Two nodes fed one stream adapt alike: the eye's adaptation is stepped on the host's clock at
+// each host message (sky/eye/adaptation.h), never on a node's own, so two `serve`s showing
+// adjacent channels of one dome stay matched while the eye adapts. The stream is a time-lapse
+// of dusk (a minute of sim time every two host frames, 30 min in all: no jump that would reset
+// the eye), so the adaptation lags the darkening scene.
+TEST(ReplayEqualsServe, TwoNodesFedOneStreamAdaptAlike) {
+  const fs::path dir = freshTestDirectory("skyig_two_nodes_");
+  const fs::path configPath = dir / "node.toml";
+  std::ofstream(configPath) << kConfig;
+  const std::string cache = std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache";
+  ::setenv("XDG_CACHE_HOME", cache.c_str(), 1);
+
+  struct Node {
+    NodeOptions options;
+    NodeStats stats;
+    std::thread thread;
+  };
+  std::atomic<bool> stop{false};
+  Node nodes[2];
+  for (int i = 0; i < 2; ++i) {
+    Node& n = nodes[i];
+    n.options.config = loadNodeConfig(configPath.string());
+    loadSkyData(n.options.config);
+    n.options.listen = {"127.0.0.1", freeLoopbackPort()};
+    n.options.dumpStatePath = (dir / ("node" + std::to_string(i) + ".jsonl")).string();
+    n.thread = std::thread([&n, &stop] { runNode(n.options, n.stats, stop); });
+  }
+  for (Node& n : nodes) ASSERT_TRUE(waitUntil([&] { return n.stats.frames.load() > 0; }));
+
+  UdpSocket host({"127.0.0.1", 0});
+  constexpr std::uint32_t kFrames = 60;
+  auto next = std::chrono::steady_clock::now();
+  for (std::uint32_t k = 0; k < kFrames; ++k) {
+    const auto bytes = hostDatagram(k, 15 * 60 + 50 + static_cast<int>(k / 2));  // 15:50 UTC, sunset
+    for (const Node& n : nodes) host.sendTo(bytes, toSockaddr(n.options.listen));
+    next += 33333us;
+    std::this_thread::sleep_until(next);
+  }
+  // The first frame each node drew from the last host message.
+  auto lastHostFrame = [](const fs::path& dump) -> nlohmann::json {
+    for (const auto& line : readStateDump(dump))
+      if (line["host_frame"].is_number() && line["host_frame"].get<std::uint32_t>() == kFrames - 1) return line["used"];
+    return nullptr;
+  };
+  for (int i = 0; i < 2; ++i)
+    EXPECT_TRUE(waitUntil([&] { return !lastHostFrame(nodes[i].options.dumpStatePath).is_null(); }, 20000ms)) << i;
+  stop = true;
+  for (Node& n : nodes) n.thread.join();
+
+  const nlohmann::json a = lastHostFrame(nodes[0].options.dumpStatePath), b = lastHostFrame(nodes[1].options.dumpStatePath);
+  ASSERT_FALSE(a.is_null());
+  ASSERT_FALSE(b.is_null());
+  const double adaptationA = a["adaptation_cd_m2"].get<double>(), adaptationB = b["adaptation_cd_m2"].get<double>();
+  std::cout << "two nodes at the last host frame: adaptation " << adaptationA << " and " << adaptationB
+            << " cd/m^2, scene " << a["scene_cd_m2"].get<double>() << " cd/m^2\n";
+  // Alike: a node's worker may skip a host message the other built a state for, which steps the
+  // same time course in other intervals (1e-3 of the level at most).
+  EXPECT_NEAR(adaptationA / adaptationB, 1.0, 1e-3);
+  // And in time: the eye still lags the darkening scene (it is not simply the scene's level).
+  EXPECT_GT(std::abs(adaptationA / a["scene_cd_m2"].get<double>() - 1.0), 0.01);
 }

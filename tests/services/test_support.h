@@ -15,12 +15,16 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace skyig::services::testing {
 
 // A directory of its own under the temporary directory for the running test, emptied first.
 inline std::filesystem::path freshTestDirectory(const std::string& prefix) {
+  // The process id keeps two checkouts' test runs on one machine out of each other's folders.
   const auto dir = std::filesystem::temp_directory_path() /
-                   (prefix + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+                   (prefix + ::testing::UnitTest::GetInstance()->current_test_info()->name() + "-" +
+                    std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

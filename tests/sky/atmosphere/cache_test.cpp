@@ -4,6 +4,7 @@
 
 #include <cstring>
 #include <fstream>
+#include <thread>
 
 #include "sky/atmosphere/conditions.h"
 #include "sky/atmosphere/parameter_hash.h"
@@ -107,6 +108,36 @@ TEST(AtmosphereCache, RoundTripAndReuse) {
   for (std::size_t g = 0; g < fresh.groupCount(); ++g) raw.push_back(fresh.tables(g));
   roundTablesToFloat(raw);
   EXPECT_TRUE(sameTables(computed, AtmosphereModel(c, raw)));
+}
+
+// With a bound of two and a half files, a third file evicts the least recently used one: a
+// load counts as a use, so the older but reloaded file stays and the unused one goes.
+TEST(AtmosphereCache, LeastRecentlyUsedTablesAreEvictedBeyondTheBound) {
+  const auto dir = freshDirectory("lru");
+  auto config = [](double albedo) {
+    ModelConfig c = tinyConfig();
+    c.medium.groundAlbedo = albedo;
+    return c;
+  };
+  CacheResult a, b, c, again;
+  loadOrPrecompute(config(0.1), dir, &a);
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  loadOrPrecompute(config(0.2), dir, &b);
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  loadOrPrecompute(config(0.1), dir, &again);  // 0.1 used after 0.2
+  EXPECT_EQ(again.outcome, CacheOutcome::kLoaded);
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  const std::uint64_t fileBytes = std::filesystem::file_size(a.path);
+  loadOrPrecompute(config(0.3), dir, &c, precomputeTablesOnCpu, fileBytes * 5 / 2);
+  EXPECT_TRUE(std::filesystem::exists(a.path));
+  EXPECT_FALSE(std::filesystem::exists(b.path));
+  EXPECT_FALSE(std::filesystem::exists(b.path.string() + ".lock"));
+  EXPECT_TRUE(std::filesystem::exists(c.path));
+  // A bound below one file keeps the file just written, and only it.
+  const auto removed = evictLeastRecentlyUsed(dir, 1, c.path);
+  EXPECT_EQ(removed.size(), 1u);
+  EXPECT_FALSE(std::filesystem::exists(a.path));
+  EXPECT_TRUE(std::filesystem::exists(c.path));
 }
 
 TEST(AtmosphereCache, CorruptFileIsDetectedAndRebuilt) {

@@ -202,7 +202,7 @@ TEST(AtmospherePrecomputeDevice, LoaderSaysWhereItIsAndACancelledBuildCachesNoth
     cancel = true;
   });
   EXPECT_THROW(atmosphere::loadOrPrecompute(c, dir, nullptr, atmosphereTableBuilder(PrecomputeDevice::kGpu),
-                                            {atmosphere::CancelToken(&cancel), {}}),
+                                            0, {atmosphere::CancelToken(&cancel), {}}),
                atmosphere::Cancelled);
   stopper.join();
   const std::string said = ::testing::internal::GetCapturedStderr();

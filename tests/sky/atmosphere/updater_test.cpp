@@ -9,6 +9,7 @@
 #include <vector>
 #include <filesystem>
 #include <stdexcept>
+#include <thread>
 
 #include "sky/atmosphere/conditions.h"
 #include "sky/atmosphere/precompute.h"
@@ -91,6 +92,67 @@ TEST(AtmosphereUpdater, UsesItsBuilderForTablesMissingFromTheCache) {
   EXPECT_TRUE(updater.current()->tables(0).scattering.texels == expected[0].scattering.texels);
 }
 
+// At most one precompute per interval: a second distinct config waits (the last model serves
+// meanwhile), one the cache holds is loaded at once, and the waiting one is built once the
+// interval has passed. Tables in a bounded cache stay within the bound.
+TEST(AtmosphereUpdater, RateLimitHoldsBackBuildsNotCachedTables) {
+  const auto dir = testing::testCacheDirectory() / "updater-rate-limit";
+  std::filesystem::remove_all(dir);
+  UpdaterLimits limits;
+  limits.minBuildIntervalS = 2.0;
+  limits.maxCacheBytes = 1 << 30;
+  AtmosphereUpdater updater(tinyConfig(0.1), dir, precomputeTablesOnCpu, limits);
+  EXPECT_EQ(updater.builds(), 0u);  // the initial model does not count
+  updater.request(tinyConfig(0.2));
+  updater.waitIdle();
+  const auto built = std::chrono::steady_clock::now();
+  EXPECT_EQ(updater.builds(), 1u);
+  EXPECT_DOUBLE_EQ(updater.current()->config().medium.groundAlbedo, 0.2);
+
+  updater.request(tinyConfig(0.3));  // not cached, within the interval: held back
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_EQ(updater.deferredBuilds(), 1u);
+  EXPECT_EQ(updater.builds(), 1u);
+  EXPECT_DOUBLE_EQ(updater.current()->config().medium.groundAlbedo, 0.2);
+
+  updater.request(tinyConfig(0.1));  // cached: replaces the waiting request, loaded at once
+  updater.waitIdle();
+  EXPECT_LT(std::chrono::steady_clock::now() - built, std::chrono::seconds(2));
+  EXPECT_DOUBLE_EQ(updater.current()->config().medium.groundAlbedo, 0.1);
+  EXPECT_EQ(updater.builds(), 1u);
+
+  updater.request(tinyConfig(0.3));
+  updater.waitIdle();
+  EXPECT_GE(std::chrono::steady_clock::now() - built, std::chrono::seconds(2));
+  EXPECT_EQ(updater.builds(), 2u);
+  EXPECT_DOUBLE_EQ(updater.current()->config().medium.groundAlbedo, 0.3);
+}
+
+// The updater's cache keeps to its bound: each new config evicts the least recently used.
+TEST(AtmosphereUpdater, BoundedCacheKeepsTheMostRecentTables) {
+  const auto dir = testing::testCacheDirectory() / "updater-bounded";
+  std::filesystem::remove_all(dir);
+  std::uint64_t fileBytes = 0;
+  {
+    AtmosphereUpdater probe(tinyConfig(0.1), dir);
+    fileBytes = std::filesystem::file_size(cacheFilePath(dir, tinyConfig(0.1)));
+  }
+  UpdaterLimits limits;
+  limits.maxCacheBytes = 2 * fileBytes;
+  AtmosphereUpdater updater(tinyConfig(0.1), dir, precomputeTablesOnCpu, limits);
+  for (double albedo : {0.2, 0.3, 0.4}) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // distinct modification times
+    updater.request(tinyConfig(albedo));
+    updater.waitIdle();
+  }
+  std::size_t files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.path().extension() == ".skyatm";
+  EXPECT_EQ(files, 2u);
+  EXPECT_TRUE(cacheFileExists(dir, tinyConfig(0.4)));
+  EXPECT_TRUE(cacheFileExists(dir, tinyConfig(0.3)));
+  EXPECT_FALSE(cacheFileExists(dir, tinyConfig(0.1)));
+}
+
 // A builder that fails leaves the last good model, with its reason.
 TEST(AtmosphereUpdater, AFailingBuilderKeepsTheLastGoodModel) {
   const auto dir = testing::testCacheDirectory() / "updater-builder-fails";
@@ -148,7 +210,7 @@ TEST(AtmosphereUpdater, StopFlagEndsTheInitialPrecomputeAndWaitIdle) {
   const auto dir = testing::testCacheDirectory() / "updater-stop";
   std::filesystem::remove_all(dir);
   std::atomic<bool> stop{true};
-  EXPECT_THROW(AtmosphereUpdater(tinyConfig(0.15), dir, TableBuilder{}, &stop), Cancelled);
+  EXPECT_THROW(AtmosphereUpdater(tinyConfig(0.15), dir, TableBuilder{}, {}, &stop), Cancelled);
   EXPECT_FALSE(std::filesystem::exists(cacheFilePath(dir, tinyConfig(0.15))));
 
   stop = false;
@@ -161,7 +223,7 @@ TEST(AtmosphereUpdater, StopFlagEndsTheInitialPrecomputeAndWaitIdle) {
     }
     return precomputeTablesOnCpu(c, control);
   };
-  AtmosphereUpdater updater(tinyConfig(0.15), dir, waitsForStop, &stop);
+  AtmosphereUpdater updater(tinyConfig(0.15), dir, waitsForStop, {}, &stop);
   updater.request(tinyConfig(0.7));
   while (!building) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   std::thread signal([&] {

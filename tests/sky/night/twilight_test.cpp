@@ -262,6 +262,9 @@ TEST_F(Twilight, MilkyWayAppearsAsTheSkyDarkens) {
     return band / reference - 1.0;
   };
   constexpr double kThreshold = 0.01;
+  // Tumblin-Rushmeier compresses a dim scene's contrasts as the eye does (its gamma falls with
+  // the adaptation): the band is invisible in nautical twilight and appears near -15 deg.
+  patch.display.toneOperator = ToneOperator::TumblinRushmeier;
   const double nautical = contrastAt(19.75);  // sun -11.6
   const double minus15 = contrastAt(20.25);   // sun -15.5
   const double dark = contrastAt(21.75);      // sun -24.5
@@ -271,4 +274,15 @@ TEST_F(Twilight, MilkyWayAppearsAsTheSkyDarkens) {
   // Blackwell's threshold a little after -15.5 deg (0.009 there, 0.038 in the dark sky).
   EXPECT_GT(minus15, 0.75 * kThreshold);
   EXPECT_GT(dark, 2.0 * kThreshold);
+  // The histogram operator (the default) keeps a world contrast that fits the display as it is
+  // (its linear ceiling): the band's 1.4% in nautical twilight is shown as 1.4%, just above the
+  // display's threshold, where the dark-adapting eye at the world's few 1e-3 cd/m^2 would need
+  // several per cent (docs/tone-reproduction.md, "Known limits"). It still rises with the
+  // darkening sky and is plain in the dark one.
+  patch.display.toneOperator = ToneOperator::Histogram;
+  const double nauticalH = contrastAt(19.75), minus15H = contrastAt(20.25), darkH = contrastAt(21.75);
+  EXPECT_LT(nauticalH, 2.0 * kThreshold);
+  EXPECT_GT(minus15H, nauticalH);
+  EXPECT_GT(darkH, minus15H);
+  EXPECT_GT(darkH, 2.0 * kThreshold);
 }

@@ -1,0 +1,36 @@
+#ifndef SKYIG_TONE_DISPLAY_CURVE_GLSL
+#define SKYIG_TONE_DISPLAY_CURVE_GLSL
+// The channel's display mapping of a luminance, from the ToneBlock (common/uniforms.h): the
+// scene's histogram-adjusted curve or Tumblin-Rushmeier, as adaptation.z selects. GPU only
+// (it reads the block); the tone pass maps every pixel with it, and the displayed-star pass
+// (passes/star_display.vert) the background each star sits on.
+#include "tone/tone_reproduction.glsl"
+
+DisplayModel toneDisplayModel() { return DisplayModel(display.x, display.y, display.z, display.w); }
+
+float curvePoint(int i) { return curve[i >> 2][i & 3]; }
+
+// The curve's display log10 luminance at a world luminance: linear between its 64 points,
+// held at its ends (ToneCurve::displayLuminance on the CPU).
+float curveAt(float worldLuminance) {
+  float b = log(max(worldLuminance, 1e-30)) * 0.4342944819;
+  float x = clamp((b - curveRange.x) / (curveRange.y - curveRange.x) * 63.0, 0.0, 63.0);
+  int i = min(int(x), 62);
+  return mix(curvePoint(i), curvePoint(i + 1), x - float(i));
+}
+
+// The display luminance (cd/m^2, before the display's white) for the eye's luminance (the
+// mesopic Y of tone/scotopic.glsl).
+float displayLuminanceFor(float eyeLuminance) {
+  if (adaptation.z > 0.5) return tumblinRushmeierDisplayLuminance(eyeLuminance, adaptation.x, display.w);
+  return pow(10.0, curveAt(eyeLuminance));
+}
+
+// The display colour (linear Rec.709, cd/m^2) of a world colour (linear Rec.709, cd/m^2).
+vec3 toneMapLinear(vec3 world) {
+  vec3 xyY = mesopicxyY(rec709ToXyz(max(world, vec3(0.0))));
+  float ld = displayLuminanceFor(xyY.z);
+  return compressToDisplay(xyzToRec709(xyYToXyz(vec3(xyY.x, xyY.y, ld))), ld, display.y + display.x);
+}
+
+#endif

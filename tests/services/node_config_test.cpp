@@ -136,8 +136,12 @@ TEST(NodeConfig, HostSectionErrors) {
       "bad.toml:3: host.allowed: \"10.1.2.3/8\": address bits set beyond the /8 prefix (did you mean 10.0.0.0/8?)");
   EXPECT_EQ(errorOf("[host]\nallowed = []\n"),
             "bad.toml:2: host.allowed: an empty list would ignore every host; [\"0.0.0.0/0\"] accepts any address");
-  EXPECT_EQ(errorOf("[host]\nreply_to = \"host:8005\"\n"),
-            "bad.toml:2: host.reply_to: \"host:8005\" is not an IPv4 ADDRESS:PORT");
+  // reply_to takes an address or a host name (as host.listen does); .invalid never resolves (RFC 6761).
+  EXPECT_EQ(errorOf("[host]\nreply_to = \"host\"\n"),
+            "bad.toml:2: host.reply_to: \"host\" is not ADDRESS:PORT (an IPv4 address or a host name)");
+  EXPECT_EQ(errorOf("[host]\nreply_to = \"no-such-host.invalid:8005\"\n").find(
+                "bad.toml:2: host.reply_to: \"no-such-host.invalid:8005\": cannot resolve \"no-such-host.invalid\""),
+            0u);
   EXPECT_EQ(errorOf("[host]\nsession_gap = 0\n"),
             "bad.toml:2: host.session_gap: expected a number in [0.05, 3600], got 0");
   const NodeConfig c = parseNodeConfig(

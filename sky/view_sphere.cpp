@@ -58,7 +58,7 @@ ViewSphere viewSphere(const SkyState& s) {
       } else {
         l = shader::rec709Luminance(analyticSkyLightOnly(s.sky.params, view));
       }
-      if (night && view.z > 0.0) l += shader::rec709Luminance(night::nightDiffuseRadiance(*night, view).total());
+      if (night && view.z > 0.0) l += shader::rec709Luminance(night::nightDiffuseRadianceWithoutMap(*night, view));
       if (view.z < 0.0) l += shader::rec709Luminance(s.nightGroundRadiance);
       h.add(l, cell);
       sum += l;

@@ -41,40 +41,18 @@ NightDiffuseSky makeNightDiffuseSky(const ephemeris::SkyEphemeris& ephemeris,
   return sky;
 }
 
-namespace {
-
-constexpr int kHemisphereMu = 8, kHemispherePhi = 16;
-
-// F(view, Rec.709 radiance) over kHemisphereMu x kHemispherePhi directions of equal solid angle
-// on the upper hemisphere (sky/common/hemisphere_grid.h).
-template <class F>
-void forEachNightDiffuseDirection(const ephemeris::SkyEphemeris& ephemeris,
-                                  std::shared_ptr<const atmosphere::ExtinctionProfile> extinction, F&& f) {
-  const NightDiffuseSky sky = makeNightDiffuseSky(ephemeris, std::move(extinction), false);
+glm::dvec3 nightDiffuseRadianceWithoutMap(const NightDiffuseSky& sky, const glm::dvec3& viewEnu) {
   const glm::dvec3 floor = shader::s10ToCdM2(kPoleS10) * glm::dvec3(1.0);
-  forEachHemisphereDirection(kHemisphereMu, kHemispherePhi, [&](const glm::dvec3& v) {
-    f(v, nightDiffuseRadiance(sky, v).total() + nightExtinction(sky, v) * floor);
-  });
-}
-
-}  // namespace
-
-double meanNightDiffuseLuminance(const ephemeris::SkyEphemeris& ephemeris,
-                                 std::shared_ptr<const atmosphere::ExtinctionProfile> extinction) {
-  double sum = 0.0;
-  forEachNightDiffuseDirection(ephemeris, std::move(extinction), [&](const glm::dvec3&, const glm::dvec3& rgb) {
-    sum += 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b;
-  });
-  return sum / (kHemisphereMu * kHemispherePhi);
+  return nightDiffuseRadiance(sky, viewEnu).total() + nightExtinction(sky, viewEnu) * floor;
 }
 
 glm::dvec3 nightDiffuseIlluminance(const ephemeris::SkyEphemeris& ephemeris,
                                    std::shared_ptr<const atmosphere::ExtinctionProfile> extinction) {
-  // Each direction stands for 2 pi / N sr of the hemisphere.
+  constexpr int kMu = 8, kPhi = 16;  // each direction stands for 2 pi / (kMu kPhi) sr
+  const NightDiffuseSky sky = makeNightDiffuseSky(ephemeris, std::move(extinction), false);
   glm::dvec3 sum(0.0);
-  forEachNightDiffuseDirection(ephemeris, std::move(extinction),
-                               [&](const glm::dvec3& v, const glm::dvec3& rgb) { sum += rgb * v.z; });
-  return sum * (2.0 * std::numbers::pi / (kHemisphereMu * kHemispherePhi));
+  forEachHemisphereDirection(kMu, kPhi, [&](const glm::dvec3& v) { sum += nightDiffuseRadianceWithoutMap(sky, v) * v.z; });
+  return sum * (2.0 * std::numbers::pi / (kMu * kPhi));
 }
 
 glm::dvec3 nightExtinction(const NightDiffuseSky& sky, const glm::dvec3& viewEnu) {

@@ -56,18 +56,16 @@ struct NightDiffuseRadiance {
 // view.
 NightDiffuseRadiance nightDiffuseRadiance(const NightDiffuseSky& sky, const glm::dvec3& viewEnu);
 
-// The diffuse night light's solid-angle mean luminance over the upper hemisphere (cd/m^2), for
-// the eye's adaptation (SkyState::adaptationLuminance adds it to the sky's): airglow, zodiacal
-// light and, for the Milky Way, its calibrated floor of kPoleS10 everywhere (the map is not
-// loaded for this: the worker builds a state per host update; the band adds ~10% more). 8 x 16
-// directions, ~0.1 ms. 0 for a state without an ephemeris (sun overridden: tests).
-double meanNightDiffuseLuminance(const ephemeris::SkyEphemeris& sky,
-                                 std::shared_ptr<const atmosphere::ExtinctionProfile> extinction);
+// The diffuse night light along a view without the Milky Way map (`sky` made with
+// withMilkyWay = false): airglow and zodiacal light, and for the Milky Way and the unresolved
+// stars their calibrated floor of kPoleS10 everywhere, dimmed by the extinction (the band adds
+// ~10% more). What the eye's view sphere and the ground's light use: the worker builds a state
+// per host update and never loads the map for it.
+glm::dvec3 nightDiffuseRadianceWithoutMap(const NightDiffuseSky& sky, const glm::dvec3& viewEnu);
 
 // The diffuse night light's illuminance on a horizontal surface at the observer (linear Rec.709
 // lux per channel, luminance-weighted sum = lux): E = integral of L cos(theta) dOmega over the
-// upper hemisphere, from the same directions and light as meanNightDiffuseLuminance (the Milky
-// Way at its floor). With the resolved stars (sky/night/star_field.h horizontalIlluminance) it
+// upper hemisphere, of nightDiffuseRadianceWithoutMap over 8 x 16 directions (~0.1 ms). With the resolved stars (sky/night/star_field.h horizontalIlluminance) it
 // is what lights the terrain on a moonless night: ~1e-3 lux at a dark site, airglow about half
 // of it (Roach & Gordon 1973; the "starlight" illuminance of 1-2e-3 lux often quoted includes
 // airglow and zodiacal light).

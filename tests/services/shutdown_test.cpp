@@ -174,7 +174,9 @@ TEST_F(Shutdown, SigintWhileServingWritesTheStatsAndKeepsTheRecording) {
 }
 
 // The second signal does not wait for the first one's clean stop: stopped, then sent SIGINT and
-// SIGTERM together, the node exits at once with 128 + SIGTERM (the later of the two delivered).
+// SIGTERM together, the node exits at once with 128 + the second signal handled, not 0 as a clean
+// stop would. Which of the two is handled second is not fixed: both are process-directed, and in a
+// process with several threads (the worker, llvmpipe's) two threads may each take one on SIGCONT.
 TEST_F(Shutdown, ASecondSignalExitsAtOnce) {
   Child node({"serve", "--config", (dir_ / "analytic.toml").string(), "--headless", "--listen", "127.0.0.1:0"}, dir_,
              {});
@@ -185,7 +187,8 @@ TEST_F(Shutdown, ASecondSignalExitsAtOnce) {
   node.signal(SIGTERM);
   node.signal(SIGCONT);
   ASSERT_TRUE(node.exited(5s));
-  EXPECT_EQ(node.exitCode(), 128 + SIGTERM) << node.said();
+  EXPECT_TRUE(node.exitCode() == 128 + SIGTERM || node.exitCode() == 128 + SIGINT)
+      << "exit code " << node.exitCode() << "\n" << node.said();
   EXPECT_NE(node.err().find("second signal, exiting at once"), std::string::npos) << node.said();
 }
 

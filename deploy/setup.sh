@@ -25,6 +25,8 @@ build_and_test=(
   # images, geodesy, plumbing
   libopenexr-dev python3-imath libpng-dev libgeographiclib-dev
   libtomlplusplus-dev libcli11-dev libspdlog-dev nlohmann-json3-dev libpcap-dev
+  # projector calibration: MPCDI files are zip archives holding an XML description
+  libzip-dev libtinyxml2-dev
   # tests and benchmarks (Xvfb: the windowed GLFW path is tested on a virtual X display;
   # systemd: systemd-analyze verifies the unit, deploy/skyig.service)
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth systemd

@@ -15,6 +15,7 @@ ALLOWED = {
     "protocol": set(),
     "ephemeris": set(),
     "shaders": set(),
+    "calibration": set(),
     "sky/common": set(),
     "sky/atmosphere": {"shaders"},
     "sky/analytic": {"sky/common", "shaders"},
@@ -22,12 +23,12 @@ ALLOWED = {
     "sky/night": {"sky/atmosphere", "sky/common", "ephemeris", "shaders"},
     "sky": {"sky/atmosphere", "sky/common", "sky/analytic", "sky/eye", "sky/night", "ephemeris", "shaders"},
     "render/gl": {"shaders"},
-    "render/passes": {"render/gl", "sky", "sky/atmosphere", "sky/eye", "sky/night", "sky/common", "ephemeris", "shaders"},
-    "render": {"render/gl", "render/passes", "sky", "sky/atmosphere", "sky/eye", "sky/night", "sky/analytic", "sky/common",
+    "render/passes": {"calibration", "render/gl", "sky", "sky/atmosphere", "sky/eye", "sky/night", "sky/common", "ephemeris", "shaders"},
+    "render": {"calibration", "render/gl", "render/passes", "sky", "sky/atmosphere", "sky/eye", "sky/night", "sky/analytic", "sky/common",
                "ephemeris", "shaders"},
 }
 # services/ is the executable: it may include every library, and nothing includes it.
-TOP = ["protocol", "ephemeris", "shaders", "sky", "render", "services"]
+TOP = ["protocol", "ephemeris", "calibration", "shaders", "sky", "render", "services"]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 
 

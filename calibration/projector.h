@@ -5,7 +5,10 @@
 // Paul Bourke's warp meshes (calibration/mpcdi.h, calibration/bourke_mesh.h) or made for a
 // spherical dome (calibration/dome.h); the renderer's warp-and-blend pass draws from it.
 //
-// No GL and no sockets here (docs/design.md, "Layout"): the maps are plain float arrays.
+// No GL and no sockets here (docs/design.md, "Layout"): the maps are plain float arrays, the
+// cameras the sky's own (sky/camera.h).
+#include "sky/camera.h"
+
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -13,18 +16,11 @@
 
 namespace skyig::calibration {
 
-// The camera of a region: an eyepoint rotation in the body frame (CIGI order: yaw, then pitch,
-// then roll, degrees, as a channel's offset) and the half-angles of its frustum (degrees, each
-// in (0, 89], possibly asymmetric) -- the same meaning as sky::Attitude and sky::Frustum, which
-// this library does not include.
+// The camera of a region: an eyepoint rotation in the body frame (a channel's offset) and the
+// half-angles of its frustum, as a channel's camera (sky/camera.h).
 struct RegionCamera {
-  double yawDeg = 0.0;
-  double pitchDeg = 0.0;
-  double rollDeg = 0.0;
-  double leftDeg = 30.0;
-  double rightDeg = 30.0;
-  double downDeg = 24.0;
-  double upDeg = 24.0;
+  skyig::sky::Attitude offset;
+  skyig::sky::Frustum frustum;
 };
 
 // A float image of `channels` values per pixel, rows from the TOP (a PFM's bottom-up rows are

@@ -15,7 +15,7 @@ ALLOWED = {
     "protocol": set(),
     "ephemeris": set(),
     "shaders": set(),
-    "calibration": set(),
+    "calibration": {"sky"},
     "sky/common": set(),
     "sky/atmosphere": {"shaders"},
     "sky/analytic": {"sky/common", "shaders"},

@@ -143,6 +143,12 @@ void SkyRenderer::drawProjector(const skyig::sky::SkyState& state, const skyig::
   if (!warpBlend_) warpBlend_ = std::make_unique<WarpBlendPass>();
   warpBlend_->draw(maps, displayValues_->texture(), hdr_->texture(), c.display.gamma, 1.0);
   lastWasProjector_ = true;
+  lastProjectorGamma_ = c.display.gamma;
+}
+
+void SkyRenderer::drawWarpBlendPass(const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector) {
+  if (!warpBlend_) throw std::logic_error("drawWarpBlendPass before any drawProjector");
+  warpBlend_->draw(mapsFor(projector), displayValues_->texture(), hdr_->texture(), lastProjectorGamma_, 1.0);
 }
 
 void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,

@@ -46,6 +46,9 @@ class SkyRenderer {
                      const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector) {
     drawProjector(state, state.observer.attitude, channel, projector);
   }
+  // Only the warp-and-blend pass again, from the last drawProjector's channel images (for
+  // benchmarks of the pass itself).
+  void drawWarpBlendPass(const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector);
   // The channel as a projector draws it: its offset and frustum the region's.
   static skyig::sky::ChannelConfig projectorChannel(const skyig::sky::ChannelConfig& channel,
                                                     const skyig::calibration::ProjectorCalibration& projector);
@@ -104,6 +107,7 @@ class SkyRenderer {
   std::vector<std::pair<std::shared_ptr<const skyig::calibration::ProjectorCalibration>, std::unique_ptr<ProjectorMaps>>>
       projectorMaps_;
   bool lastWasProjector_ = false;
+  double lastProjectorGamma_ = 2.2;
 };
 
 }  // namespace skyig::render

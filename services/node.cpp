@@ -2,11 +2,10 @@
 
 #include "protocol/cigi/encoder.h"
 #include "sky/atmosphere/updater.h"
-#include "render/gl/gl_context.h"
-#include "render/gl/glfw_window.h"
 #include "render/sky_renderer.h"
 #include "services/atmosphere_loader.h"
 #include "services/can_receiver.h"
+#include "services/display_outputs.h"
 #include "services/cigi_receiver.h"
 #include "services/frame_files.h"
 #include "services/frame_metadata.h"
@@ -16,12 +15,10 @@
 #include "services/systemd_notify.h"
 #include "services/warning_throttle.h"
 
-#include <glad/gl.h>
 #include <spdlog/spdlog.h>
 
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <memory>
 #include <thread>
 #include <unistd.h>
@@ -77,61 +74,6 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
     std::this_thread::sleep_for(1ms);
   }
 }
-
-// What renders: one headless context for every channel, or one window per channel.
-class Display {
- public:
-  Display(const NodeOptions& opt, const std::vector<sky::ChannelConfig>& channels) : headless_(opt.headless) {
-    if (headless_) {
-      context_ = render::createHeadlessContext();
-      renderers_.push_back(std::make_unique<render::SkyRenderer>());
-      return;
-    }
-    for (const auto& c : channels) {
-      render::WindowOptions w;
-      w.title = "skyig " + opt.config.nodeName + " / " + c.name;
-      w.width = c.width;
-      w.height = c.height;
-      w.shareWith = windows_.empty() ? nullptr : windows_.front().get();
-      if (!c.monitor.empty()) w.fullscreenMonitor = c.monitor;
-      windows_.push_back(std::make_unique<render::GlfwWindowContext>(w));
-      renderers_.push_back(std::make_unique<render::SkyRenderer>());  // VAOs and FBOs are per context
-    }
-  }
-
-  const render::GlInfo& info() const { return headless_ ? context_->info() : windows_.front()->info(); }
-  bool closeRequested() const {
-    for (const auto& w : windows_)
-      if (w->closeRequested()) return true;
-    return false;
-  }
-
-  // Draws every channel; `drawn` sees each channel's renderer right after its frame (to save it).
-  void draw(const sky::SkyState& state, const FramePose& pose,
-            const std::function<void(const render::SkyRenderer&, const sky::ChannelConfig&)>& drawn = {}) {
-    const auto& channels = pose.channels;
-    for (std::size_t i = 0; i < channels.size(); ++i) {
-      if (headless_) {
-        renderers_.front()->draw(state, pose.attitude, channels[i]);
-        if (drawn) drawn(*renderers_.front(), channels[i]);
-        continue;
-      }
-      windows_[i]->makeCurrent();
-      renderers_[i]->draw(state, pose.attitude, channels[i]);
-      if (drawn) drawn(*renderers_[i], channels[i]);
-      renderers_[i]->presentToDefaultFramebuffer(channels[i].width, channels[i].height);
-      windows_[i]->swapBuffers();
-    }
-    if (headless_) glFinish();  // the frame ends when its pixels exist
-    else render::pollWindowEvents();
-  }
-
- private:
-  bool headless_;
-  std::unique_ptr<render::GlContext> context_;
-  std::vector<std::unique_ptr<render::GlfwWindowContext>> windows_;
-  std::vector<std::unique_ptr<render::SkyRenderer>> renderers_;
-};
 
 std::uint32_t ticks10us(Clock::duration d) {
   return static_cast<std::uint32_t>(std::chrono::duration_cast<std::chrono::microseconds>(d).count() / 10);
@@ -215,7 +157,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
 
     const auto baseChannels = opt.config.channelsOf(opt.config.nodeName);
     if (baseChannels.empty()) throw ConfigError("node \"" + opt.config.nodeName + "\" has no channels in the configuration");
-    Display display(opt, baseChannels);
+    DisplayOutputs display(opt.headless, opt.config.nodeName, baseChannels);
     spdlog::info("rendering {} channel(s) of node \"{}\" on {} ({})", baseChannels.size(), opt.config.nodeName,
                  display.info().renderer, opt.headless ? "headless" : "windows");
     for (const auto& c : baseChannels)
@@ -249,7 +191,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
       // instant predicted from the same host snapshot.
       const FramePose pose = worker.poseAt(snapshot, frameStart, baseChannels);
       if (!opt.saveFramesDir.empty() && frame % std::max<std::uint64_t>(opt.saveEvery, 1) == 0) {
-        display.draw(built->state, pose, [&](const render::SkyRenderer& r, const sky::ChannelConfig& c) {
+        display.draw(built->state, pose.attitude, pose.channels, [&](const render::SkyRenderer& r, const sky::ChannelConfig& c) {
           const std::string stem = frameStem(opt.saveFramesDir, frame, built->state.observer.utc,
                                              pose.channels.size() > 1 ? c.name : "");
           render::ImageAttributes attributes = frameAttributes(built->state, pose.attitude, c);
@@ -257,7 +199,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
           writeFrameFiles(r, stem, c, true, true, attributes);
         });
       } else {
-        display.draw(built->state, pose);
+        display.draw(built->state, pose.attitude, pose.channels);
       }
       const auto frameEnd = Clock::now();
       stats.frames.fetch_add(1, std::memory_order_relaxed);

@@ -175,8 +175,11 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
 
   // Everything that can fail (sockets, SocketCAN, the recording file, the first sky) is set
   // up before any thread starts.
-  UdpSocket udp(opt.listen, opt.multicastGroup);  // always: Start of Frame goes out through it
-  spdlog::info("listening for CIGI on {}", udp.localEndpoint().toString());
+  UdpSocket udp(opt.listen, opt.multicastGroup, opt.multicastInterface);  // always: Start of Frame goes out through it
+  spdlog::info("listening for CIGI on {}{}", udp.localEndpoint().toString(),
+               opt.multicastGroup ? fmt::format(", multicast group {} on interface {}", *opt.multicastGroup,
+                                                opt.multicastInterface.value_or(opt.listen.address))
+                                  : std::string());
   CigiReceiver cigi(stats, host, opt.config.host.session);
   cigi.setMaxViews(static_cast<std::size_t>(opt.config.host.maxViews));
   std::unique_ptr<PcapRecorder> recorder;

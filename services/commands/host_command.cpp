@@ -23,6 +23,8 @@ struct HostOptions {
   std::string pathFile;
   std::string to = "127.0.0.1:8004";
   std::string bind = "0.0.0.0:0";
+  std::string multicastInterface;  // with a multicast --to: the interface's address (IP_MULTICAST_IF)
+  int multicastTtl = 1;            // 1: the local network; 0: this machine only (tests)
   double rateHz = 30.0;
   std::string startUtc = "2026-06-21T19:00:00Z";
   double speed = 1.0;
@@ -158,6 +160,18 @@ int run(const HostOptions& o) {
     throw ConfigError(std::string("--to/--bind: ") + e.what());
   }
   UdpSocket socket(local);
+  const bool multicast = isMulticastGroup(to.address);
+  if (!multicast && !o.multicastInterface.empty())
+    throw ConfigError("--multicast-interface: --to " + to.toString() + " is not a multicast group (224.0.0.0/4)");
+  if (multicast) {
+    // One datagram per frame reaches every node of the dome; looped back so nodes on this
+    // machine hear it too.
+    try {
+      socket.sendMulticastThrough(o.multicastInterface.empty() ? local.address : o.multicastInterface, o.multicastTtl);
+    } catch (const NetworkError& e) {
+      throw ConfigError(std::string("--multicast-interface/--multicast-ttl: ") + e.what());
+    }
+  }
   const sockaddr_in destination = toSockaddr(to);
   const double duration = o.durationS > 0.0 ? o.durationS : path.durationS();
   const auto frames = static_cast<std::uint32_t>(std::floor(duration * o.rateHz)) + 1;
@@ -201,8 +215,13 @@ void registerHostCommand(CLI::App& app, int& exitCode) {
   c->add_option("--path", o->pathFile, "Waypoints CSV: time_s, lat, lon, alt_m, yaw, pitch, roll (e.g. config/circuit.csv)")
       ->required()
       ->check(CLI::ExistingFile);
-  c->add_option("--to", o->to, "IG address ADDR:PORT (127.0.0.1:8004)");
+  c->add_option("--to", o->to, "IG address ADDR:PORT, or a multicast group GROUP:PORT every node joins (127.0.0.1:8004)");
   c->add_option("--bind", o->bind, "Local address ADDR:PORT to send from (0.0.0.0:0)");
+  c->add_option("--multicast-interface", o->multicastInterface,
+                "With a multicast --to: the IPv4 address of the interface to send through (default: --bind's address)");
+  c->add_option("--multicast-ttl", o->multicastTtl,
+                "With a multicast --to: time-to-live, 0 keeps datagrams on this machine (1)")
+      ->check(CLI::Range(0, 255));
   c->add_option("--rate", o->rateHz, "Host frame rate, Hz (30)")->check(CLI::Range(1.0, 1000.0));
   c->add_option("--start-utc", o->startUtc, "UTC date and time at the start of the path (2026-06-21T19:00:00Z)");
   c->add_option("--speed", o->speed, "Time-lapse: sim seconds of the clock per second flown (1)")->check(CLI::Range(0.0, 1e5));

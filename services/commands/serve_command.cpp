@@ -43,6 +43,7 @@ int run(const ServeOptions& o) {
     throw ConfigError(std::string(o.listen.empty() && o.replyTo.empty() ? "host.listen: " : "--listen/--reply-to: ") + e.what());
   }
   if (!h.multicastGroup.empty()) opt.multicastGroup = h.multicastGroup;
+  if (!h.multicastInterface.empty()) opt.multicastInterface = h.multicastInterface;
   opt.replyPort = static_cast<std::uint16_t>(h.replyPort);
   opt.synchronous = o.synchronous || h.synchronous;
   opt.syncTimeoutS = h.syncTimeoutS;

@@ -15,6 +15,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -290,4 +291,43 @@ TEST(HostNetwork, MulticastGroupStillShared) {
   UdpSocket a({"0.0.0.0", port}, group);
   EXPECT_NO_THROW(UdpSocket({"0.0.0.0", port}, group));
   EXPECT_THROW(UdpSocket({"127.0.0.1", port}), NetworkError);
+}
+
+// A host sends each frame once to a multicast group and every node on the machine hears it:
+// two members joined on the loopback interface, a sender through 127.0.0.1 with TTL 0 (the
+// datagram never leaves the machine) and multicast loopback on.
+TEST(HostNetwork, MulticastOnLoopbackReachesEveryMember) {
+  const std::uint16_t port = freeLoopbackPort();
+  const std::string group = "239.255.42.98";
+  UdpSocket a({"0.0.0.0", port}, group, std::string("127.0.0.1"));
+  UdpSocket b({"0.0.0.0", port}, group, std::string("127.0.0.1"));
+  UdpSocket host({"127.0.0.1", 0});
+  host.sendMulticastThrough("127.0.0.1", 0);
+  const std::vector<std::uint8_t> bytes = {1, 2, 3, 4};
+  ASSERT_TRUE(host.sendTo(bytes, toSockaddr({group, port})));
+  for (UdpSocket* member : {&a, &b}) {
+    std::array<std::uint8_t, 16> buffer{};
+    sockaddr_in from{};
+    ASSERT_EQ(member->receive(buffer, from, 2000ms), bytes.size());
+    EXPECT_EQ(fromSockaddr(from).toString(), host.localEndpoint().toString());
+  }
+}
+
+// A multicast interface that is not an address, or not this machine's, is refused by name.
+TEST(HostNetwork, MulticastInterfaceIsNamedWhenRefused) {
+  const std::uint16_t port = freeLoopbackPort();
+  try {
+    UdpSocket s({"0.0.0.0", port}, std::string("239.255.42.97"), std::string("127.0.0.300"));
+    FAIL() << "joined on a bad interface address";
+  } catch (const NetworkError& e) {
+    EXPECT_NE(std::string(e.what()).find("\"127.0.0.300\" is not an IPv4 address"), std::string::npos) << e.what();
+  }
+  try {
+    UdpSocket s({"0.0.0.0", port}, std::string("239.255.42.97"), std::string("192.0.2.77"));  // TEST-NET-1
+    FAIL() << "joined on an interface this machine does not have";
+  } catch (const NetworkError& e) {
+    EXPECT_NE(std::string(e.what()).find("on interface 192.0.2.77"), std::string::npos) << e.what();
+  }
+  UdpSocket host({"127.0.0.1", 0});
+  EXPECT_THROW(host.sendMulticastThrough("127.0.0.1", 256), NetworkError);
 }

@@ -9,8 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <arpa/inet.h>
-#include <signal.h>
-#include <spawn.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -21,8 +19,6 @@
 #include <fstream>
 #include <sstream>
 #include <thread>
-
-extern char** environ;
 
 using namespace skyig::services;
 using namespace skyig::services::testing;
@@ -212,48 +208,6 @@ TEST(HostNetwork, BurstsOfTwoDatagramsKeepThePredictedViewOnThePath) {
   EXPECT_EQ(node.stats.staleMessages.load(), 0u);
 }
 
-namespace {
-
-// A process started in the background, its output (the log and errors) in a file; stopped by
-// SIGTERM on its id.
-class Process {
- public:
-  Process(const std::string& args, const fs::path& dir) : err_(dir / "first.log") {
-    // The shell execs skyig: the id spawned is skyig's.
-    const std::string command = "exec " + std::string(SKYIG_EXECUTABLE) + " " + args + " >" + err_.string() + " 2>&1";
-    const char* argv[] = {"/bin/sh", "-c", command.c_str(), nullptr};
-    if (posix_spawn(&pid_, "/bin/sh", nullptr, nullptr, const_cast<char* const*>(argv), environ) != 0) pid_ = -1;
-  }
-  ~Process() { stop(); }
-  bool running() {
-    if (pid_ <= 0) return false;
-    if (::waitpid(pid_, &status_, WNOHANG) != pid_) return true;
-    pid_ = -1;  // exited, and reaped: never signalled again
-    return false;
-  }
-  std::string output() const {
-    std::ifstream in(err_);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-  // SIGTERM, and its exit code (-1 when it did not exit normally).
-  int stop() {
-    if (pid_ > 0) {
-      ::kill(pid_, SIGTERM);
-      ::waitpid(pid_, &status_, 0);
-      pid_ = -1;
-    }
-    return WIFEXITED(status_) ? WEXITSTATUS(status_) : -1;
-  }
-
- private:
-  pid_t pid_ = -1;
-  int status_ = -1;
-  fs::path err_;
-};
-
-}  // namespace
 
 // SO_REUSEADDR let a second node bind a unicast port and silently take the stream. Without it
 // the second `serve` stops with exit code 4 and says the port is in use; the first goes on.
@@ -264,7 +218,7 @@ TEST(HostNetwork, SecondServeOnATakenPortExitsFour) {
   const std::uint16_t port = freeLoopbackPort();
   const std::string serve = "serve --config " + (dir / "node.toml").string() +
                             " --headless --frame-rate 10 --listen 127.0.0.1:" + std::to_string(port);
-  Process first("--log-level info " + serve, dir);
+  SkyigProcess first("--log-level info " + serve, dir / "first.log");
   ASSERT_TRUE(waitUntil([&] {
     return first.output().find("listening for CIGI") != std::string::npos || !first.running();
   })) << first.output();

@@ -1,0 +1,385 @@
+// Many nodes in step: two `skyig serve` processes, nodes ig1 and ig2 of one dome configuration,
+// in synchronous mode on a multicast group, fed by one `skyig host`. Each renders the host's
+// frame N as its frame for N (the sky built from that host frame, the attitude at its instant),
+// says so in its Start of Frame, and what it derives from the host's state (the eye's
+// adaptation, the sun, the attitude) is identical on both; a view both render matches pixel for
+// pixel, and the directions two overlapping channels of different nodes share match within the
+// dither. Multicast stays on loopback: joined on 127.0.0.1, sent through it with TTL 0.
+//
+// MultiNodeDome is the harness: a configuration, nodes started by name, the host flown, then
+// per node the host frames it showed (state dump), its Start of Frames and its saved frames.
+#include "protocol/cigi/decoder.h"
+#include "render/image_io.h"
+#include "sky/camera.h"
+#include "sky/common/png_reader.h"
+
+#include "tests/services/test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+using namespace skyig::services;
+using namespace skyig::services::testing;
+namespace cigi = skyig::protocol::cigi;
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+namespace {
+
+struct StartOfFrameSeen {
+  std::uint32_t igFrame = 0;
+  std::uint32_t lastHostFrame = 0;
+};
+
+// One node of the dome: its `serve` process, what it writes, and the Start of Frames it sends
+// (each node answers on a socket of its own: on one machine the nodes share the group's port,
+// so the host could not tell them apart).
+struct DomeNode {
+  std::string name;
+  fs::path dump, frames, log;
+  std::unique_ptr<UdpSocket> startOfFrame;
+  std::vector<StartOfFrameSeen> sofs;
+  std::unique_ptr<SkyigProcess> process;
+
+  // The first dump line of each host frame the node showed.
+  std::map<std::uint32_t, nlohmann::json> hostFrames() const {
+    std::map<std::uint32_t, nlohmann::json> shown;
+    for (const auto& line : readStateDump(dump))
+      if (line["host_frame"].is_number()) shown.emplace(line["host_frame"].get<std::uint32_t>(), line);
+    return shown;
+  }
+  // The file the node saved for IG frame `igFrame` and `channel` ("" when none).
+  fs::path savedFrame(std::uint64_t igFrame, const std::string& channel, const std::string& extension) const {
+    char prefix[32];
+    std::snprintf(prefix, sizeof prefix, "frame_%06llu_", static_cast<unsigned long long>(igFrame));
+    const std::string suffix = "_" + channel + extension;
+    for (const auto& e : fs::directory_iterator(frames)) {
+      const std::string n = e.path().filename().string();
+      if (n.rfind(prefix, 0) == 0 && n.size() > suffix.size() && n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0)
+        return e.path();
+    }
+    return {};
+  }
+};
+
+class MultiNodeDome : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = freshTestDirectory("skyig_multi_node_");
+    port_ = freeLoopbackPort();
+    // A group of this process's own, so parallel test runs on one machine never hear each other.
+    group_ = "239.255." + std::to_string(100 + ::getpid() % 100) + "." + std::to_string(1 + ::getpid() / 100 % 250);
+  }
+  void TearDown() override {
+    stopNodes();
+    if (!HasFailure()) fs::remove_all(dir_);
+  }
+
+  // The dome's configuration: the host link (synchronous, the group joined on loopback) and
+  // `channels` ([[channel]] tables, `node` keys selecting who renders what).
+  void writeConfig(const std::string& sky, const std::string& channels) {
+    config_ = dir_ / "dome.toml";
+    std::ofstream(config_) << sky << "\n[host]\nlisten = \"0.0.0.0:" << port_ << "\"\nmulticast_group = \"" << group_
+                           << "\"\nmulticast_interface = \"127.0.0.1\"\nsynchronous = true\nsync_timeout = 0.5\n"
+                           << channels;
+  }
+
+  // Starts `serve` for each node name and waits until each has drawn its first frame.
+  void startNodes(const std::vector<std::string>& names) {
+    for (const std::string& name : names) {
+      auto n = std::make_unique<DomeNode>();
+      n->name = name;
+      n->dump = dir_ / (name + ".jsonl");
+      n->frames = dir_ / (name + "-frames");
+      n->log = dir_ / (name + ".log");
+      n->startOfFrame = std::make_unique<UdpSocket>(Endpoint{"127.0.0.1", 0});
+      n->process = std::make_unique<SkyigProcess>(
+          "serve --config " + config_.string() + " --node " + name + " --headless --dump-state " + n->dump.string() +
+              " --save-frames " + n->frames.string() + " --save-every 1 --reply-to " +
+              n->startOfFrame->localEndpoint().toString(),
+          n->log);
+      nodes_.push_back(std::move(n));
+    }
+    for (auto& n : nodes_)
+      ASSERT_TRUE(waitUntil([&] { return !n->process->running() || readStateDump(n->dump).size() > 0; }, 60000ms))
+          << n->name;
+    for (auto& n : nodes_) ASSERT_TRUE(n->process->running()) << n->name << ":\n" << n->process->output();
+    listening_ = true;
+    listener_ = std::thread([this] { listen(); });
+  }
+
+  // Flies `skyig host` to the group (through 127.0.0.1, TTL 0) and returns its exit code.
+  int flyHost(const std::string& args) {
+    SkyigProcess host("host " + args + " --to " + group_ + ":" + std::to_string(port_) +
+                          " --bind 127.0.0.1:0 --multicast-interface 127.0.0.1 --multicast-ttl 0",
+                      dir_ / "host.log");
+    const int code = host.wait();
+    hostOutput_ = host.output();
+    return code;
+  }
+
+  // Waits until every node showed host frame `last`, then stops them (exit code 0 each).
+  void finish(std::uint32_t last) {
+    for (auto& n : nodes_)
+      EXPECT_TRUE(waitUntil([&] { return n->hostFrames().count(last) > 0; }, 30000ms)) << n->name << " never showed " << last;
+    std::this_thread::sleep_for(100ms);  // the last Start of Frames arrive
+    for (auto& n : nodes_) EXPECT_EQ(n->process->stop(), 0) << n->name << ":\n" << n->process->output();
+    stopNodes();
+  }
+
+  void stopNodes() {
+    listening_ = false;
+    if (listener_.joinable()) listener_.join();
+    for (auto& n : nodes_) n->process->stop();
+  }
+
+  DomeNode& node(const std::string& name) {
+    for (auto& n : nodes_)
+      if (n->name == name) return *n;
+    throw std::invalid_argument("no node " + name);
+  }
+
+  fs::path dir_;
+  std::string hostOutput_;
+
+ private:
+  void listen() {
+    std::array<std::uint8_t, 512> buffer{};
+    while (listening_) {
+      for (auto& n : nodes_) {
+        sockaddr_in from{};
+        const std::size_t size = n->startOfFrame->receive(buffer, from, 2ms);
+        if (size == 0) continue;
+        const cigi::DecodedMessage m = cigi::decodeMessage(std::span(buffer.data(), size));
+        if (!m.ok() || m.packets.empty()) continue;
+        if (const auto* s = std::get_if<cigi::StartOfFrame>(&m.packets.front())) {
+          const std::lock_guard lock(mutex_);
+          n->sofs.push_back({s->igFrameNumber, s->lastHostFrameNumber});
+        }
+      }
+    }
+  }
+
+  std::uint16_t port_ = 0;
+  std::string group_;
+  fs::path config_;
+  std::vector<std::unique_ptr<DomeNode>> nodes_;
+  std::atomic<bool> listening_{false};
+  std::thread listener_;
+  std::mutex mutex_;
+};
+
+// The ENU ray of a channel pixel, from a state dump line (ownship attitude and the channel's
+// view as drawn).
+glm::dmat3 channelNdcToWorld(const nlohmann::json& used, const std::string& channel) {
+  for (const auto& v : used["views"])
+    if (v["channel"] == channel) {
+      const skyig::sky::Attitude ownship{used["yaw"].get<double>(), used["pitch"].get<double>(), used["roll"].get<double>()};
+      const skyig::sky::Attitude offset{v["yaw"].get<double>(), v["pitch"].get<double>(), v["roll"].get<double>()};
+      const skyig::sky::Frustum f{v["left"].get<double>(), v["right"].get<double>(), v["down"].get<double>(),
+                                  v["up"].get<double>()};
+      return skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(ownship, offset), f);
+    }
+  throw std::invalid_argument("no channel " + channel + " in the dump");
+}
+
+// Bilinear sample of channel c (0..2) of an 8-bit RGB image at pixel coordinates (x, y), pixel
+// centres at integer + 0.5.
+double sampleRgb8(const skyig::sky::Rgb8Image& image, double x, double y, int c) {
+  const double u = x - 0.5, v = y - 0.5;
+  const int x0 = static_cast<int>(std::floor(u)), y0 = static_cast<int>(std::floor(v));
+  const double fx = u - x0, fy = v - y0;
+  auto at = [&](int column, int row) {
+    return static_cast<double>(image.rgb[(static_cast<std::size_t>(row) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(column)) * 3 + static_cast<std::size_t>(c)]);
+  };
+  return (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) + fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+}
+
+// The largest difference (LSB, any colour) among the four pixels around (x, y).
+constexpr int kSmoothLsb = 6;
+int localRange(const skyig::sky::Rgb8Image& image, double x, double y) {
+  const int x0 = static_cast<int>(std::floor(x - 0.5)), y0 = static_cast<int>(std::floor(y - 0.5));
+  int range = 0;
+  for (int c = 0; c < 3; ++c) {
+    int lo = 255, hi = 0;
+    for (int dy = 0; dy < 2; ++dy)
+      for (int dx = 0; dx < 2; ++dx) {
+        const int v = image.rgb[(static_cast<std::size_t>(y0 + dy) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x0 + dx)) * 3 + static_cast<std::size_t>(c)];
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+    range = std::max(range, hi - lo);
+  }
+  return range;
+}
+
+// A late-afternoon time-lapse over Innsbruck (two minutes of sim time per second: the eye's
+// adaptation lags the dimming sky), the helicopter turning towards the sun.
+constexpr const char* kPath =
+    "time_s, lat, lon, alt_m, yaw, pitch, roll\n"
+    "0,   47.2603, 11.3439, 900, 250, 5, 0\n"
+    "3,   47.2610, 11.3400, 950, 280, 8, -10\n";
+
+constexpr const char* kChannels = R"(
+[[channel]]
+name = "shared"
+width = 48
+height = 32
+[[channel]]
+name = "left"
+node = "ig1"
+yaw = -20.0
+left = 25.0
+right = 25.0
+down = 15.0
+up = 25.0
+width = 48
+height = 32
+[[channel]]
+name = "right"
+node = "ig2"
+yaw = 20.0
+left = 25.0
+right = 25.0
+down = 15.0
+up = 25.0
+width = 48
+height = 32
+)";
+
+}  // namespace
+
+TEST_F(MultiNodeDome, TwoNodesShowTheSameHostFramesAlike) {
+  writeConfig("[sky]\nmodel = \"preetham\"\n", kChannels);
+  std::ofstream(dir_ / "path.csv") << kPath;
+  startNodes({"ig1", "ig2"});
+  constexpr int kRateHz = 30;
+  constexpr double kDurationS = 3.0;
+  constexpr auto kLast = static_cast<std::uint32_t>(kDurationS * kRateHz);  // host frames 0..kLast
+  ASSERT_EQ(flyHost("--path " + (dir_ / "path.csv").string() + " --rate " + std::to_string(kRateHz) +
+                    " --duration 3 --start-utc 2026-06-21T17:40:00Z --speed 100"),
+            0)
+      << hostOutput_;
+  finish(kLast);
+  DomeNode& a = node("ig1");
+  DomeNode& b = node("ig2");
+
+  // Each node's Start of Frame names the host frame that IG frame showed (its state dump says
+  // which snapshot it drew), and in synchronous mode each host frame once, in order.
+  for (DomeNode* n : {&a, &b}) {
+    const auto dump = readStateDump(n->dump);
+    std::uint32_t named = 0, previous = 0;
+    for (const StartOfFrameSeen& s : n->sofs) {
+      ASSERT_LT(s.igFrame, dump.size()) << n->name;
+      const auto& line = dump[s.igFrame];
+      if (!line["host_frame"].is_number()) continue;  // before the host spoke
+      EXPECT_EQ(s.lastHostFrame, line["host_frame"].get<std::uint32_t>()) << n->name << " IG frame " << s.igFrame;
+      if (named > 0) {
+        EXPECT_GE(s.lastHostFrame, previous) << n->name;
+      }
+      previous = s.lastHostFrame;
+      ++named;
+    }
+    EXPECT_GE(named, kLast * 9 / 10) << n->name << ": Start of Frames naming a host frame";
+  }
+
+  // The same host frames, shown alike: of kLast + 1 host frames, both nodes showed (nearly) all
+  // (a worker may take two datagrams that arrive back to back as one), and for every one both
+  // showed, what the worker derived from the host's state is identical to the bit.
+  const auto shownA = a.hostFrames(), shownB = b.hostFrames();
+  std::vector<std::uint32_t> common;
+  for (const auto& [frame, line] : shownA)
+    if (shownB.count(frame)) common.push_back(frame);
+  std::cout << "host frames shown: ig1 " << shownA.size() << ", ig2 " << shownB.size() << ", both " << common.size()
+            << " of " << kLast + 1 << "\n";
+  EXPECT_GE(common.size(), (kLast + 1) * 9 / 10);
+  double adaptationFirst = 0.0, adaptationLast = 0.0, sceneLast = 0.0;
+  for (std::uint32_t frame : common) {
+    const auto& ua = shownA.at(frame)["used"];
+    const auto& ub = shownB.at(frame)["used"];
+    for (const char* key : {"adaptation_cd_m2", "adaptation_gain", "scene_cd_m2", "yaw", "pitch", "roll", "lat", "lon", "alt"})
+      EXPECT_EQ(ua[key].get<double>(), ub[key].get<double>()) << key << " at host frame " << frame;
+    EXPECT_EQ(ua["utc"], ub["utc"]) << frame;
+    EXPECT_EQ(shownA.at(frame)["sun"], shownB.at(frame)["sun"]) << frame;
+    if (adaptationFirst == 0.0) adaptationFirst = ua["adaptation_cd_m2"].get<double>();
+    adaptationLast = ua["adaptation_cd_m2"].get<double>();
+    sceneLast = ua["scene_cd_m2"].get<double>();
+  }
+  // The adaptation moved during the flight and still lags the scene: what is compared is the
+  // eye stepped in time, not a constant.
+  std::cout << "adaptation " << adaptationFirst << " -> " << adaptationLast << " cd/m^2, scene " << sceneLast << "\n";
+  EXPECT_NE(adaptationFirst, adaptationLast);
+  EXPECT_GT(std::abs(adaptationLast / sceneLast - 1.0), 1e-3);
+
+  // Pixels. For host frames both showed: the channel both nodes render is the same image (its
+  // dither is a function of the pixel, so within one LSB covers it), and where the left
+  // channel (ig1) and the right one (ig2) overlap, the same direction has the same display
+  // value within the dither of two pixels and the interpolation between them.
+  int compared = 0, overlapPixels = 0, edgePixels = 0, worstShared = 0;
+  double worstOverlap = 0.0, sumOverlap = 0.0;
+  for (std::uint32_t frame : common) {
+    const std::uint64_t igA = shownA.at(frame)["ig_frame"].get<std::uint64_t>();
+    const std::uint64_t igB = shownB.at(frame)["ig_frame"].get<std::uint64_t>();
+    const fs::path sharedA = a.savedFrame(igA, "shared", ".png"), sharedB = b.savedFrame(igB, "shared", ".png");
+    ASSERT_FALSE(sharedA.empty() || sharedB.empty()) << "host frame " << frame;
+    const auto pa = skyig::sky::readPngRgb8(sharedA.string(), "ig1 shared");
+    const auto pb = skyig::sky::readPngRgb8(sharedB.string(), "ig2 shared");
+    ASSERT_EQ(pa.rgb.size(), pb.rgb.size());
+    for (std::size_t i = 0; i < pa.rgb.size(); ++i) worstShared = std::max(worstShared, std::abs(pa.rgb[i] - pb.rgb[i]));
+    const auto ea = skyig::render::readExr(a.savedFrame(igA, "shared", ".exr").string());
+    const auto eb = skyig::render::readExr(b.savedFrame(igB, "shared", ".exr").string());
+    EXPECT_EQ(ea.attributes.at("skyig:host_frame"), eb.attributes.at("skyig:host_frame"));
+    EXPECT_EQ(std::get<double>(ea.attributes.at("skyig:host_frame")), static_cast<double>(frame));
+    ASSERT_EQ(ea.image.rgba.size(), eb.image.rgba.size());
+    for (std::size_t i = 0; i < ea.image.rgba.size(); ++i) {
+      ASSERT_NEAR(ea.image.rgba[i], eb.image.rgba[i], 1e-5f * std::abs(ea.image.rgba[i]) + 1e-9f) << "host frame " << frame;
+    }
+
+    const auto left = skyig::sky::readPngRgb8(a.savedFrame(igA, "left", ".png").string(), "ig1 left");
+    const auto right = skyig::sky::readPngRgb8(b.savedFrame(igB, "right", ".png").string(), "ig2 right");
+    const glm::dmat3 leftRay = channelNdcToWorld(shownA.at(frame)["used"], "left");
+    const glm::dmat3 toRight = glm::inverse(channelNdcToWorld(shownB.at(frame)["used"], "right"));
+    for (int row = 0; row < left.height; ++row)
+      for (int column = 0; column < left.width; ++column) {
+        const glm::dvec3 ndc = toRight * skyig::sky::pixelRay(leftRay, column, row, left.width, left.height);
+        if (ndc.z <= 0.0) continue;
+        const double x = (ndc.x / ndc.z + 1.0) * 0.5 * right.width, y = (1.0 - ndc.y / ndc.z) * 0.5 * right.height;
+        if (x < 1.0 || y < 1.0 || x > right.width - 1.0 || y > right.height - 1.0) continue;  // interpolable only
+        // Where the sky is smooth: at an edge (the horizon, the sun's disc) interpolating
+        // between two pixels says nothing about the direction between them.
+        if (localRange(right, x, y) > kSmoothLsb) {
+          ++edgePixels;
+          continue;
+        }
+        for (int c = 0; c < 3; ++c) {
+          const double d = std::abs(sampleRgb8(right, x, y, c) -
+                                    left.rgb[(static_cast<std::size_t>(row) * static_cast<std::size_t>(left.width) + static_cast<std::size_t>(column)) * 3 + static_cast<std::size_t>(c)]);
+          worstOverlap = std::max(worstOverlap, d);
+          sumOverlap += d;
+        }
+        ++overlapPixels;
+      }
+    ++compared;
+  }
+  std::cout << compared << " host frames compared: shared channel differs by at most " << worstShared
+            << " LSB; overlap of left (ig1) and right (ig2): " << overlapPixels << " pixels, worst " << worstOverlap
+            << " LSB, mean " << sumOverlap / std::max(1, 3 * overlapPixels) << " LSB (" << edgePixels
+            << " pixels at edges left out)\n";
+  EXPECT_GE(compared, static_cast<int>(common.size()));
+  EXPECT_LE(worstShared, 1);
+  EXPECT_GT(overlapPixels, compared * 48 * 32 / 10);  // the frusta overlap by ~10 of 50 degrees
+  EXPECT_LT(edgePixels, overlapPixels / 5);
+  EXPECT_LE(worstOverlap, 3.0);                       // +-1 LSB dither on each side, plus interpolation
+  EXPECT_LT(sumOverlap / std::max(1, 3 * overlapPixels), 1.0);
+}

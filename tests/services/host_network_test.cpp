@@ -237,13 +237,15 @@ TEST(HostNetwork, SecondServeOnATakenPortExitsFour) {
 }
 
 // Multicast keeps sharing: the nodes of a dome on one machine join the same group on the same
-// port (and never send on it: multicast in tests stays on loopback with TTL 0). A unicast bind
-// of that port is still refused.
+// port (and never send on it: multicast in tests stays on loopback with TTL 0; the group is
+// joined on the loopback interface, so not even the membership report leaves the machine). A
+// unicast bind of that port is still refused.
 TEST(HostNetwork, MulticastGroupStillShared) {
   const std::uint16_t port = freeLoopbackPort();
   const std::string group = "239.255.42.99";
-  UdpSocket a({"0.0.0.0", port}, group);
-  EXPECT_NO_THROW(UdpSocket({"0.0.0.0", port}, group));
+  const std::optional<std::string> loopback = "127.0.0.1";
+  UdpSocket a({"0.0.0.0", port}, group, loopback);
+  EXPECT_NO_THROW(UdpSocket({"0.0.0.0", port}, group, loopback));
   EXPECT_THROW(UdpSocket({"127.0.0.1", port}), NetworkError);
 }
 

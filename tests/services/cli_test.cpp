@@ -453,6 +453,11 @@ TEST_F(Cli, BadHostAddressesInTheConfigurationExitTwoWithFileAndLine) {
   EXPECT_NE(i.err.find(interface.string() + ":5: host.multicast_interface: expected the IPv4 address of an interface"),
             std::string::npos)
       << i.err;
+  const Result f = run("serve --multicast-interface 127.0.0.1 --headless --frames 1 --listen 127.0.0.1:0");
+  EXPECT_EQ(f.exitCode, 2);
+  EXPECT_NE(f.err.find("--multicast-interface: expected the IPv4 address of an interface, with host.multicast_group set"),
+            std::string::npos)
+      << f.err;
   // The host emulator's multicast options need a multicast destination.
   const fs::path path = write("path.csv", "0, 47.26, 11.34, 900, 90, 0, 0\n1, 47.26, 11.34, 900, 90, 0, 0\n");
   const Result h = run("host --path " + path.string() + " --to 127.0.0.1:9 --multicast-interface 127.0.0.1");

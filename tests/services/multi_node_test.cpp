@@ -24,6 +24,8 @@
 #include <atomic>
 #include <cmath>
 #include <fstream>
+#include <functional>
+#include <optional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -224,7 +226,52 @@ int localRange(const skyig::sky::Rgb8Image& image, double x, double y) {
   return range;
 }
 
-// A late-afternoon time-lapse over Innsbruck (two minutes of sim time per second: the eye's
+// Where a pixel of image A shows a direction image B also shows: B's pixel coordinates of it
+// (pixel centres at integer + 0.5), or nothing. Channels map through their cameras
+// (channelToChannel); a projector would map through its warp.
+using DirectionMap = std::function<std::optional<glm::dvec2>(int column, int row)>;
+
+DirectionMap channelToChannel(const nlohmann::json& usedA, const std::string& channelA, const skyig::sky::Rgb8Image& a,
+                              const nlohmann::json& usedB, const std::string& channelB, const skyig::sky::Rgb8Image& b) {
+  const glm::dmat3 rayA = channelNdcToWorld(usedA, channelA);
+  const glm::dmat3 toB = glm::inverse(channelNdcToWorld(usedB, channelB));
+  return [=, wa = a.width, ha = a.height, wb = b.width, hb = b.height](int column, int row) -> std::optional<glm::dvec2> {
+    const glm::dvec3 ndc = toB * skyig::sky::pixelRay(rayA, column, row, wa, ha);
+    if (ndc.z <= 0.0) return std::nullopt;
+    return glm::dvec2((ndc.x / ndc.z + 1.0) * 0.5 * wb, (1.0 - ndc.y / ndc.z) * 0.5 * hb);
+  };
+}
+
+// The display values two images show for the directions they share, over any number of
+// frames: every pixel of A that maps inside B (with a pixel's margin, to interpolate) and where
+// B is smooth (at an edge, the horizon or the sun's disc, interpolating between two pixels says
+// nothing about the direction between them).
+struct SharedDirections {
+  int pixels = 0, edges = 0;
+  double worstLsb = 0.0, sumLsb = 0.0;
+  double meanLsb() const { return sumLsb / std::max(1, 3 * pixels); }
+
+  void add(const skyig::sky::Rgb8Image& a, const skyig::sky::Rgb8Image& b, const DirectionMap& toB) {
+    for (int row = 0; row < a.height; ++row)
+      for (int column = 0; column < a.width; ++column) {
+        const std::optional<glm::dvec2> p = toB(column, row);
+        if (!p || p->x < 1.0 || p->y < 1.0 || p->x > b.width - 1.0 || p->y > b.height - 1.0) continue;
+        if (localRange(b, p->x, p->y) > kSmoothLsb) {
+          ++edges;
+          continue;
+        }
+        for (int c = 0; c < 3; ++c) {
+          const double d = std::abs(sampleRgb8(b, p->x, p->y, c) -
+                                    a.rgb[(static_cast<std::size_t>(row) * static_cast<std::size_t>(a.width) + static_cast<std::size_t>(column)) * 3 + static_cast<std::size_t>(c)]);
+          worstLsb = std::max(worstLsb, d);
+          sumLsb += d;
+        }
+        ++pixels;
+      }
+  }
+};
+
+// A late-afternoon time-lapse over Innsbruck (100 s of sim time per second: the eye's
 // adaptation lags the dimming sky), the helicopter turning towards the sun.
 constexpr const char* kPath =
     "time_s, lat, lon, alt_m, yaw, pitch, roll\n"
@@ -326,8 +373,8 @@ TEST_F(MultiNodeDome, TwoNodesShowTheSameHostFramesAlike) {
   // dither is a function of the pixel, so within one LSB covers it), and where the left
   // channel (ig1) and the right one (ig2) overlap, the same direction has the same display
   // value within the dither of two pixels and the interpolation between them.
-  int compared = 0, overlapPixels = 0, edgePixels = 0, worstShared = 0;
-  double worstOverlap = 0.0, sumOverlap = 0.0;
+  int compared = 0, worstShared = 0;
+  SharedDirections overlap;
   for (std::uint32_t frame : common) {
     const std::uint64_t igA = shownA.at(frame)["ig_frame"].get<std::uint64_t>();
     const std::uint64_t igB = shownB.at(frame)["ig_frame"].get<std::uint64_t>();
@@ -348,38 +395,17 @@ TEST_F(MultiNodeDome, TwoNodesShowTheSameHostFramesAlike) {
 
     const auto left = skyig::sky::readPngRgb8(a.savedFrame(igA, "left", ".png").string(), "ig1 left");
     const auto right = skyig::sky::readPngRgb8(b.savedFrame(igB, "right", ".png").string(), "ig2 right");
-    const glm::dmat3 leftRay = channelNdcToWorld(shownA.at(frame)["used"], "left");
-    const glm::dmat3 toRight = glm::inverse(channelNdcToWorld(shownB.at(frame)["used"], "right"));
-    for (int row = 0; row < left.height; ++row)
-      for (int column = 0; column < left.width; ++column) {
-        const glm::dvec3 ndc = toRight * skyig::sky::pixelRay(leftRay, column, row, left.width, left.height);
-        if (ndc.z <= 0.0) continue;
-        const double x = (ndc.x / ndc.z + 1.0) * 0.5 * right.width, y = (1.0 - ndc.y / ndc.z) * 0.5 * right.height;
-        if (x < 1.0 || y < 1.0 || x > right.width - 1.0 || y > right.height - 1.0) continue;  // interpolable only
-        // Where the sky is smooth: at an edge (the horizon, the sun's disc) interpolating
-        // between two pixels says nothing about the direction between them.
-        if (localRange(right, x, y) > kSmoothLsb) {
-          ++edgePixels;
-          continue;
-        }
-        for (int c = 0; c < 3; ++c) {
-          const double d = std::abs(sampleRgb8(right, x, y, c) -
-                                    left.rgb[(static_cast<std::size_t>(row) * static_cast<std::size_t>(left.width) + static_cast<std::size_t>(column)) * 3 + static_cast<std::size_t>(c)]);
-          worstOverlap = std::max(worstOverlap, d);
-          sumOverlap += d;
-        }
-        ++overlapPixels;
-      }
+    overlap.add(left, right,
+                channelToChannel(shownA.at(frame)["used"], "left", left, shownB.at(frame)["used"], "right", right));
     ++compared;
   }
   std::cout << compared << " host frames compared: shared channel differs by at most " << worstShared
-            << " LSB; overlap of left (ig1) and right (ig2): " << overlapPixels << " pixels, worst " << worstOverlap
-            << " LSB, mean " << sumOverlap / std::max(1, 3 * overlapPixels) << " LSB (" << edgePixels
-            << " pixels at edges left out)\n";
+            << " LSB; overlap of left (ig1) and right (ig2): " << overlap.pixels << " pixels, worst " << overlap.worstLsb
+            << " LSB, mean " << overlap.meanLsb() << " LSB (" << overlap.edges << " pixels at edges left out)\n";
   EXPECT_GE(compared, static_cast<int>(common.size()));
   EXPECT_LE(worstShared, 1);
-  EXPECT_GT(overlapPixels, compared * 48 * 32 / 10);  // the frusta overlap by ~10 of 50 degrees
-  EXPECT_LT(edgePixels, overlapPixels / 5);
-  EXPECT_LE(worstOverlap, 3.0);                       // +-1 LSB dither on each side, plus interpolation
-  EXPECT_LT(sumOverlap / std::max(1, 3 * overlapPixels), 1.0);
+  EXPECT_GT(overlap.pixels, compared * 48 * 32 / 10);  // the frusta overlap by ~10 of 50 degrees
+  EXPECT_LT(overlap.edges, overlap.pixels / 5);
+  EXPECT_LE(overlap.worstLsb, 3.0);                    // +-1 LSB dither on each side, plus interpolation
+  EXPECT_LT(overlap.meanLsb(), 1.0);
 }

@@ -80,6 +80,7 @@ class MultiNodeDome : public ::testing::Test {
   void SetUp() override {
     dir_ = freshTestDirectory("skyig_multi_node_");
     port_ = freeLoopbackPort();
+    hostPort_ = freeLoopbackPort();
     // A group of this process's own, so parallel test runs on one machine never hear each other.
     group_ = "239.255." + std::to_string(100 + ::getpid() % 100) + "." + std::to_string(1 + ::getpid() / 100 % 250);
   }
@@ -97,8 +98,10 @@ class MultiNodeDome : public ::testing::Test {
                            << channels;
   }
 
-  // Starts `serve` for each node name and waits until each has drawn its first frame.
-  void startNodes(const std::vector<std::string>& names) {
+  // Starts `serve` for each node name and waits until each has drawn its first frame. Each node
+  // answers on a socket of the harness's (DomeNode::sofs), or with `answerTheHost` the host
+  // (`skyig host --lockstep` waits for the answers).
+  void startNodes(const std::vector<std::string>& names, bool answerTheHost = false) {
     for (const std::string& name : names) {
       auto n = std::make_unique<DomeNode>();
       n->name = name;
@@ -109,7 +112,7 @@ class MultiNodeDome : public ::testing::Test {
       n->process = std::make_unique<SkyigProcess>(
           "serve --config " + config_.string() + " --node " + name + " --headless --dump-state " + n->dump.string() +
               " --save-frames " + n->frames.string() + " --save-every 1 --reply-to " +
-              n->startOfFrame->localEndpoint().toString(),
+              (answerTheHost ? "127.0.0.1:" + std::to_string(hostPort_) : n->startOfFrame->localEndpoint().toString()),
           n->log);
       nodes_.push_back(std::move(n));
     }
@@ -124,7 +127,8 @@ class MultiNodeDome : public ::testing::Test {
   // Flies `skyig host` to the group (through 127.0.0.1, TTL 0) and returns its exit code.
   int flyHost(const std::string& args) {
     SkyigProcess host("host " + args + " --to " + group_ + ":" + std::to_string(port_) +
-                          " --bind 127.0.0.1:0 --multicast-interface 127.0.0.1 --multicast-ttl 0",
+                          " --bind 127.0.0.1:" + std::to_string(hostPort_) +
+                          " --multicast-interface 127.0.0.1 --multicast-ttl 0",
                       dir_ / "host.log");
     const int code = host.wait();
     hostOutput_ = host.output();
@@ -173,7 +177,8 @@ class MultiNodeDome : public ::testing::Test {
     }
   }
 
-  std::uint16_t port_ = 0;
+  std::uint16_t port_ = 0;      // the group's
+  std::uint16_t hostPort_ = 0;  // the host's (its Start of Frames arrive there)
   std::string group_;
   fs::path config_;
   std::vector<std::unique_ptr<DomeNode>> nodes_;
@@ -271,6 +276,25 @@ struct SharedDirections {
   }
 };
 
+// The host frames both nodes showed, each checked to be shown alike: what the worker derived
+// from the host's state (the eye's adaptation, the tone curve's gain, the scene level, the
+// attitude, position, time and sun) identical to the bit.
+std::vector<std::uint32_t> expectShownAlike(const DomeNode& a, const DomeNode& b) {
+  const auto shownA = a.hostFrames(), shownB = b.hostFrames();
+  std::vector<std::uint32_t> common;
+  for (const auto& [frame, line] : shownA)
+    if (shownB.count(frame)) common.push_back(frame);
+  for (std::uint32_t frame : common) {
+    const auto& ua = shownA.at(frame)["used"];
+    const auto& ub = shownB.at(frame)["used"];
+    for (const char* key : {"adaptation_cd_m2", "adaptation_gain", "scene_cd_m2", "yaw", "pitch", "roll", "lat", "lon", "alt"})
+      EXPECT_EQ(ua[key].get<double>(), ub[key].get<double>()) << key << " at host frame " << frame;
+    EXPECT_EQ(ua["utc"], ub["utc"]) << frame;
+    EXPECT_EQ(shownA.at(frame)["sun"], shownB.at(frame)["sun"]) << frame;
+  }
+  return common;
+}
+
 // A late-afternoon time-lapse over Innsbruck (100 s of sim time per second: the eye's
 // adaptation lags the dimming sky), the helicopter turning towards the sun.
 constexpr const char* kPath =
@@ -345,24 +369,14 @@ TEST_F(MultiNodeDome, TwoNodesShowTheSameHostFramesAlike) {
   // (a worker may take two datagrams that arrive back to back as one), and for every one both
   // showed, what the worker derived from the host's state is identical to the bit.
   const auto shownA = a.hostFrames(), shownB = b.hostFrames();
-  std::vector<std::uint32_t> common;
-  for (const auto& [frame, line] : shownA)
-    if (shownB.count(frame)) common.push_back(frame);
+  const std::vector<std::uint32_t> common = expectShownAlike(a, b);
   std::cout << "host frames shown: ig1 " << shownA.size() << ", ig2 " << shownB.size() << ", both " << common.size()
             << " of " << kLast + 1 << "\n";
   EXPECT_GE(common.size(), (kLast + 1) * 3 / 4);
-  double adaptationFirst = 0.0, adaptationLast = 0.0, sceneLast = 0.0;
-  for (std::uint32_t frame : common) {
-    const auto& ua = shownA.at(frame)["used"];
-    const auto& ub = shownB.at(frame)["used"];
-    for (const char* key : {"adaptation_cd_m2", "adaptation_gain", "scene_cd_m2", "yaw", "pitch", "roll", "lat", "lon", "alt"})
-      EXPECT_EQ(ua[key].get<double>(), ub[key].get<double>()) << key << " at host frame " << frame;
-    EXPECT_EQ(ua["utc"], ub["utc"]) << frame;
-    EXPECT_EQ(shownA.at(frame)["sun"], shownB.at(frame)["sun"]) << frame;
-    if (adaptationFirst == 0.0) adaptationFirst = ua["adaptation_cd_m2"].get<double>();
-    adaptationLast = ua["adaptation_cd_m2"].get<double>();
-    sceneLast = ua["scene_cd_m2"].get<double>();
-  }
+  ASSERT_FALSE(common.empty());
+  const double adaptationFirst = shownA.at(common.front())["used"]["adaptation_cd_m2"].get<double>();
+  const double adaptationLast = shownA.at(common.back())["used"]["adaptation_cd_m2"].get<double>();
+  const double sceneLast = shownA.at(common.back())["used"]["scene_cd_m2"].get<double>();
   // The adaptation moved during the flight and still lags the scene: what is compared is the
   // eye stepped in time, not a constant.
   std::cout << "adaptation " << adaptationFirst << " -> " << adaptationLast << " cd/m^2, scene " << sceneLast << "\n";
@@ -408,4 +422,32 @@ TEST_F(MultiNodeDome, TwoNodesShowTheSameHostFramesAlike) {
   EXPECT_LT(overlap.edges, overlap.pixels / 5);
   EXPECT_LE(overlap.worstLsb, 3.0);                    // +-1 LSB dither on each side, plus interpolation
   EXPECT_LT(overlap.meanLsb(), 1.0);
+}
+
+// A synchronous host: `skyig host --lockstep 2` sends frame k+1 only when both nodes answered
+// frame k with a Start of Frame naming it. Then no node skips or merges a host frame, whatever
+// the machine's load: each shows every host frame, in order, once (the last again while the
+// silent host's sync timeout expires), and alike.
+TEST_F(MultiNodeDome, LockStepHostIsShownEveryFrameByEveryNode) {
+  writeConfig("[sky]\nmodel = \"preetham\"\n", kChannels);
+  std::ofstream(dir_ / "path.csv") << kPath;
+  startNodes({"ig1", "ig2"}, /*answerTheHost=*/true);
+  constexpr std::uint32_t kLast = 40;  // 2 s at 20 Hz
+  ASSERT_EQ(flyHost("--path " + (dir_ / "path.csv").string() +
+                    " --rate 20 --duration 2 --start-utc 2026-06-21T17:40:00Z --speed 100 --lockstep 2 --lockstep-timeout 5"),
+            0)
+      << hostOutput_;
+  finish(kLast);
+  EXPECT_NE(hostOutput_.find("host: lock step with 2 node(s): 0 frame(s) not answered by all within 5.000 s"),
+            std::string::npos)
+      << hostOutput_;
+  for (const std::string name : {"ig1", "ig2"}) {
+    std::vector<std::uint32_t> sequence;  // host frames in the order the node showed them
+    for (const auto& line : readStateDump(node(name).dump))
+      if (line["host_frame"].is_number()) sequence.push_back(line["host_frame"].get<std::uint32_t>());
+    ASSERT_GE(sequence.size(), kLast + 1) << name;
+    for (std::uint32_t k = 0; k <= kLast; ++k) EXPECT_EQ(sequence[k], k) << name;
+    for (std::size_t i = kLast + 1; i < sequence.size(); ++i) EXPECT_EQ(sequence[i], kLast) << name;
+  }
+  EXPECT_EQ(expectShownAlike(node("ig1"), node("ig2")).size(), kLast + 1);
 }

@@ -49,7 +49,7 @@ struct StartOfFrameSeen {
 // so the host could not tell them apart).
 struct DomeNode {
   std::string name;
-  fs::path dump, frames, log;
+  fs::path dump, frames, log, stats;
   std::unique_ptr<UdpSocket> startOfFrame;
   std::vector<StartOfFrameSeen> sofs;
   std::unique_ptr<SkyigProcess> process;
@@ -108,9 +108,11 @@ class MultiNodeDome : public ::testing::Test {
       n->dump = dir_ / (name + ".jsonl");
       n->frames = dir_ / (name + "-frames");
       n->log = dir_ / (name + ".log");
+      n->stats = dir_ / (name + "-stats.json");
       n->startOfFrame = std::make_unique<UdpSocket>(Endpoint{"127.0.0.1", 0});
       n->process = std::make_unique<SkyigProcess>(
           "serve --config " + config_.string() + " --node " + name + " --headless --dump-state " + n->dump.string() +
+              " --stats-json " + n->stats.string() +
               " --save-frames " + n->frames.string() + " --save-every 1 --reply-to " +
               (answerTheHost ? "127.0.0.1:" + std::to_string(hostPort_) : n->startOfFrame->localEndpoint().toString()),
           n->log);
@@ -382,6 +384,20 @@ TEST_F(MultiNodeDome, TwoNodesShowTheSameHostFramesAlike) {
   std::cout << "adaptation " << adaptationFirst << " -> " << adaptationLast << " cd/m^2, scene " << sceneLast << "\n";
   EXPECT_NE(adaptationFirst, adaptationLast);
   EXPECT_GT(std::abs(adaptationLast / sceneLast - 1.0), 1e-3);
+
+  // Latency: in synchronous mode a frame starts once the worker has built the host frame's
+  // sky, so the datagram's arrival to the end of the frame showing it exceeds the frame's own
+  // render by the worker's pick-up and build and the render thread's wake-up: under one host
+  // frame (medians of each node's --stats-json, written when it stopped).
+  for (DomeNode* n : {&a, &b}) {
+    std::ifstream in(n->stats);
+    const nlohmann::json latency = nlohmann::json::parse(in)["latency"];
+    const double arrival = latency["arrival_to_frame_end"]["p50_us"].get<double>();
+    const double render = latency["frame_render"]["p50_us"].get<double>();
+    std::cout << n->name << ": arrival to frame end p50 " << arrival / 1000.0 << " ms, frame render p50 "
+              << render / 1000.0 << " ms\n";
+    EXPECT_LT(arrival - render, 1e6 / kRateHz) << n->name;
+  }
 
   // Pixels. For host frames both showed: the channel both nodes render is the same image (its
   // dither is a function of the pixel, so within one LSB covers it), and where the left

@@ -10,6 +10,9 @@
 // per node the host frames it showed (state dump), its Start of Frames and its saved frames.
 #include "protocol/cigi/decoder.h"
 #include "render/image_io.h"
+#include "services/node_config.h"
+#include "services/sky_data.h"
+#include "services/sky_worker.h"
 #include "sky/camera.h"
 #include "sky/common/png_reader.h"
 
@@ -466,4 +469,43 @@ TEST_F(MultiNodeDome, LockStepHostIsShownEveryFrameByEveryNode) {
     for (std::size_t i = kLast + 1; i < sequence.size(); ++i) EXPECT_EQ(sequence[i], kLast) << name;
   }
   EXPECT_EQ(expectShownAlike(node("ig1"), node("ig2")).size(), kLast + 1);
+}
+
+// The worker of a synchronous node builds states only at host instants: a silent host gets no
+// state at the local clock (the dome holds host frame N, it does not drift on each node's own
+// time), and new tables rebuild the last host frame's instant. A free-running node's worker
+// follows its local clock while the host is silent, so the sun moves on.
+TEST(SynchronousWorker, BuildsOnlyAtHostInstants) {
+  const fs::path dir = freshTestDirectory("skyig_sync_worker_");
+  std::ofstream(dir / "node.toml") << "[sky]\nmodel = \"preetham\"\n[[channel]]\nname = \"front\"\nwidth = 32\nheight = 24\n";
+  NodeConfig config = loadNodeConfig((dir / "node.toml").string());
+  loadSkyData(config);
+  NodeStats stats;
+  HostSnapshot host;
+  const Clock::time_point t0 = Clock::now();
+  host.state.updates = 1;
+  host.state.received = t0;
+  host.state.timeValid = true;
+  host.state.utc = {2026, 6, 21, 17 * 3600.0 + 40 * 60.0};
+  host.state.utcTime = t0;
+  host.state.ownshipValid = true;
+  host.state.ownship = {47.26, 11.34, 900.0, {270.0, 5.0, 0.0}};
+
+  SkyWorker sync(config, nullptr, stats);
+  sync.setHostInstantsOnly(true);
+  const auto first = sync.step(&host, t0 + 5ms);
+  ASSERT_TRUE(first.has_value());
+  EXPECT_EQ(first->observer.utc.secondsOfDay, host.state.utc.secondsOfDay);  // at the host's instant
+  EXPECT_FALSE(sync.step(&host, t0 + 500ms).has_value());                   // silent: nothing new
+  const auto rebuilt = sync.step(&host, t0 + 500ms, /*force=*/true);       // new tables
+  ASSERT_TRUE(rebuilt.has_value());
+  EXPECT_EQ(rebuilt->observer.utc.secondsOfDay, first->observer.utc.secondsOfDay);
+  EXPECT_EQ(rebuilt->sunAltitude, first->sunAltitude);
+
+  SkyWorker freeRunning(config, nullptr, stats);
+  ASSERT_TRUE(freeRunning.step(&host, t0 + 5ms).has_value());
+  const auto later = freeRunning.step(&host, t0 + 500ms);
+  ASSERT_TRUE(later.has_value());
+  EXPECT_NEAR(later->observer.utc.secondsOfDay - first->observer.utc.secondsOfDay, 0.5, 1e-6);
+  fs::remove_all(dir);
 }

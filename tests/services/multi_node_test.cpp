@@ -42,6 +42,20 @@ using namespace std::chrono_literals;
 
 namespace {
 
+// The complete lines of a state dump the node may be writing (a line being written is left
+// for the next look).
+std::vector<nlohmann::json> completeDumpLines(const fs::path& p) {
+  std::vector<nlohmann::json> lines;
+  std::ifstream in(p);
+  std::string line;
+  while (std::getline(in, line)) {
+    nlohmann::json j = nlohmann::json::parse(line, nullptr, /*allow_exceptions=*/false);
+    if (j.is_discarded()) break;
+    lines.push_back(std::move(j));
+  }
+  return lines;
+}
+
 struct StartOfFrameSeen {
   std::uint32_t igFrame = 0;
   std::uint32_t lastHostFrame = 0;
@@ -60,7 +74,7 @@ struct DomeNode {
   // The first dump line of each host frame the node showed.
   std::map<std::uint32_t, nlohmann::json> hostFrames() const {
     std::map<std::uint32_t, nlohmann::json> shown;
-    for (const auto& line : readStateDump(dump))
+    for (const auto& line : completeDumpLines(dump))
       if (line["host_frame"].is_number()) shown.emplace(line["host_frame"].get<std::uint32_t>(), line);
     return shown;
   }
@@ -122,7 +136,7 @@ class MultiNodeDome : public ::testing::Test {
       nodes_.push_back(std::move(n));
     }
     for (auto& n : nodes_)
-      ASSERT_TRUE(waitUntil([&] { return !n->process->running() || readStateDump(n->dump).size() > 0; }, 60000ms))
+      ASSERT_TRUE(waitUntil([&] { return !n->process->running() || completeDumpLines(n->dump).size() > 0; }, 60000ms))
           << n->name;
     for (auto& n : nodes_) ASSERT_TRUE(n->process->running()) << n->name << ":\n" << n->process->output();
     listening_ = true;
@@ -339,7 +353,7 @@ height = 32
 TEST_F(MultiNodeDome, TwoNodesShowTheSameHostFramesAlike) {
   writeConfig("[sky]\nmodel = \"preetham\"\n", kChannels);
   std::ofstream(dir_ / "path.csv") << kPath;
-  startNodes({"ig1", "ig2"});
+  ASSERT_NO_FATAL_FAILURE(startNodes({"ig1", "ig2"}));
   constexpr int kRateHz = 20;
   constexpr double kDurationS = 3.0;
   constexpr auto kLast = static_cast<std::uint32_t>(kDurationS * kRateHz);  // host frames 0..kLast
@@ -354,7 +368,7 @@ TEST_F(MultiNodeDome, TwoNodesShowTheSameHostFramesAlike) {
   // Each node's Start of Frame names the host frame that IG frame showed (its state dump says
   // which snapshot it drew), and in synchronous mode each host frame once, in order.
   for (DomeNode* n : {&a, &b}) {
-    const auto dump = readStateDump(n->dump);
+    const auto dump = completeDumpLines(n->dump);
     std::uint32_t named = 0, previous = 0;
     for (const StartOfFrameSeen& s : n->sofs) {
       ASSERT_LT(s.igFrame, dump.size()) << n->name;
@@ -450,7 +464,7 @@ TEST_F(MultiNodeDome, TwoNodesShowTheSameHostFramesAlike) {
 TEST_F(MultiNodeDome, LockStepHostIsShownEveryFrameByEveryNode) {
   writeConfig("[sky]\nmodel = \"preetham\"\n", kChannels);
   std::ofstream(dir_ / "path.csv") << kPath;
-  startNodes({"ig1", "ig2"}, /*answerTheHost=*/true);
+  ASSERT_NO_FATAL_FAILURE(startNodes({"ig1", "ig2"}, /*answerTheHost=*/true));
   constexpr std::uint32_t kLast = 40;  // 2 s at 20 Hz
   ASSERT_EQ(flyHost("--path " + (dir_ / "path.csv").string() +
                     " --rate 20 --duration 2 --start-utc 2026-06-21T17:40:00Z --speed 100 --lockstep 2 --lockstep-timeout 5"),
@@ -462,7 +476,7 @@ TEST_F(MultiNodeDome, LockStepHostIsShownEveryFrameByEveryNode) {
       << hostOutput_;
   for (const std::string name : {"ig1", "ig2"}) {
     std::vector<std::uint32_t> sequence;  // host frames in the order the node showed them
-    for (const auto& line : readStateDump(node(name).dump))
+    for (const auto& line : completeDumpLines(node(name).dump))
       if (line["host_frame"].is_number()) sequence.push_back(line["host_frame"].get<std::uint32_t>());
     ASSERT_GE(sequence.size(), kLast + 1) << name;
     for (std::uint32_t k = 0; k <= kLast; ++k) EXPECT_EQ(sequence[k], k) << name;

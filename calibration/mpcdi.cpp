@@ -176,6 +176,11 @@ MpcdiDescription parseMpcdiXml(const std::vector<std::uint8_t>& xml, const std::
   return d;
 }
 
+MpcdiDescription readMpcdi(const std::string& path) {
+  const MpcdiArchive archive(path);
+  return parseMpcdiXml(archive.xml(), archive.describe(archive.xmlName()));
+}
+
 ProjectorCalibration readMpcdiRegion(const MpcdiArchive& archive, const MpcdiDescription& d, const std::string& id,
                                      WarpValues values) {
   const MpcdiRegion* region = d.find(id);

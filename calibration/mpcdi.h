@@ -75,6 +75,10 @@ struct MpcdiDescription {
 // a missing, non-finite or impossible angle, a file set for a region that does not exist.
 MpcdiDescription parseMpcdiXml(const std::vector<std::uint8_t>& xml, const std::string& name);
 
+// The description of an MPCDI file (zip, folder or XML), for tools and tests that list its
+// regions.
+MpcdiDescription readMpcdi(const std::string& path);
+
 // Region `id` of the archive as a projector: its camera, its warp turned into the channel's
 // image coordinates, its blend maps in linear light. Throws CalibrationError naming the file
 // and element: no such region (the ids there are listed), a warp or map that cannot be read or

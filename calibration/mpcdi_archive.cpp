@@ -4,6 +4,7 @@
 
 #include <zip.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -88,6 +89,11 @@ std::string MpcdiArchive::describe(const std::string& member) const {
 
 std::vector<std::uint8_t> MpcdiArchive::read(const std::string& member) const {
   if (member.empty()) throw CalibrationError(path_ + ": an empty file name");
+  // The XML names files inside the calibration: an absolute path or one that climbs out of it
+  // would read whatever file the name points at.
+  const fs::path relative(member);
+  if (relative.is_absolute() || std::any_of(relative.begin(), relative.end(), [](const fs::path& part) { return part == ".."; }))
+    throw CalibrationError(describe(member) + ": a path outside the calibration (named by " + xmlName_ + ")");
   if (!zip_) {
     std::error_code ec;
     const fs::path p = fs::path(folder_) / member;

@@ -7,6 +7,7 @@
 #include "render/output_file.h"
 #include "services/caps.h"
 #include "services/commands/bench_command.h"
+#include "services/commands/dome_command.h"
 #include "services/commands/ephemeris_command.h"
 #include "services/commands/host_command.h"
 #include "services/commands/probe_command.h"
@@ -47,6 +48,7 @@ int main(int argc, char** argv) {
   registerRecordCommand(app, exitCode);
   registerProbeCommand(app, exitCode);
   registerReplayCommand(app, exitCode);
+  registerDomeCommand(app, exitCode);
 
   // Exit codes: 0 done (also when stopped by SIGINT/SIGTERM); 2 bad flags, configuration, input
   // value, output path, or a missing data file (ephemeris/data_files.h); 3 the GPU context or a

@@ -106,6 +106,13 @@ TEST_F(BadCalibration, AMissingMapFileNamesTheFileAndTheXml) {
   EXPECT_NE(e.find("p1/alpha.png: no such file (named by mpcdi.xml)"), std::string::npos) << e;
 }
 
+TEST_F(BadCalibration, APathOutsideTheCalibrationIsRefused) {
+  writeXml("<path>p1/alpha.png</path>", "<path>../../etc/passwd</path>");
+  EXPECT_NE(error().find("../../etc/passwd: a path outside the calibration"), std::string::npos);
+  writeXml("<path>p1/alpha.png</path>", "<path>/etc/passwd</path>");
+  EXPECT_NE(error().find("/etc/passwd: a path outside the calibration"), std::string::npos);
+}
+
 TEST_F(BadCalibration, AnAlphaMapThatIsNotAPngIsRefused) {
   writeFile("p1/alpha.png", "GIF89a not a png");
   EXPECT_NE(error().find("p1/alpha.png: not a PNG file"), std::string::npos);

@@ -1,7 +1,8 @@
 # Every dependency is a Debian 12 package (deploy/setup.sh installs them); the CMake names
 # below are the config files and Find modules those packages install.
 set(OpenGL_GL_PREFERENCE GLVND)
-find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)
+find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL GLX)
+find_package(X11 REQUIRED)  # GLX_NV_swap_group queries the X display (render/gl/swap_group.h)
 find_package(glfw3 3.3 REQUIRED)
 find_package(glm REQUIRED)
 find_package(OpenEXR 3 REQUIRED)

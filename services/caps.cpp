@@ -2,6 +2,7 @@
 
 #include "ephemeris/data_files.h"
 #include "render/gl/gl_context.h"
+#include "render/gl/swap_group.h"
 #include "services/version.h"
 
 #include <sys/socket.h>
@@ -39,6 +40,14 @@ std::string dataDirectorySupport() {
   }
 }
 
+// GLX_NV_swap_group: frame-lock hardware the windows join when the driver offers it.
+std::string swapBarrierSupport() {
+  const render::SwapGroupSupport s = render::querySwapGroupSupport();
+  if (!s.available) return "unavailable: " + s.reason + "; nodes keep in step by synchronous CIGI";
+  return "GLX_NV_swap_group available (" + std::to_string(s.maxGroups) + " group(s), " +
+         std::to_string(s.maxBarriers) + " barrier(s)): windows use group 1, barrier 1";
+}
+
 }  // namespace
 
 std::string versionText() {
@@ -61,6 +70,7 @@ std::string capsText() {
     out << "GL:            unavailable headless: " << e.what() << "\n";
   }
   out << "UDP sockets:   " << socketFamilySupport(AF_INET, SOCK_DGRAM, 0) << "\n"
+      << "Swap barrier:  " << swapBarrierSupport() << "\n"
       << "SocketCAN:     " << socketFamilySupport(29 /* PF_CAN */, SOCK_RAW, 1 /* CAN_RAW */) << "\n"
       << "Data files:    " << dataDirectorySupport() << "\n";
   return out.str();

@@ -118,8 +118,10 @@ void SkyRenderer::draw(const skyig::sky::SkyState& state, const skyig::sky::Atti
 skyig::sky::ChannelConfig SkyRenderer::projectorChannel(const skyig::sky::ChannelConfig& channel,
                                                         const skyig::calibration::ProjectorCalibration& projector) {
   skyig::sky::ChannelConfig c = channel;
-  c.offset = projector.camera.offset;
-  c.frustum = projector.camera.frustum;
+  if (projector.cameraGiven) {  // else (MPCDI 2d, a Bourke mesh) the channel's own camera
+    c.offset = projector.camera.offset;
+    c.frustum = projector.camera.frustum;
+  }
   return c;
 }
 

@@ -279,6 +279,7 @@ TEST_F(WarpBlend, IdentityWarpReproducesTheChannelImage) {
   c->width = channel.width;
   c->height = channel.height;
   c->camera = {channel.offset, channel.frustum};
+  c->cameraGiven = true;
   c->warp = FloatMap{c->width, c->height, 2, std::vector<float>(static_cast<std::size_t>(c->width) * c->height * 2)};
   for (int y = 0; y < c->height; ++y)
     for (int x = 0; x < c->width; ++x) {
@@ -320,6 +321,8 @@ TEST_F(WarpBlend, ProjectorsLightAddsUpToTheSky) {
   for (int p = 0; p < 2; ++p) {
     auto c = sideBySide(p, true);
     c->camera = {channel.offset, channel.frustum};
+    c->cameraGiven = true;
+  c->cameraGiven = true;
     renderer_->drawProjector(s, channel, c);
     light.push_back(renderer_->readProjectorHdr());
   }

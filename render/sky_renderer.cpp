@@ -129,6 +129,9 @@ const ProjectorMaps& SkyRenderer::mapsFor(
     const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector) {
   for (const auto& [calibration, maps] : projectorMaps_)
     if (calibration == projector) return *maps;
+  // Calibrations only this renderer still holds can never be drawn again (a reloaded one is a
+  // new object): their textures go.
+  std::erase_if(projectorMaps_, [](const auto& entry) { return entry.first.use_count() == 1; });
   projectorMaps_.emplace_back(projector, std::make_unique<ProjectorMaps>(*projector));
   return *projectorMaps_.back().second;
 }

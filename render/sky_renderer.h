@@ -39,7 +39,7 @@ class SkyRenderer {
   // tone pass writes the
   // undithered display values into a float target, and the warp-and-blend pass makes the
   // projector's image and light (readProjectorDisplay, readProjectorHdr). The calibration's maps
-  // are uploaded the first time it is drawn and kept while the renderer holds it.
+  // are uploaded the first time it is drawn and kept until no one else holds the calibration.
   void drawProjector(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                      const skyig::sky::ChannelConfig& channel,
                      const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector);

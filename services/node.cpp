@@ -2,11 +2,10 @@
 
 #include "protocol/cigi/encoder.h"
 #include "sky/atmosphere/updater.h"
-#include "render/gl/gl_context.h"
-#include "render/gl/glfw_window.h"
 #include "render/sky_renderer.h"
 #include "services/atmosphere_loader.h"
 #include "services/can_receiver.h"
+#include "services/display_outputs.h"
 #include "services/cigi_receiver.h"
 #include "services/frame_files.h"
 #include "services/frame_metadata.h"
@@ -16,12 +15,10 @@
 #include "services/systemd_notify.h"
 #include "services/warning_throttle.h"
 
-#include <glad/gl.h>
 #include <spdlog/spdlog.h>
 
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <memory>
 #include <thread>
 #include <unistd.h>
@@ -78,61 +75,6 @@ void workerLoop(const NodeOptions& opt, NodeStats& stats, Latest<HostSnapshot>& 
   }
 }
 
-// What renders: one headless context for every channel, or one window per channel.
-class Display {
- public:
-  Display(const NodeOptions& opt, const std::vector<sky::ChannelConfig>& channels) : headless_(opt.headless) {
-    if (headless_) {
-      context_ = render::createHeadlessContext();
-      renderers_.push_back(std::make_unique<render::SkyRenderer>());
-      return;
-    }
-    for (const auto& c : channels) {
-      render::WindowOptions w;
-      w.title = "skyig " + opt.config.nodeName + " / " + c.name;
-      w.width = c.width;
-      w.height = c.height;
-      w.shareWith = windows_.empty() ? nullptr : windows_.front().get();
-      if (!c.monitor.empty()) w.fullscreenMonitor = c.monitor;
-      windows_.push_back(std::make_unique<render::GlfwWindowContext>(w));
-      renderers_.push_back(std::make_unique<render::SkyRenderer>());  // VAOs and FBOs are per context
-    }
-  }
-
-  const render::GlInfo& info() const { return headless_ ? context_->info() : windows_.front()->info(); }
-  bool closeRequested() const {
-    for (const auto& w : windows_)
-      if (w->closeRequested()) return true;
-    return false;
-  }
-
-  // Draws every channel; `drawn` sees each channel's renderer right after its frame (to save it).
-  void draw(const sky::SkyState& state, const FramePose& pose,
-            const std::function<void(const render::SkyRenderer&, const sky::ChannelConfig&)>& drawn = {}) {
-    const auto& channels = pose.channels;
-    for (std::size_t i = 0; i < channels.size(); ++i) {
-      if (headless_) {
-        renderers_.front()->draw(state, pose.attitude, channels[i]);
-        if (drawn) drawn(*renderers_.front(), channels[i]);
-        continue;
-      }
-      windows_[i]->makeCurrent();
-      renderers_[i]->draw(state, pose.attitude, channels[i]);
-      if (drawn) drawn(*renderers_[i], channels[i]);
-      renderers_[i]->presentToDefaultFramebuffer(channels[i].width, channels[i].height);
-      windows_[i]->swapBuffers();
-    }
-    if (headless_) glFinish();  // the frame ends when its pixels exist
-    else render::pollWindowEvents();
-  }
-
- private:
-  bool headless_;
-  std::unique_ptr<render::GlContext> context_;
-  std::vector<std::unique_ptr<render::GlfwWindowContext>> windows_;
-  std::vector<std::unique_ptr<render::SkyRenderer>> renderers_;
-};
-
 std::uint32_t ticks10us(Clock::duration d) {
   return static_cast<std::uint32_t>(std::chrono::duration_cast<std::chrono::microseconds>(d).count() / 10);
 }
@@ -175,8 +117,11 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
 
   // Everything that can fail (sockets, SocketCAN, the recording file, the first sky) is set
   // up before any thread starts.
-  UdpSocket udp(opt.listen, opt.multicastGroup);  // always: Start of Frame goes out through it
-  spdlog::info("listening for CIGI on {}", udp.localEndpoint().toString());
+  UdpSocket udp(opt.listen, opt.multicastGroup, opt.multicastInterface);  // always: Start of Frame goes out through it
+  spdlog::info("listening for CIGI on {}{}", udp.localEndpoint().toString(),
+               opt.multicastGroup ? fmt::format(", multicast group {} on interface {}", *opt.multicastGroup,
+                                                opt.multicastInterface.value_or(opt.listen.address))
+                                  : std::string());
   CigiReceiver cigi(stats, host, opt.config.host.session);
   cigi.setMaxViews(static_cast<std::size_t>(opt.config.host.maxViews));
   std::unique_ptr<PcapRecorder> recorder;
@@ -205,6 +150,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   // (from the cache the configuration's tables were just loaded from).
   const std::unique_ptr<atmosphere::AtmosphereUpdater> updater = makeAtmosphereUpdater(opt.config, /*rateLimited=*/true, &externalStop);
   SkyWorker worker(opt.config, updater.get(), stats);  // the worker thread's: its caches are its own
+  worker.setHostInstantsOnly(opt.synchronous);
   sky.publish(BuiltSky{worker.build(nullptr, Clock::now()), nullptr, 0});  // frame 0 already has a sky
 
   {
@@ -215,7 +161,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
 
     const auto baseChannels = opt.config.channelsOf(opt.config.nodeName);
     if (baseChannels.empty()) throw ConfigError("node \"" + opt.config.nodeName + "\" has no channels in the configuration");
-    Display display(opt, baseChannels);
+    DisplayOutputs display(opt.headless, opt.config.nodeName, baseChannels);
     spdlog::info("rendering {} channel(s) of node \"{}\" on {} ({})", baseChannels.size(), opt.config.nodeName,
                  display.info().renderer, opt.headless ? "headless" : "windows");
     for (const auto& c : baseChannels)
@@ -246,18 +192,24 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
       const HostSnapshot* snapshot = built->host.get();
       const auto frameStart = Clock::now();
       // The state as the worker built it, seen with the attitude and views of this frame's
-      // instant predicted from the same host snapshot.
-      const FramePose pose = worker.poseAt(snapshot, frameStart, baseChannels);
+      // instant predicted from the same host snapshot. In synchronous mode that instant is the
+      // host frame's own (the state was built at it too): every node shows host frame N alike,
+      // whenever its own frame starts; otherwise the frame's start, so a slower host does not
+      // judder.
+      const Clock::time_point poseTime =
+          opt.synchronous && snapshot && snapshot->state.updates > 0 ? snapshot->state.received : frameStart;
+      const FramePose pose = worker.poseAt(snapshot, poseTime, baseChannels);
       if (!opt.saveFramesDir.empty() && frame % std::max<std::uint64_t>(opt.saveEvery, 1) == 0) {
-        display.draw(built->state, pose, [&](const render::SkyRenderer& r, const sky::ChannelConfig& c) {
+        display.draw(built->state, pose.attitude, pose.channels, [&](const render::SkyRenderer& r, const sky::ChannelConfig& c) {
           const std::string stem = frameStem(opt.saveFramesDir, frame, built->state.observer.utc,
                                              pose.channels.size() > 1 ? c.name : "");
           render::ImageAttributes attributes = frameAttributes(built->state, pose.attitude, c);
           attributes["skyig:frame"] = static_cast<double>(frame);  // an integer, exact to 2^53
+          if (snapshot) attributes["skyig:host_frame"] = static_cast<double>(snapshot->state.hostFrame);
           writeFrameFiles(r, stem, c, true, true, attributes);
         });
       } else {
-        display.draw(built->state, pose);
+        display.draw(built->state, pose.attitude, pose.channels);
       }
       const auto frameEnd = Clock::now();
       stats.frames.fetch_add(1, std::memory_order_relaxed);

@@ -118,8 +118,10 @@ void SkyRenderer::draw(const skyig::sky::SkyState& state, const skyig::sky::Atti
 skyig::sky::ChannelConfig SkyRenderer::projectorChannel(const skyig::sky::ChannelConfig& channel,
                                                         const skyig::calibration::ProjectorCalibration& projector) {
   skyig::sky::ChannelConfig c = channel;
-  c.offset = projector.camera.offset;
-  c.frustum = projector.camera.frustum;
+  if (projector.cameraGiven) {  // else (MPCDI 2d, a Bourke mesh) the channel's own camera
+    c.offset = projector.camera.offset;
+    c.frustum = projector.camera.frustum;
+  }
   return c;
 }
 
@@ -127,6 +129,9 @@ const ProjectorMaps& SkyRenderer::mapsFor(
     const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector) {
   for (const auto& [calibration, maps] : projectorMaps_)
     if (calibration == projector) return *maps;
+  // Calibrations only this renderer still holds can never be drawn again (a reloaded one is a
+  // new object): their textures go.
+  std::erase_if(projectorMaps_, [](const auto& entry) { return entry.first.use_count() == 1; });
   projectorMaps_.emplace_back(projector, std::make_unique<ProjectorMaps>(*projector));
   return *projectorMaps_.back().second;
 }

@@ -34,11 +34,12 @@ class SkyRenderer {
   void draw(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
     draw(state, state.observer.attitude, channel);
   }
-  // Draws `channel` for a projector: the calibration's region camera replaces the channel's
-  // offset and frustum (the channel's size stays the render size), the tone pass writes the
+  // Draws `channel` for a projector: the calibration's region camera, where it gives one,
+  // replaces the channel's offset and frustum (the channel's size stays the render size), the
+  // tone pass writes the
   // undithered display values into a float target, and the warp-and-blend pass makes the
   // projector's image and light (readProjectorDisplay, readProjectorHdr). The calibration's maps
-  // are uploaded the first time it is drawn and kept while the renderer holds it.
+  // are uploaded the first time it is drawn and kept until no one else holds the calibration.
   void drawProjector(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                      const skyig::sky::ChannelConfig& channel,
                      const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector);
@@ -49,7 +50,8 @@ class SkyRenderer {
   // Only the warp-and-blend pass again, from the last drawProjector's channel images (for
   // benchmarks of the pass itself).
   void drawWarpBlendPass(const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector);
-  // The channel as a projector draws it: its offset and frustum the region's.
+  // The channel as a projector draws it: its offset and frustum the region's, where the
+  // calibration gives a camera.
   static skyig::sky::ChannelConfig projectorChannel(const skyig::sky::ChannelConfig& channel,
                                                     const skyig::calibration::ProjectorCalibration& projector);
 

@@ -62,9 +62,9 @@ inline sky::SkyConditions physicalSky() {
 
 // [channel.projector]: the projector a channel is drawn for, warped and blended
 // (render/passes/warp_blend_pass.h). Its calibration is read when the channel is first needed
-// (services/projector_channel.h), before anything renders; the region's camera then replaces
-// the channel's yaw/pitch/roll and frustum, and its resolution is the channel's render size
-// unless the channel gives width and height.
+// (services/projector_channel.h), before anything renders; the region's camera, where the file
+// gives one, then replaces the channel's yaw/pitch/roll and frustum, and its resolution is the
+// channel's render size unless the channel gives width and height.
 struct ProjectorSettings {
   std::string mpcdi;          // a VESA MPCDI file (.mpcdi, or its mpcdi.xml); relative to the configuration's folder
   std::string region;         // the region of it that this channel's projector shows

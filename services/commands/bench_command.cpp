@@ -73,6 +73,7 @@ std::shared_ptr<const calibration::ProjectorCalibration> benchProjector(const sk
   p->width = width;
   p->height = height;
   p->camera = {channel.offset, channel.frustum};
+  p->cameraGiven = true;
   constexpr int kGrid = 64;
   p->warp = {kGrid, kGrid, 2, std::vector<float>(2 * kGrid * kGrid)};
   for (int y = 0; y < kGrid; ++y)

@@ -7,6 +7,7 @@
 #include "render/sky_renderer.h"
 #include "services/commands/common_options.h"
 #include "services/frame_metadata.h"
+#include "services/projector_channel.h"
 #include "services/sky_data.h"
 
 #include <spdlog/spdlog.h>
@@ -30,6 +31,7 @@ struct RenderOptions {
   std::string size;
   std::string exrPath;
   std::string pngPath;
+  bool projector = false;
 };
 
 // "out/sky.exr" + "left" -> "out/sky_left.exr", for one file per channel.
@@ -55,6 +57,18 @@ int run(const RenderOptions& opt) {
   } else {
     channels.push_back(config.channels.front());
   }
+  // Every calibration is read before anything else: a bad file stops here (exit 2). A channel
+  // with a projector is drawn with its region's camera, at the projector's size by default.
+  std::vector<ProjectorChannel> projected;
+  std::string plain;
+  for (const auto& c : channels) {
+    projected.push_back(loadProjectorChannel(c, config.projectorOf(c.name)));
+    if (!projected.back().projector) plain += (plain.empty() ? "" : ", ") + c.name;
+  }
+  if (opt.projector && !plain.empty())
+    throw ConfigError("--projector: channel(s) " + plain + " have no [channel.projector] in the configuration");
+  channels.clear();
+  for (const auto& p : projected) channels.push_back(p.channel);
   if (!opt.size.empty())
     for (auto& c : channels) parseSize(opt.size, c.width, c.height);
 
@@ -83,14 +97,25 @@ int run(const RenderOptions& opt) {
   std::fprintf(report, "sky: %s, sun azimuth %.2f deg, altitude %.2f deg, adaptation %.4g cd/m^2\n",
                std::string(sky::toString(state.conditions.model)).c_str(), state.sunAzimuth / kDeg,
                state.sunAltitude / kDeg, state.adaptationLuminance);
-  for (const auto& c : channels) {
+  for (std::size_t i = 0; i < channels.size(); ++i) {
+    const sky::ChannelConfig& c = channels[i];
     const auto start = std::chrono::steady_clock::now();
-    renderer.draw(state, c);
-    if (!opt.exrPath.empty()) render::writeExr(outPath(opt.exrPath, c), renderer.readHdr(),
-                                               frameAttributes(state, state.observer.attitude, c));
-    if (!opt.pngPath.empty()) render::writePng(outPath(opt.pngPath, c), renderer.readDisplay(), c.display.gamma);
+    // --projector: what the projector is sent (PNG) and the light it adds to the screen (EXR).
+    if (opt.projector) renderer.drawProjector(state, c, projected[i].projector);
+    else renderer.draw(state, c);
+    if (!opt.exrPath.empty()) {
+      render::ImageAttributes attributes = frameAttributes(state, state.observer.attitude, c);
+      if (opt.projector) addProjectorAttributes(attributes, *projected[i].projector);
+      render::writeExr(outPath(opt.exrPath, c), opt.projector ? renderer.readProjectorHdr() : renderer.readHdr(),
+                       attributes);
+    }
+    if (!opt.pngPath.empty())
+      render::writePng(outPath(opt.pngPath, c), opt.projector ? renderer.readProjectorDisplay() : renderer.readDisplay(),
+                       c.display.gamma);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(report, "channel %s: %dx%d in %.1f ms ->%s%s\n", c.name.c_str(), c.width, c.height, ms,
+    const int w = opt.projector ? projected[i].projector->width : c.width;
+    const int h = opt.projector ? projected[i].projector->height : c.height;
+    std::fprintf(report, "%s %s: %dx%d in %.1f ms ->%s%s\n", opt.projector ? "projector" : "channel", c.name.c_str(), w, h, ms,
                  opt.exrPath.empty() ? "" : (" " + outPath(opt.exrPath, c)).c_str(),
                  opt.pngPath.empty() ? "" : (" " + outPath(opt.pngPath, c)).c_str());
   }
@@ -108,6 +133,9 @@ void registerRenderCommand(CLI::App& app, int& exitCode) {
   c->add_option("--size", opt->size, "Override the channel resolution, WIDTHxHEIGHT");
   c->add_option("--exr", opt->exrPath, "OpenEXR output: float RGBA, linear Rec.709, values in cd/m^2");
   c->add_option("--png", opt->pngPath, "PNG output: 8-bit, tone reproduced for the channel's display");
+  c->add_flag("--projector", opt->projector,
+              "Write what each channel's projector ([channel.projector]) is sent: the PNG warped and blended at the "
+              "projector's resolution, the EXR the light it adds to the screen (cd/m^2 times its blend)");
   c->callback([opt, &exitCode] { exitCode = run(*opt); });
 }
 

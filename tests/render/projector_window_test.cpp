@@ -30,6 +30,7 @@ TEST(GlfwWindow, PresentsTheProjectorImage) {
   projector->width = options.width;
   projector->height = options.height;
   projector->camera = {Attitude{0.0, 10.0, 0.0}, Frustum{30, 30, 20, 20}};
+  projector->cameraGiven = true;
   // A 2x2 warp showing the channel's middle, turned upside down, and a blend ramp to the right.
   projector->warp = FloatMap{2, 2, 2, {0.2f, 0.9f, 0.8f, 0.9f, 0.2f, 0.1f, 0.8f, 0.1f}};
   projector->alpha = FloatMap{2, 1, 1, {1.0f, 0.3f}};

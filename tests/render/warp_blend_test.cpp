@@ -3,6 +3,7 @@
 // whose overlap has a smooth alpha ramp summing to 1 and the black-level lift
 // beta = alpha b (k_max - k) of a dome generator. The projector's light is modelled as a real
 // projector's: black b plus (1 - b) n^gamma of its white.
+#include "calibration/load.h"
 #include "render/gl/gl_context.h"
 #include "render/image_io.h"
 #include "render/passes/warp_blend_pass.h"
@@ -279,6 +280,7 @@ TEST_F(WarpBlend, IdentityWarpReproducesTheChannelImage) {
   c->width = channel.width;
   c->height = channel.height;
   c->camera = {channel.offset, channel.frustum};
+  c->cameraGiven = true;
   c->warp = FloatMap{c->width, c->height, 2, std::vector<float>(static_cast<std::size_t>(c->width) * c->height * 2)};
   for (int y = 0; y < c->height; ++y)
     for (int x = 0; x < c->width; ++x) {
@@ -320,6 +322,8 @@ TEST_F(WarpBlend, ProjectorsLightAddsUpToTheSky) {
   for (int p = 0; p < 2; ++p) {
     auto c = sideBySide(p, true);
     c->camera = {channel.offset, channel.frustum};
+    c->cameraGiven = true;
+  c->cameraGiven = true;
     renderer_->drawProjector(s, channel, c);
     light.push_back(renderer_->readProjectorHdr());
   }
@@ -336,4 +340,30 @@ TEST_F(WarpBlend, ProjectorsLightAddsUpToTheSky) {
       worst = std::max(worst, std::abs(sum / luminance(sky, column, y) - 1.0));
     }
   EXPECT_LT(worst, 1e-3);
+}
+
+// The same warp written as absolute coordinates and as offsets from the grid (the two PFM
+// conventions, tests/data/calibration), read by the loader, sends the projector the same image.
+TEST_F(WarpBlend, BothPfmConventionsSendTheSameImage) {
+  const std::string dir = std::string(SKYIG_SOURCE_DIR) + "/tests/data/calibration/";
+  sky::ChannelConfig channel;
+  channel.width = 96;
+  channel.height = 64;
+  channel.frustum = sky::Frustum{40, 40, 25, 25};
+  const sky::SkyState s = sky::buildSkyState(sky::ObserverState{}, {}, sky::SunOverride{200.0, 25.0});
+  std::vector<DisplayImage> images;
+  for (const auto& source : {calibration::mpcdiSource(dir + "warp_absolute.mpcdi", "p1", calibration::WarpValues::Absolute),
+                             calibration::mpcdiSource(dir + "warp_offset", "p1", calibration::WarpValues::Offset)}) {
+    const auto projector = std::make_shared<const ProjectorCalibration>(calibration::loadProjector(source));
+    renderer_->drawProjector(s, channel, projector);
+    images.push_back(renderer_->readProjectorDisplay());
+  }
+  ASSERT_EQ(images[0].width, images[1].width);
+  int worst = 0, lit = 0;
+  for (std::size_t i = 0; i < images[0].rgba.size(); ++i) {
+    worst = std::max(worst, std::abs(images[0].rgba[i] - images[1].rgba[i]));
+    if (i % 4 == 1 && images[0].rgba[i] > 20) ++lit;
+  }
+  EXPECT_LE(worst, 1);
+  EXPECT_GT(lit, images[0].width * images[0].height / 2);  // and it is not black
 }

@@ -578,3 +578,61 @@ TEST_F(Cli, ProbeAndRenderShareTheTablesAndTheGroundAlbedo) {
   std::printf("ground 30 deg down: render %.1f cd/m^2, probe %.1f cd/m^2\n", render, probe);
   EXPECT_NEAR(render, probe, 0.05 * probe);
 }
+
+// A channel with a [channel.projector]: `render --projector` writes the image sent to the
+// projector and the light it adds, at the projector's resolution (the channel's size defaults
+// to it), the EXR naming the calibration.
+TEST_F(Cli, RenderProjectorWritesWhatTheProjectorIsSent) {
+  const fs::path cfg = write("dome.toml", "[[channel]]\nname = \"p1\"\n[channel.projector]\nmpcdi = \"" +
+                                              std::string(SKYIG_SOURCE_DIR) +
+                                              "/tests/data/calibration/warp_absolute.mpcdi\"\nregion = \"p1\"\n");
+  const Result r = run("render --config " + cfg.string() + " --sky-model preetham --projector --exr " +
+                       (dir_ / "p.exr").string() + " --png " + (dir_ / "p.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("projector p1: 64x40"), std::string::npos) << r.out;
+  const auto exr = skyig::render::readExr((dir_ / "p.exr").string());
+  EXPECT_EQ(exr.image.width, 64);
+  EXPECT_EQ(exr.image.height, 40);
+  EXPECT_NE(std::get<std::string>(exr.attributes.at("skyig:projector")).find("warp_absolute.mpcdi"), std::string::npos);
+  EXPECT_EQ(std::get<int>(exr.attributes.at("skyig:projector_width")), 64);
+  EXPECT_TRUE(fs::file_size(dir_ / "p.png") > 100);
+  // Without --projector: the channel's own (unwarped) frame, at the projector's size.
+  const Result plain = run("render --config " + cfg.string() + " --sky-model preetham --exr " + (dir_ / "c.exr").string());
+  ASSERT_EQ(plain.exitCode, 0) << plain.err;
+  EXPECT_EQ(skyig::render::readExr((dir_ / "c.exr").string()).image.width, 64);
+  EXPECT_EQ(skyig::render::readExr((dir_ / "c.exr").string()).attributes.count("skyig:projector"), 0u);
+}
+
+// A bad calibration stops the command with exit 2 before anything renders: the message names
+// the file and what is wrong in it, and no image is written.
+TEST_F(Cli, BadCalibrationExitsTwoNamingTheFileBeforeRendering) {
+  const std::string mpcdi = std::string(SKYIG_SOURCE_DIR) + "/tests/data/calibration/warp_absolute.mpcdi";
+  const fs::path region = write("region.toml", "[[channel]]\nname = \"p1\"\n[channel.projector]\nmpcdi = \"" + mpcdi +
+                                                   "\"\nregion = \"p9\"\n");
+  const Result r = run("render --config " + region.string() + " --sky-model preetham --projector --png " +
+                       (dir_ / "x.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find(mpcdi), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("\"p9\""), std::string::npos) << r.err;
+  const fs::path mesh = write("short.mesh", "2\n3 2\n-1 -1 0 0 1\n0 -1 0.5 0 1\n");
+  const fs::path truncated = write("mesh.toml", "[[channel]]\nname = \"m\"\nwidth = 32\nheight = 32\n"
+                                                "[channel.projector]\nbourke_mesh = \"short.mesh\"\n");
+  const Result m = run("render --config " + truncated.string() + " --sky-model preetham --projector --png " +
+                       (dir_ / "y.png").string());
+  EXPECT_EQ(m.exitCode, 2);
+  EXPECT_NE(m.err.find(mesh.string()), std::string::npos) << m.err;
+  // Missing file.
+  const fs::path missing = write("missing.toml", "[[channel]]\nname = \"m\"\n[channel.projector]\nmpcdi = \"nowhere.mpcdi\"\n"
+                                                 "region = \"p1\"\n");
+  const Result n = run("render --config " + missing.string() + " --sky-model preetham --png " + (dir_ / "z.png").string());
+  EXPECT_EQ(n.exitCode, 2);
+  EXPECT_NE(n.err.find((dir_ / "nowhere.mpcdi").string()), std::string::npos) << n.err;
+  EXPECT_EQ(imageFiles(), 1u);  // the mesh file only: no image
+}
+
+TEST_F(Cli, ProjectorFlagNeedsAProjectorChannel) {
+  const Result r = run("render --sky-model preetham --projector --png " + (dir_ / "x.png").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("front have no [channel.projector]"), std::string::npos) << r.err;
+  EXPECT_EQ(imageFiles(), 0u);
+}

@@ -20,6 +20,8 @@ build_and_test=(
   build-essential cmake ninja-build pkg-config git python3
   # GL headers and loaders
   libegl-dev libgl-dev libgles-dev libglfw3-dev libglm-dev
+  # X11: swap groups (GLX) and the window tests read the windows back with XGetImage
+  libx11-dev
   # GLSL compiler: the tests compile the atmosphere's physics and passes as GLSL
   glslang-tools
   # images, geodesy, plumbing

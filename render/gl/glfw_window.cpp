@@ -51,9 +51,15 @@ GlfwWindowContext::GlfwWindowContext(const WindowOptions& options) {
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     GLFWmonitor* monitor = options.fullscreenMonitor ? findMonitor(*options.fullscreenMonitor) : nullptr;
+    const bool place = options.position && !monitor;
+    if (place) glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);  // shown where it belongs, not first at 0,0
     window_ = glfwCreateWindow(options.width, options.height, options.title.c_str(), monitor,
                                options.shareWith ? options.shareWith->handle() : nullptr);
     if (!window_) throw GlContextError("glfwCreateWindow failed: " + gLastGlfwError);
+    if (place) {
+      glfwSetWindowPos(window_, options.position->first, options.position->second);
+      glfwShowWindow(window_);
+    }
     makeCurrent();
     glfwSwapInterval(options.vsync ? 1 : 0);
     if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)))

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 
 struct GLFWwindow;
 
@@ -16,7 +17,8 @@ struct WindowOptions {
   int width = 1280;
   int height = 1024;
   std::optional<std::string> fullscreenMonitor;  // monitor name as GLFW reports it
-  bool vsync = true;
+  bool vsync = true;                             // swap interval 1 (wait for the vertical blank), else 0
+  std::optional<std::pair<int, int>> position;   // windowed: top-left corner on the desktop (x, y)
   const class GlfwWindowContext* shareWith = nullptr;  // share textures with another window
 };
 

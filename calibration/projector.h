@@ -49,11 +49,16 @@ struct ProjectorCalibration {
   std::string region;  // the MPCDI region id (or the mesh's file name)
   int width = 0;       // the projector's pixels
   int height = 0;
-  RegionCamera camera;  // what to render for it
+  // What to render for it, when the file says (MPCDI 3d, a3, sl); otherwise (MPCDI 2d, a Bourke
+  // mesh) the channel's own offset and frustum from the configuration.
+  RegionCamera camera;
+  bool cameraGiven = false;
   // Per projector pixel (width x height, 2 channels): the point of the camera's image whose
   // light it shows, as (u, v) in [0, 1], u to the right and v DOWN from the image's top-left
   // corner (the display image's own rows); NaN where the projector shows nothing. The warp map
-  // may be coarser than the projector (MPCDI's are): the pass interpolates it bilinearly.
+  // may be coarser than the projector (MPCDI's are): the pass interpolates it bilinearly, node
+  // (i, j) of a W x H map lying on the projector's pixel centre (i (width-1)/(W-1),
+  // j (height-1)/(H-1)), so the first and last nodes sit on the first and last pixels.
   FloatMap warp;
   // Per projector pixel (any size, 1 channel; interpolated): the fraction of its light this
   // projector sends, in LINEAR light (any gamma the file embedded already taken out), so the

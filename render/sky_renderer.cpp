@@ -1,5 +1,7 @@
 #include "render/sky_renderer.h"
 
+#include "render/texture_readback.h"
+
 #include "shaders/common/bindings.h"
 #include "shaders/common/uniforms.h"
 
@@ -77,6 +79,7 @@ void SkyRenderer::ensureTargets(int width, int height) {
   hdr_ = std::make_unique<RenderTarget>(width, height, GL_RGBA32F);
   display_ = std::make_unique<RenderTarget>(width, height, GL_RGBA8);
   pointSources_ = std::make_unique<RenderTarget>(width, height, GL_RGBA16F);
+  displayValues_ = std::make_unique<RenderTarget>(width, height, GL_RGBA16F);
 }
 
 void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
@@ -107,13 +110,59 @@ void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sk
 
 void SkyRenderer::draw(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                        const skyig::sky::ChannelConfig& channel) {
+  ensureTargets(channel.width, channel.height);
+  drawChannel(state, attitude, channel, *display_, 1.0f);
+  lastWasProjector_ = false;
+}
+
+skyig::sky::ChannelConfig SkyRenderer::projectorChannel(const skyig::sky::ChannelConfig& channel,
+                                                        const skyig::calibration::ProjectorCalibration& projector) {
+  skyig::sky::ChannelConfig c = channel;
+  c.offset = projector.camera.offset;
+  c.frustum = projector.camera.frustum;
+  return c;
+}
+
+const ProjectorMaps& SkyRenderer::mapsFor(
+    const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector) {
+  for (const auto& [calibration, maps] : projectorMaps_)
+    if (calibration == projector) return *maps;
+  projectorMaps_.emplace_back(projector, std::make_unique<ProjectorMaps>(*projector));
+  return *projectorMaps_.back().second;
+}
+
+void SkyRenderer::drawProjector(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                                const skyig::sky::ChannelConfig& channel,
+                                const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector) {
+  if (!projector) throw std::invalid_argument("drawProjector without a calibration");
+  const ProjectorMaps& maps = mapsFor(projector);
+  const skyig::sky::ChannelConfig c = projectorChannel(channel, *projector);
+  ensureTargets(c.width, c.height);
+  // Undithered into a float target: the warp resamples it and dithers what the projector gets.
+  drawChannel(state, attitude, c, *displayValues_, 0.0f);
+  if (!warpBlend_) warpBlend_ = std::make_unique<WarpBlendPass>();
+  warpBlend_->draw(maps, displayValues_->texture(), hdr_->texture(), c.display.gamma, 1.0);
+  lastWasProjector_ = true;
+  lastProjectorGamma_ = c.display.gamma;
+}
+
+void SkyRenderer::drawWarpBlendPass(const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector) {
+  if (!warpBlend_) throw std::logic_error("drawWarpBlendPass before any drawProjector");
+  warpBlend_->draw(mapsFor(projector), displayValues_->texture(), hdr_->texture(), lastProjectorGamma_, 1.0);
+}
+
+void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                              const skyig::sky::ChannelConfig& channel, const RenderTarget& toneTarget,
+                              float ditherLsb) {
   drawSkyPass(state, attitude, channel);
   if (state.ephemeris) (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, channel);
   if (state.ephemeris) (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
   if (!stars_) stars_ = std::make_unique<StarPass>();
   const glm::dmat3 ndcToWorld = skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(attitude, channel.offset), channel.frustum);
   glBindVertexArray(emptyVao_);
-  toneBlock_.upload(toToneBlock(state, channel));
+  ToneBlock tone = toToneBlock(state, channel);
+  tone.adaptation.y = ditherLsb;
+  toneBlock_.upload(tone);
   toneBlock_.bind();
   // Stars and planets as displayed, against the sky without them; the tone pass adds them to
   // the mapped sky, so it never maps a star as if it were sky (docs/night-sky-stars.md).
@@ -122,7 +171,7 @@ void SkyRenderer::draw(const skyig::sky::SkyState& state, const skyig::sky::Atti
   pointSources_->bindForDrawing();
   stars_->drawDisplayed(state.starField, ndcToWorld, hdr_->texture());
   glBindVertexArray(emptyVao_);
-  display_->bindForDrawing();
+  toneTarget.bindForDrawing();
   toneProgram_.use();
   glBindTextureUnit(SKYIG_UNIT_HDR_IMAGE, hdr_->texture());
   glBindTextureUnit(SKYIG_UNIT_POINT_SOURCES, pointSources_->texture());
@@ -133,42 +182,33 @@ void SkyRenderer::draw(const skyig::sky::SkyState& state, const skyig::sky::Atti
 }
 
 void SkyRenderer::presentToDefaultFramebuffer(int windowWidth, int windowHeight) const {
+  if (lastWasProjector_) {  // the image the projector is sent (its colour attachment 0)
+    glBlitNamedFramebuffer(warpBlend_->framebuffer(), 0, 0, 0, warpBlend_->width(), warpBlend_->height(), 0, 0,
+                           windowWidth, windowHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    return;
+  }
   glBlitNamedFramebuffer(display_->framebuffer(), 0, 0, 0, display_->width(), display_->height(), 0, 0,
                          windowWidth, windowHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
-namespace {
+HdrImage SkyRenderer::readHdr() const { return readFloatTexture(hdr_->texture(), hdr_->width(), hdr_->height()); }
 
-// A float target's pixels, top row first.
-HdrImage readFloatTarget(const RenderTarget& target) {
-  HdrImage image{target.width(), target.height(), {}};
-  const size_t row = static_cast<size_t>(image.width) * 4;
-  std::vector<float> bottomUp(row * static_cast<size_t>(image.height));
-  glGetTextureImage(target.texture(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(bottomUp.size() * sizeof(float)),
-                    bottomUp.data());
-  image.rgba.resize(bottomUp.size());
-  for (int y = 0; y < image.height; ++y)  // GL's rows start at the bottom, images' at the top
-    std::copy_n(&bottomUp[static_cast<size_t>(image.height - 1 - y) * row], row, &image.rgba[static_cast<size_t>(y) * row]);
-  return image;
+HdrImage SkyRenderer::readPointSources() const {
+  return readFloatTexture(pointSources_->texture(), pointSources_->width(), pointSources_->height());
 }
 
-}  // namespace
-
-HdrImage SkyRenderer::readHdr() const { return readFloatTarget(*hdr_); }
-
-HdrImage SkyRenderer::readPointSources() const { return readFloatTarget(*pointSources_); }
-
 DisplayImage SkyRenderer::readDisplay() const {
-  DisplayImage image{display_->width(), display_->height(), {}};
-  const size_t row = static_cast<size_t>(image.width) * 4;
-  std::vector<std::uint8_t> bottomUp(row * static_cast<size_t>(image.height));
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(display_->texture(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(bottomUp.size()),
-                    bottomUp.data());
-  image.rgba.resize(bottomUp.size());
-  for (int y = 0; y < image.height; ++y)
-    std::copy_n(&bottomUp[static_cast<size_t>(image.height - 1 - y) * row], row, &image.rgba[static_cast<size_t>(y) * row]);
-  return image;
+  return readDisplayTexture(display_->texture(), display_->width(), display_->height());
+}
+
+DisplayImage SkyRenderer::readProjectorDisplay() const {
+  if (!warpBlend_) throw std::logic_error("readProjectorDisplay before any drawProjector");
+  return readDisplayTexture(warpBlend_->displayTexture(), warpBlend_->width(), warpBlend_->height());
+}
+
+HdrImage SkyRenderer::readProjectorHdr() const {
+  if (!warpBlend_) throw std::logic_error("readProjectorHdr before any drawProjector");
+  return readFloatTexture(warpBlend_->lightTexture(), warpBlend_->width(), warpBlend_->height());
 }
 
 }  // namespace skyig::render

@@ -1,6 +1,7 @@
 #pragma once
 // Renders one channel of a skyig::sky::SkyState: the sky pass into a float target (absolute radiance),
 // then tone reproduction into an 8-bit target (what the projector shows).
+#include "calibration/projector.h"
 #include "sky/channel.h"
 #include "render/gl/gl_program.h"
 #include "render/image.h"
@@ -10,8 +11,11 @@
 #include "render/gl/render_target.h"
 #include "sky/sky_state.h"
 #include "render/passes/star_pass.h"
+#include "render/passes/warp_blend_pass.h"
 
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace skyig::render {
 
@@ -30,6 +34,25 @@ class SkyRenderer {
   void draw(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
     draw(state, state.observer.attitude, channel);
   }
+  // Draws `channel` for a projector: the calibration's region camera replaces the channel's
+  // offset and frustum (the channel's size stays the render size), the tone pass writes the
+  // undithered display values into a float target, and the warp-and-blend pass makes the
+  // projector's image and light (readProjectorDisplay, readProjectorHdr). The calibration's maps
+  // are uploaded the first time it is drawn and kept while the renderer holds it.
+  void drawProjector(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                     const skyig::sky::ChannelConfig& channel,
+                     const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector);
+  void drawProjector(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel,
+                     const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector) {
+    drawProjector(state, state.observer.attitude, channel, projector);
+  }
+  // Only the warp-and-blend pass again, from the last drawProjector's channel images (for
+  // benchmarks of the pass itself).
+  void drawWarpBlendPass(const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector);
+  // The channel as a projector draws it: its offset and frustum the region's.
+  static skyig::sky::ChannelConfig projectorChannel(const skyig::sky::ChannelConfig& channel,
+                                                    const skyig::calibration::ProjectorCalibration& projector);
+
   // Draws only the sky pass (for benchmarks of the pass itself).
   void drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                    const skyig::sky::ChannelConfig& channel);
@@ -37,21 +60,32 @@ class SkyRenderer {
     drawSkyPass(state, state.observer.attitude, channel);
   }
 
-  // Copies the last tone-reproduced frame to the window's back buffer (windowed channels).
+  // Copies the last tone-reproduced frame to the window's back buffer (windowed channels): the
+  // projector's image when the last draw was drawProjector.
   void presentToDefaultFramebuffer(int windowWidth, int windowHeight) const;
 
   // The physical sky pass, once a state needed it (its table upload state, for tests and
   // benchmarks); null before.
   const PhysicalSkyPass* physicalPass() const { return physical_.get(); }
 
+  // The last draw's channel: its HDR image (the region's camera after drawProjector) and its
+  // display frame (draw only).
   HdrImage readHdr() const;
   DisplayImage readDisplay() const;
+  // The last drawProjector's outputs at the projector's resolution: the 8-bit image sent to
+  // the projector, and the light it contributes (the channel's cd/m^2 warped, times alpha).
+  DisplayImage readProjectorDisplay() const;
+  HdrImage readProjectorHdr() const;
   // The displayed stars and planets of the last frame, display cd/m^2 that the tone pass added
   // to the mapped sky (linear Rec.709; zero where there is none).
   HdrImage readPointSources() const;
 
  private:
   void ensureTargets(int width, int height);
+  // Every pass of the channel, the tone pass into `toneTarget` with a dither of `ditherLsb`.
+  void drawChannel(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                   const skyig::sky::ChannelConfig& channel, const RenderTarget& toneTarget, float ditherLsb);
+  const ProjectorMaps& mapsFor(const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector);
 
   GlProgram skyProgram_;
   GlProgram toneProgram_;
@@ -66,6 +100,14 @@ class SkyRenderer {
   std::unique_ptr<RenderTarget> hdr_;
   std::unique_ptr<RenderTarget> display_;
   std::unique_ptr<RenderTarget> pointSources_;  // displayed stars, display cd/m^2 (StarPass::drawDisplayed)
+  std::unique_ptr<RenderTarget> displayValues_;  // a projector channel's undithered display values (RGBA16F)
+  std::unique_ptr<WarpBlendPass> warpBlend_;     // the first time a projector is drawn
+  // The calibrations drawn so far and their maps on the GPU; holding them keeps their
+  // addresses from being reused by another calibration.
+  std::vector<std::pair<std::shared_ptr<const skyig::calibration::ProjectorCalibration>, std::unique_ptr<ProjectorMaps>>>
+      projectorMaps_;
+  bool lastWasProjector_ = false;
+  double lastProjectorGamma_ = 2.2;
 };
 
 }  // namespace skyig::render

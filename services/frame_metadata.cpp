@@ -76,4 +76,12 @@ render::ImageAttributes frameAttributes(const sky::SkyState& s, const sky::Attit
   };
 }
 
+void addProjectorAttributes(render::ImageAttributes& attributes, const calibration::ProjectorCalibration& projector) {
+  attributes["skyig:projector"] = projector.source;
+  attributes["skyig:projector_region"] = projector.region;
+  attributes["skyig:projector_width"] = projector.width;
+  attributes["skyig:projector_height"] = projector.height;
+  attributes["skyig:units"] = std::string("linear Rec.709, Y in cd/m^2: the light this projector adds (warped, times its blend)");
+}
+
 }  // namespace skyig::services

@@ -4,6 +4,7 @@
 // rendered, which channel it is (its own eyepoint offset and frustum, not only the ownship's
 // attitude) and how world directions map to its image. Numbers are stored as numbers; OpenEXR's
 // standard attributes (ImfStandardAttributes.h) are used where one exists.
+#include "calibration/projector.h"
 #include "render/image_io.h"
 #include "sky/channel.h"
 #include "sky/sky_state.h"
@@ -19,5 +20,9 @@ render::Matrix44f worldToCamera(const sky::Attitude& ownship, const sky::Attitud
 // (the render thread's predicted attitude in serve and replay, the observer's in render).
 render::ImageAttributes frameAttributes(const sky::SkyState& state, const sky::Attitude& ownship,
                                         const sky::ChannelConfig& channel);
+
+// What a projector's EXR adds to its channel's attributes (`render --projector`): the
+// calibration it was warped with and that its pixels are the light it contributes.
+void addProjectorAttributes(render::ImageAttributes& attributes, const calibration::ProjectorCalibration& projector);
 
 }  // namespace skyig::services

@@ -6,6 +6,7 @@
 #include <toml++/toml.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -228,7 +229,36 @@ void readCanIdentifiers(TableReader& r, protocol::canaerospace::IdentifierMap& m
   r.rejectUnknownKeys();
 }
 
-sky::ChannelConfig readChannel(TableReader& r, size_t index, std::string& node) {
+// [channel.projector]; relative files are found from the configuration's folder.
+ProjectorSettings readProjector(TableReader& r, const std::string& configPath) {
+  ProjectorSettings p;
+  const auto file = [&](const std::string& key) {
+    std::string path = r.string(key, "");
+    if (r.find(key) && path.empty()) r.fail(r.find(key), key, "expected a file name, got \"\"");
+    if (!path.empty() && std::filesystem::path(path).is_relative())
+      path = (std::filesystem::path(configPath).parent_path() / path).lexically_normal().string();
+    return path;
+  };
+  p.mpcdi = file("mpcdi");
+  p.bourkeMesh = file("bourke_mesh");
+  p.region = r.string("region", "");
+  const std::string values = r.string("warp_values", "absolute", "\"absolute\" or \"offset\"");
+  if (values != "absolute" && values != "offset")
+    r.fail(r.find("warp_values"), "warp_values", "expected \"absolute\" or \"offset\", got \"" + values + "\"");
+  p.warpOffsets = values == "offset";
+  if (p.mpcdi.empty() == p.bourkeMesh.empty())
+    r.fail(nullptr, "mpcdi", "expected either mpcdi = \"FILE\" (with region) or bourke_mesh = \"FILE\"");
+  if (!p.mpcdi.empty() && p.region.empty())
+    r.fail(r.find("region"), "region", "expected the MPCDI region this channel's projector shows");
+  if (!p.bourkeMesh.empty() && r.find("region"))
+    r.fail(r.find("region"), "region", "a Bourke mesh has no regions (the channel's frustum is its camera)");
+  if (!p.bourkeMesh.empty() && r.find("warp_values"))
+    r.fail(r.find("warp_values"), "warp_values", "applies to MPCDI warp files only");
+  r.rejectUnknownKeys();
+  return p;
+}
+
+sky::ChannelConfig readChannel(TableReader& r, size_t index, std::string& node, ProjectorSettings& projector) {
   sky::ChannelConfig c;
   node = r.string("node", "");
   c.name = r.string("name", "channel" + std::to_string(index));
@@ -244,6 +274,14 @@ sky::ChannelConfig readChannel(TableReader& r, size_t index, std::string& node) 
   c.monitor = r.string("monitor", c.monitor);
   c.width = r.integer("width", c.width, sky::kMinChannelSide, sky::kMaxChannelSide);
   c.height = r.integer("height", c.height, sky::kMinChannelSide, sky::kMaxChannelSide);
+  if (const toml::table* t = subTable(r, "projector")) {
+    TableReader p(*t, r.prefix() + "projector.", r.source());
+    projector = readProjector(p, r.source());
+    projector.sizeGiven = r.find("width") != nullptr || r.find("height") != nullptr;
+    if (projector.sizeGiven && !(r.find("width") && r.find("height")))
+      r.fail(r.find("width") ? r.find("width") : r.find("height"), r.find("width") ? "width" : "height",
+             "a projector channel gives both width and height, or neither (the projector's resolution)");
+  }
   if (const toml::table* t = subTable(r, "display")) {
     TableReader d(*t, r.prefix() + "display.", r.source());
     c.display.maxLuminance = d.number("max_luminance", c.display.maxLuminance, 1.0, 1e5);
@@ -313,13 +351,16 @@ NodeConfig parseNodeConfig(const std::string& text, const std::string& sourceNam
       r.fail(n, "channel", "expected one or more [[channel]] tables");
     config.channels.clear();
     config.channelNodes.clear();
+    config.channelProjectors.clear();
     std::set<std::string> names;
     for (size_t i = 0; i < channels->size(); ++i) {
       const toml::table& t = *channels->get(i)->as_table();
       TableReader c(t, "channel[" + std::to_string(i) + "].", sourceName);
       std::string node;
-      config.channels.push_back(readChannel(c, i, node));
+      ProjectorSettings projector;
+      config.channels.push_back(readChannel(c, i, node, projector));
       config.channelNodes.push_back(node);
+      config.channelProjectors.push_back(projector);
       if (!names.insert(config.channels.back().name).second)
         c.fail(c.find("name"), "name", "duplicate channel name \"" + config.channels.back().name + "\"");
     }
@@ -333,6 +374,12 @@ std::vector<sky::ChannelConfig> NodeConfig::channelsOf(const std::string& name) 
   for (size_t i = 0; i < channels.size(); ++i)
     if (channelNodes[i].empty() || channelNodes[i] == name) mine.push_back(channels[i]);
   return mine;
+}
+
+ProjectorSettings NodeConfig::projectorOf(const std::string& channel) const {
+  for (size_t i = 0; i < channels.size() && i < channelProjectors.size(); ++i)
+    if (channels[i].name == channel) return channelProjectors[i];
+  return {};
 }
 
 NodeConfig loadNodeConfig(const std::string& path) {

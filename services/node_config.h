@@ -59,12 +59,27 @@ inline sky::SkyConditions physicalSky() {
   return c;
 }
 
+// [channel.projector]: the projector a channel is drawn for, warped and blended
+// (render/passes/warp_blend_pass.h). Its calibration is read when the channel is first needed
+// (services/projector_channel.h), before anything renders; the region's camera then replaces
+// the channel's yaw/pitch/roll and frustum, and its resolution is the channel's render size
+// unless the channel gives width and height.
+struct ProjectorSettings {
+  std::string mpcdi;          // a VESA MPCDI file (.mpcdi, or its mpcdi.xml); relative to the configuration's folder
+  std::string region;         // the region of it that this channel's projector shows
+  bool warpOffsets = false;   // warp_values = "offset": the PFM holds offsets from its grid, not coordinates
+  std::string bourkeMesh;     // or Paul Bourke's warp mesh; its camera is the channel's own offset and frustum
+  bool sizeGiven = false;     // the channel gives width and height
+  bool enabled() const { return !mpcdi.empty() || !bourkeMesh.empty(); }
+};
+
 struct NodeConfig {
   std::string nodeName = "ig";
   sky::SkyConditions sky = physicalSky();
   sky::ObserverState observer;
   std::vector<sky::ChannelConfig> channels{sky::ChannelConfig{}};
   std::vector<std::string> channelNodes{""};  // per channel: the node that renders it ("" any)
+  std::vector<ProjectorSettings> channelProjectors{ProjectorSettings{}};  // per channel: its projector, if any
   HostLink host;
   AtmosphereSettings atmosphere;
   // The star catalogue (BSC5 CSV) that sky.starCatalogue is loaded from (services/sky_data.h):
@@ -77,6 +92,8 @@ struct NodeConfig {
 
   // The channels node `name` renders: those assigned to it, and those assigned to none.
   std::vector<sky::ChannelConfig> channelsOf(const std::string& name) const;
+  // The projector of the channel named `channel` (not enabled() for a plain channel or none).
+  ProjectorSettings projectorOf(const std::string& channel) const;
 };
 
 // A bad file: what() reads "FILE:LINE: KEY: expected ..., got ..." (the CLI exits with 2).

@@ -14,4 +14,5 @@
 #include "tone/threshold.glsl"
 #include "tone/tone_reproduction.glsl"
 #include "tone/glare.glsl"
+#include "tone/projector_blend.glsl"
 #include "common/glsl_cpp_end.h"

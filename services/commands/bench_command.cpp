@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <ctime>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace skyig::services {
@@ -24,6 +25,7 @@ struct BenchOptions {
   int width = 1280;
   int height = 1024;
   int frames = 20;
+  std::string projectorSize = "1920x1200";
   bool json = false;
 };
 
@@ -61,6 +63,35 @@ Timing timePass(int frames, bool gpuTimers, Draw draw) {
   return t;
 }
 
+// A projector for the warp-and-blend pass's timing: a gently curved warp over the whole channel
+// image (a coarse map, as MPCDI's are), and a blend ramp with its black lift on the right fifth.
+// Its cost does not depend on the values, only on the projector's pixels.
+std::shared_ptr<const calibration::ProjectorCalibration> benchProjector(const sky::ChannelConfig& channel, int width,
+                                                                        int height) {
+  auto p = std::make_shared<calibration::ProjectorCalibration>();
+  p->source = "bench projector";
+  p->width = width;
+  p->height = height;
+  p->camera = {channel.offset, channel.frustum};
+  constexpr int kGrid = 64;
+  p->warp = {kGrid, kGrid, 2, std::vector<float>(2 * kGrid * kGrid)};
+  for (int y = 0; y < kGrid; ++y)
+    for (int x = 0; x < kGrid; ++x) {
+      const double u = x / (kGrid - 1.0), v = y / (kGrid - 1.0);
+      p->warp.at(x, y, 0) = static_cast<float>(0.05 + 0.9 * u);
+      p->warp.at(x, y, 1) = static_cast<float>(0.05 + 0.9 * v + 0.04 * (u - 0.5) * (u - 0.5));
+    }
+  p->alpha = {width, 1, 1, std::vector<float>(static_cast<std::size_t>(width), 1.0f)};
+  p->beta = {width, 1, 1, std::vector<float>(static_cast<std::size_t>(width), 0.0f)};
+  for (int x = width * 4 / 5; x < width; ++x) {
+    const float t = static_cast<float>(x - width * 4 / 5) / static_cast<float>(width - width * 4 / 5);
+    p->alpha.at(x, 0) = 1.0f - t;
+    p->beta.at(x, 0) = 0.0f;
+  }
+  for (int x = 0; x < width * 4 / 5; ++x) p->beta.at(x, 0) = 0.001f;
+  return p;
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
@@ -80,6 +111,13 @@ int run(const BenchOptions& opt) {
   const Timing sky = timePass(opt.frames, gpuTimers, [&] { renderer.drawSkyPass(state, channel); });
   const Timing full = timePass(opt.frames, gpuTimers, [&] { renderer.draw(state, channel); });
   const double pixels = static_cast<double>(channel.width) * channel.height;
+  int projectorWidth = 0, projectorHeight = 0;
+  parseSize(opt.projectorSize, projectorWidth, projectorHeight);
+  const auto projector = benchProjector(channel, projectorWidth, projectorHeight);
+  renderer.drawProjector(state, channel, projector);
+  const Timing warp = timePass(opt.frames, gpuTimers, [&] { renderer.drawWarpBlendPass(projector); });
+  const double warpMs = gpuTimers ? median(warp.gpuMs) : median(warp.wallMs);
+  const double skyMs = gpuTimers ? median(sky.gpuMs) : median(sky.wallMs);
 
   nlohmann::json out = {
       {"renderer", context->info().renderer},
@@ -97,6 +135,10 @@ int run(const BenchOptions& opt) {
       {"process_cpu_ms_per_frame", full.cpuMs},
       {"sky_pass_process_cpu_ms_per_frame", sky.cpuMs},
       {"sky_pass_fastest_wall_ms", *std::min_element(sky.wallMs.begin(), sky.wallMs.end())},
+      {"projector_size", {projectorWidth, projectorHeight}},
+      {"warp_blend_pass_ms", warpMs},
+      {"warp_blend_pass_wall_ms", median(warp.wallMs)},
+      {"warp_blend_over_sky_pass", warpMs / skyMs},
   };
   if (opt.json) {
     std::printf("%s\n", out.dump(2).c_str());
@@ -108,6 +150,8 @@ int run(const BenchOptions& opt) {
                 out["sky_pass_fastest_wall_ms"].get<double>(), sky.cpuMs);
     std::printf("  sky + tone passes: %8.3f ms/frame  (process CPU %.1f ms/frame)\n",
                 out["sky_and_tone_ms"].get<double>(), full.cpuMs);
+    std::printf("  warp and blend:    %8.3f ms/frame  (one %dx%d projector; %.2f times the sky pass)\n", warpMs,
+                projectorWidth, projectorHeight, warpMs / skyMs);
   }
   return 0;
 }
@@ -116,11 +160,13 @@ int run(const BenchOptions& opt) {
 
 void registerBenchCommand(CLI::App& app, int& exitCode) {
   auto opt = std::make_shared<BenchOptions>();
-  CLI::App* c = app.add_subcommand("bench", "Time the sky pass of one channel, headless");
+  CLI::App* c = app.add_subcommand("bench", "Time the sky pass of one channel and a projector's warp-and-blend pass, headless");
   opt->sky.add(*c);
   c->add_option("--width", opt->width, "Frame width")->check(CLI::Range(sky::kMinChannelSide, sky::kMaxChannelSide));
   c->add_option("--height", opt->height, "Frame height")->check(CLI::Range(sky::kMinChannelSide, sky::kMaxChannelSide));
   c->add_option("--frames", opt->frames, "Timed frames")->check(CLI::Range(1, 100000));
+  c->add_option("--projector-size", opt->projectorSize,
+                 "Projector resolution for the warp-and-blend pass's timing, WIDTHxHEIGHT (default 1920x1200)");
   c->add_flag("--json", opt->json, "Print the figures as JSON");
   c->callback([opt, &exitCode] { exitCode = run(*opt); });
 }

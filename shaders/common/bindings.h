@@ -14,6 +14,7 @@
 #define SKYIG_BINDING_FRAME 0  // FrameBlock: view rays and viewport
 #define SKYIG_BINDING_SKY 1    // AnalyticSkyBlock
 #define SKYIG_BINDING_TONE 2   // ToneBlock
+#define SKYIG_BINDING_PROJECTOR 3  // ProjectorBlock: the warp-and-blend pass
 
 // Texture units. Every pass binds its textures right before it draws, so units may repeat
 // between passes; within a program they must differ.
@@ -59,6 +60,14 @@
 #define SKYIG_UNIT_HDR_IMAGE 0
 #define SKYIG_UNIT_POINT_SOURCES 1
 
+// The warp-and-blend pass (passes/warp_blend.frag, WarpBlendPass): the channel's undithered
+// display values and its HDR image, read through the warp; the projector's maps.
+#define SKYIG_UNIT_CHANNEL_DISPLAY 0
+#define SKYIG_UNIT_CHANNEL_HDR 1
+#define SKYIG_UNIT_PROJECTOR_WARP 2
+#define SKYIG_UNIT_PROJECTOR_ALPHA 3
+#define SKYIG_UNIT_PROJECTOR_BETA 4
+
 // The displayed-star pass (passes/star_display.vert, StarPass::drawDisplayed): the HDR target
 // without stars, read per star for the sky it sits on.
 #define SKYIG_UNIT_STAR_BACKGROUND 0
@@ -91,5 +100,9 @@
 #define SKYIG_OUTPUT_COLOR 0
 #define SKYIG_OUTPUT_SLICE_SCATTERING 0
 #define SKYIG_OUTPUT_SLICE_SINGLE_MIE 1
+// The warp-and-blend pass writes both of WarpBlendPass's targets at once: the 8-bit image sent
+// to the projector and the light it contributes (cd/m^2).
+#define SKYIG_OUTPUT_PROJECTOR_DISPLAY 0
+#define SKYIG_OUTPUT_PROJECTOR_LIGHT 1
 
 #endif

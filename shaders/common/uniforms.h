@@ -51,4 +51,10 @@ SKYIG_UBO_BEGIN(ToneBlock, SKYIG_BINDING_TONE)
   SKYIG_VEC4 glareObserver;      // x: age, years; y: ocular pigmentation (tone/glare.glsl)
 SKYIG_UBO_END(ToneBlock)
 
+// The warp-and-blend pass of a projector (passes/warp_blend.frag, tone/projector_blend.glsl).
+SKYIG_UBO_BEGIN(ProjectorBlock, SKYIG_BINDING_PROJECTOR)
+  SKYIG_VEC4 projector;  // width, height (pixels), 1/width, 1/height
+  SKYIG_VEC4 blend;      // x: the display's gamma; y: dither amplitude in LSB
+SKYIG_UBO_END(ProjectorBlock)
+
 #endif

@@ -1,6 +1,7 @@
 // Tone reproduction pass: HDR radiance in, display frame-buffer values out, with a triangular
-// dither of +-1 LSB so the dark gradients of a night sky do not band in 8 bits. The dither is
-// a hash of the pixel, so frames are deterministic. The default mapping is the scene's
+// dither of +-1 LSB (common/dither.glsl) so the dark gradients of a night sky do not band in 8
+// bits. For a projector the renderer sets the dither to 0 and draws into a float target: the
+// warp-and-blend pass (passes/warp_blend.frag) dithers what it sends. The default mapping is the scene's
 // histogram-adjusted curve (Ward Larson, Rushmeier & Piatko 1997), computed on the CPU from the
 // model for every channel alike (sky/eye/tone_curve.h); Tumblin & Rushmeier 1993 is selectable.
 // Stars and planets are not in the HDR image it maps: the displayed-star pass drew them, in
@@ -10,18 +11,13 @@
 #include "common/uniforms.h"
 #include "tone/display_curve.glsl"
 #include "tone/glare.glsl"
+#include "common/dither.glsl"
 
 layout(binding = SKYIG_UNIT_HDR_IMAGE) uniform sampler2D hdrImage;
 // The displayed stars and planets (passes/star_display.vert): display cd/m^2 to add.
 layout(binding = SKYIG_UNIT_POINT_SOURCES) uniform sampler2D pointSourceImage;
 in vec2 vTexCoord;
 layout(location = SKYIG_OUTPUT_COLOR) out vec4 outDisplay;
-
-float hash12(vec2 p) {  // Hoskins, "Hash without sine" (2014), hash12
-  vec3 p3 = fract(vec3(p.xyx) * 0.1031);
-  p3 += dot(p3, p3.yzx + 33.33);
-  return fract((p3.x + p3.y) * p3.z);
-}
 
 // The veil of the glare sources along this pixel's view.
 vec3 glareVeil(vec3 view) {
@@ -42,6 +38,5 @@ void main() {
   DisplayModel model = toneDisplayModel();
   vec3 ld = toneMapLinear(world) + texelFetch(pointSourceImage, ivec2(gl_FragCoord.xy), 0).rgb;
   vec3 n = displayValues(compressToDisplay(ld, rec709Luminance(ld), model.ambientLuminance + model.maxLuminance), model);
-  float dither = (hash12(gl_FragCoord.xy) + hash12(gl_FragCoord.xy + 71.7) - 1.0) * adaptation.y;
-  outDisplay = vec4(clamp(n + dither / 255.0, 0.0, 1.0), 1.0);
+  outDisplay = vec4(clamp(n + ditherLsb(gl_FragCoord.xy, adaptation.y), 0.0, 1.0), 1.0);
 }

@@ -64,6 +64,13 @@ std::vector<ProgramCase> programs() {
        {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), output("outDisplay", SKYIG_OUTPUT_COLOR)}},
       // PhysicalSkyPass: inside the atmosphere, from space, and this frame's slices.
+      // The warp-and-blend pass of a projector (WarpBlendPass): two outputs at once.
+      {{"passes/fullscreen.vert", "passes/warp_blend.frag"},
+       {optional(frame), block("ProjectorBlock", SKYIG_BINDING_PROJECTOR),
+        sampler("channelDisplay", SKYIG_UNIT_CHANNEL_DISPLAY), sampler("channelHdr", SKYIG_UNIT_CHANNEL_HDR),
+        sampler("warpMap", SKYIG_UNIT_PROJECTOR_WARP), sampler("alphaMap", SKYIG_UNIT_PROJECTOR_ALPHA),
+        sampler("betaMap", SKYIG_UNIT_PROJECTOR_BETA), output("outDisplay", SKYIG_OUTPUT_PROJECTOR_DISPLAY),
+        output("outLight", SKYIG_OUTPUT_PROJECTOR_LIGHT)}},
       {{"passes/fullscreen.vert", "passes/physical_sky.frag"},
        {frame, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE),
         optional(sampler("scatteringPacked", SKYIG_UNIT_SCATTERING)),
@@ -129,7 +136,8 @@ std::vector<ProgramCase> programs() {
   // keeps them all): the blocks a program does not list above are optional in it.
   for (ProgramCase& c : cases) {
     if (c.files.size() == 1) continue;
-    for (const Expect& b : {frame, block("AnalyticSkyBlock", SKYIG_BINDING_SKY), block("ToneBlock", SKYIG_BINDING_TONE)}) {
+    for (const Expect& b : {frame, block("AnalyticSkyBlock", SKYIG_BINDING_SKY), block("ToneBlock", SKYIG_BINDING_TONE),
+                            block("ProjectorBlock", SKYIG_BINDING_PROJECTOR)}) {
       bool listed = false;
       for (const Expect& e : c.expect) listed = listed || (e.kind == b.kind && e.name == b.name);
       if (!listed) c.expect.push_back(optional(b));

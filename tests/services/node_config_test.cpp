@@ -200,3 +200,40 @@ TEST(NodeConfig, AtmosphereMedium) {
   EXPECT_NE(errorOf("[atmosphere]\ntop_radius_km = 6300\n").find("bad.toml: atmosphere:"), std::string::npos)
       << errorOf("[atmosphere]\ntop_radius_km = 6300\n");
 }
+
+// [channel.projector] names the calibration a channel is drawn for, relative to the
+// configuration's folder; the channel's size is the projector's unless it gives one.
+TEST(NodeConfig, ProjectorTableNamesTheCalibrationBesideTheFile) {
+  const NodeConfig c = parseNodeConfig(
+      "[[channel]]\nname = \"left\"\n[channel.projector]\nmpcdi = \"calib/dome.mpcdi\"\nregion = \"p1\"\n"
+      "warp_values = \"offset\"\n"
+      "[[channel]]\nname = \"right\"\nwidth = 800\nheight = 600\n[channel.projector]\nbourke_mesh = \"/abs/right.data\"\n"
+      "[[channel]]\nname = \"plain\"\n",
+      "/etc/skyig/dome.toml");
+  const ProjectorSettings left = c.projectorOf("left");
+  EXPECT_TRUE(left.enabled());
+  EXPECT_EQ(left.mpcdi, "/etc/skyig/calib/dome.mpcdi");
+  EXPECT_EQ(left.region, "p1");
+  EXPECT_TRUE(left.warpOffsets);
+  EXPECT_FALSE(left.sizeGiven);
+  const ProjectorSettings right = c.projectorOf("right");
+  EXPECT_EQ(right.bourkeMesh, "/abs/right.data");
+  EXPECT_FALSE(right.warpOffsets);
+  EXPECT_TRUE(right.sizeGiven);
+  EXPECT_FALSE(c.projectorOf("plain").enabled());
+  EXPECT_FALSE(parseNodeConfig("", "empty").projectorOf("front").enabled());
+}
+
+TEST(NodeConfig, ProjectorTableErrorsNameTheKey) {
+  EXPECT_EQ(errorOf("[[channel]]\n[channel.projector]\nmpcdi = \"a.mpcdi\"\n"),
+            "bad.toml:2: channel[0].projector.region: expected the MPCDI region this channel's projector shows");
+  EXPECT_NE(errorOf("[[channel]]\n[channel.projector]\nmpcdi = \"a\"\nregion = \"r\"\nbourke_mesh = \"b\"\n")
+                .find("channel[0].projector.mpcdi: expected either mpcdi"),
+            std::string::npos);
+  EXPECT_EQ(errorOf("[[channel]]\n[channel.projector]\nmpcdi = \"a\"\nregion = \"r\"\nwarp_values = \"relative\"\n"),
+            "bad.toml:5: channel[0].projector.warp_values: expected \"absolute\" or \"offset\", got \"relative\"");
+  EXPECT_NE(errorOf("[[channel]]\nwidth = 640\n[channel.projector]\nbourke_mesh = \"b\"\n").find("both width and height"),
+            std::string::npos);
+  EXPECT_NE(errorOf("[[channel]]\n[channel.projector]\nbourke_mesh = \"b\"\nregoin = \"r\"\n").find("unknown key"),
+            std::string::npos);
+}

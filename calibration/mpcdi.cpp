@@ -1,0 +1,257 @@
+#include "calibration/mpcdi.h"
+
+#include "calibration/calibration_error.h"
+#include "calibration/mpcdi_archive.h"
+#include "calibration/pfm.h"
+#include "calibration/png_map.h"
+#include "calibration/region_camera.h"
+
+#include <tinyxml2.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+namespace skyig::calibration {
+
+namespace {
+
+using tinyxml2::XMLElement;
+
+// "mpcdi.xml:12: <region id="r1"> <frustum> <yaw>: "
+struct Where {
+  std::string file;
+  std::string path;
+  std::string at(const XMLElement* e) const {
+    return file + ":" + std::to_string(e ? e->GetLineNum() : 0) + ": " + path;
+  }
+  Where in(const XMLElement* e, const std::string& label = "") const {
+    return {file, path + "<" + std::string(e->Name()) + (label.empty() ? "" : " " + label) + "> "};
+  }
+};
+
+[[noreturn]] void fail(const Where& w, const XMLElement* e, const std::string& what) {
+  throw CalibrationError(w.at(e) + what);
+}
+
+double number(const Where& w, const XMLElement* parent, const char* name, bool required, double fallback = 0.0) {
+  const XMLElement* e = parent->FirstChildElement(name);
+  if (!e) {
+    if (required) fail(w, parent, "<" + std::string(name) + "> missing");
+    return fallback;
+  }
+  const char* text = e->GetText();
+  char* end = nullptr;
+  const double v = text ? std::strtod(text, &end) : std::numeric_limits<double>::quiet_NaN();
+  while (end && *end && std::isspace(static_cast<unsigned char>(*end))) ++end;
+  if (!text || *end != '\0' || !std::isfinite(v))
+    fail(w.in(e), e, std::string("expected a finite number, got \"") + (text ? text : "") + "\"");
+  return v;
+}
+
+int resolution(const Where& w, const XMLElement* e, const char* name) {
+  const char* text = e->Attribute(name);
+  if (!text) fail(w, e, std::string(name) + " missing");
+  char* end = nullptr;
+  const long v = std::strtol(text, &end, 10);
+  if (*end != '\0' || v < 2 || v > 16384)
+    fail(w, e, std::string(name) + ": expected a number of pixels from 2 to 16384, got \"" + text + "\"");
+  return static_cast<int>(v);
+}
+
+RegionCamera readFrustum(const Where& w, const XMLElement* f) {
+  RegionCamera c;
+  c.offset.yawDeg = number(w, f, "yaw", true);
+  c.offset.pitchDeg = number(w, f, "pitch", true);
+  c.offset.rollDeg = number(w, f, "roll", true);
+  const double left = number(w, f, "leftAngle", true), right = number(w, f, "rightAngle", true);
+  const double up = number(w, f, "upAngle", true), down = number(w, f, "downAngle", true);
+  for (const double a : {left, right, up, down})
+    if (std::abs(a) >= 89.0) fail(w, f, "an angle of " + std::to_string(a) + " degrees: each must lie within +-89");
+  if (!(right > left)) fail(w, f, "rightAngle " + std::to_string(right) + " is not to the right of leftAngle " + std::to_string(left));
+  if (!(up > down)) fail(w, f, "upAngle " + std::to_string(up) + " is not above downAngle " + std::to_string(down));
+  c.frustum = {-left, right, -down, up};
+  return c;
+}
+
+glm::dvec3 unitVector(const Where& w, const XMLElement* frame, const std::string& axis) {
+  const glm::dvec3 v(number(w, frame, (axis + "x").c_str(), true), number(w, frame, (axis + "y").c_str(), true),
+                     number(w, frame, (axis + "z").c_str(), true));
+  if (std::abs(glm::length(v) - 1.0) > 1e-3) fail(w, frame, "the " + axis + " axis is not a unit vector");
+  return v;
+}
+
+MpcdiFileRef fileRef(const Where& w, const XMLElement* set, const char* name) {
+  const XMLElement* e = set->FirstChildElement(name);
+  if (!e) return {};
+  const XMLElement* p = e->FirstChildElement("path");
+  if (!p || !p->GetText() || std::string(p->GetText()).empty()) fail(w.in(e), e, "<path> missing or empty");
+  std::string path = p->GetText();
+  while (!path.empty() && std::isspace(static_cast<unsigned char>(path.back()))) path.pop_back();
+  while (!path.empty() && std::isspace(static_cast<unsigned char>(path.front()))) path.erase(path.begin());
+  return {path, e->GetLineNum()};
+}
+
+}  // namespace
+
+const MpcdiRegion* MpcdiDescription::find(const std::string& id) const {
+  for (const auto& r : regions)
+    if (r.id == id) return &r;
+  return nullptr;
+}
+
+std::string MpcdiDescription::regionIds() const {
+  std::string ids;
+  for (const auto& r : regions) ids += (ids.empty() ? "" : ", ") + r.id;
+  return ids.empty() ? "none" : ids;
+}
+
+MpcdiDescription parseMpcdiXml(const std::vector<std::uint8_t>& xml, const std::string& name) {
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(reinterpret_cast<const char*>(xml.data()), xml.size()) != tinyxml2::XML_SUCCESS)
+    throw CalibrationError(name + ":" + std::to_string(doc.ErrorLineNum()) + ": malformed XML: " + doc.ErrorStr());
+  const XMLElement* root = doc.FirstChildElement("MPCDI");
+  if (!root) throw CalibrationError(name + ": no <MPCDI> root element (is it an MPCDI file?)");
+  const Where top{name, "<MPCDI> "};
+  MpcdiDescription d;
+  const char* profile = root->Attribute("profile");
+  d.profile = profile ? profile : "";
+  if (d.profile != "2d" && d.profile != "3d" && d.profile != "a3" && d.profile != "sl")
+    fail({name, ""}, root, "<MPCDI profile=\"" + d.profile + "\">: expected the profile 2d, 3d, a3 or sl");
+  const bool needsFrustum = d.profile != "2d";
+  const XMLElement* display = root->FirstChildElement("display");
+  if (!display) fail(top, root, "<display> missing");
+  for (const XMLElement* b = display->FirstChildElement("buffer"); b; b = b->NextSiblingElement("buffer")) {
+    const char* bufferId = b->Attribute("id");
+    const Where wb = top.in(display).in(b, std::string("id=\"") + (bufferId ? bufferId : "") + "\"");
+    for (const XMLElement* r = b->FirstChildElement("region"); r; r = r->NextSiblingElement("region")) {
+      MpcdiRegion region;
+      const char* id = r->Attribute("id");
+      if (!id || !*id) fail(wb, r, "<region> without an id");
+      region.id = id;
+      region.buffer = bufferId ? bufferId : "";
+      region.line = r->GetLineNum();
+      const Where wr = wb.in(r, "id=\"" + region.id + "\"");
+      if (d.find(region.id)) fail(wr, r, "a second region with this id");
+      region.xResolution = resolution(wr, r, "xResolution");
+      region.yResolution = resolution(wr, r, "yResolution");
+      if (const XMLElement* f = r->FirstChildElement("frustum")) {
+        region.camera = readFrustum(wr.in(f), f);
+        region.hasFrustum = true;
+      } else if (needsFrustum) {
+        fail(wr, r, "<frustum> missing: profile " + d.profile + " renders each region through its frustum");
+      }
+      if (const XMLElement* c = r->FirstChildElement("coordinateFrame")) {
+        const Where wc = wr.in(c);
+        region.position = {number(wc, c, "posx", true), number(wc, c, "posy", true), number(wc, c, "posz", true)};
+        region.yawAxis = unitVector(wc, c, "yaw");
+        region.pitchAxis = unitVector(wc, c, "pitch");
+        region.rollAxis = unitVector(wc, c, "roll");
+        region.hasFrame = true;
+      }
+      d.regions.push_back(region);
+    }
+  }
+  if (d.regions.empty()) fail(top.in(display), display, "no <buffer><region> in the display");
+  if (const XMLElement* files = root->FirstChildElement("files")) {
+    for (const XMLElement* s = files->FirstChildElement("fileset"); s; s = s->NextSiblingElement("fileset")) {
+      const char* regionId = s->Attribute("region");
+      const Where ws = top.in(files).in(s, std::string("region=\"") + (regionId ? regionId : "") + "\"");
+      MpcdiRegion* region = nullptr;
+      for (auto& r : d.regions)
+        if (regionId && r.id == regionId) region = &r;
+      if (!region) fail(ws, s, "names no region of the display (there are: " + d.regionIds() + ")");
+      region->warp = fileRef(ws, s, "geometryWarpFile");
+      region->alpha = fileRef(ws, s, "alphaMap");
+      region->beta = fileRef(ws, s, "betaMap");
+      region->distortion = fileRef(ws, s, "distortionMap");
+      if (const XMLElement* a = s->FirstChildElement("alphaMap")) {
+        region->alphaGammaEmbedded = number(ws.in(a), a, "gammaEmbedded", false, 1.0);
+        if (region->alphaGammaEmbedded < 0.1 || region->alphaGammaEmbedded > 10.0)
+          fail(ws.in(a), a->FirstChildElement("gammaEmbedded"),
+               "<gammaEmbedded> " + std::to_string(region->alphaGammaEmbedded) + " is not a gamma from 0.1 to 10");
+      }
+    }
+  }
+  return d;
+}
+
+ProjectorCalibration readMpcdiRegion(const MpcdiArchive& archive, const MpcdiDescription& d, const std::string& id,
+                                     WarpValues values) {
+  const MpcdiRegion* region = d.find(id);
+  const std::string xml = archive.describe(archive.xmlName());
+  if (!region) throw CalibrationError(xml + ": no region \"" + id + "\" (the file has: " + d.regionIds() + ")");
+  const std::string at = xml + ":" + std::to_string(region->line) + ": region \"" + id + "\": ";
+  if (region->warp.path.empty()) throw CalibrationError(at + "no <fileset> with a <geometryWarpFile> for it");
+  ProjectorCalibration p;
+  p.source = archive.path() + " region " + id;
+  p.region = id;
+  p.width = region->xResolution;
+  p.height = region->yResolution;
+  p.camera = region->camera;
+  p.cameraGiven = region->hasFrustum;
+
+  const std::string warpName = archive.describe(region->warp.path);
+  const FloatMap raw = readPfm(archive.read(region->warp.path), warpName);
+  if (raw.width < 2 || raw.height < 2 || raw.width > p.width || raw.height > p.height)
+    throw CalibrationError(warpName + ": a " + std::to_string(raw.width) + "x" + std::to_string(raw.height) +
+                           " warp does not fit region \"" + id + "\" of " + std::to_string(p.width) + "x" +
+                           std::to_string(p.height) + " pixels (at least 2x2, at most the region's resolution)");
+  const bool points = d.profile == "a3" || d.profile == "sl";
+  if (points && raw.channels != 3)
+    throw CalibrationError(warpName + ": profile " + d.profile + " needs 3D points (a PF file of 3 channels), this has 1");
+  FloatMap distortion;
+  if (!region->distortion.path.empty()) {
+    const std::string name = archive.describe(region->distortion.path);
+    distortion = readPfm(archive.read(region->distortion.path), name);
+    if (distortion.width != raw.width || distortion.height != raw.height || distortion.channels != 3)
+      throw CalibrationError(name + ": the distortion map must match the warp (" + std::to_string(raw.width) + "x" +
+                             std::to_string(raw.height) + ", PF), it is " + std::to_string(distortion.width) + "x" +
+                             std::to_string(distortion.height) + "x" + std::to_string(distortion.channels));
+  }
+  p.warp.width = raw.width;
+  p.warp.height = raw.height;
+  p.warp.channels = 2;
+  p.warp.values.assign(static_cast<std::size_t>(raw.width) * static_cast<std::size_t>(raw.height) * 2,
+                       std::numeric_limits<float>::quiet_NaN());
+  const glm::dvec3 eye = d.profile == "a3" ? region->position : glm::dvec3(0.0);
+  for (int y = 0; y < raw.height; ++y)
+    for (int x = 0; x < raw.width; ++x) {
+      glm::dvec2 uv;
+      if (points) {
+        const glm::dvec3 q = glm::dvec3(raw.at(x, y, 0), raw.at(x, y, 1), raw.at(x, y, 2)) - eye;
+        if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z)) continue;
+        const glm::dvec3 body(glm::dot(q, region->rollAxis), glm::dot(q, region->pitchAxis), glm::dot(q, region->yawAxis));
+        const auto seen = uvOfDirection(region->camera, body);
+        if (!seen) continue;  // behind the eye: nothing to show
+        uv = *seen;
+      } else {
+        uv = {raw.at(x, y, 0), raw.at(x, y, 1)};
+        if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) continue;
+        if (values == WarpValues::Offset)
+          uv += glm::dvec2(static_cast<double>(x) / (raw.width - 1), static_cast<double>(y) / (raw.height - 1));
+      }
+      if (!distortion.empty()) uv += glm::dvec2(distortion.at(x, y, 0), distortion.at(x, y, 1));
+      p.warp.at(x, y, 0) = static_cast<float>(uv.x);
+      p.warp.at(x, y, 1) = static_cast<float>(uv.y);
+    }
+
+  const auto blendMap = [&](const MpcdiFileRef& ref, const char* what) {
+    if (ref.path.empty()) return FloatMap{};
+    const std::string name = archive.describe(ref.path);
+    FloatMap m = readPngMap(archive.read(ref.path), name);
+    if (m.width < 2 || m.height < 2 || m.width > p.width || m.height > p.height)
+      throw CalibrationError(name + ": a " + std::to_string(m.width) + "x" + std::to_string(m.height) + " " + what +
+                             " does not fit region \"" + id + "\" of " + std::to_string(p.width) + "x" +
+                             std::to_string(p.height) + " pixels");
+    return m;
+  };
+  p.alpha = blendMap(region->alpha, "alpha map");
+  // The alpha map was stored with a gamma in it (MPCDI's gammaEmbedded) so that it multiplies
+  // gamma-encoded pixels; in light it is the stored value raised to that gamma.
+  for (float& a : p.alpha.values) a = static_cast<float>(std::pow(static_cast<double>(a), region->alphaGammaEmbedded));
+  p.beta = blendMap(region->beta, "beta map");
+  return p;
+}
+
+}  // namespace skyig::calibration

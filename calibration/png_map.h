@@ -1,0 +1,19 @@
+#pragma once
+// The blend maps of MPCDI files are PNG images, 8 or 16 bits, grey or RGB: read into a
+// one-channel FloatMap in [0, 1] (RGB maps averaged: skyig blends light, not colour), and written
+// as 16-bit grey by the MPCDI writer.
+#include "calibration/projector.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace skyig::calibration {
+
+// Throws CalibrationError naming `name` when the bytes are not a PNG libpng can decode.
+FloatMap readPngMap(const std::vector<std::uint8_t>& bytes, const std::string& name);
+
+// Values clamped to [0, 1], 16-bit grey PNG bytes.
+std::vector<std::uint8_t> writePngMap16(const FloatMap& map);
+
+}  // namespace skyig::calibration

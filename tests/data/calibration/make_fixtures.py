@@ -1,0 +1,165 @@
+#!/usr/bin/env python3
+"""Writes the small MPCDI and Bourke fixtures of tests/calibration (Python's standard library
+only; run it from anywhere, it writes beside itself). Each fixture encodes ONE known warp, the
+function uv() below, which tests/calibration/mpcdi_test.cpp evaluates too:
+
+  warp_absolute.mpcdi   profile 3d, zip, PFM values are the absolute image coordinates uv()
+  warp_offset/          profile 3d, a folder, PFM values are uv() minus the node's grid place
+  points_a3.mpcdi       profile a3, zip, PFM values are 3D points on a 3 m sphere in the
+                        direction the 3d fixtures' camera shows at uv(), in a surveyor's axes
+                        (x right, y forward, z up) around an eye at EYE
+  mesh_bourke.txt       a Bourke warp mesh of the same uv() (v up), intensity = ALPHA()
+
+All: region "p1", a 64 x 40 projector, a 9 x 6 warp grid, alpha and beta maps 16 x 10.
+"""
+import math
+import os
+import struct
+import zipfile
+import zlib
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+W, H = 64, 40            # the projector
+GW, GH = 9, 6            # the warp grid
+BW, BH = 16, 10          # the blend maps
+GAMMA_EMBEDDED = 2.2
+FRUSTUM = dict(yaw=10.0, pitch=-5.0, roll=2.0, leftAngle=-30.0, rightAngle=25.0, downAngle=-15.0, upAngle=20.0)
+EYE = (0.1, 0.2, -0.05)  # surveyor axes: right, forward, up (metres)
+
+
+def uv(s, t):
+    """The warp: grid place (s, t) in [0, 1] (t down) -> image point (u, v), v down."""
+    return (0.05 + 0.9 * s + 0.03 * math.sin(math.pi * t), 0.1 + 0.8 * t + 0.02 * s * s)
+
+
+def alpha(s, t):
+    """The blend in linear light: a ramp to the right edge."""
+    return 1.0 if s < 0.7 else max(0.0, 1.0 - (s - 0.7) / 0.3)
+
+
+def beta(s, t):
+    return 0.001 * (1.0 - alpha(s, t))
+
+
+def pfm(values, channels, width, height):
+    """values[row][col] = tuple, rows top-down; PFM rows are bottom-up, little-endian."""
+    out = bytearray(b"PF\n" if channels == 3 else b"Pf\n")
+    out += f"{width} {height}\n-1.0\n".encode()
+    for row in reversed(values):
+        for v in row:
+            out += struct.pack("<" + "f" * channels, *v)
+    return bytes(out)
+
+
+def png16(values, width, height):
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+    raw = bytearray()
+    for row in values:
+        raw += b"\0" + b"".join(struct.pack(">H", max(0, min(65535, round(v * 65535)))) for v in row)
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 16, 0, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(bytes(raw), 9)) + chunk(b"IEND", b""))
+
+
+def grid(fn, gw, gh):
+    return [[fn(i / (gw - 1), j / (gh - 1)) for i in range(gw)] for j in range(gh)]
+
+
+def xml(profile, frame=""):
+    f = "".join(f"<{k}>{v}</{k}>" for k, v in FRUSTUM.items())
+    return f"""<?xml version="1.0" encoding="utf-8"?>
+<MPCDI profile="{profile}" geometry="1" color="1" version="2.0">
+  <display>
+    <buffer id="dome" xResolution="{W}" yResolution="{H}">
+      <region id="p1" x="0" y="0" xsize="1" ysize="1" xResolution="{W}" yResolution="{H}">
+        <frustum>{f}</frustum>{frame}
+      </region>
+    </buffer>
+  </display>
+  <files>
+    <fileset region="p1">
+      <geometryWarpFile><path>p1/warp.pfm</path><interpolation>linear</interpolation></geometryWarpFile>
+      <alphaMap><path>p1/alpha.png</path><componentDepth>1</componentDepth><bitDepth>16</bitDepth><gammaEmbedded>{GAMMA_EMBEDDED}</gammaEmbedded></alphaMap>
+      <betaMap><path>p1/beta.png</path><componentDepth>1</componentDepth><bitDepth>16</bitDepth></betaMap>
+    </fileset>
+  </files>
+</MPCDI>
+""".encode()
+
+
+def blend_files():
+    a = grid(lambda s, t: alpha(s, t) ** (1.0 / GAMMA_EMBEDDED), BW, BH)
+    return {"p1/alpha.png": png16(a, BW, BH), "p1/beta.png": png16(grid(beta, BW, BH), BW, BH)}
+
+
+def write_zip(name, files):
+    with zipfile.ZipFile(os.path.join(HERE, name), "w", zipfile.ZIP_DEFLATED) as z:
+        for member in sorted(files):
+            info = zipfile.ZipInfo(member, date_time=(2026, 1, 1, 0, 0, 0))  # reproducible bytes
+            info.compress_type = zipfile.ZIP_DEFLATED
+            z.writestr(info, files[member])
+
+
+def rotation(yaw, pitch, roll):
+    """Body (x forward, y right, z down) from the eye frame: yaw, then pitch, then roll (CIGI)."""
+    cy, sy = math.cos(math.radians(yaw)), math.sin(math.radians(yaw))
+    cp, sp = math.cos(math.radians(pitch)), math.sin(math.radians(pitch))
+    cr, sr = math.cos(math.radians(roll)), math.sin(math.radians(roll))
+    rz = [[cy, -sy, 0], [sy, cy, 0], [0, 0, 1]]
+    ry = [[cp, 0, sp], [0, 1, 0], [-sp, 0, cp]]
+    rx = [[1, 0, 0], [0, cr, -sr], [0, sr, cr]]
+    mul = lambda a, b: [[sum(a[i][k] * b[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
+    return mul(mul(rz, ry), rx)
+
+
+def direction(u, v):
+    """The body-frame direction through image point (u, v) of the fixtures' camera."""
+    l, r = -math.tan(math.radians(-FRUSTUM["leftAngle"])), math.tan(math.radians(FRUSTUM["rightAngle"]))
+    d, up = -math.tan(math.radians(-FRUSTUM["downAngle"])), math.tan(math.radians(FRUSTUM["upAngle"]))
+    x, y = 2 * u - 1, 1 - 2 * v
+    eye = (1.0, 0.5 * (r - l) * x + 0.5 * (r + l), -(0.5 * (up - d) * y + 0.5 * (up + d)))
+    m = rotation(FRUSTUM["yaw"], FRUSTUM["pitch"], FRUSTUM["roll"])
+    b = [sum(m[i][k] * eye[k] for k in range(3)) for i in range(3)]
+    n = math.sqrt(sum(c * c for c in b))
+    return [c / n for c in b]
+
+
+def main():
+    absolute = grid(uv, GW, GH)
+    write_zip("warp_absolute.mpcdi", {"mpcdi.xml": xml("3d"), "p1/warp.pfm": pfm(
+        [[(u, v, 0.0) for u, v in row] for row in absolute], 3, GW, GH), **blend_files()})
+
+    folder = os.path.join(HERE, "warp_offset")
+    os.makedirs(os.path.join(folder, "p1"), exist_ok=True)
+    offsets = [[(u - i / (GW - 1), v - j / (GH - 1), 0.0) for i, (u, v) in enumerate(row)] for j, row in enumerate(absolute)]
+    files = {"mpcdi.xml": xml("3d"), "p1/warp.pfm": pfm(offsets, 3, GW, GH), **blend_files()}
+    for member, data in files.items():
+        with open(os.path.join(folder, member), "wb") as f:
+            f.write(data)
+
+    # a3: points 3 m from the eye in the surveyor's axes (x right, y forward, z up): the
+    # coordinate frame's pitch axis (right) is +x, roll axis (forward) +y, yaw axis (down) -z.
+    frame = ("<coordinateFrame>" + "".join(f"<pos{a}>{v}</pos{a}>" for a, v in zip("xyz", EYE)) +
+             "<yawx>0</yawx><yawy>0</yawy><yawz>-1</yawz><pitchx>1</pitchx><pitchy>0</pitchy><pitchz>0</pitchz>"
+             "<rollx>0</rollx><rolly>1</rolly><rollz>0</rollz></coordinateFrame>")
+    points = []
+    for row in absolute:
+        out = []
+        for u, v in row:
+            fwd, right, down = direction(u, v)
+            out.append((EYE[0] + 3 * right, EYE[1] + 3 * fwd, EYE[2] - 3 * down))
+        points.append(out)
+    write_zip("points_a3.mpcdi", {"mpcdi.xml": xml("a3", frame), "p1/warp.pfm": pfm(points, 3, GW, GH), **blend_files()})
+
+    with open(os.path.join(HERE, "mesh_bourke.txt"), "w") as f:
+        f.write(f"2\n{GW} {GH}\n")
+        aspect = W / H
+        for j in reversed(range(GH)):  # bottom row first
+            for i in range(GW):
+                u, v = absolute[j][i]
+                s, t = i / (GW - 1), j / (GH - 1)
+                f.write(f"{-aspect + 2 * aspect * s:.6f} {1 - 2 * t:.6f} {u:.6f} {1 - v:.6f} {alpha(s, t):.6f}\n")
+
+
+if __name__ == "__main__":
+    main()

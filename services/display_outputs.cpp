@@ -38,7 +38,7 @@ DisplayOutputs::DisplayOutputs(bool headless, const std::string& nodeName,
   }
   const render::SwapGroupSupport swapGroups = render::querySwapGroupSupport();
   if (!swapGroups.available) {
-    spdlog::info("{} window(s), only the last waits for the vertical blank; no swap group ({})", windows_.size(),
+    spdlog::info("{} window(s), only the last waits for the vertical blank; no swap group: {}", windows_.size(),
                  swapGroups.reason);
     return;
   }

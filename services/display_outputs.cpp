@@ -88,6 +88,7 @@ void DisplayOutputs::draw(const sky::SkyState& state, const sky::Attitude& attit
     ready[i] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     glFlush();
   }
+  const auto submitted = std::chrono::steady_clock::now();
   for (GLsync f : ready) {
     glClientWaitSync(f, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000);  // 1 s: a hung GPU does not hang the node
     glDeleteSync(f);
@@ -98,6 +99,7 @@ void DisplayOutputs::draw(const sky::SkyState& state, const sky::Attitude& attit
     w->makeCurrent();
     w->swapBuffers();
   }
+  lastPresentS_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - submitted).count();
   render::pollWindowEvents();
 }
 

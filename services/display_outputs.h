@@ -17,6 +17,7 @@
 #include "sky/channel.h"
 #include "sky/sky_state.h"
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -40,6 +41,9 @@ class DisplayOutputs {
 
   // The windows' titles, in channel order (none when headless).
   std::vector<std::string> windowTitles() const;
+  // Seconds the last frame spent presenting after its draws were submitted: the fence wait and
+  // every window's swap, the one vsync'd swap included (0 headless).
+  double lastPresentSeconds() const { return lastPresentS_; }
   // How many windows joined swap group 1 (0 without GLX_NV_swap_group).
   std::size_t swapGroupMembers() const { return swapGroupMembers_; }
 
@@ -50,6 +54,7 @@ class DisplayOutputs {
   std::vector<std::string> titles_;
   std::vector<std::unique_ptr<render::SkyRenderer>> renderers_;
   std::size_t swapGroupMembers_ = 0;
+  double lastPresentS_ = 0.0;
 };
 
 }  // namespace skyig::services

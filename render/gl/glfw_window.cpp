@@ -82,6 +82,16 @@ void GlfwWindowContext::releaseCurrent() { glfwMakeContextCurrent(nullptr); }
 void GlfwWindowContext::swapBuffers() { glfwSwapBuffers(window_); }
 bool GlfwWindowContext::closeRequested() const { return glfwWindowShouldClose(window_) != 0; }
 
+std::vector<std::string> monitorNames() {
+  acquireGlfw();
+  std::vector<std::string> names;
+  int count = 0;
+  GLFWmonitor** monitors = glfwGetMonitors(&count);  // the primary monitor is the first
+  for (int i = 0; i < count; ++i) names.emplace_back(glfwGetMonitorName(monitors[i]));
+  releaseGlfw();
+  return names;
+}
+
 void pollWindowEvents() { glfwPollEvents(); }
 
 }  // namespace skyig::render

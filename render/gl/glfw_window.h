@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -36,6 +37,10 @@ class GlfwWindowContext final : public GlContext {
  private:
   GLFWwindow* window_ = nullptr;
 };
+
+// The monitors' names as GLFW reports them (what ChannelConfig::monitor names), primary first.
+// Throws GlContextError without a display.
+std::vector<std::string> monitorNames();
 
 // Processes window-system events of every window (close buttons, resizes); call once a frame.
 void pollWindowEvents();

@@ -76,6 +76,23 @@ class XScreenshots {
     XSync(x_, False);
     const Window w = find(DefaultRootWindow(x_), title);
     if (!w) return std::nullopt;
+    return read(w, width, height);
+  }
+  // A window's size on the X server, by title.
+  std::optional<std::pair<int, int>> size(const std::string& title) {
+    XSync(x_, False);
+    const Window w = find(DefaultRootWindow(x_), title);
+    XWindowAttributes a;
+    if (!w || !XGetWindowAttributes(x_, w, &a)) return std::nullopt;
+    return std::pair{a.width, a.height};
+  }
+  std::optional<std::vector<std::uint8_t>> grabRoot(int width, int height) {
+    XSync(x_, False);
+    return read(DefaultRootWindow(x_), width, height);
+  }
+
+ private:
+  std::optional<std::vector<std::uint8_t>> read(Window w, int width, int height) {
     XImage* image = XGetImage(x_, w, 0, 0, static_cast<unsigned>(width), static_cast<unsigned>(height), AllPlanes, ZPixmap);
     if (!image) return std::nullopt;
     std::vector<std::uint8_t> rgb;
@@ -90,7 +107,6 @@ class XScreenshots {
     return rgb;
   }
 
- private:
   Window find(Window parent, const std::string& title) {
     Window root = 0, up = 0, *children = nullptr;
     unsigned count = 0;
@@ -184,6 +200,58 @@ TEST_P(WindowScreenshots, EveryWindowShowsTheHeadlessFrameOfItsChannel) {
   if (channels.size() > 1) {
     EXPECT_NE(expected.at("c0").rgba, expected.at("c1").rgba);
   }
+}
+
+// A channel with `monitor` is fullscreen on that monitor: Xvfb's one monitor, 1024x256, shows the
+// channel's frame over the whole screen; a name no monitor has is refused before anything renders.
+TEST_F(WindowScreenshots, ChannelWithAMonitorIsFullscreenOnIt) {
+  ASSERT_FALSE(gX->display().empty()) << "Xvfb did not start (deploy/setup.sh installs it)";
+  const std::vector<std::string> monitors = render::monitorNames();
+  ASSERT_EQ(monitors.size(), 1u) << "Xvfb with one screen has one monitor";
+  std::vector<sky::ChannelConfig> channels = ring(1);
+  channels[0].width = 1024;
+  channels[0].height = 256;
+  channels[0].frustum = {60.0, 60.0, 5.0, 25.0};
+  channels[0].monitor = "no such monitor";
+  EXPECT_THROW(services::DisplayOutputs(false, "test", channels), render::GlContextError);
+  channels[0].monitor = monitors.front();
+
+  sky::ObserverState observer;
+  const sky::SkyState state = sky::buildSkyState(observer, sky::SkyConditions{}, sky::SunOverride{60.0, 8.0});
+  render::DisplayImage want;
+  {
+    services::DisplayOutputs headless(true, "test", channels);
+    headless.draw(state, observer.attitude, channels,
+                  [&](const render::SkyRenderer& r, const sky::ChannelConfig&) { want = r.readDisplay(); });
+  }
+  services::DisplayOutputs windows(false, "test", channels);
+  for (int frame = 0; frame < 2; ++frame) windows.draw(state, observer.attitude, channels);
+  XScreenshots x;
+  ASSERT_TRUE(x.open());
+  EXPECT_EQ(x.size(windows.windowTitles().front()), (std::pair{1024, 256}));
+  const auto shown = x.grabRoot(1024, 256);  // the whole screen, not just the window
+  ASSERT_TRUE(shown);
+  int worst = 0;
+  for (std::size_t p = 0; p < shown->size(); ++p)
+    worst = std::max(worst, std::abs(int{(*shown)[p]} - int{want.rgba[p / 3 * 4 + p % 3]}));
+  EXPECT_LE(worst, 1) << "the screen differs from the headless frame by " << worst << " codes";
+}
+
+// Fullscreen takes the monitor's mode whatever the channel's size (Xvfb has one, its screen's):
+// a 320x80 channel's window covers the 1024x256 screen, a windowed one is 320x80.
+TEST_F(WindowScreenshots, FullscreenWindowCoversItsMonitor) {
+  ASSERT_FALSE(gX->display().empty()) << "Xvfb did not start (deploy/setup.sh installs it)";
+  std::vector<sky::ChannelConfig> channels = ring(2);
+  for (auto& c : channels) {
+    c.width = 320;
+    c.height = 80;
+  }
+  channels[1].monitor = render::monitorNames().front();
+  services::DisplayOutputs windows(false, "test", channels);
+  XScreenshots x;
+  ASSERT_TRUE(x.open());
+  EXPECT_EQ(x.size(windows.windowTitles()[0]), (std::pair{320, 80}));
+  EXPECT_EQ(x.size(windows.windowTitles()[1]), (std::pair{1024, 256}));
 }
 
 INSTANTIATE_TEST_SUITE_P(Outputs, WindowScreenshots, ::testing::Values(1, 3, 5),

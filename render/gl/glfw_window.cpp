@@ -37,7 +37,9 @@ GLFWmonitor* findMonitor(const std::string& name) {
   GLFWmonitor** monitors = glfwGetMonitors(&count);
   for (int i = 0; i < count; ++i)
     if (name == glfwGetMonitorName(monitors[i])) return monitors[i];
-  throw GlContextError("no monitor named '" + name + "' (see `skyig --version --caps`)");
+  std::string known;
+  for (int i = 0; i < count; ++i) known += std::string(known.empty() ? "" : ", ") + "'" + glfwGetMonitorName(monitors[i]) + "'";
+  throw GlContextError("no monitor named '" + name + "' (this display has " + (known.empty() ? "none" : known) + ")");
 }
 
 }  // namespace

@@ -9,8 +9,9 @@
 set -euo pipefail
 
 runtime=(
-  # GL: EGL headless (Mesa llvmpipe where there is no GPU) and GLFW windows
-  libegl1 libegl-mesa0 libgl1-mesa-dri libglfw3
+  # GL: EGL headless (Mesa llvmpipe where there is no GPU) and GLFW windows; GLX and Xlib to ask
+  # the X display for swap-barrier hardware (GLX_NV_swap_group)
+  libegl1 libegl-mesa0 libgl1-mesa-dri libglfw3 libglx0 libx11-6
   # images, geodesy, configuration, logging
   libopenexr-3-1-30 libpng16-16 libgeographiclib23 libtomlplusplus3 libspdlog1.10 libfmt9
 )
@@ -19,9 +20,8 @@ build_and_test=(
   # toolchain; dpkg-dev (in build-essential) gives dpkg-shlibdeps to deploy/package.sh
   build-essential cmake ninja-build pkg-config git python3
   # GL headers and loaders
-  libegl-dev libgl-dev libgles-dev libglfw3-dev libglm-dev
-  # X11: swap groups (GLX) and the window tests read the windows back with XGetImage
-  libx11-dev
+  # (X11: swap groups through GLX, and the window tests read the windows back with XGetImage)
+  libegl-dev libgl-dev libgles-dev libglfw3-dev libglm-dev libglx-dev libx11-dev
   # GLSL compiler: the tests compile the atmosphere's physics and passes as GLSL
   glslang-tools
   # images, geodesy, plumbing

@@ -37,7 +37,13 @@ constexpr double kStatedSecondsResolutionS = 1e-3;
 }  // namespace
 
 void CigiStateTracker::anchorTimestamp(std::uint32_t timestamp, Clock::time_point arrival) {
-  clock_.timestampBaseS = clock_.continuousAt(arrival);
+  // The clock goes on from where it stands; before anything was derived from it (no timestamp,
+  // no stated time yet) it starts at zero rather than at this node's arrival instant, so nodes
+  // that heard the same first message count the host's time alike.
+  const bool fresh = !clock_.haveTimestamp && !clock_.clock.valid();
+  anchorBaseS_ = fresh ? 0.0 : clock_.continuousAt(arrival);
+  ticksSinceAnchor_ = 0;
+  clock_.timestampBaseS = anchorBaseS_;
   clock_.timestampArrival = arrival;
   clock_.haveTimestamp = true;
   lastTimestamp_ = timestamp;
@@ -69,14 +75,16 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
             if (p.timestampValid) {
               // 32-bit 10 us ticks wrap every 11.9 hours: the step is the signed difference
               // (a wrap is a small step forward, one tick back is one tick back), and bounded.
-              const double step = static_cast<std::int32_t>(p.timestamp - lastTimestamp_) * 1e-5;
+              const std::int32_t ticks = static_cast<std::int32_t>(p.timestamp - lastTimestamp_);
+              const double step = ticks * 1e-5;
               if (!sessionHasTimestamp_ || step < -kMaxTimestampBackS || step > kMaxTimestampStepS) {
                 // A session's first timestamp, or a re-based host clock: the clock goes on from
                 // where it stands, so neither moves the sim clock.
                 if (sessionHasTimestamp_) ++timestampJumps_;
                 anchorTimestamp(p.timestamp, arrival);
               } else if (step >= 0.0) {
-                clock_.timestampBaseS += step;
+                ticksSinceAnchor_ += ticks;
+                clock_.timestampBaseS = anchorBaseS_ + static_cast<double>(ticksSinceAnchor_) * 1e-5;
                 clock_.timestampArrival = arrival;
                 lastTimestamp_ = p.timestamp;
                 if (arrival - rateAnchorArrival_ >= std::chrono::seconds(1)) {

@@ -68,6 +68,11 @@ class CigiStateTracker {
   std::size_t maxViews_ = kDefaultMaxViews;
   std::uint64_t droppedViews_ = 0;
   std::uint32_t lastTimestamp_ = 0;   // IG Control timestamp, 10 us ticks
+  // The continuous time as the anchor's time plus whole ticks since it (not a running sum of
+  // steps): two nodes fed one stream from its start compute the same bits for every message,
+  // so what they derive from it (the sun, the eye's adaptation) is identical, not merely close.
+  double anchorBaseS_ = 0.0;
+  std::int64_t ticksSinceAnchor_ = 0;
   std::optional<HostTime> messageHostTime_;
   std::uint64_t timestampJumps_ = 0;
   // The host clock's rate, from the continuous time at an anchor a second or more back.

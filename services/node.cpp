@@ -117,8 +117,11 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
 
   // Everything that can fail (sockets, SocketCAN, the recording file, the first sky) is set
   // up before any thread starts.
-  UdpSocket udp(opt.listen, opt.multicastGroup);  // always: Start of Frame goes out through it
-  spdlog::info("listening for CIGI on {}", udp.localEndpoint().toString());
+  UdpSocket udp(opt.listen, opt.multicastGroup, opt.multicastInterface);  // always: Start of Frame goes out through it
+  spdlog::info("listening for CIGI on {}{}", udp.localEndpoint().toString(),
+               opt.multicastGroup ? fmt::format(", multicast group {} on interface {}", *opt.multicastGroup,
+                                                opt.multicastInterface.value_or(opt.listen.address))
+                                  : std::string());
   CigiReceiver cigi(stats, host, opt.config.host.session);
   cigi.setMaxViews(static_cast<std::size_t>(opt.config.host.maxViews));
   std::unique_ptr<PcapRecorder> recorder;
@@ -147,6 +150,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   // (from the cache the configuration's tables were just loaded from).
   const std::unique_ptr<atmosphere::AtmosphereUpdater> updater = makeAtmosphereUpdater(opt.config, /*rateLimited=*/true, &externalStop);
   SkyWorker worker(opt.config, updater.get(), stats);  // the worker thread's: its caches are its own
+  worker.setHostInstantsOnly(opt.synchronous);
   sky.publish(BuiltSky{worker.build(nullptr, Clock::now()), nullptr, 0});  // frame 0 already has a sky
 
   {
@@ -188,14 +192,20 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
       const HostSnapshot* snapshot = built->host.get();
       const auto frameStart = Clock::now();
       // The state as the worker built it, seen with the attitude and views of this frame's
-      // instant predicted from the same host snapshot.
-      const FramePose pose = worker.poseAt(snapshot, frameStart, baseChannels);
+      // instant predicted from the same host snapshot. In synchronous mode that instant is the
+      // host frame's own (the state was built at it too): every node shows host frame N alike,
+      // whenever its own frame starts; otherwise the frame's start, so a slower host does not
+      // judder.
+      const Clock::time_point poseTime =
+          opt.synchronous && snapshot && snapshot->state.updates > 0 ? snapshot->state.received : frameStart;
+      const FramePose pose = worker.poseAt(snapshot, poseTime, baseChannels);
       if (!opt.saveFramesDir.empty() && frame % std::max<std::uint64_t>(opt.saveEvery, 1) == 0) {
         display.draw(built->state, pose.attitude, pose.channels, [&](const render::SkyRenderer& r, const sky::ChannelConfig& c) {
           const std::string stem = frameStem(opt.saveFramesDir, frame, built->state.observer.utc,
                                              pose.channels.size() > 1 ? c.name : "");
           render::ImageAttributes attributes = frameAttributes(built->state, pose.attitude, c);
           attributes["skyig:frame"] = static_cast<double>(frame);  // an integer, exact to 2^53
+          if (snapshot) attributes["skyig:host_frame"] = static_cast<double>(snapshot->state.hostFrame);
           writeFrameFiles(r, stem, c, true, true, attributes);
         });
       } else {

@@ -17,6 +17,7 @@ struct NodeOptions {
   NodeConfig config;
   Endpoint listen{"0.0.0.0", 8004};                 // host -> IG
   std::optional<std::string> multicastGroup;
+  std::optional<std::string> multicastInterface;    // where the group is joined; default: listen's address
   std::optional<Endpoint> replyTo;                  // Start of Frame; default: the followed host's address
   std::uint16_t replyPort = 8005;                   //   ... on this port
   bool headless = true;

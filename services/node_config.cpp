@@ -177,6 +177,15 @@ void readHost(TableReader& r, HostLink& h) {
   if (!h.multicastGroup.empty() && !isMulticastGroup(h.multicastGroup))
     r.fail(r.find("multicast_group"), "multicast_group",
            "expected an IPv4 multicast address (224.0.0.0 to 239.255.255.255), got \"" + h.multicastGroup + "\"");
+  h.multicastInterface = r.string("multicast_interface", h.multicastInterface, "an IPv4 address");
+  if (!h.multicastInterface.empty()) {
+    if (!isIpv4Address(h.multicastInterface))
+      r.fail(r.find("multicast_interface"), "multicast_interface",
+             "expected the IPv4 address of an interface, e.g. \"10.20.0.11\" or \"127.0.0.1\", got \"" +
+                 h.multicastInterface + "\"");
+    if (h.multicastGroup.empty())
+      r.fail(r.find("multicast_interface"), "multicast_interface", "names where multicast_group is joined: set multicast_group too");
+  }
   h.replyPort = r.integer("reply_port", h.replyPort, 1, 65535);
   h.replyTo = r.string("reply_to", h.replyTo, "\"ADDRESS:PORT\" or \"\"");
   if (!h.replyTo.empty()) {

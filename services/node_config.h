@@ -22,6 +22,7 @@ namespace skyig::services {
 struct HostLink {
   std::string listen = "0.0.0.0:8004";  // CIGI host -> IG
   std::string multicastGroup;           // empty: unicast
+  std::string multicastInterface;       // the interface's IPv4 address the group is joined on; "": listen's address
   int replyPort = 8005;                 // Start of Frame goes back to the host's address on this port
   std::string replyTo;                  // "ADDR:PORT": Start of Frame goes there instead; "" = the host's address
   // Who may drive the node, how a restart and reordering are told apart (services/host_session.h).

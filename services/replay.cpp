@@ -322,6 +322,7 @@ ReplayResult replay(const ReplayOptions& o) {
         const std::string stem = frameStem(o.outDir, k, lastSky->observer.utc, written > 1 ? c.name : "");
         render::ImageAttributes attributes = frameAttributes(*lastSky, lastPose.attitude, c);
         attributes["skyig:frame"] = static_cast<double>(k);  // an integer, exact to 2^53
+        if (frame.host) attributes["skyig:host_frame"] = static_cast<double>(frame.host->state.hostFrame);
         attributes["skyig:recording"] = std::filesystem::path(o.recording).filename().string();
         result.imagesWritten +=
             static_cast<std::uint64_t>(writeFrameFiles(renderer, stem, c, o.writeExr, o.writePng, attributes));

@@ -21,6 +21,7 @@ class SimClock {
   // UTC at a continuous time; nullopt before the first observation.
   std::optional<ephemeris::UtcTime> at(double continuousS) const;
   void setSpeed(double simSecondsPerSecond) { speed_ = simSecondsPerSecond; }
+  bool valid() const { return valid_; }  // the host has stated a time
 
  private:
   bool valid_ = false;

@@ -88,8 +88,10 @@ bool isJump(const sky::ObserverState& a, const sky::ObserverState& b) {
 std::optional<sky::SkyState> SkyWorker::step(const HostSnapshot* host, Clock::time_point now, bool force,
                                              Clock::duration refresh) {
   const bool newHost = host && host->state.updates > 0 && (!lastHostMessage_ || host->state.received != *lastHostMessage_);
+  const bool hostSpoke = host && host->state.updates > 0;
+  if (hostInstantsOnly_ && hostSpoke && !newHost && !force) return std::nullopt;
   if (!newHost && !force && lastBuild_ && now - *lastBuild_ < refresh) return std::nullopt;
-  const Clock::time_point t = newHost ? host->state.received : now;
+  const Clock::time_point t = newHost || (hostInstantsOnly_ && hostSpoke) ? host->state.received : now;
   sky::SkyState s = build(host, t);
   lastBuild_ = std::max(t, lastBuild_.value_or(t));
   if (newHost && config_.temporalAdaptation) {

@@ -51,6 +51,12 @@ class SkyWorker {
   std::optional<sky::SkyState> step(const HostSnapshot* host, Clock::time_point now, bool force = false,
                                     Clock::duration refresh = std::chrono::milliseconds(100));
 
+  // Synchronous mode: every state is at a host message's instant, never at the local clock's.
+  // Once the host has spoken, a refresh without a new message (new tables) rebuilds the last
+  // message's instant, and a silent host gets no new state (the dome holds its last frame), so
+  // whatever a node shows for host frame N depends on the host's messages alone.
+  void setHostInstantsOnly(bool on) { hostInstantsOnly_ = on; }
+
   // The state at local instant `t` with the eye as it is now (no step in time).
   sky::SkyState build(const HostSnapshot* host, Clock::time_point t);
 
@@ -73,6 +79,7 @@ class SkyWorker {
   std::optional<Clock::time_point> lastBuild_;
   std::optional<Clock::time_point> lastHostMessage_;  // `received` of the last host state stepped to
   std::optional<sky::ObserverState> lastHostObserver_;
+  bool hostInstantsOnly_ = false;
 };
 
 }  // namespace skyig::services

@@ -40,6 +40,11 @@ Endpoint parseEndpoint(const std::string& text) {
   return {fromSockaddr(resolved).address, static_cast<std::uint16_t>(port)};
 }
 
+bool isIpv4Address(const std::string& address) {
+  in_addr a{};
+  return inet_pton(AF_INET, address.c_str(), &a) == 1;
+}
+
 bool isMulticastGroup(const std::string& address) {
   in_addr a{};
   return inet_pton(AF_INET, address.c_str(), &a) == 1 && IN_MULTICAST(ntohl(a.s_addr));
@@ -60,7 +65,8 @@ Endpoint fromSockaddr(const sockaddr_in& a) {
   return {text, ntohs(a.sin_port)};
 }
 
-UdpSocket::UdpSocket(const Endpoint& local, const std::optional<std::string>& multicastGroup) {
+UdpSocket::UdpSocket(const Endpoint& local, const std::optional<std::string>& multicastGroup,
+                     const std::optional<std::string>& multicastInterface) {
   fd_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
   if (fd_ < 0) fail("socket(AF_INET, SOCK_DGRAM)");
   if (multicastGroup) {
@@ -89,9 +95,16 @@ UdpSocket::UdpSocket(const Endpoint& local, const std::optional<std::string>& mu
       throw NetworkError("\"" + *multicastGroup + "\" is not an IPv4 multicast group");
     }
     m.imr_interface = a.sin_addr;
-    if (::setsockopt(fd_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &m, sizeof m) != 0) {
+    if (multicastInterface && inet_pton(AF_INET, multicastInterface->c_str(), &m.imr_interface) != 1) {
       ::close(fd_);
-      fail("join multicast group " + *multicastGroup);
+      throw NetworkError("multicast interface \"" + *multicastInterface + "\" is not an IPv4 address");
+    }
+    if (::setsockopt(fd_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &m, sizeof m) != 0) {
+      const int error = errno;
+      ::close(fd_);
+      errno = error;
+      fail("join multicast group " + *multicastGroup + " on interface " +
+           (multicastInterface ? *multicastInterface : local.address));
     }
   }
 }
@@ -113,6 +126,18 @@ std::size_t UdpSocket::receive(std::span<std::uint8_t> buffer, sockaddr_in& from
 bool UdpSocket::sendTo(std::span<const std::uint8_t> bytes, const sockaddr_in& to) {
   return ::sendto(fd_, bytes.data(), bytes.size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) ==
          static_cast<ssize_t>(bytes.size());
+}
+
+void UdpSocket::sendMulticastThrough(const std::string& interfaceAddress, int ttl) {
+  in_addr interface{};
+  if (inet_pton(AF_INET, interfaceAddress.c_str(), &interface) != 1)
+    throw NetworkError("multicast interface \"" + interfaceAddress + "\" is not an IPv4 address");
+  if (ttl < 0 || ttl > 255) throw NetworkError("multicast TTL " + std::to_string(ttl) + " is not 0..255");
+  if (::setsockopt(fd_, IPPROTO_IP, IP_MULTICAST_IF, &interface, sizeof interface) != 0)
+    fail("send multicast through interface " + interfaceAddress);
+  const unsigned char hops = static_cast<unsigned char>(ttl), loop = 1;
+  if (::setsockopt(fd_, IPPROTO_IP, IP_MULTICAST_TTL, &hops, sizeof hops) != 0) fail("multicast TTL " + std::to_string(ttl));
+  if (::setsockopt(fd_, IPPROTO_IP, IP_MULTICAST_LOOP, &loop, sizeof loop) != 0) fail("multicast loopback");
 }
 
 Endpoint UdpSocket::localEndpoint() const {

@@ -25,6 +25,8 @@ struct Endpoint {
 // "ADDR:PORT", ADDR an IPv4 address or a host name resolved (getaddrinfo) to its first IPv4
 // address; throws NetworkError naming the text (and the name that did not resolve).
 Endpoint parseEndpoint(const std::string& text);
+// Whether `address` is a dotted IPv4 address.
+bool isIpv4Address(const std::string& address);
 // Whether `address` is an IPv4 multicast group (224.0.0.0/4).
 bool isMulticastGroup(const std::string& address);
 sockaddr_in toSockaddr(const Endpoint& e);
@@ -32,8 +34,12 @@ Endpoint fromSockaddr(const sockaddr_in& a);
 
 class UdpSocket {
  public:
-  // Binds to `local` (port 0: any free port); joins `multicastGroup` when given.
-  explicit UdpSocket(const Endpoint& local, const std::optional<std::string>& multicastGroup = std::nullopt);
+  // Binds to `local` (port 0: any free port); joins `multicastGroup` when given, on the
+  // interface with address `multicastInterface` (default: the bind address; for 0.0.0.0 the
+  // kernel's choice by route). A node that receives a group binds 0.0.0.0 (a socket bound to
+  // one unicast address does not receive the group's datagrams) and names the interface here.
+  explicit UdpSocket(const Endpoint& local, const std::optional<std::string>& multicastGroup = std::nullopt,
+                     const std::optional<std::string>& multicastInterface = std::nullopt);
   ~UdpSocket();
   UdpSocket(const UdpSocket&) = delete;
   UdpSocket& operator=(const UdpSocket&) = delete;
@@ -43,6 +49,11 @@ class UdpSocket {
   // then reported by the decoder as malformed).
   std::size_t receive(std::span<std::uint8_t> buffer, sockaddr_in& from, std::chrono::milliseconds timeout);
   bool sendTo(std::span<const std::uint8_t> bytes, const sockaddr_in& to);
+  // Multicast sent from this socket leaves through the interface with address `interfaceAddress`
+  // (IP_MULTICAST_IF) with time-to-live `ttl` (0: never leaves the machine; 1: the local
+  // network), and is looped back to this machine's members (IP_MULTICAST_LOOP), so nodes on the
+  // host's machine hear it. Throws NetworkError naming what the kernel refused.
+  void sendMulticastThrough(const std::string& interfaceAddress, int ttl);
   Endpoint localEndpoint() const;
 
  private:

@@ -23,6 +23,8 @@ struct HostOptions {
   std::string pathFile;
   std::string to = "127.0.0.1:8004";
   std::string bind = "0.0.0.0:0";
+  std::string multicastInterface;  // with a multicast --to: the interface's address (IP_MULTICAST_IF)
+  int multicastTtl = 1;            // 1: the local network; 0: this machine only (tests)
   double rateHz = 30.0;
   std::string startUtc = "2026-06-21T19:00:00Z";
   double speed = 1.0;
@@ -33,6 +35,8 @@ struct HostOptions {
   bool loop = false;
   bool littleEndian = false;
   int cigiVersion = 3;  // 3: CIGI 3.3; 4: CIGI 4.0
+  int lockstep = 0;     // > 0: frame k+1 waits for this many Start of Frames naming frame k
+  double lockstepTimeoutS = 1.0;
 };
 
 // Adds seconds to a UTC instant across days (time-lapse runs may pass midnight).
@@ -114,16 +118,27 @@ struct StartOfFrameLog {
     last = std::move(m);
   }
 
-  // Receives until `until`, so the host reads the IG's answers while it waits for its next frame.
-  void receiveUntil(UdpSocket& socket, std::chrono::steady_clock::time_point until) {
+  // Receives until `until`, so the host reads the IG's answers while it waits for its next frame;
+  // with `answers`, returns early once that many Start of Frames named `frame` (synchronous
+  // nodes answer each host frame they show). Returns whether they did.
+  bool receiveUntil(UdpSocket& socket, std::chrono::steady_clock::time_point until, std::uint32_t frame = 0,
+                    int answers = 0) {
     std::array<std::uint8_t, 2048> buffer{};
     sockaddr_in from{};
+    int answered = 0;
     for (;;) {
       const auto now = std::chrono::steady_clock::now();
       const auto left = std::chrono::ceil<std::chrono::milliseconds>(until - now);
       const std::size_t n = socket.receive(buffer, from, std::max(left, std::chrono::milliseconds(0)));
-      if (n > 0) add(std::span(buffer.data(), n));
-      else if (std::chrono::steady_clock::now() >= until) return;
+      if (n > 0) {
+        const std::uint64_t before = received;
+        add(std::span(buffer.data(), n));
+        if (answers > 0 && received > before &&
+            std::get<cigi::StartOfFrame>(last.packets.front()).lastHostFrameNumber == frame && ++answered >= answers)
+          return true;
+      } else if (std::chrono::steady_clock::now() >= until) {
+        return answers == 0;
+      }
     }
   }
 
@@ -158,12 +173,24 @@ int run(const HostOptions& o) {
     throw ConfigError(std::string("--to/--bind: ") + e.what());
   }
   UdpSocket socket(local);
+  const bool multicast = isMulticastGroup(to.address);
+  if (!multicast && !o.multicastInterface.empty())
+    throw ConfigError("--multicast-interface: --to " + to.toString() + " is not a multicast group (224.0.0.0/4)");
+  if (multicast) {
+    // One datagram per frame reaches every node of the dome; looped back so nodes on this
+    // machine hear it too.
+    try {
+      socket.sendMulticastThrough(o.multicastInterface.empty() ? local.address : o.multicastInterface, o.multicastTtl);
+    } catch (const NetworkError& e) {
+      throw ConfigError(std::string("--multicast-interface/--multicast-ttl: ") + e.what());
+    }
+  }
   const sockaddr_in destination = toSockaddr(to);
   const double duration = o.durationS > 0.0 ? o.durationS : path.durationS();
   const auto frames = static_cast<std::uint32_t>(std::floor(duration * o.rateHz)) + 1;
   const auto period = std::chrono::duration<double>(1.0 / o.rateHz);
   const auto t0 = std::chrono::steady_clock::now();
-  std::uint64_t sent = 0, dropped = 0;
+  std::uint64_t sent = 0, dropped = 0, unanswered = 0;
   std::vector<std::uint8_t> held;  // --swap-pairs: the even frame waits for the odd one
   StartOfFrameLog sof;
   for (std::uint32_t k = 0; k < frames; ++k) {
@@ -185,10 +212,22 @@ int run(const HostOptions& o) {
       sent += socket.sendTo(held, destination);
       held.clear();
     }
+    // Lock step: the next frame waits until every node showed this one (each answers with a
+    // Start of Frame naming it), or the timeout; --rate stays the fastest pace.
+    if (o.lockstep > 0 &&
+        !sof.receiveUntil(socket,
+                          std::chrono::steady_clock::now() +
+                              std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                  std::chrono::duration<double>(o.lockstepTimeoutS)),
+                          k, o.lockstep))
+      ++unanswered;
   }
   std::printf("host: %u frames over %.1f s to %s: %llu sent, %llu dropped%s\n", frames, duration, to.toString().c_str(),
               static_cast<unsigned long long>(sent), static_cast<unsigned long long>(dropped),
               o.swapPairs ? ", pairs swapped" : "");
+  if (o.lockstep > 0)
+    std::printf("host: lock step with %d node(s): %llu frame(s) not answered by all within %.3f s\n", o.lockstep,
+                static_cast<unsigned long long>(unanswered), o.lockstepTimeoutS);
   sof.print();
   return 0;
 }
@@ -201,8 +240,13 @@ void registerHostCommand(CLI::App& app, int& exitCode) {
   c->add_option("--path", o->pathFile, "Waypoints CSV: time_s, lat, lon, alt_m, yaw, pitch, roll (e.g. config/circuit.csv)")
       ->required()
       ->check(CLI::ExistingFile);
-  c->add_option("--to", o->to, "IG address ADDR:PORT (127.0.0.1:8004)");
+  c->add_option("--to", o->to, "IG address ADDR:PORT, or a multicast group GROUP:PORT every node joins (127.0.0.1:8004)");
   c->add_option("--bind", o->bind, "Local address ADDR:PORT to send from (0.0.0.0:0)");
+  c->add_option("--multicast-interface", o->multicastInterface,
+                "With a multicast --to: the IPv4 address of the interface to send through (default: --bind's address)");
+  c->add_option("--multicast-ttl", o->multicastTtl,
+                "With a multicast --to: time-to-live, 0 keeps datagrams on this machine (1)")
+      ->check(CLI::Range(0, 255));
   c->add_option("--rate", o->rateHz, "Host frame rate, Hz (30)")->check(CLI::Range(1.0, 1000.0));
   c->add_option("--start-utc", o->startUtc, "UTC date and time at the start of the path (2026-06-21T19:00:00Z)");
   c->add_option("--speed", o->speed, "Time-lapse: sim seconds of the clock per second flown (1)")->check(CLI::Range(0.0, 1e5));
@@ -212,6 +256,12 @@ void registerHostCommand(CLI::App& app, int& exitCode) {
   c->add_flag("--swap-pairs", o->swapPairs, "Send datagrams in swapped pairs (reordering test)");
   c->add_flag("--loop", o->loop, "Fly the path round and round for --duration");
   c->add_flag("--little-endian", o->littleEndian, "Send in little-endian byte order (the magic number says so)");
+  c->add_option("--lockstep", o->lockstep,
+                "Synchronous host: send frame k+1 only after N Start of Frames named frame k (N nodes in "
+                "synchronous mode replying to --bind), or --lockstep-timeout; --rate stays the fastest pace (0: off)")
+      ->check(CLI::Range(0, 1000));
+  c->add_option("--lockstep-timeout", o->lockstepTimeoutS, "Seconds a lock-step frame waits for its answers (1)")
+      ->check(CLI::Range(0.001, 60.0));
   c->add_option("--cigi", o->cigiVersion,
                 "CIGI version to send: 3 (3.3) or 4 (4.0: IG Control, Entity Position Control, Celestial Sphere "
                 "Control with seconds, Atmosphere Control) (3)")

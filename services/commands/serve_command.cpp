@@ -20,7 +20,7 @@ struct ServeOptions {
   std::string configPath;
   std::string node;
   bool headless = false;
-  std::string listen, replyTo, dumpState, statsJson, canInterface, record, saveFrames;
+  std::string listen, replyTo, multicastInterface, dumpState, statsJson, canInterface, record, saveFrames;
   std::uint64_t saveEvery = 30;
   std::uint64_t frames = 0;
   bool synchronous = false;
@@ -43,6 +43,11 @@ int run(const ServeOptions& o) {
     throw ConfigError(std::string(o.listen.empty() && o.replyTo.empty() ? "host.listen: " : "--listen/--reply-to: ") + e.what());
   }
   if (!h.multicastGroup.empty()) opt.multicastGroup = h.multicastGroup;
+  const std::string interface = o.multicastInterface.empty() ? h.multicastInterface : o.multicastInterface;
+  if (!o.multicastInterface.empty() && (h.multicastGroup.empty() || !isIpv4Address(interface)))
+    throw ConfigError("--multicast-interface: expected the IPv4 address of an interface, with host.multicast_group set; got \"" +
+                      interface + "\"" + (h.multicastGroup.empty() ? " and no multicast_group" : ""));
+  if (!interface.empty()) opt.multicastInterface = interface;
   opt.replyPort = static_cast<std::uint16_t>(h.replyPort);
   opt.synchronous = o.synchronous || h.synchronous;
   opt.syncTimeoutS = h.syncTimeoutS;
@@ -87,6 +92,9 @@ void registerServeCommand(CLI::App& app, int& exitCode) {
   c->add_option("--reply-to", o->replyTo,
                 "Where Start of Frame goes, ADDR:PORT (default: host.reply_to, else the followed host's address, port "
                 "host.reply_port)");
+  c->add_option("--multicast-interface", o->multicastInterface,
+                "IPv4 address of the interface host.multicast_group is joined on: per machine, where one "
+                "configuration serves every node (default: host.multicast_interface, else the listen address)");
   c->add_option("--can", o->canInterface, "Also read CANaerospace from this SocketCAN interface, e.g. can0");
   c->add_option("--frames", o->frames, "Stop after N frames (default: run until SIGINT/SIGTERM)");
   c->add_flag("--sync", o->synchronous, "Synchronous mode: render frame N after the host's frame N (with a timeout)");

@@ -446,6 +446,23 @@ TEST_F(Cli, BadHostAddressesInTheConfigurationExitTwoWithFileAndLine) {
   EXPECT_NE(g.err.find(group.string() + ":4: host.multicast_group: expected an IPv4 multicast address"),
             std::string::npos)
       << g.err;
+  const fs::path interface = write("interface.toml", "[sky]\nmodel = \"preetham\"\n[host]\nmulticast_group = \"239.1.2.3\"\n"
+                                                    "multicast_interface = \"lo\"\n");
+  const Result i = run("serve --config " + interface.string() + " --headless --frames 1 --listen 127.0.0.1:0");
+  EXPECT_EQ(i.exitCode, 2);
+  EXPECT_NE(i.err.find(interface.string() + ":5: host.multicast_interface: expected the IPv4 address of an interface"),
+            std::string::npos)
+      << i.err;
+  const Result f = run("serve --multicast-interface 127.0.0.1 --headless --frames 1 --listen 127.0.0.1:0");
+  EXPECT_EQ(f.exitCode, 2);
+  EXPECT_NE(f.err.find("--multicast-interface: expected the IPv4 address of an interface, with host.multicast_group set"),
+            std::string::npos)
+      << f.err;
+  // The host emulator's multicast options need a multicast destination.
+  const fs::path path = write("path.csv", "0, 47.26, 11.34, 900, 90, 0, 0\n1, 47.26, 11.34, 900, 90, 0, 0\n");
+  const Result h = run("host --path " + path.string() + " --to 127.0.0.1:9 --multicast-interface 127.0.0.1");
+  EXPECT_EQ(h.exitCode, 2);
+  EXPECT_NE(h.err.find("--multicast-interface: --to 127.0.0.1:9 is not a multicast group"), std::string::npos) << h.err;
   const fs::path port = write("port.toml", "[sky]\nmodel = \"preetham\"\n[host]\nlisten = \"127.0.0.1:99999\"\n");
   for (const std::string& command :
        {"render --size 32x24 --png " + (dir_ / "p.png").string(), std::string("serve --headless --frames 1")}) {

@@ -9,19 +9,16 @@
 #include <gtest/gtest.h>
 
 #include <arpa/inet.h>
-#include <signal.h>
-#include <spawn.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <thread>
-
-extern char** environ;
 
 using namespace skyig::services;
 using namespace skyig::services::testing;
@@ -211,48 +208,6 @@ TEST(HostNetwork, BurstsOfTwoDatagramsKeepThePredictedViewOnThePath) {
   EXPECT_EQ(node.stats.staleMessages.load(), 0u);
 }
 
-namespace {
-
-// A process started in the background, its output (the log and errors) in a file; stopped by
-// SIGTERM on its id.
-class Process {
- public:
-  Process(const std::string& args, const fs::path& dir) : err_(dir / "first.log") {
-    // The shell execs skyig: the id spawned is skyig's.
-    const std::string command = "exec " + std::string(SKYIG_EXECUTABLE) + " " + args + " >" + err_.string() + " 2>&1";
-    const char* argv[] = {"/bin/sh", "-c", command.c_str(), nullptr};
-    if (posix_spawn(&pid_, "/bin/sh", nullptr, nullptr, const_cast<char* const*>(argv), environ) != 0) pid_ = -1;
-  }
-  ~Process() { stop(); }
-  bool running() {
-    if (pid_ <= 0) return false;
-    if (::waitpid(pid_, &status_, WNOHANG) != pid_) return true;
-    pid_ = -1;  // exited, and reaped: never signalled again
-    return false;
-  }
-  std::string output() const {
-    std::ifstream in(err_);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-  // SIGTERM, and its exit code (-1 when it did not exit normally).
-  int stop() {
-    if (pid_ > 0) {
-      ::kill(pid_, SIGTERM);
-      ::waitpid(pid_, &status_, 0);
-      pid_ = -1;
-    }
-    return WIFEXITED(status_) ? WEXITSTATUS(status_) : -1;
-  }
-
- private:
-  pid_t pid_ = -1;
-  int status_ = -1;
-  fs::path err_;
-};
-
-}  // namespace
 
 // SO_REUSEADDR let a second node bind a unicast port and silently take the stream. Without it
 // the second `serve` stops with exit code 4 and says the port is in use; the first goes on.
@@ -263,7 +218,7 @@ TEST(HostNetwork, SecondServeOnATakenPortExitsFour) {
   const std::uint16_t port = freeLoopbackPort();
   const std::string serve = "serve --config " + (dir / "node.toml").string() +
                             " --headless --frame-rate 10 --listen 127.0.0.1:" + std::to_string(port);
-  Process first("--log-level info " + serve, dir);
+  SkyigProcess first("--log-level info " + serve, dir / "first.log");
   ASSERT_TRUE(waitUntil([&] {
     return first.output().find("listening for CIGI") != std::string::npos || !first.running();
   })) << first.output();
@@ -282,12 +237,53 @@ TEST(HostNetwork, SecondServeOnATakenPortExitsFour) {
 }
 
 // Multicast keeps sharing: the nodes of a dome on one machine join the same group on the same
-// port (and never send on it: multicast in tests stays on loopback with TTL 0). A unicast bind
-// of that port is still refused.
+// port (and never send on it: multicast in tests stays on loopback with TTL 0; the group is
+// joined on the loopback interface, so not even the membership report leaves the machine). A
+// unicast bind of that port is still refused.
 TEST(HostNetwork, MulticastGroupStillShared) {
   const std::uint16_t port = freeLoopbackPort();
   const std::string group = "239.255.42.99";
-  UdpSocket a({"0.0.0.0", port}, group);
-  EXPECT_NO_THROW(UdpSocket({"0.0.0.0", port}, group));
+  const std::optional<std::string> loopback = "127.0.0.1";
+  UdpSocket a({"0.0.0.0", port}, group, loopback);
+  EXPECT_NO_THROW(UdpSocket({"0.0.0.0", port}, group, loopback));
   EXPECT_THROW(UdpSocket({"127.0.0.1", port}), NetworkError);
+}
+
+// A host sends each frame once to a multicast group and every node on the machine hears it:
+// two members joined on the loopback interface, a sender through 127.0.0.1 with TTL 0 (the
+// datagram never leaves the machine) and multicast loopback on.
+TEST(HostNetwork, MulticastOnLoopbackReachesEveryMember) {
+  const std::uint16_t port = freeLoopbackPort();
+  const std::string group = "239.255.42.98";
+  UdpSocket a({"0.0.0.0", port}, group, std::string("127.0.0.1"));
+  UdpSocket b({"0.0.0.0", port}, group, std::string("127.0.0.1"));
+  UdpSocket host({"127.0.0.1", 0});
+  host.sendMulticastThrough("127.0.0.1", 0);
+  const std::vector<std::uint8_t> bytes = {1, 2, 3, 4};
+  ASSERT_TRUE(host.sendTo(bytes, toSockaddr({group, port})));
+  for (UdpSocket* member : {&a, &b}) {
+    std::array<std::uint8_t, 16> buffer{};
+    sockaddr_in from{};
+    ASSERT_EQ(member->receive(buffer, from, 2000ms), bytes.size());
+    EXPECT_EQ(fromSockaddr(from).toString(), host.localEndpoint().toString());
+  }
+}
+
+// A multicast interface that is not an address, or not this machine's, is refused by name.
+TEST(HostNetwork, MulticastInterfaceIsNamedWhenRefused) {
+  const std::uint16_t port = freeLoopbackPort();
+  try {
+    UdpSocket s({"0.0.0.0", port}, std::string("239.255.42.97"), std::string("127.0.0.300"));
+    FAIL() << "joined on a bad interface address";
+  } catch (const NetworkError& e) {
+    EXPECT_NE(std::string(e.what()).find("\"127.0.0.300\" is not an IPv4 address"), std::string::npos) << e.what();
+  }
+  try {
+    UdpSocket s({"0.0.0.0", port}, std::string("239.255.42.97"), std::string("192.0.2.77"));  // TEST-NET-1
+    FAIL() << "joined on an interface this machine does not have";
+  } catch (const NetworkError& e) {
+    EXPECT_NE(std::string(e.what()).find("on interface 192.0.2.77"), std::string::npos) << e.what();
+  }
+  UdpSocket host({"127.0.0.1", 0});
+  EXPECT_THROW(host.sendMulticastThrough("127.0.0.1", 256), NetworkError);
 }

@@ -45,6 +45,7 @@ TEST(NodeConfig, DocumentedDefaultsEqualBuiltInDefaults) {
   EXPECT_EQ(file.observer.utc.day, builtIn.observer.utc.day);
   EXPECT_EQ(file.host.listen, builtIn.host.listen);
   EXPECT_EQ(file.host.multicastGroup, builtIn.host.multicastGroup);
+  EXPECT_EQ(file.host.multicastInterface, builtIn.host.multicastInterface);
   EXPECT_EQ(file.host.replyPort, builtIn.host.replyPort);
   EXPECT_EQ(file.host.synchronous, builtIn.host.synchronous);
   EXPECT_EQ(file.host.syncTimeoutS, builtIn.host.syncTimeoutS);

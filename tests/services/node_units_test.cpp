@@ -96,6 +96,36 @@ TEST(CigiState, OwnshipIsEntityZeroAndBadValuesKeepTheLastGood) {
   EXPECT_EQ(t.state().ownship.attitude.yawDeg, 90.0);
 }
 
+// Two nodes fed one stream count the host's time to the same bit, whatever their own clocks
+// read (machines booted hours apart: arrival instants of different binary magnitude) and
+// however the network delays each datagram: the host's time of a message is its timestamp's
+// ticks since the stream's first, never a running sum on top of a local instant.
+TEST(CigiState, TwoNodesCountTheHostsTimeToTheBit) {
+  CigiStateTracker a, b;
+  const Clock::time_point bootA{std::chrono::seconds(37)}, bootB{std::chrono::seconds(400000)};
+  for (std::uint32_t k = 0; k < 300; ++k) {
+    cigi::DecodedMessage m;
+    cigi::IgControl ig;
+    ig.hostFrameNumber = k;
+    ig.timestamp = k * 3333 + (k % 3 == 0 ? 1 : 0);  // 30 Hz, a jittering host clock
+    ig.timestampValid = true;
+    cigi::CelestialSphereControl cs;
+    cs.date = *cigi::composeDate({2026, 6, 21});
+    cs.hour = 19;
+    cs.minute = static_cast<std::uint8_t>(30 + k / 1800);
+    m.packets = {ig, cs};
+    const auto delay = std::chrono::microseconds(k * 33333 + (k * 7919) % 2000);  // network jitter
+    a.apply(m, bootA + delay);
+    b.apply(m, bootB + delay + std::chrono::microseconds(k % 5 * 100));
+    ASSERT_TRUE(a.messageHostTime().has_value() == b.messageHostTime().has_value()) << k;
+    if (a.messageHostTime()) {
+      EXPECT_EQ(a.messageHostTime()->seconds, b.messageHostTime()->seconds) << k;
+    }
+    EXPECT_EQ(a.clock().continuousAt(a.state().received), b.clock().continuousAt(b.state().received)) << k;
+    EXPECT_EQ(a.state().utc.secondsOfDay, b.state().utc.secondsOfDay) << k;
+  }
+}
+
 TEST(CigiState, CelestialDateAndViewsApply) {
   CigiStateTracker t;
   cigi::DecodedMessage m;

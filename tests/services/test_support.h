@@ -15,7 +15,14 @@
 #include <string>
 #include <vector>
 
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <sstream>
+
+extern char** environ;
 
 namespace skyig::services::testing {
 
@@ -64,5 +71,54 @@ inline bool waitForFrames(const std::atomic<std::uint64_t>& frames, std::uint64_
   const std::uint64_t start = frames.load();
   return waitUntil([&] { return frames.load() >= start + count; });
 }
+
+// A `skyig` process (SKYIG_EXECUTABLE) with its stdout and stderr in `log`; stopped with
+// SIGTERM when it goes out of scope.
+class SkyigProcess {
+ public:
+  SkyigProcess(const std::string& args, const std::filesystem::path& log) : log_(log) {
+    // The shell execs skyig: the id spawned is skyig's.
+    const std::string command = "exec " + std::string(SKYIG_EXECUTABLE) + " " + args + " >" + log_.string() + " 2>&1";
+    const char* argv[] = {"/bin/sh", "-c", command.c_str(), nullptr};
+    if (posix_spawn(&pid_, "/bin/sh", nullptr, nullptr, const_cast<char* const*>(argv), environ) != 0) pid_ = -1;
+  }
+  ~SkyigProcess() { stop(); }
+  SkyigProcess(const SkyigProcess&) = delete;
+  SkyigProcess& operator=(const SkyigProcess&) = delete;
+  bool running() {
+    if (pid_ <= 0) return false;
+    if (::waitpid(pid_, &status_, WNOHANG) != pid_) return true;
+    pid_ = -1;  // exited, and reaped: never signalled again
+    return false;
+  }
+  std::string output() const {
+    std::ifstream in(log_);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+  // SIGTERM, and its exit code (-1 when it did not exit normally).
+  int stop() {
+    if (pid_ > 0) {
+      ::kill(pid_, SIGTERM);
+      ::waitpid(pid_, &status_, 0);
+      pid_ = -1;
+    }
+    return WIFEXITED(status_) ? WEXITSTATUS(status_) : -1;
+  }
+  // Waits for the process to exit by itself; its exit code (-1 when it did not exit normally).
+  int wait() {
+    if (pid_ > 0) {
+      ::waitpid(pid_, &status_, 0);
+      pid_ = -1;
+    }
+    return WIFEXITED(status_) ? WEXITSTATUS(status_) : -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  int status_ = -1;
+  std::filesystem::path log_;
+};
 
 }  // namespace skyig::services::testing

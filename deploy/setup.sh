@@ -20,6 +20,7 @@ build_and_test=(
   # toolchain; dpkg-dev (in build-essential) gives dpkg-shlibdeps to deploy/package.sh
   build-essential cmake ninja-build pkg-config git python3
   # GL headers and loaders
+  # (X11: swap groups through GLX, and the window tests read the windows back with XGetImage)
   libegl-dev libgl-dev libgles-dev libglfw3-dev libglm-dev libglx-dev libx11-dev
   # GLSL compiler: the tests compile the atmosphere's physics and passes as GLSL
   glslang-tools

@@ -1,7 +1,15 @@
 #pragma once
 // What `serve` renders into: one headless context for every channel, or one window per
-// channel (fullscreen on its configured monitor). No sockets, no host state: it draws a
-// SkyState seen with an attitude through the node's channels.
+// channel (fullscreen on its configured monitor, else side by side on the desktop). No
+// sockets, no host state: it draws a SkyState seen with an attitude through the node's
+// channels.
+//
+// Every window shows the same frame at the display's full rate: all channels are drawn, the
+// frame waits until every window's pixels exist (a fence per window), then every window
+// swaps; only the last swap waits for the vertical blank (swap interval 1), the others have
+// interval 0 and return at once. N windows each waiting for their own vertical blank would
+// take N refreshes per frame on most drivers (docs/performance.md, "Presentation"). Where
+// the driver offers GLX_NV_swap_group the windows also join swap group 1 / barrier 1.
 #include "render/gl/gl_context.h"
 #include "render/gl/glfw_window.h"
 #include "render/sky_renderer.h"
@@ -9,6 +17,7 @@
 #include "sky/channel.h"
 #include "sky/sky_state.h"
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -26,14 +35,26 @@ class DisplayOutputs {
 
   using DrawnCallback = std::function<void(const render::SkyRenderer&, const sky::ChannelConfig&)>;
   // Draws every channel; `drawn` sees each channel's renderer right after its frame (to save it).
+  // `channels` are the constructor's, each seen for this frame (same order and sizes).
   void draw(const sky::SkyState& state, const sky::Attitude& attitude, const std::vector<sky::ChannelConfig>& channels,
             const DrawnCallback& drawn = {});
+
+  // The windows' titles, in channel order (none when headless).
+  std::vector<std::string> windowTitles() const;
+  // Seconds the last frame spent presenting after its draws were submitted: the fence wait and
+  // every window's swap, the one vsync'd swap included (0 headless).
+  double lastPresentSeconds() const { return lastPresentS_; }
+  // How many windows joined swap group 1 (0 without GLX_NV_swap_group).
+  std::size_t swapGroupMembers() const { return swapGroupMembers_; }
 
  private:
   bool headless_;
   std::unique_ptr<render::GlContext> context_;
   std::vector<std::unique_ptr<render::GlfwWindowContext>> windows_;
+  std::vector<std::string> titles_;
   std::vector<std::unique_ptr<render::SkyRenderer>> renderers_;
+  std::size_t swapGroupMembers_ = 0;
+  double lastPresentS_ = 0.0;
 };
 
 }  // namespace skyig::services

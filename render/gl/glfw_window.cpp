@@ -37,7 +37,9 @@ GLFWmonitor* findMonitor(const std::string& name) {
   GLFWmonitor** monitors = glfwGetMonitors(&count);
   for (int i = 0; i < count; ++i)
     if (name == glfwGetMonitorName(monitors[i])) return monitors[i];
-  throw GlContextError("no monitor named '" + name + "' (see `skyig --version --caps`)");
+  std::string known;
+  for (int i = 0; i < count; ++i) known += std::string(known.empty() ? "" : ", ") + "'" + glfwGetMonitorName(monitors[i]) + "'";
+  throw GlContextError("no monitor named '" + name + "' (this display has " + (known.empty() ? "none" : known) + ")");
 }
 
 }  // namespace
@@ -51,9 +53,15 @@ GlfwWindowContext::GlfwWindowContext(const WindowOptions& options) {
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     GLFWmonitor* monitor = options.fullscreenMonitor ? findMonitor(*options.fullscreenMonitor) : nullptr;
+    const bool place = options.position && !monitor;
+    if (place) glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);  // shown where it belongs, not first at 0,0
     window_ = glfwCreateWindow(options.width, options.height, options.title.c_str(), monitor,
                                options.shareWith ? options.shareWith->handle() : nullptr);
     if (!window_) throw GlContextError("glfwCreateWindow failed: " + gLastGlfwError);
+    if (place) {
+      glfwSetWindowPos(window_, options.position->first, options.position->second);
+      glfwShowWindow(window_);
+    }
     makeCurrent();
     glfwSwapInterval(options.vsync ? 1 : 0);
     if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)))
@@ -75,6 +83,16 @@ void GlfwWindowContext::makeCurrent() { glfwMakeContextCurrent(window_); }
 void GlfwWindowContext::releaseCurrent() { glfwMakeContextCurrent(nullptr); }
 void GlfwWindowContext::swapBuffers() { glfwSwapBuffers(window_); }
 bool GlfwWindowContext::closeRequested() const { return glfwWindowShouldClose(window_) != 0; }
+
+std::vector<std::string> monitorNames() {
+  acquireGlfw();
+  std::vector<std::string> names;
+  int count = 0;
+  GLFWmonitor** monitors = glfwGetMonitors(&count);  // the primary monitor is the first
+  for (int i = 0; i < count; ++i) names.emplace_back(glfwGetMonitorName(monitors[i]));
+  releaseGlfw();
+  return names;
+}
 
 void pollWindowEvents() { glfwPollEvents(); }
 

@@ -6,6 +6,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -16,7 +18,8 @@ struct WindowOptions {
   int width = 1280;
   int height = 1024;
   std::optional<std::string> fullscreenMonitor;  // monitor name as GLFW reports it
-  bool vsync = true;
+  bool vsync = true;                             // swap interval 1 (wait for the vertical blank), else 0
+  std::optional<std::pair<int, int>> position;   // windowed: top-left corner on the desktop (x, y)
   const class GlfwWindowContext* shareWith = nullptr;  // share textures with another window
 };
 
@@ -34,6 +37,10 @@ class GlfwWindowContext final : public GlContext {
  private:
   GLFWwindow* window_ = nullptr;
 };
+
+// The monitors' names as GLFW reports them (what ChannelConfig::monitor names), primary first.
+// Throws GlContextError without a display.
+std::vector<std::string> monitorNames();
 
 // Processes window-system events of every window (close buttons, resizes); call once a frame.
 void pollWindowEvents();

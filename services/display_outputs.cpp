@@ -10,8 +10,9 @@
 namespace skyig::services {
 
 DisplayOutputs::DisplayOutputs(bool headless, const std::string& nodeName,
-                               const std::vector<sky::ChannelConfig>& channels)
-    : headless_(headless) {
+                               const std::vector<sky::ChannelConfig>& channels, std::vector<Projector> projectors)
+    : headless_(headless), projectors_(std::move(projectors)) {
+  projectors_.resize(channels.size());
   if (headless_) {
     context_ = render::createHeadlessContext();
     renderers_.push_back(std::make_unique<render::SkyRenderer>());
@@ -22,15 +23,16 @@ DisplayOutputs::DisplayOutputs(bool headless, const std::string& nodeName,
     const auto& c = channels[i];
     render::WindowOptions w;
     w.title = "skyig " + nodeName + " / " + c.name;
-    w.width = c.width;
-    w.height = c.height;
+    // A projector's window is what the projector is sent: its own resolution.
+    w.width = projectors_[i] ? projectors_[i]->width : c.width;
+    w.height = projectors_[i] ? projectors_[i]->height : c.height;
     w.vsync = i + 1 == channels.size();  // one swap per frame waits for the vertical blank
     w.shareWith = windows_.empty() ? nullptr : windows_.front().get();
     if (!c.monitor.empty()) {
       w.fullscreenMonitor = c.monitor;
     } else {
       w.position = std::pair{x, 0};
-      x += c.width;
+      x += w.width;
     }
     windows_.push_back(std::make_unique<render::GlfwWindowContext>(w));
     titles_.push_back(w.title);
@@ -64,12 +66,18 @@ bool DisplayOutputs::closeRequested() const {
 
 std::vector<std::string> DisplayOutputs::windowTitles() const { return titles_; }
 
+void DisplayOutputs::drawChannel(render::SkyRenderer& renderer, const sky::SkyState& state, const sky::Attitude& attitude,
+                                 const sky::ChannelConfig& channel, std::size_t index) {
+  if (index < projectors_.size() && projectors_[index]) renderer.drawProjector(state, attitude, channel, projectors_[index]);
+  else renderer.draw(state, attitude, channel);
+}
+
 void DisplayOutputs::draw(const sky::SkyState& state, const sky::Attitude& attitude,
                           const std::vector<sky::ChannelConfig>& channels, const DrawnCallback& drawn) {
   if (headless_) {
-    for (const auto& c : channels) {
-      renderers_.front()->draw(state, attitude, c);
-      if (drawn) drawn(*renderers_.front(), c);
+    for (std::size_t i = 0; i < channels.size(); ++i) {
+      drawChannel(*renderers_.front(), state, attitude, channels[i], i);
+      if (drawn) drawn(*renderers_.front(), channels[i], i < projectors_.size() ? projectors_[i].get() : nullptr);
     }
     glFinish();  // the frame ends when its pixels exist
     return;
@@ -82,9 +90,11 @@ void DisplayOutputs::draw(const sky::SkyState& state, const sky::Attitude& attit
   std::vector<GLsync> ready(windows_.size());
   for (std::size_t i = 0; i < windows_.size(); ++i) {
     windows_[i]->makeCurrent();
-    renderers_[i]->draw(state, attitude, channels[i]);
-    if (drawn) drawn(*renderers_[i], channels[i]);
-    renderers_[i]->presentToDefaultFramebuffer(channels[i].width, channels[i].height);
+    drawChannel(*renderers_[i], state, attitude, channels[i], i);
+    if (drawn) drawn(*renderers_[i], channels[i], projectors_[i].get());
+    const bool projected = projectors_[i] != nullptr;
+    renderers_[i]->presentToDefaultFramebuffer(projected ? projectors_[i]->width : channels[i].width,
+                                               projected ? projectors_[i]->height : channels[i].height);
     ready[i] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     glFlush();
   }

@@ -10,6 +10,7 @@
 // interval 0 and return at once. N windows each waiting for their own vertical blank would
 // take N refreshes per frame on most drivers (docs/performance.md, "Presentation"). Where
 // the driver offers GLX_NV_swap_group the windows also join swap group 1 / barrier 1.
+#include "calibration/projector.h"
 #include "render/gl/gl_context.h"
 #include "render/gl/glfw_window.h"
 #include "render/sky_renderer.h"
@@ -27,13 +28,19 @@ namespace skyig::services {
 
 class DisplayOutputs {
  public:
-  // `nodeName` titles the windows ("skyig <node> / <channel>").
-  DisplayOutputs(bool headless, const std::string& nodeName, const std::vector<sky::ChannelConfig>& channels);
+  using Projector = std::shared_ptr<const calibration::ProjectorCalibration>;
+  // `nodeName` titles the windows ("skyig <node> / <channel>"). `projectors`, empty or one per
+  // channel (null: a plain channel): a channel with a projector is drawn warped and blended for
+  // it (SkyRenderer::drawProjector) and its window is the projector's size.
+  DisplayOutputs(bool headless, const std::string& nodeName, const std::vector<sky::ChannelConfig>& channels,
+                 std::vector<Projector> projectors = {});
 
   const render::GlInfo& info() const;
   bool closeRequested() const;
 
-  using DrawnCallback = std::function<void(const render::SkyRenderer&, const sky::ChannelConfig&)>;
+  // The channel's renderer right after its frame, and its projector (null for a plain channel).
+  using DrawnCallback =
+      std::function<void(const render::SkyRenderer&, const sky::ChannelConfig&, const calibration::ProjectorCalibration*)>;
   // Draws every channel; `drawn` sees each channel's renderer right after its frame (to save it).
   // `channels` are the constructor's, each seen for this frame (same order and sizes).
   void draw(const sky::SkyState& state, const sky::Attitude& attitude, const std::vector<sky::ChannelConfig>& channels,
@@ -48,11 +55,15 @@ class DisplayOutputs {
   std::size_t swapGroupMembers() const { return swapGroupMembers_; }
 
  private:
+  void drawChannel(render::SkyRenderer& renderer, const sky::SkyState& state, const sky::Attitude& attitude,
+                   const sky::ChannelConfig& channel, std::size_t index);
+
   bool headless_;
   std::unique_ptr<render::GlContext> context_;
   std::vector<std::unique_ptr<render::GlfwWindowContext>> windows_;
   std::vector<std::string> titles_;
   std::vector<std::unique_ptr<render::SkyRenderer>> renderers_;
+  std::vector<Projector> projectors_;  // one per channel (null: plain)
   std::size_t swapGroupMembers_ = 0;
   double lastPresentS_ = 0.0;
 };

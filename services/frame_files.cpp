@@ -1,5 +1,7 @@
 #include "services/frame_files.h"
 
+#include "services/frame_metadata.h"
+
 #include <cstdio>
 #include <filesystem>
 
@@ -17,14 +19,17 @@ std::string frameStem(const std::string& dir, std::uint64_t frame, const ephemer
 }
 
 int writeFrameFiles(const render::SkyRenderer& renderer, const std::string& stem, const sky::ChannelConfig& channel,
-                    bool exr, bool png, const render::ImageAttributes& attributes) {
+                    bool exr, bool png, const render::ImageAttributes& attributes,
+                    const calibration::ProjectorCalibration* projector) {
   int written = 0;
   if (exr) {
-    render::writeExr(stem + ".exr", renderer.readHdr(), attributes);
+    render::ImageAttributes all = attributes;
+    if (projector) addProjectorAttributes(all, *projector);
+    render::writeExr(stem + ".exr", projector ? renderer.readProjectorHdr() : renderer.readHdr(), all);
     ++written;
   }
   if (png) {
-    render::writePng(stem + ".png", renderer.readDisplay(), channel.display.gamma);
+    render::writePng(stem + ".png", projector ? renderer.readProjectorDisplay() : renderer.readDisplay(), channel.display.gamma);
     ++written;
   }
   return written;

@@ -9,6 +9,7 @@
 #include "services/cigi_receiver.h"
 #include "services/frame_files.h"
 #include "services/frame_metadata.h"
+#include "services/projector_channel.h"
 #include "services/sky_worker.h"
 #include "services/recorder.h"
 #include "services/state_dump.h"
@@ -159,9 +160,21 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
     if (can) threads.start([&] { can->run(stop); });
     threads.start([&] { workerLoop(opt, stats, host, sky, worker, stop); });
 
-    const auto baseChannels = opt.config.channelsOf(opt.config.nodeName);
-    if (baseChannels.empty()) throw ConfigError("node \"" + opt.config.nodeName + "\" has no channels in the configuration");
-    DisplayOutputs display(opt.headless, opt.config.nodeName, baseChannels);
+    const auto configured = opt.config.channelsOf(opt.config.nodeName);
+    if (configured.empty()) throw ConfigError("node \"" + opt.config.nodeName + "\" has no channels in the configuration");
+    // Each channel's projector calibration is read here, before any window opens: a bad file
+    // stops the node with exit 2 naming it. A projector channel is drawn with its region's
+    // camera, at its projector's size.
+    std::vector<sky::ChannelConfig> baseChannels;
+    std::vector<DisplayOutputs::Projector> projectors;
+    for (const auto& c : configured) {
+      ProjectorChannel pc = loadProjectorChannel(c, opt.config.projectorOf(c.name));
+      if (pc.projector)
+        spdlog::info("channel {}: projector {} ({}x{})", c.name, pc.projector->source, pc.projector->width, pc.projector->height);
+      baseChannels.push_back(pc.channel);
+      projectors.push_back(pc.projector);
+    }
+    DisplayOutputs display(opt.headless, opt.config.nodeName, baseChannels, projectors);
     spdlog::info("rendering {} channel(s) of node \"{}\" on {} ({})", baseChannels.size(), opt.config.nodeName,
                  display.info().renderer, opt.headless ? "headless" : "windows");
     for (const auto& c : baseChannels)
@@ -200,13 +213,14 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
           opt.synchronous && snapshot && snapshot->state.updates > 0 ? snapshot->state.received : frameStart;
       const FramePose pose = worker.poseAt(snapshot, poseTime, baseChannels);
       if (!opt.saveFramesDir.empty() && frame % std::max<std::uint64_t>(opt.saveEvery, 1) == 0) {
-        display.draw(built->state, pose.attitude, pose.channels, [&](const render::SkyRenderer& r, const sky::ChannelConfig& c) {
+        display.draw(built->state, pose.attitude, pose.channels,
+                     [&](const render::SkyRenderer& r, const sky::ChannelConfig& c, const calibration::ProjectorCalibration* p) {
           const std::string stem = frameStem(opt.saveFramesDir, frame, built->state.observer.utc,
                                              pose.channels.size() > 1 ? c.name : "");
           render::ImageAttributes attributes = frameAttributes(built->state, pose.attitude, c);
           attributes["skyig:frame"] = static_cast<double>(frame);  // an integer, exact to 2^53
           if (snapshot) attributes["skyig:host_frame"] = static_cast<double>(snapshot->state.hostFrame);
-          writeFrameFiles(r, stem, c, true, true, attributes);
+          writeFrameFiles(r, stem, c, true, true, attributes, p);
         });
       } else {
         display.draw(built->state, pose.attitude, pose.channels);

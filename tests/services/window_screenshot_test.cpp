@@ -4,6 +4,7 @@
 // This is what the projectors receive: the right channel in the right window, nothing lost or
 // swapped by presenting every window in one frame with a single vsync'd swap.
 #include "render/gl/swap_group.h"
+#include "calibration/load.h"
 #include "services/display_outputs.h"
 
 #include <gtest/gtest.h>
@@ -168,7 +169,7 @@ TEST_P(WindowScreenshots, EveryWindowShowsTheHeadlessFrameOfItsChannel) {
   {
     services::DisplayOutputs headless(true, "test", channels);
     headless.draw(state, observer.attitude, channels,
-                  [&](const render::SkyRenderer& r, const sky::ChannelConfig& c) { expected[c.name] = r.readDisplay(); });
+                  [&](const render::SkyRenderer& r, const sky::ChannelConfig& c, const calibration::ProjectorCalibration*) { expected[c.name] = r.readDisplay(); });
   }
 
   services::DisplayOutputs windows(false, "test", channels);
@@ -205,6 +206,63 @@ TEST_P(WindowScreenshots, EveryWindowShowsTheHeadlessFrameOfItsChannel) {
   }
 }
 
+// A projector's window is what the projector is sent: the generated dome's left and centre
+// projectors (tests/data/calibration/dome5_small.mpcdi, 160x100), warped and blended, show in
+// their windows as the headless render sends them, at the projector's size.
+TEST_F(WindowScreenshots, ProjectorWindowsShowWhatTheProjectorsAreSent) {
+  ASSERT_FALSE(gX->display().empty()) << "Xvfb did not start (deploy/setup.sh installs it)";
+  const std::string dome = std::string(SKYIG_SOURCE_DIR) + "/tests/data/calibration/dome5_small.mpcdi";
+  std::vector<sky::ChannelConfig> channels;
+  std::vector<services::DisplayOutputs::Projector> projectors;
+  for (const char* region : {"left", "centre"}) {
+    auto p = std::make_shared<const calibration::ProjectorCalibration>(calibration::loadProjector(calibration::mpcdiSource(dome, region)));
+    sky::ChannelConfig c;
+    c.name = region;
+    c.offset = p->camera.offset;
+    c.frustum = p->camera.frustum;
+    c.width = 96;  // the channel renders smaller than its projector: the warp resamples it
+    c.height = 64;
+    channels.push_back(c);
+    projectors.push_back(p);
+  }
+  sky::ObserverState observer;
+  observer.attitude = {20.0, 0.0, 0.0};
+  const sky::SkyState state = sky::buildSkyState(observer, sky::SkyConditions{}, sky::SunOverride{40.0, 10.0});
+  std::map<std::string, render::DisplayImage> expected;
+  {
+    services::DisplayOutputs headless(true, "test", channels, projectors);
+    headless.draw(state, observer.attitude, channels,
+                  [&](const render::SkyRenderer& r, const sky::ChannelConfig& c, const calibration::ProjectorCalibration* p) {
+                    ASSERT_NE(p, nullptr);
+                    expected[c.name] = r.readProjectorDisplay();
+                  });
+  }
+  services::DisplayOutputs windows(false, "test", channels, projectors);
+  const std::vector<std::string> titles = windows.windowTitles();
+  XScreenshots x;
+  ASSERT_TRUE(x.open());
+  for (int frame = 0; frame < 3; ++frame) windows.draw(state, observer.attitude, channels);
+  for (std::size_t i = 0; i < channels.size(); ++i) {
+    const render::DisplayImage& want = expected.at(channels[i].name);
+    ASSERT_EQ(want.width, 160);
+    ASSERT_EQ(want.height, 100);
+    const auto shown = x.grab(titles[i], want.width, want.height);
+    ASSERT_TRUE(shown) << "no window titled \"" << titles[i] << "\"";
+    int worst = 0;
+    double sum = 0.0;
+    for (int y = 0; y < want.height; ++y)
+      for (int px = 0; px < want.width; ++px)
+        for (int k = 0; k < 3; ++k) {
+          const int a = (*shown)[(static_cast<std::size_t>(y) * want.width + px) * 3 + k];
+          const int b = want.rgba[(static_cast<std::size_t>(y) * want.width + px) * 4 + k];
+          worst = std::max(worst, std::abs(a - b));
+          sum += b;
+        }
+    EXPECT_LE(worst, 1) << titles[i] << " differs from what the projector is sent by " << worst << " codes";
+    EXPECT_GT(sum / (want.width * want.height * 3), 20.0) << titles[i] << ": the projector image is dark";
+  }
+}
+
 // A channel with `monitor` is fullscreen on that monitor: Xvfb's one monitor, 1024x256, shows the
 // channel's frame over the whole screen; a name no monitor has is refused before anything renders.
 TEST_F(WindowScreenshots, ChannelWithAMonitorIsFullscreenOnIt) {
@@ -230,7 +288,7 @@ TEST_F(WindowScreenshots, ChannelWithAMonitorIsFullscreenOnIt) {
   {
     services::DisplayOutputs headless(true, "test", channels);
     headless.draw(state, observer.attitude, channels,
-                  [&](const render::SkyRenderer& r, const sky::ChannelConfig&) { want = r.readDisplay(); });
+                  [&](const render::SkyRenderer& r, const sky::ChannelConfig&, const calibration::ProjectorCalibration*) { want = r.readDisplay(); });
   }
   services::DisplayOutputs windows(false, "test", channels);
   for (int frame = 0; frame < 2; ++frame) windows.draw(state, observer.attitude, channels);

@@ -1,5 +1,7 @@
 #include "calibration/dome.h"
 
+#include "calibration/region_camera.h"
+
 #include "calibration/calibration_error.h"
 
 #include <algorithm>
@@ -22,10 +24,6 @@ const glm::dmat3& bodyToWorld() {
 const glm::dmat3& worldToBody() {
   static const glm::dmat3 m = glm::inverse(bodyToWorld());
   return m;
-}
-
-glm::dmat3 cameraNdcToWorld(const RegionCamera& camera) {
-  return skyig::sky::ndcToWorld(skyig::sky::eyeToEnu({}, camera.offset), camera.frustum);
 }
 
 std::string projectorName(const DomeProjector& p, std::size_t index) {
@@ -145,18 +143,6 @@ bool DomeGeometry::project(std::size_t p, const glm::dvec3& point, double& colum
 
 glm::dvec3 DomeGeometry::eyeDirection(const glm::dvec3& point) const { return glm::normalize(point - dome_.eye); }
 
-bool directionToImage(const RegionCamera& camera, const glm::dvec3& bodyDirection, double& u, double& v) {
-  const glm::dvec3 q = glm::inverse(cameraNdcToWorld(camera)) * (bodyToWorld() * bodyDirection);
-  if (!(q.z > 0.0)) return false;
-  u = 0.5 * (q.x / q.z + 1.0);
-  v = 0.5 * (1.0 - q.y / q.z);
-  return u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0;
-}
-
-glm::dvec3 imageToDirection(const RegionCamera& camera, double u, double v) {
-  return glm::normalize(worldToBody() * (cameraNdcToWorld(camera) * glm::dvec3(2.0 * u - 1.0, 1.0 - 2.0 * v, 1.0)));
-}
-
 // Raskar, Welch, Cutts, Lake, Stesin & Fuchs 1998 ("The Office of the Future") weight each
 // projector by its pixel's distance to its own image's edge and divide by the sum over the
 // projectors lighting the point: a weight that vanishes at the edge makes the alphas
@@ -230,10 +216,10 @@ std::vector<ProjectorCalibration> generateDome(const Dome& dome, DomeSummary* su
     for (int j = 0; j < gh; ++j)
       for (int i = 0; i < gw; ++i) {
         const std::size_t k = static_cast<std::size_t>(j) * static_cast<std::size_t>(gw) + static_cast<std::size_t>(i);
-        double u = 0.0, v = 0.0;
-        if (gridHit[k] && directionToImage(cal.camera, grid[k], u, v)) {
-          cal.warp.at(i, j, 0) = static_cast<float>(u);
-          cal.warp.at(i, j, 1) = static_cast<float>(v);
+        const auto uv = gridHit[k] ? uvOfDirection(cal.camera, grid[k]) : std::nullopt;
+        if (uv && uv->x >= 0.0 && uv->x <= 1.0 && uv->y >= 0.0 && uv->y <= 1.0) {
+          cal.warp.at(i, j, 0) = static_cast<float>(uv->x);
+          cal.warp.at(i, j, 1) = static_cast<float>(uv->y);
         }
       }
 
@@ -292,7 +278,7 @@ std::vector<ProjectorCalibration> generateDome(const Dome& dome, DomeSummary* su
     summary->overlaps.clear();
     for (std::size_t a = 0; a < n; ++a)
       for (std::size_t c = a + 1; c < n; ++c) {
-        const glm::dvec3 da = imageToDirection(out[a].camera, 0.5, 0.5), dc = imageToDirection(out[c].camera, 0.5, 0.5);
+        const glm::dvec3 da = directionOfUv(out[a].camera, {0.5, 0.5}), dc = directionOfUv(out[c].camera, {0.5, 0.5});
         const double arc = std::acos(std::clamp(glm::dot(da, dc), -1.0, 1.0));
         const int steps = std::max(1, static_cast<int>(arc / (0.05 * kDeg)));
         int shared = 0;

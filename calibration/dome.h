@@ -74,10 +74,8 @@ class DomeGeometry {
   std::vector<glm::dmat3> bodyToNdc_;
 };
 
-// (u, v) of a body-frame direction in a region camera's image (u right, v down, [0, 1] inside),
-// and back: the body-frame unit direction of an image point. Through sky::ndcToWorld.
-bool directionToImage(const RegionCamera& camera, const glm::dvec3& bodyDirection, double& u, double& v);
-glm::dvec3 imageToDirection(const RegionCamera& camera, double u, double v);
+// A region camera's image and directions: calibration/region_camera.h (uvOfDirection,
+// directionOfUv), the same for the generator, the readers and the tests.
 
 // What the generator found besides the calibrations, for `skyig dome` to print.
 struct DomeSummary {

@@ -2,6 +2,7 @@
 // a dome point seen by two projectors shows one sky direction, the alphas add up to 1, beta
 // levels the black floor, and each projector lights where its frustum says.
 #include "calibration/dome.h"
+#include "calibration/region_camera.h"
 
 #include "calibration/calibration_error.h"
 
@@ -111,7 +112,7 @@ TEST(DomeGenerator, OverlappingProjectorsShowOneDirection) {
       const double u = sampleMap(cal.warp, cal.width, cal.height, s.column, s.row, 0);
       const double v = sampleMap(cal.warp, cal.width, cal.height, s.column, s.row, 1);
       ASSERT_TRUE(std::isfinite(u) && std::isfinite(v)) << cal.region << " at " << s.column << "," << s.row;
-      shown.push_back(skyig::calibration::imageToDirection(cal.camera, u, v));
+      shown.push_back(skyig::calibration::directionOfUv(cal.camera, {u, v}));
       // One pixel of this projector here, as seen from the eye.
       const auto a = geometry.trace(s.projector, s.column, s.row), b = geometry.trace(s.projector, s.column + 1.0, s.row);
       pixelAngle = std::min(pixelAngle, std::acos(std::clamp(
@@ -209,9 +210,9 @@ TEST(DomeGenerator, AFootprintIsWhereItsFrustumSays) {
     double uMin = 1, uMax = 0, vMin = 1, vMax = 0;
     auto visit = [&](double column, double row) {
       const auto hit = geometry.trace(p, column, row);
-      double u = 0, v = 0;
-      ASSERT_TRUE(skyig::calibration::directionToImage(cal.camera, geometry.eyeDirection(hit.point), u, v))
-          << pr.name << " " << column << "," << row;
+      const auto uv = skyig::calibration::uvOfDirection(cal.camera, geometry.eyeDirection(hit.point));
+      ASSERT_TRUE(uv && uv->x >= 0.0 && uv->x <= 1.0 && uv->y >= 0.0 && uv->y <= 1.0) << pr.name << " " << column << "," << row;
+      const double u = uv->x, v = uv->y;
       uMin = std::min(uMin, u), uMax = std::max(uMax, u), vMin = std::min(vMin, v), vMax = std::max(vMax, v);
     };
     for (int i = 0; i <= pr.width; ++i) visit(i, 0), visit(i, pr.height);

@@ -603,6 +603,21 @@ TEST_F(Cli, RenderProjectorWritesWhatTheProjectorIsSent) {
   EXPECT_EQ(skyig::render::readExr((dir_ / "c.exr").string()).attributes.count("skyig:projector"), 0u);
 }
 
+// The example configuration of a projector dome works as its comment says: `skyig dome` writes
+// the calibration beside it, and every one of its five channels renders for its projector.
+TEST_F(Cli, TheProjectorDomeExampleRendersWithAGeneratedDome) {
+  fs::copy_file(std::string(SKYIG_SOURCE_DIR) + "/config/dome5-projectors.toml", dir_ / "dome5-projectors.toml");
+  const Result dome = run("dome --out " + (dir_ / "dome5.mpcdi").string() + " --resolution 64x40 --warp-step 8");
+  ASSERT_EQ(dome.exitCode, 0) << dome.err;
+  const Result r = run("render --config " + (dir_ / "dome5-projectors.toml").string() +
+                       " --sky-model preetham --all-channels --projector --png " + (dir_ / "p.png").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* name : {"left", "centre", "right", "chin-left", "chin-right"}) {
+    EXPECT_NE(r.out.find(std::string("projector ") + name + ": 64x40"), std::string::npos) << r.out;
+    EXPECT_TRUE(fs::exists(dir_ / (std::string("p_") + name + ".png"))) << name;
+  }
+}
+
 // A bad calibration stops the command with exit 2 before anything renders: the message names
 // the file and what is wrong in it, and no image is written.
 TEST_F(Cli, BadCalibrationExitsTwoNamingTheFileBeforeRendering) {

@@ -50,10 +50,13 @@ ProjectorCalibration readBourkeMesh(const std::string& path, int width, int heig
       next("all the nodes the size promises");
       std::istringstream s(line);
       double x, y, u, v, intensity;
-      if (!(s >> x >> y >> u >> v >> intensity) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(u) ||
-          !std::isfinite(v) || !std::isfinite(intensity))
+      // Bounded so that every value fits the float maps (a larger one has no meaning on a
+      // projector or in an image, and converting it to float would overflow).
+      const auto bounded = [](double value) { return std::isfinite(value) && std::abs(value) <= 1e6; };
+      if (!(s >> x >> y >> u >> v >> intensity) || !bounded(x) || !bounded(y) || !bounded(u) || !bounded(v) ||
+          !bounded(intensity))
         throw CalibrationError(path + ":" + std::to_string(lineNumber) + ": node \"" + line +
-                               "\": expected five numbers x y u v intensity");
+                               "\": expected five numbers x y u v intensity, each within +-1e6");
       // The grid must be rectangular: one x per column and one y per row.
       const double tolerance = 1e-4;
       if (j == 0) xs[static_cast<std::size_t>(i)] = x;

@@ -237,6 +237,9 @@ ProjectorCalibration readMpcdiRegion(const MpcdiArchive& archive, const MpcdiDes
           uv += glm::dvec2(static_cast<double>(x) / (raw.width - 1), static_cast<double>(y) / (raw.height - 1));
       }
       if (!distortion.empty()) uv += glm::dvec2(distortion.at(x, y, 0), distortion.at(x, y, 1));
+      // Far outside the image (a point nearly at right angles to the camera): nothing shown, and
+      // no float overflow.
+      if (!(std::abs(uv.x) <= 1e6 && std::abs(uv.y) <= 1e6)) continue;
       p.warp.at(x, y, 0) = static_cast<float>(uv.x);
       p.warp.at(x, y, 1) = static_cast<float>(uv.y);
     }

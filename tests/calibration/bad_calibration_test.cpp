@@ -171,6 +171,8 @@ TEST_F(BadCalibration, BourkeMeshErrorsNameTheLine) {
             std::string::npos);
   EXPECT_NE(meshError("2\n2 2\n0 0 0 0 1\n1 0 1 0 1\n0.5 1 0 1 1\n1 1 1 1 1\n").find("off the rectangular grid"),
             std::string::npos);
+  EXPECT_NE(meshError("2\n2 2\n-2e40 0 0 0 1\n").find("mesh.txt:3: node \"-2e40 0 0 0 1\": expected five numbers"),
+            std::string::npos);
 }
 
 }  // namespace

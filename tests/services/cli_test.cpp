@@ -642,6 +642,12 @@ TEST_F(Cli, BadCalibrationExitsTwoNamingTheFileBeforeRendering) {
   const Result n = run("render --config " + missing.string() + " --sky-model preetham --png " + (dir_ / "z.png").string());
   EXPECT_EQ(n.exitCode, 2);
   EXPECT_NE(n.err.find((dir_ / "nowhere.mpcdi").string()), std::string::npos) << n.err;
+  // The node reads its projectors before it draws a frame: the same file stops `serve` with 2.
+  const fs::path node = write("node.toml", "[sky]\nmodel = \"preetham\"\n[[channel]]\nname = \"p1\"\n[channel.projector]\nmpcdi = \"" +
+                                              mpcdi + "\"\nregion = \"p9\"\n");
+  const Result served = run("serve --config " + node.string() + " --headless --listen 127.0.0.1:0 --frames 1");
+  EXPECT_EQ(served.exitCode, 2) << served.err;
+  EXPECT_NE(served.err.find("\"p9\""), std::string::npos) << served.err;
   EXPECT_EQ(imageFiles(), 1u);  // the mesh file only: no image
 }
 

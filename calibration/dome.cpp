@@ -15,17 +15,6 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-// Body frame <-> the ENU frame of an ownship at zero attitude, where the sky's cameras live:
-// eyeToEnu({}, offset) == bodyToEnu(offset) == bodyToEnu({}) * (eye -> body rotation).
-const glm::dmat3& bodyToWorld() {
-  static const glm::dmat3 m = skyig::sky::bodyToEnu({});
-  return m;
-}
-const glm::dmat3& worldToBody() {
-  static const glm::dmat3 m = glm::inverse(bodyToWorld());
-  return m;
-}
-
 std::string projectorName(const DomeProjector& p, std::size_t index) {
   return p.name.empty() ? "projector " + std::to_string(index + 1) : "projector '" + p.name + "'";
 }
@@ -47,8 +36,7 @@ RegionCamera coverFootprint(const std::vector<glm::dvec3>& directions, const glm
   camera.offset.yawDeg = std::atan2(forward.y, forward.x) / kDeg;
   camera.offset.rollDeg = std::atan2(right.z, down.z) / kDeg;
   // Measure the extremes in the frame the sky's camera math builds from those angles.
-  const glm::dmat3 eyeToBody = worldToBody() * skyig::sky::bodyToEnu(camera.offset);
-  const glm::dmat3 bodyToEye = glm::transpose(eyeToBody);
+  const glm::dmat3 bodyToEye = glm::transpose(eyeToBody(camera.offset));
   double left = 0.0, rightDeg = 0.0, up = 0.0, downDeg = 0.0;
   for (const auto& d : directions) {
     const glm::dvec3 c = bodyToEye * d;
@@ -112,7 +100,7 @@ DomeGeometry::DomeGeometry(const Dome& dome) : dome_(dome) {
       if (!(a > -89.0 && a <= 89.0)) throw CalibrationError(name + ": lens half-angle " + std::to_string(a) + " is outside (-89, 89]");
     if (!(p.lens.leftDeg + p.lens.rightDeg > 0.0 && p.lens.downDeg + p.lens.upDeg > 0.0))
       throw CalibrationError(name + ": the lens has no width or no height");
-    const glm::dmat3 m = worldToBody() * skyig::sky::ndcToWorld(skyig::sky::eyeToEnu({}, p.orientation), p.lens);
+    const glm::dmat3 m = calibration::ndcToBody(p.orientation, p.lens);  // the member of that name is per projector
     ndcToBody_.push_back(m);
     bodyToNdc_.push_back(glm::inverse(m));
   }

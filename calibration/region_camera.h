@@ -12,6 +12,13 @@
 
 namespace skyig::calibration {
 
+// A camera of the body frame (a channel's, a region's or a projector lens's): the eye's axes in
+// the body frame, and (x_ndc, y_ndc, 1) -> the body-frame ray through that image point. The
+// sky's cameras work in ENU for an ownship's attitude; at zero attitude that is the body frame
+// turned by bodyToEnu({}), which these take out.
+glm::dmat3 eyeToBody(const skyig::sky::Attitude& offset);
+glm::dmat3 ndcToBody(const skyig::sky::Attitude& offset, const skyig::sky::Frustum& frustum);
+
 // The unit body-frame direction through image point `uv` of `camera`.
 glm::dvec3 directionOfUv(const RegionCamera& camera, const glm::dvec2& uv);
 

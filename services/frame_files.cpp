@@ -18,21 +18,27 @@ std::string frameStem(const std::string& dir, std::uint64_t frame, const ephemer
       .string();
 }
 
-int writeFrameFiles(const render::SkyRenderer& renderer, const std::string& stem, const sky::ChannelConfig& channel,
-                    bool exr, bool png, const render::ImageAttributes& attributes,
-                    const calibration::ProjectorCalibration* projector) {
+int writeFrameImages(const render::SkyRenderer& renderer, const std::string& exrPath, const std::string& pngPath,
+                     const sky::ChannelConfig& channel, const render::ImageAttributes& attributes,
+                     const calibration::ProjectorCalibration* projector) {
   int written = 0;
-  if (exr) {
+  if (!exrPath.empty()) {
     render::ImageAttributes all = attributes;
     if (projector) addProjectorAttributes(all, *projector);
-    render::writeExr(stem + ".exr", projector ? renderer.readProjectorHdr() : renderer.readHdr(), all);
+    render::writeExr(exrPath, projector ? renderer.readProjectorHdr() : renderer.readHdr(), all);
     ++written;
   }
-  if (png) {
-    render::writePng(stem + ".png", projector ? renderer.readProjectorDisplay() : renderer.readDisplay(), channel.display.gamma);
+  if (!pngPath.empty()) {
+    render::writePng(pngPath, projector ? renderer.readProjectorDisplay() : renderer.readDisplay(), channel.display.gamma);
     ++written;
   }
   return written;
+}
+
+int writeFrameFiles(const render::SkyRenderer& renderer, const std::string& stem, const sky::ChannelConfig& channel,
+                    bool exr, bool png, const render::ImageAttributes& attributes,
+                    const calibration::ProjectorCalibration* projector) {
+  return writeFrameImages(renderer, exr ? stem + ".exr" : "", png ? stem + ".png" : "", channel, attributes, projector);
 }
 
 }  // namespace skyig::services

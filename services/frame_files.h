@@ -25,4 +25,10 @@ int writeFrameFiles(const render::SkyRenderer& renderer, const std::string& stem
                     bool exr, bool png, const render::ImageAttributes& attributes,
                     const calibration::ProjectorCalibration* projector = nullptr);
 
+// The same to named files (`skyig render`'s --exr and --png; "" writes none), for any path
+// render/output_file.h accepts.
+int writeFrameImages(const render::SkyRenderer& renderer, const std::string& exrPath, const std::string& pngPath,
+                     const sky::ChannelConfig& channel, const render::ImageAttributes& attributes,
+                     const calibration::ProjectorCalibration* projector = nullptr);
+
 }  // namespace skyig::services

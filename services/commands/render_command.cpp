@@ -6,6 +6,7 @@
 #include "render/output_file.h"
 #include "render/sky_renderer.h"
 #include "services/commands/common_options.h"
+#include "services/frame_files.h"
 #include "services/frame_metadata.h"
 #include "services/projector_channel.h"
 #include "services/sky_data.h"
@@ -103,15 +104,10 @@ int run(const RenderOptions& opt) {
     // --projector: what the projector is sent (PNG) and the light it adds to the screen (EXR).
     if (opt.projector) renderer.drawProjector(state, c, projected[i].projector);
     else renderer.draw(state, c);
-    if (!opt.exrPath.empty()) {
-      render::ImageAttributes attributes = frameAttributes(state, state.observer.attitude, c);
-      if (opt.projector) addProjectorAttributes(attributes, *projected[i].projector);
-      render::writeExr(outPath(opt.exrPath, c), opt.projector ? renderer.readProjectorHdr() : renderer.readHdr(),
-                       attributes);
-    }
-    if (!opt.pngPath.empty())
-      render::writePng(outPath(opt.pngPath, c), opt.projector ? renderer.readProjectorDisplay() : renderer.readDisplay(),
-                       c.display.gamma);
+    writeFrameImages(renderer, opt.exrPath.empty() ? "" : outPath(opt.exrPath, c),
+                     opt.pngPath.empty() ? "" : outPath(opt.pngPath, c), c,
+                     frameAttributes(state, state.observer.attitude, c),
+                     opt.projector ? projected[i].projector.get() : nullptr);
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     const int w = opt.projector ? projected[i].projector->width : c.width;
     const int h = opt.projector ? projected[i].projector->height : c.height;

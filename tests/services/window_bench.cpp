@@ -5,6 +5,7 @@
 // present_ms is the windows' fence wait and swaps alone.
 // Figures: docs/performance.md, "Presentation".
 #include "services/display_outputs.h"
+#include "tests/services/window_ring.h"
 
 #include <benchmark/benchmark.h>
 
@@ -16,19 +17,7 @@ namespace {
 
 using namespace skyig;
 
-std::vector<sky::ChannelConfig> ring(int n) {
-  std::vector<sky::ChannelConfig> channels;
-  for (int i = 0; i < n; ++i) {
-    sky::ChannelConfig c;
-    c.name = "c" + std::to_string(i);
-    c.offset.yawDeg = 72.0 * i;
-    c.frustum = {36.0, 36.0, 10.0, 30.0};
-    c.width = 160;
-    c.height = 120;
-    channels.push_back(c);
-  }
-  return channels;
-}
+std::vector<sky::ChannelConfig> ring(int n) { return services::testing::windowRing(n, 160, 120); }
 
 void frames(benchmark::State& s, bool headless) {
   if (!headless && !std::getenv("DISPLAY")) {

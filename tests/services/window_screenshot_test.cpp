@@ -6,6 +6,7 @@
 #include "render/gl/swap_group.h"
 #include "calibration/load.h"
 #include "services/display_outputs.h"
+#include "tests/services/window_ring.h"
 
 #include <gtest/gtest.h>
 
@@ -129,21 +130,7 @@ class XScreenshots {
   Display* x_;
 };
 
-// N channels of 64x48 around the horizon, 72 deg apart, under a low sun (gradients and a
-// bright side, so a wrong channel or a shifted row shows).
-std::vector<sky::ChannelConfig> ring(int n) {
-  std::vector<sky::ChannelConfig> channels;
-  for (int i = 0; i < n; ++i) {
-    sky::ChannelConfig c;
-    c.name = "c" + std::to_string(i);
-    c.offset.yawDeg = 72.0 * i;
-    c.frustum = {36.0, 36.0, 10.0, 30.0};
-    c.width = 64;
-    c.height = 48;
-    channels.push_back(c);
-  }
-  return channels;
-}
+std::vector<sky::ChannelConfig> ring(int n) { return services::testing::windowRing(n, 64, 48); }
 
 class WindowScreenshots : public ::testing::TestWithParam<int> {
  protected:

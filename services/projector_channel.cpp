@@ -1,6 +1,7 @@
 #include "services/projector_channel.h"
 
 #include "calibration/load.h"
+#include "render/sky_renderer.h"
 
 #include <string>
 
@@ -22,10 +23,7 @@ ProjectorChannel loadProjectorChannel(const sky::ChannelConfig& channel, const P
   } catch (const calibration::CalibrationError& e) {
     throw ConfigError(std::string(e.what()) + " (channel " + channel.name + "'s projector)");
   }
-  if (projector->cameraGiven) {  // else (MPCDI 2d, a Bourke mesh) the channel's own camera
-    out.channel.offset = projector->camera.offset;
-    out.channel.frustum = projector->camera.frustum;
-  }
+  out.channel = render::SkyRenderer::projectorChannel(channel, *projector);  // the camera the renderer draws
   if (!settings.sizeGiven) {
     if (projector->width < sky::kMinChannelSide || projector->width > sky::kMaxChannelSide ||
         projector->height < sky::kMinChannelSide || projector->height > sky::kMaxChannelSide)

@@ -32,6 +32,7 @@ built=$((SECONDS - start))
 labels="^($(IFS='|'; echo "${targets[*]}"))\$"
 status=0
 (cd "$dir" && ctest --output-on-failure --parallel "$(nproc)" --timeout 600 -L "$labels") || status=$?
+[ "$status" -eq 0 ] || bash deploy/show-failures.sh "$dir"
 result=passed
 [ "$status" -eq 0 ] || result=FAILED
 echo "test-sanitize: ${result}: ${targets[*]} under -fsanitize=${sanitizers}" \

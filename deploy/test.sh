@@ -5,4 +5,7 @@ cd "$(dirname "$0")/.."
 bash deploy/setup.sh
 bash deploy/build.sh -DSKYIG_WERROR=ON
 cd build
-ctest --output-on-failure --parallel "$(nproc)" --timeout 600
+status=0
+ctest --output-on-failure --parallel "$(nproc)" --timeout 600 || status=$?
+[ "$status" -eq 0 ] || bash ../deploy/show-failures.sh .
+exit "$status"

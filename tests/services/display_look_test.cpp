@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -87,6 +88,13 @@ class DisplayLook : public ::testing::Test {
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
 
+  // What the last run printed (stdout and stderr), for a failure's message.
+  std::string said() const {
+    std::stringstream words;
+    words << std::ifstream(dir_ / "out.txt").rdbuf();
+    return words.str();
+  }
+
   Frame read(const std::string& stem) const {
     Frame f;
     png_image image{};
@@ -105,7 +113,7 @@ class DisplayLook : public ::testing::Test {
   Frame render(const std::string& scene) {
     const int code = run("--config " + config().string() + " " + scene + " --png " + (dir_ / "f.png").string() +
                          " --exr " + (dir_ / "f.exr").string());
-    EXPECT_EQ(code, 0) << scene;
+    EXPECT_EQ(code, 0) << scene << "; skyig said:\n" << said();
     return read("f");
   }
 
@@ -222,7 +230,7 @@ TEST_F(DisplayLook, ChannelsSharingAnEdgeMatchThere) {
   ASSERT_EQ(run("--config " + config(channels).string() +
                 " --sun-azimuth 30 --sun-elevation -4 --yaw 0 --all-channels --png " + (dir_ / "e.png").string() +
                 " --exr " + (dir_ / "e.exr").string()),
-            0);
+            0) << said();
   const Frame a = read("e_a"), b = read("e_b");
   double sum = 0.0;
   for (int y = 0; y < a.height; ++y)

@@ -7,12 +7,9 @@
 #include "calibration/load.h"
 #include "services/display_outputs.h"
 #include "tests/services/window_ring.h"
+#include "tests/virtual_x.h"
 
 #include <gtest/gtest.h>
-
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <bit>
 #include <cstdlib>
@@ -29,40 +26,7 @@ namespace {
 
 using namespace skyig;
 
-// An Xvfb of this test's own: -displayfd makes the server pick a free display number and write
-// it to our pipe once it accepts connections (Xserver(1)).
-class VirtualX {
- public:
-  VirtualX() {
-    int fds[2];
-    if (::pipe(fds) != 0) return;
-    pid_ = ::fork();
-    if (pid_ == 0) {
-      ::close(fds[0]);
-      const std::string fd = std::to_string(fds[1]);
-      ::execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1024x256x24", "-nolisten", "tcp",
-               "-noreset", static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
-    ::close(fds[1]);
-    std::string number;
-    char c;
-    while (::read(fds[0], &c, 1) == 1 && c != '\n') number += c;
-    ::close(fds[0]);
-    if (!number.empty()) display_ = ":" + number;
-  }
-  ~VirtualX() {
-    if (pid_ > 0) {
-      ::kill(pid_, SIGTERM);
-      ::waitpid(pid_, nullptr, 0);
-    }
-  }
-  const std::string& display() const { return display_; }
-
- private:
-  pid_t pid_ = -1;
-  std::string display_;
-};
+using skyig::testing::VirtualX;
 
 VirtualX* gX = nullptr;
 

@@ -9,10 +9,16 @@
 set(SKYIG_SANITIZE "" CACHE STRING "Sanitizers for every target, e.g. address,undefined or thread")
 string(REPLACE "," ";" SKYIG_SANITIZERS "${SKYIG_SANITIZE}")
 
-# skyig_sanitizer_defaults(TARGET): TARGET (an executable) runs with the defaults; nothing
-# without SKYIG_SANITIZE.
+# skyig_sanitizer_defaults(TARGET [NO_EXIT_LEAK_CHECK]): TARGET (an executable) runs with the
+# defaults; nothing without SKYIG_SANITIZE. NO_EXIT_LEAK_CHECK: the skyig program's (see
+# tests/sanitizers/sanitizer_defaults.cpp.in).
 function(skyig_sanitizer_defaults target)
-  if(TARGET skyig_sanitizer_defaults)
+  if(NOT TARGET skyig_sanitizer_defaults)
+    return()
+  endif()
+  if("${ARGN}" STREQUAL "NO_EXIT_LEAK_CHECK")
+    target_link_libraries(${target} PRIVATE skyig_sanitizer_defaults_no_exit_leak_check)
+  else()
     target_link_libraries(${target} PRIVATE skyig_sanitizer_defaults)
   endif()
 endfunction()
@@ -49,3 +55,5 @@ file(READ ${dir}/lsan.supp SKYIG_LSAN_SUPPRESSIONS)
 file(READ ${dir}/tsan.supp SKYIG_TSAN_SUPPRESSIONS)
 configure_file(${dir}/sanitizer_defaults.cpp.in ${PROJECT_BINARY_DIR}/sanitizer_defaults.cpp @ONLY)
 add_library(skyig_sanitizer_defaults OBJECT ${PROJECT_BINARY_DIR}/sanitizer_defaults.cpp)
+add_library(skyig_sanitizer_defaults_no_exit_leak_check OBJECT ${PROJECT_BINARY_DIR}/sanitizer_defaults.cpp)
+target_compile_definitions(skyig_sanitizer_defaults_no_exit_leak_check PRIVATE SKYIG_NO_EXIT_LEAK_CHECK)

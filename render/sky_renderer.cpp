@@ -99,9 +99,10 @@ void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sk
     physical_->use(state.conditions.atmosphere);
     // The tables on screen may still be the previous model's while a new one uploads; both
     // share the planet, so the camera is the same.
+    // The moonlit sky only where it changes what the displays show (sky/shown_layers.h).
     physical_->draw(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
-                    skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection, state.moonlightScale,
-                    state.sunRefraction);
+                    skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection,
+                    state.shown.moonlitSky ? state.moonlightScale : glm::dvec3(0.0), state.sunRefraction);
     return;
   }
   skyProgram_.use();
@@ -161,7 +162,9 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
                               float ditherLsb) {
   drawSkyPass(state, attitude, channel);
   if (state.ephemeris) (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, channel);
-  if (state.ephemeris) (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
+  // The night's own light only where it changes what the displays show (sky/shown_layers.h).
+  if (state.ephemeris && state.shown.nightLight)
+    (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
   if (!stars_) stars_ = std::make_unique<StarPass>();
   const glm::dmat3 ndcToWorld = skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(attitude, channel.offset), channel.frustum);
   glBindVertexArray(emptyVao_);

@@ -156,6 +156,7 @@ void mapForDisplays(SkyState& state, const std::vector<DisplayParams>& displays)
     for (const auto& [e, curve] : state.toneCurves) seen = seen || e == d;
     if (!seen) state.toneCurves.emplace_back(d, toneCurveFor(state, d));
   }
+  if (state.viewLight) state.shown = shownLayers(*state.viewLight, displays, state.toneCurves);
 }
 
 std::optional<night::NightDiffuseSky> nightDiffuseSky(const SkyState& state) {
@@ -214,6 +215,7 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
   const ViewSphere sphere = viewSphere(s);
   s.histogram = sphere.histogram;
   s.sceneLuminance = s.adaptationLuminance = sphere.meanLuminance;
+  s.viewLight = sphere.cells;
   return s;
 }
 

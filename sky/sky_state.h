@@ -12,6 +12,7 @@
 #include "sky/eye/glare.h"
 #include "sky/eye/tone_curve.h"
 #include "sky/observer.h"
+#include "sky/shown_layers.h"
 #include "sky/atmosphere/model.h"
 #include "sky/night/moon_disc.h"
 #include "sky/night/moon_light.h"
@@ -55,6 +56,11 @@ struct SkyState {
   // The display mapping for each display the state will be shown on, computed with the state
   // (toneCurveFor); a display without one is mapped on demand.
   std::vector<std::pair<DisplayParams, eye::ToneCurve>> toneCurves;
+  // The view sphere's light by source, and which faint layers change what those displays show
+  // (sky/shown_layers.h; mapForDisplays decides): the renderer draws only those. Both shown
+  // until a state is mapped for its displays.
+  std::shared_ptr<const std::vector<ViewCellLight>> viewLight;
+  ShownLayers shown;
   // Transmittance to space by elevation at the observer, for everything beyond the atmosphere
   // (moon, planets, stars, Milky Way, zodiacal light): the physical model's medium, or the
   // default medium under an analytic sky. Shared between states of nearly the same altitude.

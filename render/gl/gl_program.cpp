@@ -7,8 +7,8 @@
 
 namespace skyig::render {
 
-GLuint compileShaderStage(GLenum stage, const std::string& path) {
-  const AssembledShader source = assembleShader(path);
+GLuint compileShaderStage(GLenum stage, const std::string& path, const std::string& defines) {
+  const AssembledShader source = assembleShader(path, defines);
   const GLuint shader = glCreateShader(stage);
   const char* text = source.text.c_str();
   glShaderSource(shader, 1, &text, nullptr);
@@ -21,7 +21,7 @@ GLuint compileShaderStage(GLenum stage, const std::string& path) {
     std::vector<char> log(static_cast<size_t>(length) + 1, '\0');
     glGetShaderInfoLog(shader, length, nullptr, log.data());
     glDeleteShader(shader);
-    throw ShaderCompileError("compiling " + path + ":\n" + annotateCompilerLog(log.data(), source.files));
+    throw ShaderCompileError("compiling " + path + (defines.empty() ? "" : " with " + defines) + ":\n" + annotateCompilerLog(log.data(), source.files));
   }
   return shader;
 }
@@ -44,11 +44,11 @@ GLuint linkProgram(std::initializer_list<GLuint> shaders, const std::string& wha
   return program;
 }
 
-GlProgram::GlProgram(const std::string& vertexPath, const std::string& fragmentPath) {
-  const GLuint vs = compileShaderStage(GL_VERTEX_SHADER, vertexPath);
+GlProgram::GlProgram(const std::string& vertexPath, const std::string& fragmentPath, const std::string& defines) {
+  const GLuint vs = compileShaderStage(GL_VERTEX_SHADER, vertexPath, defines);
   GLuint fs = 0;
   try {
-    fs = compileShaderStage(GL_FRAGMENT_SHADER, fragmentPath);
+    fs = compileShaderStage(GL_FRAGMENT_SHADER, fragmentPath, defines);
   } catch (...) {
     glDeleteShader(vs);
     throw;

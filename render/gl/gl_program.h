@@ -14,9 +14,9 @@ class ShaderCompileError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// One stage of an embedded shader file, compiled; throws ShaderCompileError with the compiler's
-// messages mapped to the real files and lines.
-GLuint compileShaderStage(GLenum stage, const std::string& path);
+// One stage of an embedded shader file, compiled with `defines` (assembleShader); throws
+// ShaderCompileError with the compiler's messages mapped to the real files and lines.
+GLuint compileShaderStage(GLenum stage, const std::string& path, const std::string& defines = {});
 
 // A program of `shaders`, which it deletes (linked or not); throws ShaderCompileError with the
 // linker's log, naming `what`.
@@ -24,7 +24,8 @@ GLuint linkProgram(std::initializer_list<GLuint> shaders, const std::string& wha
 
 class GlProgram {
  public:
-  GlProgram(const std::string& vertexPath, const std::string& fragmentPath);
+  // `defines` go to both stages (a variant of the same files: assembleShader).
+  GlProgram(const std::string& vertexPath, const std::string& fragmentPath, const std::string& defines = {});
   ~GlProgram();
   GlProgram(const GlProgram&) = delete;
   GlProgram& operator=(const GlProgram&) = delete;

@@ -51,9 +51,10 @@ void expand(std::string_view path, AssembledShader& out, std::vector<std::string
 
 }  // namespace
 
-AssembledShader assembleShader(std::string_view path) {
+AssembledShader assembleShader(std::string_view path, std::string_view defines) {
   AssembledShader out;
   out.text = "#version 450 core\n";
+  out.text += defines;
   std::vector<std::string> stack;
   expand("common/glsl_prelude.glsl", out, stack);
   expand(path, out, stack);

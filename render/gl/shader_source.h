@@ -19,8 +19,9 @@ class ShaderSourceError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Throws ShaderSourceError for a missing file or an include cycle.
-AssembledShader assembleShader(std::string_view path);
+// Throws ShaderSourceError for a missing file or an include cycle. `defines` (lines such as
+// "#define SKYIG_MOONLIT\n") follow the version line: one file, several compiled variants.
+AssembledShader assembleShader(std::string_view path, std::string_view defines = {});
 
 // Rewrites "0:12(5): error ..." style compiler messages as "sky/x.glsl:12(5): error ...".
 std::string annotateCompilerLog(std::string_view log, const std::vector<std::string>& files);

@@ -39,8 +39,8 @@ glm::vec3 f3(const glm::dvec3& v) { return glm::vec3(v); }
 
 }  // namespace
 
-PhysicalSkyPass::Program::Program(const char* fragment)
-    : program("passes/fullscreen.vert", fragment),
+PhysicalSkyPass::Program::Program(const char* vertex, const char* fragment, const char* defines)
+    : program(vertex, fragment, defines),
       camera(glGetUniformLocation(program.id(), "camera")),
       sun(glGetUniformLocation(program.id(), "sunDirectionP")),
       sunRefraction(glGetUniformLocation(program.id(), "sunRefraction")),
@@ -52,8 +52,10 @@ PhysicalSkyPass::Program::Program(const char* fragment)
 
 PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame)
     : slicesPerFrame_(slicesPerFrame),
-      inside_("passes/physical_sky.frag"),
-      space_("passes/physical_sky_space.frag"),
+      inside_("passes/fullscreen.vert", "passes/physical_sky.frag"),
+      insideMoonlit_("passes/fullscreen.vert", "passes/physical_sky.frag", "#define SKYIG_MOONLIT\n"),
+      sunDisc_("passes/sun_disc.vert", "passes/physical_sky.frag", "#define SKYIG_SUN_DISC\n"),
+      space_("passes/fullscreen.vert", "passes/physical_sky_space.frag"),
       sliceProgram_("passes/fullscreen.vert", "passes/physical_sky_slice.frag"),
       sliceCoordsLocation_(glGetUniformLocation(sliceProgram_.id(), "sliceCoords")) {
   if (slicesPerFrame < 1) throw std::invalid_argument("PhysicalSkyPass: slices per frame " + std::to_string(slicesPerFrame) + " must be at least 1");
@@ -106,7 +108,7 @@ std::size_t PhysicalSkyPass::uploadSlices(const TableSet& set, const atmosphere:
 void PhysicalSkyPass::makeCurrent(TableSet set) {
   releaseSet(current_);
   current_ = std::move(set);
-  for (const Program* program : {&inside_, &space_}) {
+  for (const Program* program : {&inside_, &insideMoonlit_, &sunDisc_, &space_}) {
     const GLuint p = program->program.id();
     setAtmosphereUniforms(p, "atm", current_.model->parameters(0));
     glProgramUniform3fv(p, glGetUniformLocation(p, "solarIrradianceXyz"), 1, &f3(current_.small.solarIrradianceXyz)[0]);
@@ -202,62 +204,89 @@ void PhysicalSkyPass::stepUpload() {
   lastUploadSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirection, const glm::dvec3& moonDirection,
-                           const glm::dvec3& moonlightScale, const glm::dvec4& sunRefraction) {
-  stepUpload();
-  if (!current_.model) throw std::logic_error("PhysicalSkyPass::draw before use()");
-  // The camera inside the atmosphere (every IG frame): what every pixel shares, in double, once.
-  const atmosphere::AtmosphereParameters& a = current_.model->parameters(0);
-  const double r = glm::length(camera);
-  const Program& program = r <= a.top_radius ? inside_ : space_;
+void PhysicalSkyPass::setFrameUniforms(const Program& program, const glm::dvec3& camera,
+                                       const glm::dvec3& sunDirection, const glm::dvec4& sunRefraction,
+                                       const glm::vec4& radii, const glm::vec3& angles) {
   const GLuint p = program.program.id();
-  const bool moon = moonlightScale != glm::dvec3(0.0);
-  glBindTextureUnit(SKYIG_UNIT_SCATTERING, current_.scattering);
-  glBindTextureUnit(SKYIG_UNIT_SINGLE_MIE, current_.singleMie);
-  if (&program == &inside_) {
-    const glm::dvec4 sunUvwz = shader::scatteringUvwzFromRMuMuSNu(a, r, 1.0, std::clamp(glm::dot(camera, sunDirection) / r, -1.0, 1.0), 0.0, false);
-    const glm::dvec4 moonUvwz = shader::scatteringUvwzFromRMuMuSNu(a, r, 1.0, std::clamp(glm::dot(camera, moonDirection) / r, -1.0, 1.0), 0.0, false);
-    const double rho = std::sqrt(std::max(r * r - a.bottom_radius * a.bottom_radius, 0.0));
-    const double h = std::sqrt(a.top_radius * a.top_radius - a.bottom_radius * a.bottom_radius);
-    glProgramUniform4f(p, program.radii, static_cast<float>(r), static_cast<float>(rho), static_cast<float>(h),
-                       static_cast<float>(sunUvwz.w));
-    // The cone the refracted disc can fall in, around the airless sun: its radius, the lift of
-    // its centre and the change of that lift across it, with room to spare. Only the pixels
-    // within it take unrefractView's transcendentals.
-    const double radius = a.sun_angular_radius;
-    const double reach = radius + std::abs(sunRefraction.y) +
-                         2.0 * (std::abs(sunRefraction.z) * radius + std::abs(sunRefraction.w) * radius * radius);
-    glProgramUniform3f(p, program.angles, static_cast<float>(sunUvwz.y), static_cast<float>(moonUvwz.y),
-                       static_cast<float>(std::cos(1.1 * reach)));
-    // This frame's slices of the tables at r and each light's u_mu_s, into small targets; the
-    // caller's target and viewport come back after.
-    ensureSlices();
-    GLint target = 0;
-    GLint viewport[4] = {0, 0, 0, 0};
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    drawSlice(sunSlice_, sunUvwz.y, sunUvwz.w);
-    if (moon) drawSlice(moonSlice_, moonUvwz.y, moonUvwz.w);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    glBindTextureUnit(SKYIG_UNIT_SUN_SLICE_SCATTERING, sunSlice_.scattering);
-    glBindTextureUnit(SKYIG_UNIT_SUN_SLICE_SINGLE_MIE, sunSlice_.singleMie);
-    glBindTextureUnit(SKYIG_UNIT_MOON_SLICE_SCATTERING, moonSlice_.scattering);
-    glBindTextureUnit(SKYIG_UNIT_MOON_SLICE_SINGLE_MIE, moonSlice_.singleMie);
-  }
+  glProgramUniform4fv(p, program.radii, 1, &radii[0]);
+  glProgramUniform3fv(p, program.angles, 1, &angles[0]);
   glProgramUniform3fv(p, program.camera, 1, &f3(camera)[0]);
   glProgramUniform3fv(p, program.sun, 1, &f3(sunDirection)[0]);
   const glm::vec4 refraction(sunRefraction);
   glProgramUniform4fv(p, program.sunRefraction, 1, &refraction[0]);
-  glProgramUniform1i(p, program.moonOn, moon ? 1 : 0);
-  if (moon) {
-    glProgramUniform3fv(p, program.moonDirection, 1, &f3(moonDirection)[0]);
-    glProgramUniform3fv(p, program.moonScale, 1, &f3(moonlightScale)[0]);
-  }
+}
+
+void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirection, const glm::dvec3& moonDirection,
+                           const glm::dvec3& moonlightScale, const glm::dvec4& sunRefraction) {
+  stepUpload();
+  if (!current_.model) throw std::logic_error("PhysicalSkyPass::draw before use()");
+  const atmosphere::AtmosphereParameters& a = current_.model->parameters(0);
+  const double r = glm::length(camera);
+  const bool moon = moonlightScale != glm::dvec3(0.0);
+  glBindTextureUnit(SKYIG_UNIT_SCATTERING, current_.scattering);
+  glBindTextureUnit(SKYIG_UNIT_SINGLE_MIE, current_.singleMie);
   glBindTextureUnit(SKYIG_UNIT_TRANSMITTANCE, current_.transmittance);
   glBindTextureUnit(SKYIG_UNIT_IRRADIANCE, current_.irradiance);
-  program.program.use();
+  if (r > a.top_radius) {  // from space: the general program, the moon a uniform branch
+    const GLuint p = space_.program.id();
+    setFrameUniforms(space_, camera, sunDirection, sunRefraction, glm::vec4(0.0f), glm::vec3(0.0f));
+    glProgramUniform1i(p, space_.moonOn, moon ? 1 : 0);
+    glProgramUniform3fv(p, space_.moonDirection, 1, &f3(moonDirection)[0]);
+    glProgramUniform3fv(p, space_.moonScale, 1, &f3(moonlightScale)[0]);
+    space_.program.use();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    return;
+  }
+  // The camera inside the atmosphere (every IG frame): what every pixel shares, in double, once.
+  const glm::dvec4 sunUvwz = shader::scatteringUvwzFromRMuMuSNu(a, r, 1.0, std::clamp(glm::dot(camera, sunDirection) / r, -1.0, 1.0), 0.0, false);
+  const glm::dvec4 moonUvwz = shader::scatteringUvwzFromRMuMuSNu(a, r, 1.0, std::clamp(glm::dot(camera, moonDirection) / r, -1.0, 1.0), 0.0, false);
+  const double rho = std::sqrt(std::max(r * r - a.bottom_radius * a.bottom_radius, 0.0));
+  const double h = std::sqrt(a.top_radius * a.top_radius - a.bottom_radius * a.bottom_radius);
+  const glm::vec4 radii(static_cast<float>(r), static_cast<float>(rho), static_cast<float>(h), static_cast<float>(sunUvwz.w));
+  // The cone the refracted disc can fall in, around the airless sun: its radius, the lift of
+  // its centre and the change of that lift across it, with room to spare. Only the pixels
+  // within it take unrefractView's transcendentals: the disc's quad covers it.
+  const double radius = a.sun_angular_radius;
+  const double reach = radius + std::abs(sunRefraction.y) +
+                       2.0 * (std::abs(sunRefraction.z) * radius + std::abs(sunRefraction.w) * radius * radius);
+  const glm::vec3 angles(static_cast<float>(sunUvwz.y), static_cast<float>(moonUvwz.y),
+                         static_cast<float>(std::cos(1.1 * reach)));
+  // This frame's slices of the tables at r and each light's u_mu_s, into small targets; the
+  // caller's target and viewport come back after.
+  ensureSlices();
+  GLint target = 0;
+  GLint viewport[4] = {0, 0, 0, 0};
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  drawSlice(sunSlice_, sunUvwz.y, sunUvwz.w);
+  if (moon) drawSlice(moonSlice_, moonUvwz.y, moonUvwz.w);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  glBindTextureUnit(SKYIG_UNIT_SUN_SLICE_SCATTERING, sunSlice_.scattering);
+  glBindTextureUnit(SKYIG_UNIT_SUN_SLICE_SINGLE_MIE, sunSlice_.singleMie);
+  glBindTextureUnit(SKYIG_UNIT_MOON_SLICE_SCATTERING, moonSlice_.scattering);
+  glBindTextureUnit(SKYIG_UNIT_MOON_SLICE_SINGLE_MIE, moonSlice_.singleMie);
+
+  // The sky and ground, with the moon's light only when it lights the sky.
+  const Program& sky = moon ? insideMoonlit_ : inside_;
+  setFrameUniforms(sky, camera, sunDirection, sunRefraction, radii, angles);
+  if (moon) {
+    glProgramUniform3fv(sky.program.id(), sky.moonDirection, 1, &f3(moonDirection)[0]);
+    glProgramUniform3fv(sky.program.id(), sky.moonScale, 1, &f3(moonlightScale)[0]);
+  }
+  sky.program.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  // Then the disc on its quad, added (the quad clips away when the sun is behind the camera).
+  setFrameUniforms(sunDisc_, camera, sunDirection, sunRefraction, radii, angles);
+  GLboolean blending = GL_FALSE;
+  glGetBooleanv(GL_BLEND, &blending);
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  glBlendFunc(GL_ONE, GL_ONE);
+  sunDisc_.program.use();
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  if (!blending) glDisable(GL_BLEND);
 }
 
 }  // namespace skyig::render

@@ -71,10 +71,11 @@ class PhysicalSkyPass {
   void makeCurrent(TableSet set);
   void stepUpload();
 
-  // One of the two programs (camera inside the atmosphere / in space) and its per-frame
-  // uniforms, looked up once: draw() runs every frame.
+  // One of the programs (camera inside the atmosphere with or without the moonlit sky, the sun
+  // disc's quad, the camera in space) and its per-frame uniforms, looked up once: draw() runs
+  // every frame.
   struct Program {
-    explicit Program(const char* fragment);
+    Program(const char* vertex, const char* fragment, const char* defines = "");
     GlProgram program;
     GLint camera, sun, sunRefraction, moonOn, moonDirection, moonScale, radii, angles;
   };
@@ -83,12 +84,16 @@ class PhysicalSkyPass {
   struct Slice {
     GLuint scattering = 0, singleMie = 0, framebuffer = 0;
   };
+  static void setFrameUniforms(const Program& program, const glm::dvec3& camera, const glm::dvec3& sunDirection,
+                               const glm::dvec4& sunRefraction, const glm::vec4& radii, const glm::vec3& angles);
   void ensureSlices();
   void releaseSlices();
   void drawSlice(const Slice& slice, double uMuS, double uR);
 
   int slicesPerFrame_;
-  Program inside_;
+  Program inside_;         // the sun's sky and ground
+  Program insideMoonlit_;  // the same and the moon's
+  Program sunDisc_;        // the disc alone, on its quad, added
   Program space_;
   GlProgram sliceProgram_;
   GLint sliceCoordsLocation_ = -1;

@@ -91,13 +91,22 @@ int run(const RenderOptions& opt) {
   std::FILE* report = opt.exrPath == "-" || opt.pngPath == "-" ? stderr : stdout;
   loadSkyData(config);
 
-  const sky::SkyState state = sky::buildSkyState(config.observer, config.sky, opt.sky.sunOverride());
+  sky::SkyState state = sky::buildSkyState(config.observer, config.sky, opt.sky.sunOverride());
+  // Mapped for the channels' displays as the node maps its states: the same curves, and the
+  // same faint layers left out where no display would show them (sky/shown_layers.h).
+  std::vector<sky::DisplayParams> displays;
+  for (const sky::ChannelConfig& c : channels) displays.push_back(c.display);
+  sky::mapForDisplays(state, displays);
   const auto context = render::createHeadlessContext();
   spdlog::info("GL: {} ({}, {})", context->info().renderer, context->info().version, context->info().platform);
   render::SkyRenderer renderer;
   std::fprintf(report, "sky: %s, sun azimuth %.2f deg, altitude %.2f deg, adaptation %.4g cd/m^2\n",
                std::string(sky::toString(state.conditions.model)).c_str(), state.sunAzimuth / kDeg,
                state.sunAltitude / kDeg, state.adaptationLuminance);
+  if (state.ephemeris)
+    spdlog::info("sky: moonlit sky {}, the night's own light {} (sky/shown_layers.h)",
+                 state.shown.moonlitSky ? "drawn" : "left out, no display would show it",
+                 state.shown.nightLight ? "drawn" : "left out, no display would show it");
   for (std::size_t i = 0; i < channels.size(); ++i) {
     const sky::ChannelConfig& c = channels[i];
     const auto start = std::chrono::steady_clock::now();

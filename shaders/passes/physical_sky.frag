@@ -2,9 +2,16 @@
 // shafts) from the tables folded into linear Rec.709 (atmosphere/rendering_rec709.glsl): the
 // sky scattered into the view ray, the limb-darkened sun disc and, where the ray meets the
 // ground, the Lambertian ground attenuated by the air in between; one lookup set per pixel
-// whatever the number of wavelengths. A second light (the moon: Jensen et al. 2001, the same
-// tables lit from its direction times its irradiance relative to the sun's) adds its sky and
-// ground when moonlightOn, a uniform branch.
+// whatever the number of wavelengths. A second light, the moon (Jensen et al. 2001: the same
+// tables lit from its direction times its irradiance relative to the sun's), adds its sky and
+// ground.
+// Variants, not branches: llvmpipe runs both sides of a branch for every pixel, so a frame pays
+// only for what it shows by compiling this file several ways (PhysicalSkyPass builds each):
+//   (none)          the sun's sky and ground, over the whole channel;
+//   SKYIG_MOONLIT   the same with the moon's sky and ground, when the moon lights the sky;
+//   SKYIG_SUN_DISC  the disc alone, drawn on a small quad around the sun (passes/sun_disc.vert)
+//                   and added to what the sky variant drew (the disc covers ~1e-5 of the pixels
+//                   that would otherwise all evaluate its test).
 // With the camera inside the atmosphere (every IG frame), r, u_r and u_mu_s are the same for
 // every pixel and come from the CPU (PhysicalSkyPass::draw): the scattering tables are read
 // from this frame's 2D slices (physical_sky_slice.frag); only u_mu and u_nu are per pixel.
@@ -48,6 +55,23 @@ float frameUMu(float rmu, bool ground, out float d) {
   return 0.5 + 0.5 * textureCoordFromUnitRange((d - d_min) / (rho + H - d_min), atm.scattering_mu_size / 2.0);
 }
 
+#ifdef SKYIG_SUN_DISC
+// The disc as seen: refracted and flattened (common/refraction.glsl), where the airless
+// direction this pixel sees falls on the airless sun; nothing over the ground or outside the
+// cone (frameAngles.z) the refracted disc can fall in.
+vec3 sunDiscRec709(vec3 view) {
+  float r = frameRadii.x;
+  if (rayIntersectsGround(atm, r, dot(camera, view) / r) || dot(view, sunDirectionP) < frameAngles.z) return vec3(0.0);
+  vec3 airless = unrefractView(view, sunRefraction);
+  return xyzToRec709Linear(packedRefractedSunDiscXyz(atm, transmittanceXyz, solarIrradianceXyz, limbDarkeningXyz,
+                                                     camera, view, airless, sunDirectionP));
+}
+
+void main() {
+  // Added to the sky (blend ONE, ONE); alpha 0 keeps the sky's.
+  outRadiance = vec4(max(sunDiscRec709(normalize(vViewRay)), vec3(0.0)), 0.0);
+}
+#else
 vec3 insideRec709(vec3 view) {
   float r = frameRadii.x;
   float rmu = dot(camera, view);
@@ -59,26 +83,20 @@ vec3 insideRec709(vec3 view) {
   if (ground) {
     rgb += packedGroundReflectionRec709(atm, transmittanceXyz, irradianceXyz, solarIrradianceXyz,
                                         groundAlbedo, camera, view, d, sunDirectionP);
-  } else if (nu >= frameAngles.z) {
-    // The disc as seen: refracted and flattened (common/refraction.glsl), where the airless
-    // direction this pixel sees falls on the airless sun.
-    vec3 airless = unrefractView(view, sunRefraction);
-    rgb += xyzToRec709Linear(packedRefractedSunDiscXyz(atm, transmittanceXyz, solarIrradianceXyz,
-                                                       limbDarkeningXyz, camera, view, airless,
-                                                       sunDirectionP));
   }
-  if (moonlightOn) {
-    float nu_moon = dot(view, moonDirectionP);
-    vec3 moon = sliceScatteredRec709(moonSliceScattering, moonSliceSingleMie, u_mu, nu_moon);
-    if (ground) {
-      moon += packedGroundReflectionRec709(atm, transmittanceXyz, irradianceXyz, solarIrradianceXyz,
-                                           groundAlbedo, camera, view, d, moonDirectionP);
-    }
-    rgb += moonlightScale * moon;
+#ifdef SKYIG_MOONLIT
+  float nu_moon = dot(view, moonDirectionP);
+  vec3 moon = sliceScatteredRec709(moonSliceScattering, moonSliceSingleMie, u_mu, nu_moon);
+  if (ground) {
+    moon += packedGroundReflectionRec709(atm, transmittanceXyz, irradianceXyz, solarIrradianceXyz,
+                                         groundAlbedo, camera, view, d, moonDirectionP);
   }
+  rgb += moonlightScale * moon;
+#endif
   return rgb;
 }
 
 void main() {
   outRadiance = vec4(max(insideRec709(normalize(vViewRay)), vec3(0.0)), 1.0);
 }
+#endif

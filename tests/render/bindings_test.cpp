@@ -51,6 +51,7 @@ Expect optional(Expect e) {
 struct ProgramCase {
   std::vector<std::string> files;
   std::vector<Expect> expect;
+  std::string defines = {};  // a variant of the files (assembleShader)
 };
 
 std::vector<ProgramCase> programs() {
@@ -71,6 +72,15 @@ std::vector<ProgramCase> programs() {
         sampler("warpMap", SKYIG_UNIT_PROJECTOR_WARP), sampler("alphaMap", SKYIG_UNIT_PROJECTOR_ALPHA),
         sampler("betaMap", SKYIG_UNIT_PROJECTOR_BETA), output("outDisplay", SKYIG_OUTPUT_PROJECTOR_DISPLAY),
         output("outLight", SKYIG_OUTPUT_PROJECTOR_LIGHT)}},
+      // Its variants (passes/physical_sky.frag): the sun's sky, the same moonlit, the disc's quad.
+      {{"passes/fullscreen.vert", "passes/physical_sky.frag"},
+       {frame, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE),
+        optional(sampler("scatteringPacked", SKYIG_UNIT_SCATTERING)),
+        optional(sampler("singleMieRG", SKYIG_UNIT_SINGLE_MIE)), sampler("irradianceXyz", SKYIG_UNIT_IRRADIANCE),
+        sampler("sunSliceScattering", SKYIG_UNIT_SUN_SLICE_SCATTERING),
+        sampler("sunSliceSingleMie", SKYIG_UNIT_SUN_SLICE_SINGLE_MIE),
+        optional(sampler("moonSliceScattering", SKYIG_UNIT_MOON_SLICE_SCATTERING)),
+        optional(sampler("moonSliceSingleMie", SKYIG_UNIT_MOON_SLICE_SINGLE_MIE)), radiance}},
       {{"passes/fullscreen.vert", "passes/physical_sky.frag"},
        {frame, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE),
         optional(sampler("scatteringPacked", SKYIG_UNIT_SCATTERING)),
@@ -78,7 +88,17 @@ std::vector<ProgramCase> programs() {
         sampler("sunSliceScattering", SKYIG_UNIT_SUN_SLICE_SCATTERING),
         sampler("sunSliceSingleMie", SKYIG_UNIT_SUN_SLICE_SINGLE_MIE),
         sampler("moonSliceScattering", SKYIG_UNIT_MOON_SLICE_SCATTERING),
-        sampler("moonSliceSingleMie", SKYIG_UNIT_MOON_SLICE_SINGLE_MIE), radiance}},
+        sampler("moonSliceSingleMie", SKYIG_UNIT_MOON_SLICE_SINGLE_MIE), radiance},
+       "#define SKYIG_MOONLIT\n"},
+      {{"passes/sun_disc.vert", "passes/physical_sky.frag"},
+       {frame, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE),
+        optional(sampler("scatteringPacked", SKYIG_UNIT_SCATTERING)),
+        optional(sampler("singleMieRG", SKYIG_UNIT_SINGLE_MIE)), optional(sampler("irradianceXyz", SKYIG_UNIT_IRRADIANCE)),
+        optional(sampler("sunSliceScattering", SKYIG_UNIT_SUN_SLICE_SCATTERING)),
+        optional(sampler("sunSliceSingleMie", SKYIG_UNIT_SUN_SLICE_SINGLE_MIE)),
+        optional(sampler("moonSliceScattering", SKYIG_UNIT_MOON_SLICE_SCATTERING)),
+        optional(sampler("moonSliceSingleMie", SKYIG_UNIT_MOON_SLICE_SINGLE_MIE)), radiance},
+       "#define SKYIG_SUN_DISC\n"},
       {{"passes/fullscreen.vert", "passes/physical_sky_space.frag"},
        {frame, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE), sampler("scatteringPacked", SKYIG_UNIT_SCATTERING),
         sampler("singleMieRG", SKYIG_UNIT_SINGLE_MIE), sampler("irradianceXyz", SKYIG_UNIT_IRRADIANCE), radiance}},
@@ -222,9 +242,10 @@ std::vector<Resource> activeBindings(GLuint program) {
   return out;
 }
 
-GLuint link(const std::vector<std::string>& files) {
-  if (files.size() == 1) return linkProgram({compileShaderStage(GL_COMPUTE_SHADER, files[0])}, files[0]);
-  return linkProgram({compileShaderStage(GL_VERTEX_SHADER, files[0]), compileShaderStage(GL_FRAGMENT_SHADER, files[1])},
+GLuint link(const std::vector<std::string>& files, const std::string& defines) {
+  if (files.size() == 1) return linkProgram({compileShaderStage(GL_COMPUTE_SHADER, files[0], defines)}, files[0]);
+  return linkProgram({compileShaderStage(GL_VERTEX_SHADER, files[0], defines),
+                      compileShaderStage(GL_FRAGMENT_SHADER, files[1], defines)},
                      files[0] + " + " + files[1]);
 }
 
@@ -265,8 +286,9 @@ TEST(Bindings, EveryPassUsesTheSharedUnits) {
   for (const ProgramCase& c : cases) {
     std::string what = c.files[0];
     if (c.files.size() > 1) what += " + " + c.files[1];
+    if (!c.defines.empty()) what += " with " + c.defines;
     SCOPED_TRACE(what);
-    const GLuint program = link(c.files);
+    const GLuint program = link(c.files, c.defines);
     const std::vector<Resource> active = activeBindings(program);
     const bool compute = c.files.size() == 1;
     std::map<std::string, std::map<GLint, std::string>> taken;  // kind -> number -> name

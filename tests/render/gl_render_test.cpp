@@ -564,3 +564,66 @@ TEST_F(GlRender, HazyHorizonHasNoDarkLine) {
     EXPECT_GT(darkest, 0.95 * std::min(ground, above)) << "looking at azimuth " << yaw;
   }
 }
+
+namespace {
+
+// The state of `utc` (ISO 8601) at the default site under the small physical tables, looking
+// along `yaw`, mapped for `c`'s display as the sky worker maps it.
+SkyState mappedState(const char* utc, double yaw, const ChannelConfig& c) {
+  ObserverState o;
+  o.utc = *ephemeris::parseIso8601Utc(utc);
+  o.attitude = {yaw, 0.0, 0.0};
+  SkyState s = buildSkyState(o, physicalConditions(smallModel()));
+  mapForDisplays(s, {c.display});
+  return s;
+}
+
+// Display codes (RGB) differing by more than one, and by exactly one.
+std::pair<int, int> codeDifferences(const DisplayImage& a, const DisplayImage& b) {
+  int moreThanOne = 0, one = 0;
+  for (std::size_t i = 0; i < a.rgba.size(); ++i) {
+    if (i % 4 == 3) continue;
+    const int d = std::abs(int(a.rgba[i]) - int(b.rgba[i]));
+    moreThanOne += d > 1 ? 1 : 0;
+    one += d == 1 ? 1 : 0;
+  }
+  return {moreThanOne, one};
+}
+
+}  // namespace
+
+// Faint layers no display would show are left out of the frame (sky/shown_layers.h): the
+// moonlit sky by day (the moon 25 deg up, the sun 20 deg), both in civil twilight. The frame drawn without them shows the codes of the frame drawn with every layer:
+// none differs by more than one, and under 1% by one (the float sum's last bit under the
+// dither). On a moonlit and on a moonless night the layers are drawn.
+TEST_F(GlRender, LayersLeftOutChangeNoDisplayCode) {
+  const ChannelConfig c = channel(10.0, Frustum{40, 40, 30, 30});
+  struct Case {
+    const char* utc;
+    double yaw;
+    bool moonlit, night;
+  };
+  // The moon up by day; the sun 5 deg down in the north-west after a June sunset (the night's
+  // light is first shown at about -8 deg, the moonlit sky at -6.6); a full moon rising; a
+  // moonless December night.
+  for (const Case& k : {Case{"2026-06-23T17:00:00Z", 150.0, false, false},
+                        Case{"2026-06-21T19:45:00Z", 315.0, false, false},
+                        Case{"2026-12-24T20:00:00Z", 60.0, true, true},
+                        Case{"2026-12-09T22:00:00Z", 180.0, false, true}}) {
+    SkyState s = mappedState(k.utc, k.yaw, c);
+    std::printf("%s: sun %.1f deg, adaptation %.3g cd/m^2, moonlit sky %s, night light %s\n", k.utc,
+                s.sunAltitude / kDeg, s.adaptationLuminance, s.shown.moonlitSky ? "drawn" : "left out",
+                s.shown.nightLight ? "drawn" : "left out");
+    EXPECT_EQ(s.shown.moonlitSky, k.moonlit) << k.utc;
+    EXPECT_EQ(s.shown.nightLight, k.night) << k.utc;
+    renderer_->draw(s, c);
+    const DisplayImage shown = renderer_->readDisplay();
+    s.shown = ShownLayers{};  // every layer
+    renderer_->draw(s, c);
+    const DisplayImage all = renderer_->readDisplay();
+    const auto [moreThanOne, one] = codeDifferences(shown, all);
+    if (k.moonlit && k.night) continue;  // nothing was left out
+    EXPECT_EQ(moreThanOne, 0) << k.utc;
+    EXPECT_LT(one, kW * kH * 3 / 100) << k.utc;
+  }
+}

@@ -1,0 +1,40 @@
+#pragma once
+// Which of a state's faint layers can change what its displays show, decided once per state on
+// the worker from the view sphere's light by source (sky/view_sphere.h) and the displays' tone
+// curves (sky/eye/tone_curve.h): the moonlit sky in daylight, or the night's own light
+// (airglow, zodiacal light, the Milky Way, their light on the terrain) at dusk, adds far less
+// than the eye can see and changes no display code. The renderer then neither compiles the
+// moonlit sky into its sky pass nor draws the diffuse night pass: every pixel pays only for
+// what it shows. A layer is shown when, in some cell of the view sphere on some display, it
+// moves the displayed value by kShownCodes of an 8-bit code or more with its light multiplied
+// by a margin: the cells are ~0.4 sr wide and their mean hides the moon's aureole (margin 10)
+// and the Milky Way's bright clouds, which the cells leave out, and the display maps the mesopic
+// rather than the photopic luminance (margin 8 for the night's light).
+#include "sky/channel.h"
+#include "sky/eye/tone_curve.h"
+#include "sky/view_sphere.h"
+
+#include <utility>
+#include <vector>
+
+namespace skyig::sky {
+
+inline constexpr double kShownCodes = 0.25;
+inline constexpr double kMoonlitSkyMargin = 10.0;
+inline constexpr double kNightLightMargin = 8.0;
+
+struct ShownLayers {
+  bool moonlitSky = true;
+  bool nightLight = true;
+};
+
+// Both true where a display has no tone curve (Tumblin-Rushmeier maps each pixel by itself) or
+// there are no cells.
+ShownLayers shownLayers(const std::vector<ViewCellLight>& cells, const std::vector<DisplayParams>& displays,
+                        const std::vector<std::pair<DisplayParams, eye::ToneCurve>>& curves);
+
+// The displayed 8-bit code (0-255, unrounded) of a grey world luminance through `curve` on
+// `display` (the tone pass's mapping, shaders/tone/display_curve.glsl, for a grey).
+double displayedCode(double worldCdM2, const eye::ToneCurve& curve, const DisplayParams& display);
+
+}  // namespace skyig::sky

@@ -76,7 +76,7 @@ SkyRenderer::~SkyRenderer() { glDeleteVertexArrays(1, &emptyVao_); }
 
 void SkyRenderer::ensureTargets(int width, int height) {
   if (hdr_ && hdr_->width() == width && hdr_->height() == height) return;
-  hdr_ = std::make_unique<RenderTarget>(width, height, GL_RGBA32F);
+  hdr_ = std::make_unique<RenderTarget>(width, height, GL_RGBA32F, true);
   display_ = std::make_unique<RenderTarget>(width, height, GL_RGBA8);
   pointSources_ = std::make_unique<RenderTarget>(width, height, GL_RGBA16F);
   displayValues_ = std::make_unique<RenderTarget>(width, height, GL_RGBA16F);

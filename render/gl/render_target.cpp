@@ -6,17 +6,24 @@
 
 namespace skyig::render {
 
-RenderTarget::RenderTarget(int width, int height, GLenum internalFormat) : width_(width), height_(height) {
+RenderTarget::RenderTarget(int width, int height, GLenum internalFormat, bool depth)
+    : width_(width), height_(height) {
   glCreateTextures(GL_TEXTURE_2D, 1, &texture_);
   glTextureStorage2D(texture_, 1, internalFormat, width, height);
   glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glCreateFramebuffers(1, &framebuffer_);
   glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, texture_, 0);
+  if (depth) {
+    glCreateRenderbuffers(1, &depth_);
+    glNamedRenderbufferStorage(depth_, GL_DEPTH_COMPONENT16, width, height);
+    glNamedFramebufferRenderbuffer(framebuffer_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+  }
   const GLenum status = glCheckNamedFramebufferStatus(framebuffer_, GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     glDeleteFramebuffers(1, &framebuffer_);
     glDeleteTextures(1, &texture_);
+    if (depth_) glDeleteRenderbuffers(1, &depth_);
     throw GlContextError("framebuffer of " + std::to_string(width) + "x" + std::to_string(height) +
                          " is incomplete (status 0x" + std::to_string(status) + ")");
   }
@@ -25,6 +32,7 @@ RenderTarget::RenderTarget(int width, int height, GLenum internalFormat) : width
 RenderTarget::~RenderTarget() {
   glDeleteFramebuffers(1, &framebuffer_);
   glDeleteTextures(1, &texture_);
+  if (depth_) glDeleteRenderbuffers(1, &depth_);
 }
 
 void RenderTarget::bindForDrawing() const {

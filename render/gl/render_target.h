@@ -1,12 +1,13 @@
 #pragma once
-// A colour texture with its framebuffer object, sized for one channel.
+// A colour texture with its framebuffer object, sized for one channel; with `depth`, a depth
+// buffer too (the physical sky pass draws the ground's rays and the sky's apart with it).
 #include <glad/gl.h>
 
 namespace skyig::render {
 
 class RenderTarget {
  public:
-  RenderTarget(int width, int height, GLenum internalFormat);
+  RenderTarget(int width, int height, GLenum internalFormat, bool depth = false);
   ~RenderTarget();
   RenderTarget(const RenderTarget&) = delete;
   RenderTarget& operator=(const RenderTarget&) = delete;
@@ -22,6 +23,7 @@ class RenderTarget {
   int height_;
   GLuint texture_ = 0;
   GLuint framebuffer_ = 0;
+  GLuint depth_ = 0;
 };
 
 }  // namespace skyig::render

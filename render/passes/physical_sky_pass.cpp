@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <numbers>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace skyig::render {
 
@@ -39,7 +41,7 @@ glm::vec3 f3(const glm::dvec3& v) { return glm::vec3(v); }
 
 }  // namespace
 
-PhysicalSkyPass::Program::Program(const char* vertex, const char* fragment, const char* defines)
+PhysicalSkyPass::Program::Program(const char* vertex, const char* fragment, const std::string& defines)
     : program(vertex, fragment, defines),
       camera(glGetUniformLocation(program.id(), "camera")),
       sun(glGetUniformLocation(program.id(), "sunDirectionP")),
@@ -48,16 +50,23 @@ PhysicalSkyPass::Program::Program(const char* vertex, const char* fragment, cons
       moonDirection(glGetUniformLocation(program.id(), "moonDirectionP")),
       moonScale(glGetUniformLocation(program.id(), "moonlightScale")),
       radii(glGetUniformLocation(program.id(), "frameRadii")),
-      angles(glGetUniformLocation(program.id(), "frameAngles")) {}
+      angles(glGetUniformLocation(program.id(), "frameAngles")),
+      groundCap(glGetUniformLocation(program.id(), "groundCap")) {}
 
 PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame)
     : slicesPerFrame_(slicesPerFrame),
-      inside_("passes/fullscreen.vert", "passes/physical_sky.frag"),
-      insideMoonlit_("passes/fullscreen.vert", "passes/physical_sky.frag", "#define SKYIG_MOONLIT\n"),
       sunDisc_("passes/sun_disc.vert", "passes/physical_sky.frag", "#define SKYIG_SUN_DISC\n"),
       space_("passes/fullscreen.vert", "passes/physical_sky_space.frag"),
       sliceProgram_("passes/fullscreen.vert", "passes/physical_sky_slice.frag"),
       sliceCoordsLocation_(glGetUniformLocation(sliceProgram_.id(), "sliceCoords")) {
+  for (int moonlit = 0; moonlit < 2; ++moonlit)
+    for (int part = kBoth; part <= kGround; ++part) {
+      std::string defines = moonlit ? "#define SKYIG_MOONLIT\n" : "";
+      if (part == kSky) defines += "#define SKYIG_SKY\n";
+      if (part == kGround) defines += "#define SKYIG_GROUND\n";
+      inside_[moonlit][part] = std::make_unique<Program>(
+          part == kGround ? "passes/ground_cap.vert" : "passes/fullscreen.vert", "passes/physical_sky.frag", defines);
+    }
   if (slicesPerFrame < 1) throw std::invalid_argument("PhysicalSkyPass: slices per frame " + std::to_string(slicesPerFrame) + " must be at least 1");
 }
 
@@ -108,7 +117,10 @@ std::size_t PhysicalSkyPass::uploadSlices(const TableSet& set, const atmosphere:
 void PhysicalSkyPass::makeCurrent(TableSet set) {
   releaseSet(current_);
   current_ = std::move(set);
-  for (const Program* program : {&inside_, &insideMoonlit_, &sunDisc_, &space_}) {
+  std::vector<const Program*> programs = {&sunDisc_, &space_};
+  for (const auto& variants : inside_)
+    for (const auto& v : variants) programs.push_back(v.get());
+  for (const Program* program : programs) {
     const GLuint p = program->program.id();
     setAtmosphereUniforms(p, "atm", current_.model->parameters(0));
     glProgramUniform3fv(p, glGetUniformLocation(p, "solarIrradianceXyz"), 1, &f3(current_.small.solarIrradianceXyz)[0]);
@@ -267,15 +279,47 @@ void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   glBindTextureUnit(SKYIG_UNIT_MOON_SLICE_SCATTERING, moonSlice_.scattering);
   glBindTextureUnit(SKYIG_UNIT_MOON_SLICE_SINGLE_MIE, moonSlice_.singleMie);
 
-  // The sky and ground, with the moon's light only when it lights the sky.
-  const Program& sky = moon ? insideMoonlit_ : inside_;
-  setFrameUniforms(sky, camera, sunDirection, sunRefraction, radii, angles);
-  if (moon) {
-    glProgramUniform3fv(sky.program.id(), sky.moonDirection, 1, &f3(moonDirection)[0]);
-    glProgramUniform3fv(sky.program.id(), sky.moonScale, 1, &f3(moonlightScale)[0]);
+  // The sky and ground, with the moon's light only when it lights the sky: into a target with
+  // depth, the ground's rays first on the cap below the horizon, then the sky's where the
+  // ground wrote no depth (early depth testing skips the ground's pixels); else both at once.
+  auto prepare = [&](const Program& program) {
+    setFrameUniforms(program, camera, sunDirection, sunRefraction, radii, angles);
+    if (moon) {
+      glProgramUniform3fv(program.program.id(), program.moonDirection, 1, &f3(moonDirection)[0]);
+      glProgramUniform3fv(program.program.id(), program.moonScale, 1, &f3(moonlightScale)[0]);
+    }
+    program.program.use();
+  };
+  GLint depthType = GL_NONE;
+  if (target != 0)
+    glGetNamedFramebufferAttachmentParameteriv(static_cast<GLuint>(target), GL_DEPTH_ATTACHMENT,
+                                               GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &depthType);
+  if (depthType == GL_NONE) {
+    prepare(insideProgram(moon, kBoth));
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  } else {
+    const Program& ground = insideProgram(moon, kGround);
+    prepare(ground);
+    // The ring a little above the horizon (mu = -sqrt(1 - (Rg/r)^2)): 0.1 deg encloses the
+    // horizon's circle whatever the fan's chords cut (2 pi / 256)^2 / 8 = 7.5e-5 rad inside it.
+    constexpr int kSegments = 256;
+    const double horizon = std::asin(-std::sqrt(std::max(0.0, 1.0 - (a.bottom_radius / r) * (a.bottom_radius / r))));
+    const double ring = horizon + 0.1 * std::numbers::pi / 180.0;
+    glProgramUniform3f(ground.program.id(), ground.groundCap, static_cast<float>(std::sin(ring)),
+                       static_cast<float>(std::cos(ring)), static_cast<float>(kSegments));
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    glClearDepth(1.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glDepthFunc(GL_ALWAYS);
+    glDrawArrays(GL_TRIANGLES, 0, 3 * kSegments);
+    prepare(insideProgram(moon, kSky));
+    glDepthFunc(GL_LESS);  // both at depth 0.5: the sky only where the clear's 1 is left
+    glDepthMask(GL_FALSE);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_DEPTH_TEST);
   }
-  sky.program.use();
-  glDrawArrays(GL_TRIANGLES, 0, 3);
 
   // Then the disc on its quad, added (the quad clips away when the sun is behind the camera).
   setFrameUniforms(sunDisc_, camera, sunDirection, sunRefraction, radii, angles);

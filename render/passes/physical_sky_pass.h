@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -71,14 +72,17 @@ class PhysicalSkyPass {
   void makeCurrent(TableSet set);
   void stepUpload();
 
-  // One of the programs (camera inside the atmosphere with or without the moonlit sky, the sun
-  // disc's quad, the camera in space) and its per-frame uniforms, looked up once: draw() runs
-  // every frame.
+  // One of the programs (a variant of the sky inside the atmosphere, the sun disc's quad, the
+  // camera in space) and its per-frame uniforms, looked up once: draw() runs every frame.
   struct Program {
-    Program(const char* vertex, const char* fragment, const char* defines = "");
+    Program(const char* vertex, const char* fragment, const std::string& defines = "");
     GlProgram program;
-    GLint camera, sun, sunRefraction, moonOn, moonDirection, moonScale, radii, angles;
+    GLint camera, sun, sunRefraction, moonOn, moonDirection, moonScale, radii, angles, groundCap;
   };
+  // Which rays a variant of physical_sky.frag draws: both (a target without depth), the sky's
+  // (where the ground's wrote no depth), the ground's (first, on the cap below the horizon).
+  enum Part { kBoth = 0, kSky = 1, kGround = 2 };
+  const Program& insideProgram(bool moonlit, Part part) const { return *inside_[moonlit ? 1 : 0][part]; }
 
   // This frame's 2D slice of the scattering tables for one light (physical_sky_slice.frag).
   struct Slice {
@@ -91,9 +95,9 @@ class PhysicalSkyPass {
   void drawSlice(const Slice& slice, double uMuS, double uR);
 
   int slicesPerFrame_;
-  Program inside_;         // the sun's sky and ground
-  Program insideMoonlit_;  // the same and the moon's
-  Program sunDisc_;        // the disc alone, on its quad, added
+  // Inside the atmosphere, by [moonlit][part]: the sun's sky and ground, and the moon's.
+  std::array<std::array<std::unique_ptr<Program>, 3>, 2> inside_;
+  Program sunDisc_;  // the disc alone, on its quad, added
   Program space_;
   GlProgram sliceProgram_;
   GLint sliceCoordsLocation_ = -1;

@@ -11,7 +11,13 @@
 //   SKYIG_MOONLIT   the same with the moon's sky and ground, when the moon lights the sky;
 //   SKYIG_SUN_DISC  the disc alone, drawn on a small quad around the sun (passes/sun_disc.vert)
 //                   and added to what the sky variant drew (the disc covers ~1e-5 of the pixels
-//                   that would otherwise all evaluate its test).
+//                   that would otherwise all evaluate its test);
+//   SKYIG_GROUND    the rays that meet the ground only, drawn first on the cap of directions
+//                   below the horizon (passes/ground_cap.vert; a pixel whose ray misses the
+//                   ground is discarded, so the cap's polygon need not be exact) writing depth;
+//   SKYIG_SKY       the rays that miss it, drawn after over the whole channel where the ground
+//                   variant wrote no depth: the sky's pixels never pay for the ground's
+//                   reflection. Neither: both, for a target without depth.
 // With the camera inside the atmosphere (every IG frame), r, u_r and u_mu_s are the same for
 // every pixel and come from the CPU (PhysicalSkyPass::draw): the scattering tables are read
 // from this frame's 2D slices (physical_sky_slice.frag); only u_mu and u_nu are per pixel.
@@ -75,7 +81,14 @@ void main() {
 vec3 insideRec709(vec3 view) {
   float r = frameRadii.x;
   float rmu = dot(camera, view);
+#if defined(SKYIG_SKY)
+  const bool ground = false;
+#else
   bool ground = rayIntersectsGround(atm, r, rmu / r);
+#if defined(SKYIG_GROUND)
+  if (!ground) discard;
+#endif
+#endif
   float d;
   float u_mu = frameUMu(rmu, ground, d);
   float nu = dot(view, sunDirectionP);

@@ -50,9 +50,9 @@ PhysicalSkyPass::Program::Program(const char* fragment)
       radii(glGetUniformLocation(program.id(), "frameRadii")),
       angles(glGetUniformLocation(program.id(), "frameAngles")) {}
 
-PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame)
+PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame, const char* insideFragment)
     : slicesPerFrame_(slicesPerFrame),
-      inside_("passes/physical_sky.frag"),
+      inside_(insideFragment),
       space_("passes/physical_sky_space.frag"),
       sliceProgram_("passes/fullscreen.vert", "passes/physical_sky_slice.frag"),
       sliceCoordsLocation_(glGetUniformLocation(sliceProgram_.id(), "sliceCoords")) {

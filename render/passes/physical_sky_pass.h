@@ -23,7 +23,10 @@ class PhysicalSkyPass {
   // Scattering slices (radii) a frame packs and uploads while a new model is pending: 2 of the
   // default tables (256 x 128 texels each) cost a few ms of CPU (docs/atmosphere.md).
   static constexpr int kDefaultSlicesPerFrame = 2;
-  explicit PhysicalSkyPass(int slicesPerFrame = kDefaultSlicesPerFrame);
+  // insideFragment: the fragment shader drawn with the camera inside the atmosphere; another
+  // one with the same inputs only for the frozen reference (render/passes/reference_sky_pass.h).
+  explicit PhysicalSkyPass(int slicesPerFrame = kDefaultSlicesPerFrame,
+                           const char* insideFragment = "passes/physical_sky.frag");
   ~PhysicalSkyPass();
   PhysicalSkyPass(const PhysicalSkyPass&) = delete;
   PhysicalSkyPass& operator=(const PhysicalSkyPass&) = delete;

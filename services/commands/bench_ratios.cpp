@@ -77,7 +77,7 @@ struct Item {
 struct Ratio {
   const char* key;
   const char* what;
-  int numerator, denominator;
+  const char *numerator, *denominator;  // Item keys
   double factor = 1.0;
 };
 
@@ -109,6 +109,11 @@ int runRatiosBench(NodeConfig config, const RatiosOptions& opt) {
   const sky::SkyState day = buildScene(config, kDay);
   const sky::SkyState moonlit = buildScene(config, kMoonlit);
   const sky::SkyState moonless = buildScene(config, kMoonless);
+  // The day with the same sun forced (no ephemeris: no moon, no night passes): the frame that
+  // drawing only what is visible can reach.
+  const sky::SkyState dayForced =
+      sky::buildSkyState(day.observer, config.sky,
+                         sky::SunOverride{day.sunAzimuth * 180.0 / 3.14159265358979, day.sunAltitude * 180.0 / 3.14159265358979});
   sky::ChannelConfig channel = config.channels.front();
   channel.width = opt.width;
   channel.height = opt.height;
@@ -121,6 +126,7 @@ int runRatiosBench(NodeConfig config, const RatiosOptions& opt) {
       {"reference_sky_pass_day", "reference sky pass", &kDay, [&] { reference.drawSkyPass(day, channel); }, {}},
       {"sky_pass_day", "sky pass", &kDay, [&] { live.drawSkyPass(day, channel); }, {}},
       {"day_frame", "day frame (every pass + tone)", &kDay, [&] { live.draw(day, channel); }, {}},
+      {"day_frame_sun_forced", "day frame, sun forced (no night)", &kDay, [&] { live.draw(dayForced, channel); }, {}},
       {"moonlit_night_frame", "night frame (every pass + tone)", &kMoonlit, [&] { live.draw(moonlit, channel); }, {}},
       {"moonless_night_frame", "night frame (every pass + tone)", &kMoonless, [&] { live.draw(moonless, channel); }, {}},
       {"reference_sky_pass_moonless_night", "reference sky pass", &kMoonless,
@@ -128,13 +134,19 @@ int runRatiosBench(NodeConfig config, const RatiosOptions& opt) {
       {"sky_pass_moonless_night", "sky pass", &kMoonless, [&] { live.drawSkyPass(moonless, channel); }, {}},
   };
   const std::vector<Ratio> ratios = {
-      {"sky_pass_over_reference", "sky pass / reference (day)", 1, 0},
-      {"sky_pass_over_reference_moonless_night", "sky pass / reference (moonless night)", 6, 5},
-      {"day_frame_over_sky_pass", "day frame / sky pass", 2, 1},
-      {"moonlit_night_frame_over_day_frame", "moonlit night frame / day frame", 3, 2},
-      {"moonless_night_frame_over_day_frame", "moonless night frame / day frame", 4, 2},
-      {"bruneton_2017_estimate", "\u2248 x of Bruneton 2017 (sky pass / reference x 0.38)", 1, 0,
-       render::kReferenceOverBruneton2017},
+      {"sky_pass_over_reference", "sky pass / reference (day)", "sky_pass_day", "reference_sky_pass_day"},
+      {"sky_pass_over_reference_moonless_night", "sky pass / reference (moonless night)", "sky_pass_moonless_night",
+       "reference_sky_pass_moonless_night"},
+      {"day_frame_over_sky_pass", "day frame / sky pass", "day_frame", "sky_pass_day"},
+      {"day_frame_over_sun_forced_day_frame", "day frame / day frame with the sun forced", "day_frame",
+       "day_frame_sun_forced"},
+      {"moonlit_night_frame_over_day_frame", "moonlit night frame / day frame", "moonlit_night_frame", "day_frame"},
+      {"moonless_night_frame_over_day_frame", "moonless night frame / day frame", "moonless_night_frame", "day_frame"},
+      {"bruneton_2017_estimate", "\u2248 x of Bruneton 2017 (sky pass / reference x 0.38)", "sky_pass_day",
+       "reference_sky_pass_day", render::kReferenceOverBruneton2017},
+  };
+  const auto itemOf = [&items](const char* key) -> const Item& {
+    return *std::find_if(items.begin(), items.end(), [key](const Item& i) { return std::string(i.key) == key; });
   };
 
   std::fprintf(stderr, "bench: %s, LP_NUM_THREADS %s; compiling the passes (one frame of each)...\n",
@@ -196,8 +208,8 @@ int runRatiosBench(NodeConfig config, const RatiosOptions& opt) {
   for (const Ratio& r : ratios) {
     std::vector<double> perRound;
     for (int round = 0; round < opt.rounds; ++round)
-      perRound.push_back(r.factor * items[static_cast<std::size_t>(r.numerator)].nsPerPixel[static_cast<std::size_t>(round)] /
-                         items[static_cast<std::size_t>(r.denominator)].nsPerPixel[static_cast<std::size_t>(round)]);
+      perRound.push_back(r.factor * itemOf(r.numerator).nsPerPixel[static_cast<std::size_t>(round)] /
+                         itemOf(r.denominator).nsPerPixel[static_cast<std::size_t>(round)]);
     ratioStats.push_back(stats(perRound));
     out["ratios"][r.key] = toJson(ratioStats.back());
   }

@@ -29,12 +29,11 @@ double processCpuSeconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-// The scenes of the measurement that set "Every pixel pays only for what it shows" (at the
-// configuration's place, Innsbruck by default): an afternoon with the sun and the half moon from
-// the ephemeris, so the night passes run in daylight as they do in the node; a full-moon night
-// looking at the moon; a moonless night (new moon, below the horizon) looking south. The
-// moon block of the sky pass runs in all three (the moon lights the tables from below the
-// horizon too).
+// The scenes, at the configuration's place (Innsbruck by default): a summer afternoon, 15:00
+// UTC, with the sun and the half moon from the ephemeris, so the night passes run in daylight as
+// they do in the node; a full-moon night looking at the moon; a moonless night (new moon, below
+// the horizon) looking south. The moon block of the sky pass runs in all three (the moon lights
+// the tables from below the horizon too).
 struct Scene {
   const char* key;
   const char* what;

@@ -69,6 +69,9 @@ class SkyRenderer {
   // The physical sky pass, once a state needed it (its table upload state, for tests and
   // benchmarks); null before.
   const PhysicalSkyPass* physicalPass() const { return physical_.get(); }
+  // Draws the physical sky with `pass` from now on (the frozen reference of
+  // render/passes/reference_sky_pass.h, for its benchmark and test) instead of its own.
+  void usePhysicalSkyPass(std::unique_ptr<PhysicalSkyPass> pass) { physical_ = std::move(pass); }
 
   // The last draw's channel: its HDR image (the region's camera after drawProjector) and its
   // display frame (draw only).

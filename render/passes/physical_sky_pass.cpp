@@ -53,12 +53,13 @@ PhysicalSkyPass::Program::Program(const char* vertex, const char* fragment, cons
       angles(glGetUniformLocation(program.id(), "frameAngles")),
       groundCap(glGetUniformLocation(program.id(), "groundCap")) {}
 
-PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame)
+PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame, const char* insideFragment)
     : slicesPerFrame_(slicesPerFrame),
-      sunDisc_("passes/sun_disc.vert", "passes/physical_sky.frag", "#define SKYIG_SUN_DISC\n"),
       space_("passes/fullscreen.vert", "passes/physical_sky_space.frag"),
       sliceProgram_("passes/fullscreen.vert", "passes/physical_sky_slice.frag"),
       sliceCoordsLocation_(glGetUniformLocation(sliceProgram_.id(), "sliceCoords")) {
+  if (std::string(insideFragment) != kInsideFragment)
+    reference_ = std::make_unique<Program>("passes/fullscreen.vert", insideFragment);
   for (int moonlit = 0; moonlit < 2; ++moonlit)
     for (int part = kBoth; part <= kGround; ++part) {
       std::string defines = moonlit ? "#define SKYIG_MOONLIT\n" : "";
@@ -66,6 +67,9 @@ PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame)
       if (part == kGround) defines += "#define SKYIG_GROUND\n";
       inside_[moonlit][part] = std::make_unique<Program>(
           part == kGround ? "passes/ground_cap.vert" : "passes/fullscreen.vert", "passes/physical_sky.frag", defines);
+      if (part != kGround)
+        withDisc_[moonlit][part] = std::make_unique<Program>("passes/sun_disc.vert", "passes/physical_sky.frag",
+                                                             defines + "#define SKYIG_SUN_DISC\n");
     }
   if (slicesPerFrame < 1) throw std::invalid_argument("PhysicalSkyPass: slices per frame " + std::to_string(slicesPerFrame) + " must be at least 1");
 }
@@ -117,8 +121,11 @@ std::size_t PhysicalSkyPass::uploadSlices(const TableSet& set, const atmosphere:
 void PhysicalSkyPass::makeCurrent(TableSet set) {
   releaseSet(current_);
   current_ = std::move(set);
-  std::vector<const Program*> programs = {&sunDisc_, &space_};
+  std::vector<const Program*> programs = {&space_};
+  if (reference_) programs.push_back(reference_.get());
   for (const auto& variants : inside_)
+    for (const auto& v : variants) programs.push_back(v.get());
+  for (const auto& variants : withDisc_)
     for (const auto& v : variants) programs.push_back(v.get());
   for (const Program* program : programs) {
     const GLuint p = program->program.id();
@@ -290,13 +297,26 @@ void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
     }
     program.program.use();
   };
+  if (reference_) {  // the frozen reference: everything in one program, the moon a uniform branch
+    prepare(*reference_);
+    glProgramUniform1i(reference_->program.id(), reference_->moonOn, moon ? 1 : 0);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    return;
+  }
   GLint depthType = GL_NONE;
   if (target != 0)
     glGetNamedFramebufferAttachmentParameteriv(static_cast<GLuint>(target), GL_DEPTH_ATTACHMENT,
                                                GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &depthType);
+  // Then the quad around the sun again with the disc (it clips away when the sun is behind the
+  // camera).
+  auto drawDisc = [&](const Program& disc) {
+    prepare(disc);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  };
   if (depthType == GL_NONE) {
     prepare(insideProgram(moon, kBoth));
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    drawDisc(discProgram(moon, kBoth));
   } else {
     const Program& ground = insideProgram(moon, kGround);
     prepare(ground);
@@ -317,20 +337,10 @@ void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
     glDepthFunc(GL_LESS);  // both at depth 0.5: the sky only where the clear's 1 is left
     glDepthMask(GL_FALSE);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    drawDisc(discProgram(moon, kSky));  // where the sky is: no depth written
     glDepthMask(GL_TRUE);
     glDisable(GL_DEPTH_TEST);
   }
-
-  // Then the disc on its quad, added (the quad clips away when the sun is behind the camera).
-  setFrameUniforms(sunDisc_, camera, sunDirection, sunRefraction, radii, angles);
-  GLboolean blending = GL_FALSE;
-  glGetBooleanv(GL_BLEND, &blending);
-  glEnable(GL_BLEND);
-  glBlendEquation(GL_FUNC_ADD);
-  glBlendFunc(GL_ONE, GL_ONE);
-  sunDisc_.program.use();
-  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-  if (!blending) glDisable(GL_BLEND);
 }
 
 }  // namespace skyig::render

@@ -24,7 +24,11 @@ class PhysicalSkyPass {
   // Scattering slices (radii) a frame packs and uploads while a new model is pending: 2 of the
   // default tables (256 x 128 texels each) cost a few ms of CPU (docs/atmosphere.md).
   static constexpr int kDefaultSlicesPerFrame = 2;
-  explicit PhysicalSkyPass(int slicesPerFrame = kDefaultSlicesPerFrame);
+  // insideFragment: the fragment shader drawn with the camera inside the atmosphere; another
+  // one with the same inputs only for the frozen reference (render/passes/reference_sky_pass.h).
+  // The live pass compiles kInsideFragment in its variants.
+  static constexpr const char* kInsideFragment = "passes/physical_sky.frag";
+  explicit PhysicalSkyPass(int slicesPerFrame = kDefaultSlicesPerFrame, const char* insideFragment = kInsideFragment);
   ~PhysicalSkyPass();
   PhysicalSkyPass(const PhysicalSkyPass&) = delete;
   PhysicalSkyPass& operator=(const PhysicalSkyPass&) = delete;
@@ -83,6 +87,7 @@ class PhysicalSkyPass {
   // (where the ground's wrote no depth), the ground's (first, on the cap below the horizon).
   enum Part { kBoth = 0, kSky = 1, kGround = 2 };
   const Program& insideProgram(bool moonlit, Part part) const { return *inside_[moonlit ? 1 : 0][part]; }
+  const Program& discProgram(bool moonlit, Part part) const { return *withDisc_[moonlit ? 1 : 0][part]; }
 
   // This frame's 2D slice of the scattering tables for one light (physical_sky_slice.frag).
   struct Slice {
@@ -97,7 +102,9 @@ class PhysicalSkyPass {
   int slicesPerFrame_;
   // Inside the atmosphere, by [moonlit][part]: the sun's sky and ground, and the moon's.
   std::array<std::array<std::unique_ptr<Program>, 3>, 2> inside_;
-  Program sunDisc_;  // the disc alone, on its quad, added
+  // The same with the sun's disc, drawn again on the quad around it, by [moonlit][kBoth or kSky].
+  std::array<std::array<std::unique_ptr<Program>, 2>, 2> withDisc_;
+  std::unique_ptr<Program> reference_;  // another inside fragment, drawn alone (the reference)
   Program space_;
   GlProgram sliceProgram_;
   GLint sliceCoordsLocation_ = -1;

@@ -1,5 +1,6 @@
 #include "services/commands/bench_command.h"
 
+#include "services/commands/bench_ratios.h"
 #include "render/gl/gl_context.h"
 #include "render/sky_renderer.h"
 #include "services/commands/common_options.h"
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <ctime>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,9 @@ struct BenchOptions {
   int frames = 20;
   std::string projectorSize = "1920x1200";
   bool json = false;
+  bool ratios = false;
+  int rounds = RatiosOptions{}.rounds;
+  std::optional<int> llvmpipeThreads;
 };
 
 double cpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
@@ -100,12 +105,14 @@ double median(std::vector<double> v) {
 }
 
 int run(const BenchOptions& opt) {
+  if (opt.llvmpipeThreads) pinLlvmpipeThreads(opt.llvmpipeThreads);  // before the GL context
   NodeConfig config = opt.sky.resolve();
   loadSkyData(config);
   sky::ChannelConfig channel = config.channels.front();
   channel.width = opt.width;
   channel.height = opt.height;
-  const sky::SkyState state = sky::buildSkyState(config.observer, config.sky, opt.sky.sunOverride());
+  sky::SkyState state = sky::buildSkyState(config.observer, config.sky, opt.sky.sunOverride());
+  sky::mapForDisplays(state, {config.channels.front().display});  // as the node maps its states
   const auto context = render::createHeadlessContext();
   render::SkyRenderer renderer;
   const bool gpuTimers = !context->info().softwareRenderer;
@@ -165,11 +172,38 @@ void registerBenchCommand(CLI::App& app, int& exitCode) {
   opt->sky.add(*c);
   c->add_option("--width", opt->width, "Frame width")->check(CLI::Range(sky::kMinChannelSide, sky::kMaxChannelSide));
   c->add_option("--height", opt->height, "Frame height")->check(CLI::Range(sky::kMinChannelSide, sky::kMaxChannelSide));
-  c->add_option("--frames", opt->frames, "Timed frames")->check(CLI::Range(1, 100000));
+  c->add_option("--frames", opt->frames, "Timed frames (--ratios: per item and round, default 3)")->check(CLI::Range(1, 100000));
   c->add_option("--projector-size", opt->projectorSize,
                  "Projector resolution for the warp-and-blend pass's timing, WIDTHxHEIGHT (default 1920x1200)");
   c->add_flag("--json", opt->json, "Print the figures as JSON");
-  c->callback([opt, &exitCode] { exitCode = run(*opt); });
+  CLI::Option* ratios = c->add_flag(
+      "--ratios", opt->ratios,
+      "Same-run ratios instead: the sky pass against its frozen reference, the day and night frames against it "
+      "(process CPU per pixel, interleaved rounds; fixed scenes, one llvmpipe thread unless set)");
+  for (const char* fixed : {"--utc", "--yaw", "--pitch", "--roll", "--sun-azimuth", "--sun-elevation", "--projector-size"})
+    ratios->excludes(c->get_option(fixed));
+  c->add_option("--rounds", opt->rounds, "--ratios: rounds, each timing every item in turn (default 5)")
+      ->check(CLI::Range(1, 1000))
+      ->needs(ratios);
+  c->add_option("--llvmpipe-threads", opt->llvmpipeThreads,
+                "LP_NUM_THREADS for llvmpipe, set before the GL context (0: llvmpipe's default); --ratios uses 1 "
+                "unless this or LP_NUM_THREADS is given")
+      ->check(CLI::Range(0, 1024));
+  CLI::Option* frames = c->get_option("--frames");
+  c->callback([opt, frames, &exitCode] {
+    if (!opt->ratios) {
+      exitCode = run(*opt);
+      return;
+    }
+    RatiosOptions r;
+    r.width = opt->width;
+    r.height = opt->height;
+    r.rounds = opt->rounds;
+    if (frames->count() > 0) r.framesPerRound = opt->frames;  // else a few per round: the rounds are what repeats
+    r.llvmpipeThreads = opt->llvmpipeThreads;
+    r.json = opt->json;
+    exitCode = runRatiosBench(opt->sky.resolve(), r);
+  });
 }
 
 }  // namespace skyig::services

@@ -9,9 +9,11 @@
 // only for what it shows by compiling this file several ways (PhysicalSkyPass builds each):
 //   (none)          the sun's sky and ground, over the whole channel;
 //   SKYIG_MOONLIT   the same with the moon's sky and ground, when the moon lights the sky;
-//   SKYIG_SUN_DISC  the disc alone, drawn on a small quad around the sun (passes/sun_disc.vert)
-//                   and added to what the sky variant drew (the disc covers ~1e-5 of the pixels
-//                   that would otherwise all evaluate its test);
+//   SKYIG_SUN_DISC  with the disc, drawn again over a small quad around the sun
+//                   (passes/sun_disc.vert) after the variant without it drew the channel: the
+//                   disc covers ~1e-5 of the pixels that would otherwise all evaluate its test
+//                   (the quad's pixels are drawn twice, the sky and the disc summed before the
+//                   clamp as everywhere, so an out-of-gamut red disc keeps the sky's blue);
 //   SKYIG_GROUND    the rays that meet the ground only, drawn first on the cap of directions
 //                   below the horizon (passes/ground_cap.vert; a pixel whose ray misses the
 //                   ground is discarded, so the cap's polygon need not be exact) writing depth;
@@ -61,23 +63,6 @@ float frameUMu(float rmu, bool ground, out float d) {
   return 0.5 + 0.5 * textureCoordFromUnitRange((d - d_min) / (rho + H - d_min), atm.scattering_mu_size / 2.0);
 }
 
-#ifdef SKYIG_SUN_DISC
-// The disc as seen: refracted and flattened (common/refraction.glsl), where the airless
-// direction this pixel sees falls on the airless sun; nothing over the ground or outside the
-// cone (frameAngles.z) the refracted disc can fall in.
-vec3 sunDiscRec709(vec3 view) {
-  float r = frameRadii.x;
-  if (rayIntersectsGround(atm, r, dot(camera, view) / r) || dot(view, sunDirectionP) < frameAngles.z) return vec3(0.0);
-  vec3 airless = unrefractView(view, sunRefraction);
-  return xyzToRec709Linear(packedRefractedSunDiscXyz(atm, transmittanceXyz, solarIrradianceXyz, limbDarkeningXyz,
-                                                     camera, view, airless, sunDirectionP));
-}
-
-void main() {
-  // Added to the sky (blend ONE, ONE); alpha 0 keeps the sky's.
-  outRadiance = vec4(max(sunDiscRec709(normalize(vViewRay)), vec3(0.0)), 0.0);
-}
-#else
 vec3 insideRec709(vec3 view) {
   float r = frameRadii.x;
   float rmu = dot(camera, view);
@@ -106,10 +91,20 @@ vec3 insideRec709(vec3 view) {
   }
   rgb += moonlightScale * moon;
 #endif
+#ifdef SKYIG_SUN_DISC
+  // The disc as seen: refracted and flattened (common/refraction.glsl), where the airless
+  // direction this pixel sees falls on the airless sun, within the cone (frameAngles.z) the
+  // refracted disc can fall in.
+  if (!ground && nu >= frameAngles.z) {
+    vec3 airless = unrefractView(view, sunRefraction);
+    rgb += xyzToRec709Linear(packedRefractedSunDiscXyz(atm, transmittanceXyz, solarIrradianceXyz,
+                                                       limbDarkeningXyz, camera, view, airless,
+                                                       sunDirectionP));
+  }
+#endif
   return rgb;
 }
 
 void main() {
   outRadiance = vec4(max(insideRec709(normalize(vViewRay)), vec3(0.0)), 1.0);
 }
-#endif

@@ -6,6 +6,7 @@
 #include "shaders/common/uniforms.h"
 
 #include <algorithm>
+#include <string>
 #include <stdexcept>
 
 namespace skyig::render {
@@ -65,7 +66,6 @@ ToneBlock toToneBlock(const skyig::sky::SkyState& state, const skyig::sky::Chann
 
 SkyRenderer::SkyRenderer()
     : skyProgram_("passes/fullscreen.vert", "passes/analytic_sky.frag"),
-      toneProgram_("passes/fullscreen.vert", "passes/tone.frag"),
       frameBlock_(SKYIG_BINDING_FRAME, sizeof(FrameBlock)),
       skyBlock_(SKYIG_BINDING_SKY, sizeof(AnalyticSkyBlock)),
       toneBlock_(SKYIG_BINDING_TONE, sizeof(ToneBlock)) {
@@ -73,6 +73,16 @@ SkyRenderer::SkyRenderer()
 }
 
 SkyRenderer::~SkyRenderer() { glDeleteVertexArrays(1, &emptyVao_); }
+
+const GlProgram& SkyRenderer::toneProgram(bool tumblinRushmeier, bool glare) {
+  std::unique_ptr<GlProgram>& p = tonePrograms_[tumblinRushmeier ? 1 : 0][glare ? 1 : 0];
+  if (!p) {
+    std::string defines = tumblinRushmeier ? "#define SKYIG_TONE_TUMBLIN_RUSHMEIER\n" : "#define SKYIG_TONE_CURVE\n";
+    if (glare) defines += "#define SKYIG_GLARE\n";
+    p = std::make_unique<GlProgram>("passes/fullscreen.vert", "passes/tone.frag", defines);
+  }
+  return *p;
+}
 
 void SkyRenderer::ensureTargets(int width, int height) {
   if (hdr_ && hdr_->width() == width && hdr_->height() == height) return;
@@ -180,7 +190,10 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
   stars_->drawDisplayed(state.starField, ndcToWorld, hdr_->texture());
   glBindVertexArray(emptyVao_);
   toneTarget.bindForDrawing();
-  toneProgram_.use();
+  // The variant of the display's operator, with the glare veil only when a source gives light.
+  bool glare = false;
+  for (const auto& g : state.glare) glare = glare || g.rec709Lux != glm::dvec3(0.0);
+  toneProgram(channel.display.toneOperator != skyig::sky::ToneOperator::Histogram, glare).use();
   glBindTextureUnit(SKYIG_UNIT_HDR_IMAGE, hdr_->texture());
   glBindTextureUnit(SKYIG_UNIT_POINT_SOURCES, pointSources_->texture());
   glDrawArrays(GL_TRIANGLES, 0, 3);

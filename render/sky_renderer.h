@@ -11,6 +11,8 @@
 #include "render/gl/render_target.h"
 #include "sky/sky_state.h"
 #include "render/passes/star_pass.h"
+
+#include <array>
 #include "render/passes/warp_blend_pass.h"
 
 #include <memory>
@@ -93,7 +95,10 @@ class SkyRenderer {
   const ProjectorMaps& mapsFor(const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector);
 
   GlProgram skyProgram_;
-  GlProgram toneProgram_;
+  // The tone pass by [Tumblin-Rushmeier (else the scene's curve)][glare] (passes/tone.frag's
+  // variants), compiled when first needed.
+  const GlProgram& toneProgram(bool tumblinRushmeier, bool glare);
+  std::array<std::array<std::unique_ptr<GlProgram>, 2>, 2> tonePrograms_;
   UniformBuffer frameBlock_;
   UniformBuffer skyBlock_;
   UniformBuffer toneBlock_;

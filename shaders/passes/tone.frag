@@ -8,6 +8,9 @@
 // display luminance, into pointSourceImage, added here before the display's encoding. The
 // veiling glare of the sun and the moon (tone/glare.glsl) is added to the world's light first:
 // it is the eye's, so it is shown but not written to the EXR.
+// Variants (SkyRenderer compiles each): SKYIG_TONE_CURVE or SKYIG_TONE_TUMBLIN_RUSHMEIER, the
+// display's operator (tone/display_curve.glsl); SKYIG_GLARE when a glare source gives light. A
+// uniform branch would cost llvmpipe both sides for every pixel.
 #include "common/uniforms.h"
 #include "tone/display_curve.glsl"
 #include "tone/glare.glsl"
@@ -33,8 +36,10 @@ vec3 glareVeil(vec3 view) {
 }
 
 void main() {
-  vec3 view = normalize(mat3(ndcToWorld) * vec3(gl_FragCoord.xy * viewport.zw * 2.0 - 1.0, 1.0));
-  vec3 world = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0).rgb + glareVeil(view);
+  vec3 world = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0).rgb;
+#ifdef SKYIG_GLARE
+  world += glareVeil(normalize(mat3(ndcToWorld) * vec3(gl_FragCoord.xy * viewport.zw * 2.0 - 1.0, 1.0)));
+#endif
   DisplayModel model = toneDisplayModel();
   vec3 ld = toneMapLinear(world) + texelFetch(pointSourceImage, ivec2(gl_FragCoord.xy), 0).rgb;
   vec3 n = displayValues(compressToDisplay(ld, rec709Luminance(ld), model.ambientLuminance + model.maxLuminance), model);

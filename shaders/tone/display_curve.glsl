@@ -20,10 +20,19 @@ float curveAt(float worldLuminance) {
 }
 
 // The display luminance (cd/m^2, before the display's white) for the eye's luminance (the
-// mesopic Y of tone/scotopic.glsl).
+// mesopic Y of tone/scotopic.glsl). A program that maps every pixel (passes/tone.frag) is
+// compiled for one operator, SKYIG_TONE_CURVE or SKYIG_TONE_TUMBLIN_RUSHMEIER, since llvmpipe
+// would evaluate both sides of the uniform branch for each pixel; the per-star vertex stage
+// keeps the branch.
 float displayLuminanceFor(float eyeLuminance) {
+#if defined(SKYIG_TONE_CURVE)
+  return pow(10.0, curveAt(eyeLuminance));
+#elif defined(SKYIG_TONE_TUMBLIN_RUSHMEIER)
+  return tumblinRushmeierDisplayLuminance(eyeLuminance, adaptation.x, display.w);
+#else
   if (adaptation.z > 0.5) return tumblinRushmeierDisplayLuminance(eyeLuminance, adaptation.x, display.w);
   return pow(10.0, curveAt(eyeLuminance));
+#endif
 }
 
 // The display colour (linear Rec.709, cd/m^2) of a world colour (linear Rec.709, cd/m^2).

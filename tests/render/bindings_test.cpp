@@ -63,7 +63,12 @@ std::vector<ProgramCase> programs() {
        {frame, block("AnalyticSkyBlock", SKYIG_BINDING_SKY), radiance}},
       {{"passes/fullscreen.vert", "passes/tone.frag"},
        {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
-        sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), output("outDisplay", SKYIG_OUTPUT_COLOR)}},
+        sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), output("outDisplay", SKYIG_OUTPUT_COLOR)},
+       "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE\n"},
+      {{"passes/fullscreen.vert", "passes/tone.frag"},
+       {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
+        sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), output("outDisplay", SKYIG_OUTPUT_COLOR)},
+       "#define SKYIG_TONE_TUMBLIN_RUSHMEIER\n"},
       // PhysicalSkyPass: inside the atmosphere, from space, and this frame's slices.
       // The warp-and-blend pass of a projector (WarpBlendPass): two outputs at once.
       {{"passes/fullscreen.vert", "passes/warp_blend.frag"},

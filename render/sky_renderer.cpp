@@ -74,11 +74,12 @@ SkyRenderer::SkyRenderer()
 
 SkyRenderer::~SkyRenderer() { glDeleteVertexArrays(1, &emptyVao_); }
 
-const GlProgram& SkyRenderer::toneProgram(bool tumblinRushmeier, bool glare) {
-  std::unique_ptr<GlProgram>& p = tonePrograms_[tumblinRushmeier ? 1 : 0][glare ? 1 : 0];
+const GlProgram& SkyRenderer::toneProgram(bool tumblinRushmeier, bool glare, bool photopic) {
+  std::unique_ptr<GlProgram>& p = tonePrograms_[(tumblinRushmeier ? 4u : 0u) + (glare ? 2u : 0u) + (photopic ? 1u : 0u)];
   if (!p) {
     std::string defines = tumblinRushmeier ? "#define SKYIG_TONE_TUMBLIN_RUSHMEIER\n" : "#define SKYIG_TONE_CURVE\n";
     if (glare) defines += "#define SKYIG_GLARE\n";
+    if (photopic) defines += "#define SKYIG_PHOTOPIC\n";
     p = std::make_unique<GlProgram>("passes/fullscreen.vert", "passes/tone.frag", defines);
   }
   return *p;
@@ -190,10 +191,11 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
   stars_->drawDisplayed(state.starField, ndcToWorld, hdr_->texture());
   glBindVertexArray(emptyVao_);
   toneTarget.bindForDrawing();
-  // The variant of the display's operator, with the glare veil only when a source gives light.
+  // The variant of the display's operator, with the glare veil only when a source gives light
+  // and rod vision only where some of the view is dim enough (sky/shown_layers.h).
   bool glare = false;
   for (const auto& g : state.glare) glare = glare || g.rec709Lux != glm::dvec3(0.0);
-  toneProgram(channel.display.toneOperator != skyig::sky::ToneOperator::Histogram, glare).use();
+  toneProgram(channel.display.toneOperator != skyig::sky::ToneOperator::Histogram, glare, !state.shown.mesopic).use();
   glBindTextureUnit(SKYIG_UNIT_HDR_IMAGE, hdr_->texture());
   glBindTextureUnit(SKYIG_UNIT_POINT_SOURCES, pointSources_->texture());
   glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -95,10 +95,10 @@ class SkyRenderer {
   const ProjectorMaps& mapsFor(const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector);
 
   GlProgram skyProgram_;
-  // The tone pass by [Tumblin-Rushmeier (else the scene's curve)][glare] (passes/tone.frag's
-  // variants), compiled when first needed.
-  const GlProgram& toneProgram(bool tumblinRushmeier, bool glare);
-  std::array<std::array<std::unique_ptr<GlProgram>, 2>, 2> tonePrograms_;
+  // The tone pass's variants (passes/tone.frag): Tumblin-Rushmeier (else the scene's curve),
+  // the glare veil, photopic only; each compiled when first needed.
+  const GlProgram& toneProgram(bool tumblinRushmeier, bool glare, bool photopic);
+  std::array<std::unique_ptr<GlProgram>, 8> tonePrograms_;
   UniformBuffer frameBlock_;
   UniformBuffer skyBlock_;
   UniformBuffer toneBlock_;

@@ -20,15 +20,20 @@
 namespace skyig::sky {
 
 inline constexpr double kShownCodes = 0.25;
+// Cone vision only (Wang, Ji & Zhang 2011, eq. 20: photopic above 10^0.6 cd/m^2) where no cell
+// of the view sphere is darker than 4 times that: a cell's mean hides its darker pixels.
+inline constexpr double kPhotopicCdM2 = 3.98107;
+inline constexpr double kPhotopicMargin = 4.0;
 inline constexpr double kMoonlitSkyMargin = 10.0;
 inline constexpr double kNightLightMargin = 8.0;
 
 struct ShownLayers {
   bool moonlitSky = true;
   bool nightLight = true;
+  bool mesopic = true;  // some of the view may be dim enough for rod vision (else photopic only)
 };
 
-// Both true where a display has no tone curve (Tumblin-Rushmeier maps each pixel by itself) or
+// All true where a display has no tone curve (Tumblin-Rushmeier maps each pixel by itself) or
 // there are no cells.
 ShownLayers shownLayers(const std::vector<ViewCellLight>& cells, const std::vector<DisplayParams>& displays,
                         const std::vector<std::pair<DisplayParams, eye::ToneCurve>>& curves);

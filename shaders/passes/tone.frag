@@ -9,8 +9,9 @@
 // veiling glare of the sun and the moon (tone/glare.glsl) is added to the world's light first:
 // it is the eye's, so it is shown but not written to the EXR.
 // Variants (SkyRenderer compiles each): SKYIG_TONE_CURVE or SKYIG_TONE_TUMBLIN_RUSHMEIER, the
-// display's operator (tone/display_curve.glsl); SKYIG_GLARE when a glare source gives light. A
-// uniform branch would cost llvmpipe both sides for every pixel.
+// display's operator (tone/display_curve.glsl); SKYIG_GLARE when a glare source gives light;
+// SKYIG_PHOTOPIC when no part of the view is dim enough for rod vision. A uniform branch would
+// cost llvmpipe both sides for every pixel.
 #include "common/uniforms.h"
 #include "tone/display_curve.glsl"
 #include "tone/glare.glsl"

@@ -36,10 +36,20 @@ float displayLuminanceFor(float eyeLuminance) {
 }
 
 // The display colour (linear Rec.709, cd/m^2) of a world colour (linear Rec.709, cd/m^2).
+// SKYIG_PHOTOPIC: every pixel is known to be bright enough for cone vision (sky/shown_layers.h),
+// where eq. 21 keeps the chromaticity and the luminance (mesopicFactor 1), so the colour is
+// scaled by ld / Y: the same value without the xyY round trip.
 vec3 toneMapLinear(vec3 world) {
+#ifdef SKYIG_PHOTOPIC
+  vec3 w = max(world, vec3(0.0));
+  float y = rec709Luminance(w);
+  float ld = displayLuminanceFor(y);
+  return compressToDisplay(w * (ld / max(y, 1e-30)), ld, display.y + display.x);
+#else
   vec3 xyY = mesopicxyY(rec709ToXyz(max(world, vec3(0.0))));
   float ld = displayLuminanceFor(xyY.z);
   return compressToDisplay(xyzToRec709(xyYToXyz(vec3(xyY.x, xyY.y, ld))), ld, display.y + display.x);
+#endif
 }
 
 #endif

@@ -64,7 +64,7 @@ std::vector<ProgramCase> programs() {
       {{"passes/fullscreen.vert", "passes/tone.frag"},
        {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), output("outDisplay", SKYIG_OUTPUT_COLOR)},
-       "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE\n"},
+       "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE\n#define SKYIG_PHOTOPIC\n"},
       {{"passes/fullscreen.vert", "passes/tone.frag"},
        {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), output("outDisplay", SKYIG_OUTPUT_COLOR)},

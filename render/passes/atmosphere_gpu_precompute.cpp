@@ -92,9 +92,12 @@ struct AtmosphereGpuPrecompute::Programs {
   GLuint single = compileCompute("atmosphere/precompute_single_scattering.comp");
   GLuint slices = compileCompute("atmosphere/precompute_nu_slices.comp");
   GLuint density = compileCompute("atmosphere/precompute_scattering_density.comp");
+  GLuint density_order2 = compileCompute("atmosphere/precompute_scattering_density_order2.comp");
   GLuint indirect = compileCompute("atmosphere/precompute_indirect_irradiance.comp");
   GLuint multiple = compileCompute("atmosphere/precompute_multiple_scattering.comp");
-  std::array<GLuint, 7> all() const { return {transmittance, direct, single, slices, density, indirect, multiple}; }
+  std::array<GLuint, 8> all() const {
+    return {transmittance, direct, single, slices, density, density_order2, indirect, multiple};
+  }
   ~Programs() {
     for (GLuint p : all()) glDeleteProgram(p);
   }
@@ -210,7 +213,7 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
     AtmosphereParameters density_params = params[g];
     density_params.scattering_r_size = density_sizes.scatteringR;
     density_params.scattering_mu_size = density_sizes.scatteringMu;
-    for (GLuint program : {p.slices, p.density, p.multiple}) setAtmosphereUniforms(program, "atm_density", density_params);
+    for (GLuint program : {p.slices, p.density, p.density_order2, p.multiple}) setAtmosphereUniforms(program, "atm_density", density_params);
     for (GLuint unit = 0; unit < SKYIG_PRECOMPUTE_UNIT_COUNT; ++unit) glBindTextureUnit(unit, 0);
 
     image(SKYIG_IMAGE_TRANSMITTANCE, x.transmittance, GL_WRITE_ONLY);
@@ -238,8 +241,8 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
       glBindTextureUnit(SKYIG_UNIT_NU_SLICES_A, x.slices_a);
       glBindTextureUnit(SKYIG_UNIT_NU_SLICES_B, x.slices_b);
       image(SKYIG_IMAGE_DELTA_DENSITY, x.delta_density, GL_WRITE_ONLY);
-      setOrder(p.density, order);
-      run(p.density, sw, density_sizes.scatteringMu, density_sizes.scatteringR, t.scattering_density,
+      const GLuint density = order == 2 ? p.density_order2 : p.density;
+      run(density, sw, density_sizes.scatteringMu, density_sizes.scatteringR, t.scattering_density,
           "scattering density" + order_text);
       // delta_irradiance and delta_multiple are rewritten next: unbind them as samplers.
       glBindTextureUnit(SKYIG_UNIT_DELTA_IRRADIANCE, 0);

@@ -89,14 +89,15 @@ GLuint groups(int size, int local) { return static_cast<GLuint>((size + local - 
 struct AtmosphereGpuPrecompute::Programs {
   GLuint transmittance = compileCompute("atmosphere/precompute_transmittance.comp");
   GLuint direct = compileCompute("atmosphere/precompute_direct_irradiance.comp");
+  GLuint ray = compileCompute("atmosphere/precompute_ray_transmittance.comp");
   GLuint single = compileCompute("atmosphere/precompute_single_scattering.comp");
   GLuint slices = compileCompute("atmosphere/precompute_nu_slices.comp");
   GLuint density = compileCompute("atmosphere/precompute_scattering_density.comp");
   GLuint density_order2 = compileCompute("atmosphere/precompute_scattering_density_order2.comp");
   GLuint indirect = compileCompute("atmosphere/precompute_indirect_irradiance.comp");
   GLuint multiple = compileCompute("atmosphere/precompute_multiple_scattering.comp");
-  std::array<GLuint, 8> all() const {
-    return {transmittance, direct, single, slices, density, density_order2, indirect, multiple};
+  std::array<GLuint, 9> all() const {
+    return {transmittance, direct, ray, single, slices, density, density_order2, indirect, multiple};
   }
   ~Programs() {
     for (GLuint p : all()) glDeleteProgram(p);
@@ -114,11 +115,17 @@ AtmosphereGpuPrecompute::~AtmosphereGpuPrecompute() = default;
 namespace {
 
 constexpr int kDensityThetaSamples = 16;  // ATMOSPHERE_DENSITY_ANGULAR_SAMPLES
+// precompute_ray_transmittance.comp: the sample points 0..n of the single and multiple
+// scattering integrals along each ray, the same for both.
+namespace glsl = shader::atmosphere_types;
+static_assert(glsl::ATMOSPHERE_SINGLE_SCATTERING_SAMPLES == glsl::ATMOSPHERE_MULTIPLE_SCATTERING_SAMPLES);
+constexpr int kRaySamples = glsl::ATMOSPHERE_MULTIPLE_SCATTERING_SAMPLES + 1;
+static_assert(kDensityThetaSamples == glsl::ATMOSPHERE_DENSITY_ANGULAR_SAMPLES);
 
 // The textures of one group, reused for the next (every pass rewrites what it writes).
 struct Textures {
   GLuint transmittance, delta_irradiance, irradiance, delta_rayleigh, delta_mie, scattering, single_mie,
-      delta_multiple, delta_density, slices_a, slices_b;
+      delta_multiple, delta_density, slices_a, slices_b, ray_transmittance, ray_geometry;
   Textures(const atmosphere::TableSizes& s, const atmosphere::TableSizes& density) {
     const int sw = s.scatteringNu * s.scatteringMuS;
     transmittance = texture2D(s.transmittanceMu, s.transmittanceR);
@@ -130,11 +137,14 @@ struct Textures {
     // precompute_nu_slices.comp: (nu + 1) x (theta samples x mu_s) x r of the density.
     for (GLuint* t : {&slices_a, &slices_b})
       *t = texture3D(s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS, density.scatteringR);
+    // precompute_ray_transmittance.comp: sample x mu x r.
+    for (GLuint* t : {&ray_transmittance, &ray_geometry}) *t = texture3D(kRaySamples, s.scatteringMu, s.scatteringR);
   }
   ~Textures() {
     const GLuint all[] = {transmittance, delta_irradiance, irradiance, delta_rayleigh, delta_mie,
-                          scattering, single_mie, delta_multiple, delta_density, slices_a, slices_b};
-    glDeleteTextures(11, all);
+                          scattering, single_mie, delta_multiple, delta_density, slices_a, slices_b,
+                          ray_transmittance, ray_geometry};
+    glDeleteTextures(13, all);
   }
   Textures(const Textures&) = delete;
   Textures& operator=(const Textures&) = delete;
@@ -213,7 +223,8 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
     AtmosphereParameters density_params = params[g];
     density_params.scattering_r_size = density_sizes.scatteringR;
     density_params.scattering_mu_size = density_sizes.scatteringMu;
-    for (GLuint program : {p.slices, p.density, p.density_order2, p.multiple}) setAtmosphereUniforms(program, "atm_density", density_params);
+    for (GLuint program : {p.ray, p.slices, p.density, p.density_order2, p.multiple})
+      setAtmosphereUniforms(program, "atm_density", density_params);
     for (GLuint unit = 0; unit < SKYIG_PRECOMPUTE_UNIT_COUNT; ++unit) glBindTextureUnit(unit, 0);
 
     image(SKYIG_IMAGE_TRANSMITTANCE, x.transmittance, GL_WRITE_ONLY);
@@ -222,6 +233,11 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
     image(SKYIG_IMAGE_DELTA_IRRADIANCE, x.delta_irradiance, GL_WRITE_ONLY);
     image(SKYIG_IMAGE_IRRADIANCE, x.irradiance, GL_WRITE_ONLY);
     run(p.direct, s.irradianceMuS, s.irradianceR, 1, t.direct_irradiance, "direct irradiance");
+    image(SKYIG_IMAGE_RAY_TRANSMITTANCE, x.ray_transmittance, GL_WRITE_ONLY);
+    image(SKYIG_IMAGE_RAY_GEOMETRY, x.ray_geometry, GL_WRITE_ONLY);
+    run(p.ray, kRaySamples, sh, sd, t.transmittance, "transmittance along the rays");
+    glBindTextureUnit(SKYIG_UNIT_RAY_TRANSMITTANCE, x.ray_transmittance);
+    glBindTextureUnit(SKYIG_UNIT_RAY_GEOMETRY, x.ray_geometry);
     image(SKYIG_IMAGE_DELTA_RAYLEIGH, x.delta_rayleigh, GL_WRITE_ONLY);
     image(SKYIG_IMAGE_DELTA_MIE, x.delta_mie, GL_WRITE_ONLY);
     image(SKYIG_IMAGE_SCATTERING, x.scattering, GL_WRITE_ONLY);

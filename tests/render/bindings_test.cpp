@@ -110,6 +110,7 @@ std::vector<ProgramCase> programs() {
         image("ray_geometry_out", SKYIG_IMAGE_RAY_GEOMETRY)}},
       {{"atmosphere/precompute_single_scattering.comp"},
        {sampler("transmittance_texture", SKYIG_UNIT_TRANSMITTANCE),
+        sampler("ray_transmittance", SKYIG_UNIT_RAY_TRANSMITTANCE), sampler("ray_geometry", SKYIG_UNIT_RAY_GEOMETRY),
         image("delta_rayleigh_out", SKYIG_IMAGE_DELTA_RAYLEIGH), image("delta_mie_out", SKYIG_IMAGE_DELTA_MIE),
         image("scattering_out", SKYIG_IMAGE_SCATTERING), image("single_mie_out", SKYIG_IMAGE_SINGLE_MIE)}},
       {{"atmosphere/precompute_nu_slices.comp"},

@@ -73,6 +73,14 @@ GLuint texture3D(int w, int h, int d) {
   return t;
 }
 
+GLuint texture1DArray(int w, int layers) {
+  GLuint t = 0;
+  glCreateTextures(GL_TEXTURE_1D_ARRAY, 1, &t);
+  glTextureStorage2D(t, 1, GL_RGBA32F, w, layers);
+  setFiltering(t);
+  return t;
+}
+
 void image(GLuint unit, GLuint t, GLenum access) { glBindImageTexture(unit, t, 0, GL_TRUE, 0, access, GL_RGBA32F); }
 
 void download(GLuint t, std::vector<glm::dvec4>& texels) {
@@ -134,9 +142,9 @@ struct Textures {
     for (GLuint* t : {&delta_rayleigh, &delta_mie, &scattering, &single_mie, &delta_multiple})
       *t = texture3D(sw, s.scatteringMu, s.scatteringR);
     delta_density = texture3D(sw, density.scatteringMu, density.scatteringR);
-    // precompute_nu_slices.comp: (nu + 1) x (theta samples x mu_s) x r of the density.
+    // precompute_nu_slices.comp: nu + 1 slices x (theta samples x mu_s x r of the density) layers.
     for (GLuint* t : {&slices_a, &slices_b})
-      *t = texture3D(s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS, density.scatteringR);
+      *t = texture1DArray(s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS * density.scatteringR);
     // precompute_ray_transmittance.comp: sample x mu x r.
     for (GLuint* t : {&ray_transmittance, &ray_geometry}) *t = texture3D(kRaySamples, s.scatteringMu, s.scatteringR);
   }

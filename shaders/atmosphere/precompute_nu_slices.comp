@@ -19,17 +19,21 @@ uniform int scattering_order;  // n: the slices are of the radiance of order n -
 layout(binding = SKYIG_UNIT_DELTA_RAYLEIGH) uniform sampler3D single_rayleigh_texture;
 layout(binding = SKYIG_UNIT_DELTA_MIE) uniform sampler3D single_mie_texture;
 layout(binding = SKYIG_UNIT_DELTA_MULTIPLE) uniform sampler3D multiple_texture;
-layout(binding = SKYIG_IMAGE_NU_SLICES_A, rgba32f) uniform writeonly image3D slices_a_out;  // Rayleigh or delta S
-layout(binding = SKYIG_IMAGE_NU_SLICES_B, rgba32f) uniform writeonly image3D slices_b_out;  // Mie (order 1)
+// 1D array textures: the nu_size + 1 slices along x, one layer per (theta, mu_s, r).
+layout(binding = SKYIG_IMAGE_NU_SLICES_A, rgba32f) uniform writeonly image1DArray slices_a_out;  // Rayleigh or delta S
+layout(binding = SKYIG_IMAGE_NU_SLICES_B, rgba32f) uniform writeonly image1DArray slices_b_out;  // Mie (order 1)
 // The first radius (z) of this dispatch: the pass runs a slice of radii at a time, so that a
 // precompute can stop between slices (render/passes/atmosphere_gpu_precompute.cpp).
 uniform int z_offset;
 void main() {
   ivec3 texel = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, z_offset);
-  if (any(greaterThanEqual(texel, imageSize(slices_a_out)))) {
+  int mu_s_size = int(atm.scattering_mu_s_size);
+  int rows = ATMOSPHERE_DENSITY_ANGULAR_SAMPLES * mu_s_size;
+  if (texel.x > int(atm.scattering_nu_size) || texel.y >= rows ||
+      texel.z >= int(atm_density.scattering_r_size)) {
     return;
   }
-  int mu_s_size = int(atm.scattering_mu_s_size);
+  ivec2 slice = ivec2(texel.x, texel.z * rows + texel.y);
   int theta_index = texel.y / mu_s_size;
   int mu_s_index = texel.y - theta_index * mu_s_size;
   // r and mu_s exactly as the density's texels of this column and radius compute them.
@@ -47,9 +51,9 @@ void main() {
                                          rayIntersectsGround(atm, r, cos_theta));
   vec3 uvw = vec3((Float(texel.x) + uvwz.y) / atm.scattering_nu_size, uvwz.z, uvwz.w);
   if (scattering_order - 1 == 1) {
-    imageStore(slices_a_out, texel, texture(single_rayleigh_texture, uvw));
-    imageStore(slices_b_out, texel, texture(single_mie_texture, uvw));
+    imageStore(slices_a_out, slice, texture(single_rayleigh_texture, uvw));
+    imageStore(slices_b_out, slice, texture(single_mie_texture, uvw));
   } else {
-    imageStore(slices_a_out, texel, texture(multiple_texture, uvw));
+    imageStore(slices_a_out, slice, texture(multiple_texture, uvw));
   }
 }

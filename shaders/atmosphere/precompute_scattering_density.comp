@@ -20,8 +20,9 @@ uniform AtmosphereParameters atm;
 uniform AtmosphereParameters atm_density;
 layout(binding = SKYIG_UNIT_TRANSMITTANCE) uniform sampler2D transmittance_texture;
 layout(binding = SKYIG_UNIT_DELTA_IRRADIANCE) uniform sampler2D irradiance_texture;
-layout(binding = SKYIG_UNIT_NU_SLICES_A) uniform sampler3D slices_a;  // precompute_nu_slices.comp
-layout(binding = SKYIG_UNIT_NU_SLICES_B) uniform sampler3D slices_b;
+// precompute_nu_slices.comp: 1D array textures, GL_LINEAR along nu.
+layout(binding = SKYIG_UNIT_NU_SLICES_A) uniform sampler1DArray slices_a;
+layout(binding = SKYIG_UNIT_NU_SLICES_B) uniform sampler1DArray slices_b;
 layout(binding = SKYIG_IMAGE_DELTA_DENSITY, rgba32f) uniform writeonly image3D density_out;
 
 // The radiance of order n-1 arriving from a direction whose cosine with the sun is
@@ -30,19 +31,15 @@ layout(binding = SKYIG_IMAGE_DELTA_DENSITY, rgba32f) uniform writeonly image3D d
 // own program (precompute_scattering_density_order2.comp defines
 // SKYIG_DENSITY_FROM_SINGLE_SCATTERING): llvmpipe executes both sides of a branch under a
 // mask, uniform or not, so a run-time test would make every order pay order 2's fetches.
-vec4 skyRadiance(Float nu1_unclamped, int slice_y, int slice_z, Float nu_scale) {
+vec4 skyRadiance(Float nu1_unclamped, Float layer, Float nu_scale, Float slice_width) {
   Float nu1 = atmClampCosine(nu1_unclamped);
-  Float tex_coord_x = (nu1 + 1.0) / 2.0 * nu_scale;
-  Float tex_x = floor(tex_coord_x);
-  Float lerp = tex_coord_x - tex_x;
-  ivec3 slice = ivec3(int(tex_x), slice_y, slice_z);
-  vec4 radiance = texelFetch(slices_a, slice, 0) * (1.0 - lerp) +
-                  texelFetch(slices_a, slice + ivec3(1, 0, 0), 0) * lerp;
+  // Between the slices floor(x) and floor(x) + 1, x = u_nu (nu_size - 1), as
+  // lookupScatteringUvwz blends its two fetches.
+  vec2 coord = vec2(((nu1 + 1.0) / 2.0 * nu_scale + 0.5) / slice_width, layer);
+  vec4 radiance = texture(slices_a, coord);
 #ifdef SKYIG_DENSITY_FROM_SINGLE_SCATTERING
   radiance = radiance * rayleighPhaseFunction(nu1) +
-             (texelFetch(slices_b, slice, 0) * (1.0 - lerp) +
-              texelFetch(slices_b, slice + ivec3(1, 0, 0), 0) * lerp) *
-                 miePhaseFunction(atm.mie_phase_g, nu1);
+             texture(slices_b, coord) * miePhaseFunction(atm.mie_phase_g, nu1);
 #endif
   return radiance;
 }
@@ -96,6 +93,7 @@ void main() {
   vec4 rayleigh_coefficient = atm.rayleigh_scattering * rayleighDensity(atm, altitude);
   vec4 mie_coefficient = atm.mie_scattering * mieDensity(atm, altitude);
   Float nu_scale = atm.scattering_nu_size - 1.0;
+  Float slice_width = atm.scattering_nu_size + 1.0;
   int irradiance_last = int(atm.irradiance_width) - 1;
   // phi = (m + 1/2) dphi by rotation: cos and sin of dphi/2, then steps of dphi.
   Float cos_step = cos(dphi);
@@ -118,7 +116,7 @@ void main() {
     Float theta = (Float(l) + 0.5) * dtheta;
     Float cos_theta = cos(theta);
     Float sin_theta = sin(theta);
-    int slice_y = l * mu_s_size + mu_s_index;
+    Float layer = Float(texel.z * ATMOSPHERE_DENSITY_ANGULAR_SAMPLES * mu_s_size + l * mu_s_size + mu_s_index);
     Float cos_phi = cos_half;
     Float sin_phi = sin_half;
     vec4 rayleigh_row = vec4(0.0);
@@ -133,8 +131,8 @@ void main() {
       cos_phi = next_cos;
       Float nu1_plane = omega_s.x * x + omega_s.z * cos_theta;
       Float nu1_side = omega_s.y * y;
-      vec4 incident_radiance = skyRadiance(nu1_plane + nu1_side, slice_y, texel.z, nu_scale) +
-                               skyRadiance(nu1_plane - nu1_side, slice_y, texel.z, nu_scale);
+      vec4 incident_radiance = skyRadiance(nu1_plane + nu1_side, layer, nu_scale, slice_width) +
+                               skyRadiance(nu1_plane - nu1_side, layer, nu_scale, slice_width);
       Float nu2 = omega.x * x + omega.z * cos_theta;
       rayleigh_row += incident_radiance * rayleighPhaseFunction(nu2);
       mie_row += incident_radiance * miePhaseFunction(atm.mie_phase_g, nu2);
@@ -152,7 +150,7 @@ void main() {
     vec4 ground_light = transmittanceAlongRay(atm, transmittance_texture, r, cos_theta,
                                               distance_to_ground, true) *
                         atm.ground_albedo * (1.0 / ATMOSPHERE_PI);
-    int slice_y = l * mu_s_size + mu_s_index;
+    Float layer = Float(texel.z * ATMOSPHERE_DENSITY_ANGULAR_SAMPLES * mu_s_size + l * mu_s_size + mu_s_index);
     Float cos_phi = cos_half;
     Float sin_phi = sin_half;
     vec4 rayleigh_row = vec4(0.0);
@@ -168,9 +166,9 @@ void main() {
       Float nu1_a = nu1_plane + nu1_side;
       Float nu1_b = nu1_plane - nu1_side;
       vec4 incident_radiance =
-          skyRadiance(nu1_a, slice_y, texel.z, nu_scale) +
+          skyRadiance(nu1_a, layer, nu_scale, slice_width) +
           groundRadiance(r, mu_s, nu1_a, irradiance_last, distance_to_ground, ground_light) +
-          skyRadiance(nu1_b, slice_y, texel.z, nu_scale) +
+          skyRadiance(nu1_b, layer, nu_scale, slice_width) +
           groundRadiance(r, mu_s, nu1_b, irradiance_last, distance_to_ground, ground_light);
       Float nu2 = omega.x * x + omega.z * cos_theta;
       rayleigh_row += incident_radiance * rayleighPhaseFunction(nu2);

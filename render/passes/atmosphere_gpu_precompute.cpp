@@ -133,7 +133,7 @@ static_assert(kDensityThetaSamples == glsl::ATMOSPHERE_DENSITY_ANGULAR_SAMPLES);
 // The textures of one group, reused for the next (every pass rewrites what it writes).
 struct Textures {
   GLuint transmittance, delta_irradiance, irradiance, delta_rayleigh, delta_mie, scattering, single_mie,
-      delta_multiple, delta_density, slices_a, slices_b, ray_transmittance, ray_geometry;
+      delta_multiple, delta_density, slices_a, slices_b, ray_transmittance, ray_geometry, ground_irradiance;
   Textures(const atmosphere::TableSizes& s, const atmosphere::TableSizes& density) {
     const int sw = s.scatteringNu * s.scatteringMuS;
     transmittance = texture2D(s.transmittanceMu, s.transmittanceR);
@@ -147,12 +147,16 @@ struct Textures {
       *t = texture1DArray(s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS * density.scatteringR);
     // precompute_ray_transmittance.comp: sample x mu x r.
     for (GLuint* t : {&ray_transmittance, &ray_geometry}) *t = texture3D(kRaySamples, s.scatteringMu, s.scatteringR);
+    // The density's ground: the first row of delta_irradiance.
+    glCreateTextures(GL_TEXTURE_1D, 1, &ground_irradiance);
+    glTextureStorage1D(ground_irradiance, 1, GL_RGBA32F, s.irradianceMuS);
+    setFiltering(ground_irradiance);
   }
   ~Textures() {
     const GLuint all[] = {transmittance, delta_irradiance, irradiance, delta_rayleigh, delta_mie,
                           scattering, single_mie, delta_multiple, delta_density, slices_a, slices_b,
-                          ray_transmittance, ray_geometry};
-    glDeleteTextures(13, all);
+                          ray_transmittance, ray_geometry, ground_irradiance};
+    glDeleteTextures(14, all);
   }
   Textures(const Textures&) = delete;
   Textures& operator=(const Textures&) = delete;
@@ -264,6 +268,9 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
           "nu slices" + order_text);
       glBindTextureUnit(SKYIG_UNIT_NU_SLICES_A, x.slices_a);
       glBindTextureUnit(SKYIG_UNIT_NU_SLICES_B, x.slices_b);
+      glCopyImageSubData(x.delta_irradiance, GL_TEXTURE_2D, 0, 0, 0, 0, x.ground_irradiance, GL_TEXTURE_1D, 0, 0, 0,
+                         0, s.irradianceMuS, 1, 1);
+      glBindTextureUnit(SKYIG_UNIT_GROUND_IRRADIANCE, x.ground_irradiance);
       image(SKYIG_IMAGE_DELTA_DENSITY, x.delta_density, GL_WRITE_ONLY);
       const GLuint density = order == 2 ? p.density_order2 : p.density;
       run(density, sw, density_sizes.scatteringMu, density_sizes.scatteringR, t.scattering_density,

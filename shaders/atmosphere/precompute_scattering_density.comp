@@ -19,7 +19,8 @@ uniform AtmosphereParameters atm;
 // its texels' (r, mu, mu_s, nu); the other tables are read through atm.
 uniform AtmosphereParameters atm_density;
 layout(binding = SKYIG_UNIT_TRANSMITTANCE) uniform sampler2D transmittance_texture;
-layout(binding = SKYIG_UNIT_DELTA_IRRADIANCE) uniform sampler2D irradiance_texture;
+// The first row (the ground) of the irradiance of order n-2, as a 1D texture (GL_LINEAR).
+layout(binding = SKYIG_UNIT_GROUND_IRRADIANCE) uniform sampler1D ground_irradiance_texture;
 // precompute_nu_slices.comp: 1D array textures, GL_LINEAR along nu.
 layout(binding = SKYIG_UNIT_NU_SLICES_A) uniform sampler1DArray slices_a;
 layout(binding = SKYIG_UNIT_NU_SLICES_B) uniform sampler1DArray slices_b;
@@ -47,20 +48,15 @@ vec4 skyRadiance(Float nu1_unclamped, Float layer, Float nu_scale, Float slice_w
 // The ground's reflection seen in a direction that hits it at distance_to_ground. The ground
 // point is at the radius bottom_radius, so the cosine of the sun's zenith angle there,
 // dot(normalize(r zenith + d omega_i), omega_s), is (r mu_s + d nu1) / bottom_radius; the
-// irradiance at the ground is the table's first row, interpolated along mu_s as
-// lookupIrradiance's GL_LINEAR does.
-vec4 groundRadiance(Float r, Float mu_s, Float nu1_unclamped, int irradiance_last,
-                    Float distance_to_ground, vec4 ground_light) {
+// irradiance at the ground is the table's first row, looked up as lookupIrradiance does
+// (GL_LINEAR along mu_s) in a 1D copy of that row.
+vec4 groundRadiance(Float r, Float mu_s, Float nu1_unclamped, Float distance_to_ground,
+                    vec4 ground_light) {
   Float mu_s_ground =
       atmClampCosine((r * mu_s + distance_to_ground * nu1_unclamped) / atm.bottom_radius);
-  Float u = textureCoordFromUnitRange(mu_s_ground * 0.5 + 0.5, atm.irradiance_width) *
-                atm.irradiance_width - 0.5;
-  Float u0 = floor(u);
-  Float f = u - u0;
-  int i0 = clamp(int(u0), 0, irradiance_last);
-  int i1 = clamp(int(u0) + 1, 0, irradiance_last);
-  return ground_light * (texelFetch(irradiance_texture, ivec2(i0, 0), 0) * (1.0 - f) +
-                         texelFetch(irradiance_texture, ivec2(i1, 0), 0) * f);
+  return ground_light *
+         texture(ground_irradiance_texture,
+                 textureCoordFromUnitRange(mu_s_ground * 0.5 + 0.5, atm.irradiance_width));
 }
 
 // The first radius (z) of this dispatch: the pass runs a slice of radii at a time, so that a
@@ -94,7 +90,6 @@ void main() {
   vec4 mie_coefficient = atm.mie_scattering * mieDensity(atm, altitude);
   Float nu_scale = atm.scattering_nu_size - 1.0;
   Float slice_width = atm.scattering_nu_size + 1.0;
-  int irradiance_last = int(atm.irradiance_width) - 1;
   // phi = (m + 1/2) dphi by rotation: cos and sin of dphi/2, then steps of dphi.
   Float cos_step = cos(dphi);
   Float sin_step = sin(dphi);
@@ -167,9 +162,9 @@ void main() {
       Float nu1_b = nu1_plane - nu1_side;
       vec4 incident_radiance =
           skyRadiance(nu1_a, layer, nu_scale, slice_width) +
-          groundRadiance(r, mu_s, nu1_a, irradiance_last, distance_to_ground, ground_light) +
+          groundRadiance(r, mu_s, nu1_a, distance_to_ground, ground_light) +
           skyRadiance(nu1_b, layer, nu_scale, slice_width) +
-          groundRadiance(r, mu_s, nu1_b, irradiance_last, distance_to_ground, ground_light);
+          groundRadiance(r, mu_s, nu1_b, distance_to_ground, ground_light);
       Float nu2 = omega.x * x + omega.z * cos_theta;
       rayleigh_row += incident_radiance * rayleighPhaseFunction(nu2);
       mie_row += incident_radiance * miePhaseFunction(atm.mie_phase_g, nu2);

@@ -45,7 +45,8 @@
 #define SKYIG_UNIT_NU_SLICES_B 7
 #define SKYIG_UNIT_RAY_TRANSMITTANCE 8  // precompute_ray_transmittance.comp's two outputs
 #define SKYIG_UNIT_RAY_GEOMETRY 9
-#define SKYIG_PRECOMPUTE_UNIT_COUNT 10  // units 0 to 9, unbound before and after
+#define SKYIG_UNIT_GROUND_IRRADIANCE 10  // the delta irradiance's ground row, a 1D texture
+#define SKYIG_PRECOMPUTE_UNIT_COUNT 11  // units 0 to 10, unbound before and after
 
 // The diffuse night sky (passes/night_diffuse.frag, NightDiffusePass).
 #define SKYIG_UNIT_MILKY_WAY 0

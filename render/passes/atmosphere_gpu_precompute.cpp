@@ -142,9 +142,8 @@ struct Textures {
     for (GLuint* t : {&delta_rayleigh, &delta_mie, &scattering, &single_mie, &delta_multiple})
       *t = texture3D(sw, s.scatteringMu, s.scatteringR);
     delta_density = texture3D(sw, density.scatteringMu, density.scatteringR);
-    // precompute_nu_slices.comp: nu + 1 slices x (theta samples x mu_s x r of the density) layers.
-    for (GLuint* t : {&slices_a, &slices_b})
-      *t = texture1DArray(s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS * density.scatteringR);
+    // precompute_nu_slices.comp: nu + 1 slices x (theta samples x mu_s) layers, of one radius.
+    for (GLuint* t : {&slices_a, &slices_b}) *t = texture1DArray(s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS);
     // precompute_ray_transmittance.comp: sample x mu x r.
     for (GLuint* t : {&ray_transmittance, &ray_geometry}) *t = texture3D(kRaySamples, s.scatteringMu, s.scatteringR);
     // The density's ground: the first row of delta_irradiance.
@@ -192,6 +191,13 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
   const atmosphere::TableSizes& s = config.sizes;
   const int sw = s.scatteringNu * s.scatteringMuS;
   const int sh = s.scatteringMu;
+  GLint max_layers = 0;
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+  if (kDensityThetaSamples * s.scatteringMuS > max_layers) {
+    throw std::invalid_argument("atmosphere GPU precompute: " + std::to_string(s.scatteringMuS) +
+                                " sun zenith angles need " + std::to_string(kDensityThetaSamples * s.scatteringMuS) +
+                                " layers of an array texture, this OpenGL has " + std::to_string(max_layers));
+  }
   const int sd = s.scatteringR;
   const Programs& p = *programs_;
   Textures x(s, density_sizes);
@@ -220,6 +226,21 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
       glDispatchCompute(groups(width, local[0]), groups(height, local[1]),
                         groups(std::min(slice, depth - z), local[2]));
     }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    if (options.time_passes) {
+      glFinish();
+      seconds += since(pass_start);
+    }
+  };
+
+  // One radius of a pass whose local depth is 1 (the slices and the density, interleaved).
+  auto runRadius = [&](GLuint program, int width, int height, int z, double& seconds) {
+    const auto pass_start = Clock::now();
+    GLint local[3] = {1, 1, 1};
+    glGetProgramiv(program, GL_COMPUTE_WORK_GROUP_SIZE, local);
+    glUseProgram(program);
+    glUniform1i(glGetUniformLocation(program, "z_offset"), z);
+    glDispatchCompute(groups(width, local[0]), groups(height, local[1]), 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     if (options.time_passes) {
       glFinish();
@@ -261,20 +282,27 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
       glBindTextureUnit(SKYIG_UNIT_DELTA_MIE, x.delta_mie);
       glBindTextureUnit(SKYIG_UNIT_DELTA_MULTIPLE, x.delta_multiple);
       glBindTextureUnit(SKYIG_UNIT_DELTA_IRRADIANCE, x.delta_irradiance);
-      image(SKYIG_IMAGE_NU_SLICES_A, x.slices_a, GL_WRITE_ONLY);
-      image(SKYIG_IMAGE_NU_SLICES_B, x.slices_b, GL_WRITE_ONLY);
-      setOrder(p.slices, order);
-      run(p.slices, s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS, density_sizes.scatteringR, t.nu_slices,
-          "nu slices" + order_text);
-      glBindTextureUnit(SKYIG_UNIT_NU_SLICES_A, x.slices_a);
-      glBindTextureUnit(SKYIG_UNIT_NU_SLICES_B, x.slices_b);
       glCopyImageSubData(x.delta_irradiance, GL_TEXTURE_2D, 0, 0, 0, 0, x.ground_irradiance, GL_TEXTURE_1D, 0, 0, 0,
                          0, s.irradianceMuS, 1, 1);
       glBindTextureUnit(SKYIG_UNIT_GROUND_IRRADIANCE, x.ground_irradiance);
-      image(SKYIG_IMAGE_DELTA_DENSITY, x.delta_density, GL_WRITE_ONLY);
+      glBindTextureUnit(SKYIG_UNIT_NU_SLICES_A, x.slices_a);
+      glBindTextureUnit(SKYIG_UNIT_NU_SLICES_B, x.slices_b);
+      setOrder(p.slices, order);
       const GLuint density = order == 2 ? p.density_order2 : p.density;
-      run(density, sw, density_sizes.scatteringMu, density_sizes.scatteringR, t.scattering_density,
-          "scattering density" + order_text);
+      // Radius by radius, the nu slices of that radius then its density (the slices hold one
+      // radius: an array texture's layers are limited, 2048 on llvmpipe).
+      options.control.begin(group_prefix + "scattering density" + order_text);
+      for (int z = 0; z < density_sizes.scatteringR; ++z) {
+        if (z > 0) {
+          glFinish();
+          cancel.throwIfRequested();
+        }
+        image(SKYIG_IMAGE_NU_SLICES_A, x.slices_a, GL_WRITE_ONLY);
+        image(SKYIG_IMAGE_NU_SLICES_B, x.slices_b, GL_WRITE_ONLY);
+        runRadius(p.slices, s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS, z, t.nu_slices);
+        image(SKYIG_IMAGE_DELTA_DENSITY, x.delta_density, GL_WRITE_ONLY);
+        runRadius(density, sw, density_sizes.scatteringMu, z, t.scattering_density);
+      }
       // delta_irradiance and delta_multiple are rewritten next: unbind them as samplers.
       glBindTextureUnit(SKYIG_UNIT_DELTA_IRRADIANCE, 0);
       image(SKYIG_IMAGE_DELTA_IRRADIANCE, x.delta_irradiance, GL_WRITE_ONLY);

@@ -6,9 +6,9 @@
 // of fixed theta, along which only nu changes. lookupScatteringUvwz blends two trilinear
 // fetches at x = (k + u_mu_s) / nu_size, k = floor(u_nu (nu_size - 1)), at the circle's
 // (u_mu_s, u_mu, u_r); these depend on (r, theta, mu_s) and k only. This pass makes those
-// fetches once, for k = 0..nu_size: texel (k, theta_index * mu_s_size + mu_s_index, r_index).
-// The density then reads two texels per direction (texelFetch, no filtering) and blends them
-// as lookupScatteringUvwz does: same values, a fraction of the work.
+// fetches once, for k = 0..nu_size: texel k of layer theta_index * mu_s_size + mu_s_index, for
+// the radius the density computes next. The density then reads them with one GL_LINEAR fetch
+// per direction, the blend lookupScatteringUvwz makes: same values, a fraction of the work.
 #include "common/bindings.h"
 #include "atmosphere/multiple_scattering.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -19,7 +19,8 @@ uniform int scattering_order;  // n: the slices are of the radiance of order n -
 layout(binding = SKYIG_UNIT_DELTA_RAYLEIGH) uniform sampler3D single_rayleigh_texture;
 layout(binding = SKYIG_UNIT_DELTA_MIE) uniform sampler3D single_mie_texture;
 layout(binding = SKYIG_UNIT_DELTA_MULTIPLE) uniform sampler3D multiple_texture;
-// 1D array textures: the nu_size + 1 slices along x, one layer per (theta, mu_s, r).
+// 1D array textures: the nu_size + 1 slices along x, one layer per (theta, mu_s), of the
+// radius z_offset (the host runs the density of that radius next).
 layout(binding = SKYIG_IMAGE_NU_SLICES_A, rgba32f) uniform writeonly image1DArray slices_a_out;  // Rayleigh or delta S
 layout(binding = SKYIG_IMAGE_NU_SLICES_B, rgba32f) uniform writeonly image1DArray slices_b_out;  // Mie (order 1)
 // The first radius (z) of this dispatch: the pass runs a slice of radii at a time, so that a
@@ -33,7 +34,7 @@ void main() {
       texel.z >= int(atm_density.scattering_r_size)) {
     return;
   }
-  ivec2 slice = ivec2(texel.x, texel.z * rows + texel.y);
+  ivec2 slice = ivec2(texel.x, texel.y);  // one radius at a time (z_offset)
   int theta_index = texel.y / mu_s_size;
   int mu_s_index = texel.y - theta_index * mu_s_size;
   // r and mu_s exactly as the density's texels of this column and radius compute them.

@@ -111,7 +111,7 @@ void main() {
     Float theta = (Float(l) + 0.5) * dtheta;
     Float cos_theta = cos(theta);
     Float sin_theta = sin(theta);
-    Float layer = Float(texel.z * ATMOSPHERE_DENSITY_ANGULAR_SAMPLES * mu_s_size + l * mu_s_size + mu_s_index);
+    Float layer = Float(l * mu_s_size + mu_s_index);
     Float cos_phi = cos_half;
     Float sin_phi = sin_half;
     vec4 rayleigh_row = vec4(0.0);
@@ -145,7 +145,7 @@ void main() {
     vec4 ground_light = transmittanceAlongRay(atm, transmittance_texture, r, cos_theta,
                                               distance_to_ground, true) *
                         atm.ground_albedo * (1.0 / ATMOSPHERE_PI);
-    Float layer = Float(texel.z * ATMOSPHERE_DENSITY_ANGULAR_SAMPLES * mu_s_size + l * mu_s_size + mu_s_index);
+    Float layer = Float(l * mu_s_size + mu_s_index);
     Float cos_phi = cos_half;
     Float sin_phi = sin_half;
     vec4 rayleigh_row = vec4(0.0);

@@ -5,12 +5,12 @@
 // 16 x 32 directions, midpoint rule, in the frame where the view direction is in the x-z
 // plane, with the same table lookups. About 2.5x less work on llvmpipe (docs/atmosphere.md,
 // "GPU precomputation") because the radiance of order n-1 comes from its nu slices
-// (precompute_nu_slices.comp): two texelFetch and a blend per direction instead of two
-// trilinear fetches (four at order 2); the ground's sun cosine is in closed form and its
-// irradiance a row of the table read by hand; the directions turn by a rotation instead of a
-// cos and a sin each; phi and 2 pi - phi share their phase functions. No branch inside the
-// loops (order 2 is a program of its own, the ground's directions a loop of their own):
-// llvmpipe runs both sides of every branch.
+// (precompute_nu_slices.comp, the slices of this radius): one linearly filtered fetch per
+// direction instead of two trilinear fetches (four at order 2); the ground's sun cosine is in
+// closed form and its irradiance a 1D copy of the table's first row; the directions turn by a
+// rotation instead of a cos and a sin each; phi and 2 pi - phi share their phase functions. No
+// branch inside the loops (order 2 is a program of its own, the ground's directions a loop of
+// their own): llvmpipe runs both sides of every branch.
 #include "common/bindings.h"
 #include "atmosphere/multiple_scattering.glsl"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;

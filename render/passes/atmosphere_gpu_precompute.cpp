@@ -194,7 +194,8 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
   GLint max_layers = 0;
   glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
   if (kDensityThetaSamples * s.scatteringMuS > max_layers) {
-    throw std::invalid_argument("atmosphere GPU precompute: " + std::to_string(s.scatteringMuS) +
+    // A limit of this OpenGL, not a bad configuration: the loader's "auto" falls back to the CPU.
+    throw std::runtime_error("atmosphere GPU precompute: " + std::to_string(s.scatteringMuS) +
                                 " sun zenith angles need " + std::to_string(kDensityThetaSamples * s.scatteringMuS) +
                                 " layers of an array texture, this OpenGL has " + std::to_string(max_layers));
   }

@@ -32,11 +32,12 @@ layout(binding = SKYIG_IMAGE_DELTA_DENSITY, rgba32f) uniform writeonly image3D d
 // own program (precompute_scattering_density_order2.comp defines
 // SKYIG_DENSITY_FROM_SINGLE_SCATTERING): llvmpipe executes both sides of a branch under a
 // mask, uniform or not, so a run-time test would make every order pay order 2's fetches.
-vec4 skyRadiance(Float nu1_unclamped, Float layer, Float nu_scale, Float slice_width) {
+vec4 skyRadiance(Float nu1_unclamped, Float layer, vec2 nu_to_coord) {
   Float nu1 = atmClampCosine(nu1_unclamped);
   // Between the slices floor(x) and floor(x) + 1, x = u_nu (nu_size - 1), as
-  // lookupScatteringUvwz blends its two fetches.
-  vec2 coord = vec2(((nu1 + 1.0) / 2.0 * nu_scale + 0.5) / slice_width, layer);
+  // lookupScatteringUvwz blends its two fetches: the texture coordinate (x + 0.5) / width,
+  // linear in nu1 (one multiply-add; no division per direction).
+  vec2 coord = vec2(nu1 * nu_to_coord.x + nu_to_coord.y, layer);
   vec4 radiance = texture(slices_a, coord);
 #ifdef SKYIG_DENSITY_FROM_SINGLE_SCATTERING
   radiance = radiance * rayleighPhaseFunction(nu1) +
@@ -88,8 +89,10 @@ void main() {
   Float altitude = r - atm.bottom_radius;
   vec4 rayleigh_coefficient = atm.rayleigh_scattering * rayleighDensity(atm, altitude);
   vec4 mie_coefficient = atm.mie_scattering * mieDensity(atm, altitude);
-  Float nu_scale = atm.scattering_nu_size - 1.0;
+  // x = (nu1 + 1) / 2 (nu_size - 1) on slices nu_size + 1 texels wide.
+  Float half_nu_scale = 0.5 * (atm.scattering_nu_size - 1.0);
   Float slice_width = atm.scattering_nu_size + 1.0;
+  vec2 nu_to_coord = vec2(half_nu_scale, half_nu_scale + 0.5) / slice_width;
   // phi = (m + 1/2) dphi by rotation: cos and sin of dphi/2, then steps of dphi.
   Float cos_step = cos(dphi);
   Float sin_step = sin(dphi);
@@ -126,8 +129,8 @@ void main() {
       cos_phi = next_cos;
       Float nu1_plane = omega_s.x * x + omega_s.z * cos_theta;
       Float nu1_side = omega_s.y * y;
-      vec4 incident_radiance = skyRadiance(nu1_plane + nu1_side, layer, nu_scale, slice_width) +
-                               skyRadiance(nu1_plane - nu1_side, layer, nu_scale, slice_width);
+      vec4 incident_radiance = skyRadiance(nu1_plane + nu1_side, layer, nu_to_coord) +
+                               skyRadiance(nu1_plane - nu1_side, layer, nu_to_coord);
       Float nu2 = omega.x * x + omega.z * cos_theta;
       rayleigh_row += incident_radiance * rayleighPhaseFunction(nu2);
       mie_row += incident_radiance * miePhaseFunction(atm.mie_phase_g, nu2);
@@ -161,9 +164,9 @@ void main() {
       Float nu1_a = nu1_plane + nu1_side;
       Float nu1_b = nu1_plane - nu1_side;
       vec4 incident_radiance =
-          skyRadiance(nu1_a, layer, nu_scale, slice_width) +
+          skyRadiance(nu1_a, layer, nu_to_coord) +
           groundRadiance(r, mu_s, nu1_a, distance_to_ground, ground_light) +
-          skyRadiance(nu1_b, layer, nu_scale, slice_width) +
+          skyRadiance(nu1_b, layer, nu_to_coord) +
           groundRadiance(r, mu_s, nu1_b, distance_to_ground, ground_light);
       Float nu2 = omega.x * x + omega.z * cos_theta;
       rayleigh_row += incident_radiance * rayleighPhaseFunction(nu2);

@@ -73,6 +73,14 @@ GLuint texture3D(int w, int h, int d) {
   return t;
 }
 
+GLuint texture1DArray(int w, int layers) {
+  GLuint t = 0;
+  glCreateTextures(GL_TEXTURE_1D_ARRAY, 1, &t);
+  glTextureStorage2D(t, 1, GL_RGBA32F, w, layers);
+  setFiltering(t);
+  return t;
+}
+
 void image(GLuint unit, GLuint t, GLenum access) { glBindImageTexture(unit, t, 0, GL_TRUE, 0, access, GL_RGBA32F); }
 
 void download(GLuint t, std::vector<glm::dvec4>& texels) {
@@ -89,12 +97,16 @@ GLuint groups(int size, int local) { return static_cast<GLuint>((size + local - 
 struct AtmosphereGpuPrecompute::Programs {
   GLuint transmittance = compileCompute("atmosphere/precompute_transmittance.comp");
   GLuint direct = compileCompute("atmosphere/precompute_direct_irradiance.comp");
+  GLuint ray = compileCompute("atmosphere/precompute_ray_transmittance.comp");
   GLuint single = compileCompute("atmosphere/precompute_single_scattering.comp");
   GLuint slices = compileCompute("atmosphere/precompute_nu_slices.comp");
   GLuint density = compileCompute("atmosphere/precompute_scattering_density.comp");
+  GLuint density_order2 = compileCompute("atmosphere/precompute_scattering_density_order2.comp");
   GLuint indirect = compileCompute("atmosphere/precompute_indirect_irradiance.comp");
   GLuint multiple = compileCompute("atmosphere/precompute_multiple_scattering.comp");
-  std::array<GLuint, 7> all() const { return {transmittance, direct, single, slices, density, indirect, multiple}; }
+  std::array<GLuint, 9> all() const {
+    return {transmittance, direct, ray, single, slices, density, density_order2, indirect, multiple};
+  }
   ~Programs() {
     for (GLuint p : all()) glDeleteProgram(p);
   }
@@ -111,11 +123,17 @@ AtmosphereGpuPrecompute::~AtmosphereGpuPrecompute() = default;
 namespace {
 
 constexpr int kDensityThetaSamples = 16;  // ATMOSPHERE_DENSITY_ANGULAR_SAMPLES
+// precompute_ray_transmittance.comp: the sample points 0..n of the single and multiple
+// scattering integrals along each ray, the same for both.
+namespace glsl = shader::atmosphere_types;
+static_assert(glsl::ATMOSPHERE_SINGLE_SCATTERING_SAMPLES == glsl::ATMOSPHERE_MULTIPLE_SCATTERING_SAMPLES);
+constexpr int kRaySamples = glsl::ATMOSPHERE_MULTIPLE_SCATTERING_SAMPLES + 1;
+static_assert(kDensityThetaSamples == glsl::ATMOSPHERE_DENSITY_ANGULAR_SAMPLES);
 
 // The textures of one group, reused for the next (every pass rewrites what it writes).
 struct Textures {
   GLuint transmittance, delta_irradiance, irradiance, delta_rayleigh, delta_mie, scattering, single_mie,
-      delta_multiple, delta_density, slices_a, slices_b;
+      delta_multiple, delta_density, slices_a, slices_b, ray_transmittance, ray_geometry, ground_irradiance;
   Textures(const atmosphere::TableSizes& s, const atmosphere::TableSizes& density) {
     const int sw = s.scatteringNu * s.scatteringMuS;
     transmittance = texture2D(s.transmittanceMu, s.transmittanceR);
@@ -124,14 +142,20 @@ struct Textures {
     for (GLuint* t : {&delta_rayleigh, &delta_mie, &scattering, &single_mie, &delta_multiple})
       *t = texture3D(sw, s.scatteringMu, s.scatteringR);
     delta_density = texture3D(sw, density.scatteringMu, density.scatteringR);
-    // precompute_nu_slices.comp: (nu + 1) x (theta samples x mu_s) x r of the density.
-    for (GLuint* t : {&slices_a, &slices_b})
-      *t = texture3D(s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS, density.scatteringR);
+    // precompute_nu_slices.comp: nu + 1 slices x (theta samples x mu_s) layers, of one radius.
+    for (GLuint* t : {&slices_a, &slices_b}) *t = texture1DArray(s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS);
+    // precompute_ray_transmittance.comp: sample x mu x r.
+    for (GLuint* t : {&ray_transmittance, &ray_geometry}) *t = texture3D(kRaySamples, s.scatteringMu, s.scatteringR);
+    // The density's ground: the first row of delta_irradiance.
+    glCreateTextures(GL_TEXTURE_1D, 1, &ground_irradiance);
+    glTextureStorage1D(ground_irradiance, 1, GL_RGBA32F, s.irradianceMuS);
+    setFiltering(ground_irradiance);
   }
   ~Textures() {
     const GLuint all[] = {transmittance, delta_irradiance, irradiance, delta_rayleigh, delta_mie,
-                          scattering, single_mie, delta_multiple, delta_density, slices_a, slices_b};
-    glDeleteTextures(11, all);
+                          scattering, single_mie, delta_multiple, delta_density, slices_a, slices_b,
+                          ray_transmittance, ray_geometry, ground_irradiance};
+    glDeleteTextures(14, all);
   }
   Textures(const Textures&) = delete;
   Textures& operator=(const Textures&) = delete;
@@ -167,6 +191,14 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
   const atmosphere::TableSizes& s = config.sizes;
   const int sw = s.scatteringNu * s.scatteringMuS;
   const int sh = s.scatteringMu;
+  GLint max_layers = 0;
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+  if (kDensityThetaSamples * s.scatteringMuS > max_layers) {
+    // A limit of this OpenGL, not a bad configuration: the loader's "auto" falls back to the CPU.
+    throw std::runtime_error("atmosphere GPU precompute: " + std::to_string(s.scatteringMuS) +
+                                " sun zenith angles need " + std::to_string(kDensityThetaSamples * s.scatteringMuS) +
+                                " layers of an array texture, this OpenGL has " + std::to_string(max_layers));
+  }
   const int sd = s.scatteringR;
   const Programs& p = *programs_;
   Textures x(s, density_sizes);
@@ -202,6 +234,21 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
     }
   };
 
+  // One radius of a pass whose local depth is 1 (the slices and the density, interleaved).
+  auto runRadius = [&](GLuint program, int width, int height, int z, double& seconds) {
+    const auto pass_start = Clock::now();
+    GLint local[3] = {1, 1, 1};
+    glGetProgramiv(program, GL_COMPUTE_WORK_GROUP_SIZE, local);
+    glUseProgram(program);
+    glUniform1i(glGetUniformLocation(program, "z_offset"), z);
+    glDispatchCompute(groups(width, local[0]), groups(height, local[1]), 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    if (options.time_passes) {
+      glFinish();
+      seconds += since(pass_start);
+    }
+  };
+
   std::vector<GroupTables> out(params.size());
   for (std::size_t g = 0; g < params.size(); ++g) {
     const auto group_start = Clock::now();
@@ -210,7 +257,8 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
     AtmosphereParameters density_params = params[g];
     density_params.scattering_r_size = density_sizes.scatteringR;
     density_params.scattering_mu_size = density_sizes.scatteringMu;
-    for (GLuint program : {p.slices, p.density, p.multiple}) setAtmosphereUniforms(program, "atm_density", density_params);
+    for (GLuint program : {p.ray, p.slices, p.density, p.density_order2, p.multiple})
+      setAtmosphereUniforms(program, "atm_density", density_params);
     for (GLuint unit = 0; unit < SKYIG_PRECOMPUTE_UNIT_COUNT; ++unit) glBindTextureUnit(unit, 0);
 
     image(SKYIG_IMAGE_TRANSMITTANCE, x.transmittance, GL_WRITE_ONLY);
@@ -219,6 +267,11 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
     image(SKYIG_IMAGE_DELTA_IRRADIANCE, x.delta_irradiance, GL_WRITE_ONLY);
     image(SKYIG_IMAGE_IRRADIANCE, x.irradiance, GL_WRITE_ONLY);
     run(p.direct, s.irradianceMuS, s.irradianceR, 1, t.direct_irradiance, "direct irradiance");
+    image(SKYIG_IMAGE_RAY_TRANSMITTANCE, x.ray_transmittance, GL_WRITE_ONLY);
+    image(SKYIG_IMAGE_RAY_GEOMETRY, x.ray_geometry, GL_WRITE_ONLY);
+    run(p.ray, kRaySamples, sh, sd, t.transmittance, "transmittance along the rays");
+    glBindTextureUnit(SKYIG_UNIT_RAY_TRANSMITTANCE, x.ray_transmittance);
+    glBindTextureUnit(SKYIG_UNIT_RAY_GEOMETRY, x.ray_geometry);
     image(SKYIG_IMAGE_DELTA_RAYLEIGH, x.delta_rayleigh, GL_WRITE_ONLY);
     image(SKYIG_IMAGE_DELTA_MIE, x.delta_mie, GL_WRITE_ONLY);
     image(SKYIG_IMAGE_SCATTERING, x.scattering, GL_WRITE_ONLY);
@@ -230,17 +283,27 @@ std::vector<GroupTables> AtmosphereGpuPrecompute::computeTables(const ModelConfi
       glBindTextureUnit(SKYIG_UNIT_DELTA_MIE, x.delta_mie);
       glBindTextureUnit(SKYIG_UNIT_DELTA_MULTIPLE, x.delta_multiple);
       glBindTextureUnit(SKYIG_UNIT_DELTA_IRRADIANCE, x.delta_irradiance);
-      image(SKYIG_IMAGE_NU_SLICES_A, x.slices_a, GL_WRITE_ONLY);
-      image(SKYIG_IMAGE_NU_SLICES_B, x.slices_b, GL_WRITE_ONLY);
-      setOrder(p.slices, order);
-      run(p.slices, s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS, density_sizes.scatteringR, t.nu_slices,
-          "nu slices" + order_text);
+      glCopyImageSubData(x.delta_irradiance, GL_TEXTURE_2D, 0, 0, 0, 0, x.ground_irradiance, GL_TEXTURE_1D, 0, 0, 0,
+                         0, s.irradianceMuS, 1, 1);
+      glBindTextureUnit(SKYIG_UNIT_GROUND_IRRADIANCE, x.ground_irradiance);
       glBindTextureUnit(SKYIG_UNIT_NU_SLICES_A, x.slices_a);
       glBindTextureUnit(SKYIG_UNIT_NU_SLICES_B, x.slices_b);
-      image(SKYIG_IMAGE_DELTA_DENSITY, x.delta_density, GL_WRITE_ONLY);
-      setOrder(p.density, order);
-      run(p.density, sw, density_sizes.scatteringMu, density_sizes.scatteringR, t.scattering_density,
-          "scattering density" + order_text);
+      setOrder(p.slices, order);
+      const GLuint density = order == 2 ? p.density_order2 : p.density;
+      // Radius by radius, the nu slices of that radius then its density (the slices hold one
+      // radius: an array texture's layers are limited, 2048 on llvmpipe).
+      options.control.begin(group_prefix + "scattering density" + order_text);
+      for (int z = 0; z < density_sizes.scatteringR; ++z) {
+        if (z > 0) {
+          glFinish();
+          cancel.throwIfRequested();
+        }
+        image(SKYIG_IMAGE_NU_SLICES_A, x.slices_a, GL_WRITE_ONLY);
+        image(SKYIG_IMAGE_NU_SLICES_B, x.slices_b, GL_WRITE_ONLY);
+        runRadius(p.slices, s.scatteringNu + 1, kDensityThetaSamples * s.scatteringMuS, z, t.nu_slices);
+        image(SKYIG_IMAGE_DELTA_DENSITY, x.delta_density, GL_WRITE_ONLY);
+        runRadius(density, sw, density_sizes.scatteringMu, z, t.scattering_density);
+      }
       // delta_irradiance and delta_multiple are rewritten next: unbind them as samplers.
       glBindTextureUnit(SKYIG_UNIT_DELTA_IRRADIANCE, 0);
       image(SKYIG_IMAGE_DELTA_IRRADIANCE, x.delta_irradiance, GL_WRITE_ONLY);

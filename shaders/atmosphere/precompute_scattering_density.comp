@@ -5,10 +5,12 @@
 // 16 x 32 directions, midpoint rule, in the frame where the view direction is in the x-z
 // plane, with the same table lookups. About 2.5x less work on llvmpipe (docs/atmosphere.md,
 // "GPU precomputation") because the radiance of order n-1 comes from its nu slices
-// (precompute_nu_slices.comp): two texelFetch and a blend per direction instead of two
-// trilinear fetches (four at order 2); the ground's sun cosine is in closed form and its
-// irradiance a row of the table read by hand; the directions turn by a rotation instead of a
-// cos and a sin each; phi and 2 pi - phi share their phase functions.
+// (precompute_nu_slices.comp, the slices of this radius): one linearly filtered fetch per
+// direction instead of two trilinear fetches (four at order 2); the ground's sun cosine is in
+// closed form and its irradiance a 1D copy of the table's first row; the directions turn by a
+// rotation instead of a cos and a sin each; phi and 2 pi - phi share their phase functions. No
+// branch inside the loops (order 2 is a program of its own, the ground's directions a loop of
+// their own): llvmpipe runs both sides of every branch.
 #include "common/bindings.h"
 #include "atmosphere/multiple_scattering.glsl"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
@@ -16,50 +18,46 @@ uniform AtmosphereParameters atm;
 // atm with the density table's sizes (GpuPrecomputeOptions::density_divisor; = atm by default):
 // its texels' (r, mu, mu_s, nu); the other tables are read through atm.
 uniform AtmosphereParameters atm_density;
-uniform int scattering_order;
 layout(binding = SKYIG_UNIT_TRANSMITTANCE) uniform sampler2D transmittance_texture;
-layout(binding = SKYIG_UNIT_DELTA_IRRADIANCE) uniform sampler2D irradiance_texture;
-layout(binding = SKYIG_UNIT_NU_SLICES_A) uniform sampler3D slices_a;  // precompute_nu_slices.comp
-layout(binding = SKYIG_UNIT_NU_SLICES_B) uniform sampler3D slices_b;
+// The first row (the ground) of the irradiance of order n-2, as a 1D texture (GL_LINEAR).
+layout(binding = SKYIG_UNIT_GROUND_IRRADIANCE) uniform sampler1D ground_irradiance_texture;
+// precompute_nu_slices.comp: 1D array textures, GL_LINEAR along nu.
+layout(binding = SKYIG_UNIT_NU_SLICES_A) uniform sampler1DArray slices_a;
+layout(binding = SKYIG_UNIT_NU_SLICES_B) uniform sampler1DArray slices_b;
 layout(binding = SKYIG_IMAGE_DELTA_DENSITY, rgba32f) uniform writeonly image3D density_out;
 
 // The radiance of order n-1 arriving from a direction whose cosine with the sun is
-// nu1_unclamped: from the nu slices (lookupScatteringUvwz's blend of two of them, and
-// scatteringOfOrderUvwz's phase functions at order 1), plus the ground's reflection.
-vec4 incidentRadiance(Float r, Float mu_s, Float nu1_unclamped, int slice_y, int slice_z,
-                      bool single_order, Float nu_scale, int irradiance_last,
-                      bool ray_r_theta_intersects_ground, Float distance_to_ground,
-                      vec4 ground_light) {
+// nu1_unclamped, from the nu slices: lookupScatteringUvwz's blend of two of them, with
+// scatteringOfOrderUvwz's phase functions at order 1. Order 2 (from single scattering) is its
+// own program (precompute_scattering_density_order2.comp defines
+// SKYIG_DENSITY_FROM_SINGLE_SCATTERING): llvmpipe executes both sides of a branch under a
+// mask, uniform or not, so a run-time test would make every order pay order 2's fetches.
+vec4 skyRadiance(Float nu1_unclamped, Float layer, vec2 nu_to_coord) {
   Float nu1 = atmClampCosine(nu1_unclamped);
-  Float tex_coord_x = (nu1 + 1.0) / 2.0 * nu_scale;
-  Float tex_x = floor(tex_coord_x);
-  Float lerp = tex_coord_x - tex_x;
-  ivec3 slice = ivec3(int(tex_x), slice_y, slice_z);
-  vec4 radiance = texelFetch(slices_a, slice, 0) * (1.0 - lerp) +
-                  texelFetch(slices_a, slice + ivec3(1, 0, 0), 0) * lerp;
-  if (single_order) {
-    radiance = radiance * rayleighPhaseFunction(nu1) +
-               (texelFetch(slices_b, slice, 0) * (1.0 - lerp) +
-                texelFetch(slices_b, slice + ivec3(1, 0, 0), 0) * lerp) *
-                   miePhaseFunction(atm.mie_phase_g, nu1);
-  }
-  if (ray_r_theta_intersects_ground) {
-    // The ground point is at the radius bottom_radius, so the cosine of the sun's zenith
-    // angle there, dot(normalize(r zenith + d omega_i), omega_s), is
-    // (r mu_s + d nu1) / bottom_radius; the irradiance at the ground is the table's first
-    // row, interpolated along mu_s as lookupIrradiance's GL_LINEAR does.
-    Float mu_s_ground =
-        atmClampCosine((r * mu_s + distance_to_ground * nu1_unclamped) / atm.bottom_radius);
-    Float u = textureCoordFromUnitRange(mu_s_ground * 0.5 + 0.5, atm.irradiance_width) *
-                  atm.irradiance_width - 0.5;
-    Float u0 = floor(u);
-    Float f = u - u0;
-    int i0 = clamp(int(u0), 0, irradiance_last);
-    int i1 = clamp(int(u0) + 1, 0, irradiance_last);
-    radiance += ground_light * (texelFetch(irradiance_texture, ivec2(i0, 0), 0) * (1.0 - f) +
-                                texelFetch(irradiance_texture, ivec2(i1, 0), 0) * f);
-  }
+  // Between the slices floor(x) and floor(x) + 1, x = u_nu (nu_size - 1), as
+  // lookupScatteringUvwz blends its two fetches: the texture coordinate (x + 0.5) / width,
+  // linear in nu1 (one multiply-add; no division per direction).
+  vec2 coord = vec2(nu1 * nu_to_coord.x + nu_to_coord.y, layer);
+  vec4 radiance = texture(slices_a, coord);
+#ifdef SKYIG_DENSITY_FROM_SINGLE_SCATTERING
+  radiance = radiance * rayleighPhaseFunction(nu1) +
+             texture(slices_b, coord) * miePhaseFunction(atm.mie_phase_g, nu1);
+#endif
   return radiance;
+}
+
+// The ground's reflection seen in a direction that hits it at distance_to_ground. The ground
+// point is at the radius bottom_radius, so the cosine of the sun's zenith angle there,
+// dot(normalize(r zenith + d omega_i), omega_s), is (r mu_s + d nu1) / bottom_radius; the
+// irradiance at the ground is the table's first row, looked up as lookupIrradiance does
+// (GL_LINEAR along mu_s) in a 1D copy of that row.
+vec4 groundRadiance(Float r, Float mu_s, Float nu1_unclamped, Float distance_to_ground,
+                    vec4 ground_light) {
+  Float mu_s_ground =
+      atmClampCosine((r * mu_s + distance_to_ground * nu1_unclamped) / atm.bottom_radius);
+  return ground_light *
+         texture(ground_irradiance_texture,
+                 textureCoordFromUnitRange(mu_s_ground * 0.5 + 0.5, atm.irradiance_width));
 }
 
 // The first radius (z) of this dispatch: the pass runs a slice of radii at a time, so that a
@@ -91,31 +89,36 @@ void main() {
   Float altitude = r - atm.bottom_radius;
   vec4 rayleigh_coefficient = atm.rayleigh_scattering * rayleighDensity(atm, altitude);
   vec4 mie_coefficient = atm.mie_scattering * mieDensity(atm, altitude);
-  bool single_order = scattering_order - 1 == 1;
-  Float nu_scale = atm.scattering_nu_size - 1.0;
-  int irradiance_last = int(atm.irradiance_width) - 1;
+  // x = (nu1 + 1) / 2 (nu_size - 1) on slices nu_size + 1 texels wide.
+  Float half_nu_scale = 0.5 * (atm.scattering_nu_size - 1.0);
+  Float slice_width = atm.scattering_nu_size + 1.0;
+  vec2 nu_to_coord = vec2(half_nu_scale, half_nu_scale + 0.5) / slice_width;
   // phi = (m + 1/2) dphi by rotation: cos and sin of dphi/2, then steps of dphi.
   Float cos_step = cos(dphi);
   Float sin_step = sin(dphi);
-  vec4 rayleigh_mie = vec4(0.0);
+  Float cos_half = cos(0.5 * dphi);
+  Float sin_half = sin(0.5 * dphi);
+  // The incident radiance weighted by each phase function towards the view; the scattering
+  // coefficients multiply the sums once, at the end.
+  vec4 rayleigh_sum = vec4(0.0);
+  vec4 mie_sum = vec4(0.0);
 
-  for (int l = 0; l < SAMPLES; ++l) {
+  // The directions that hit the ground are those of theta_l, l >= first_ground (cos theta
+  // falls with l): two loops without a branch in them, since llvmpipe would run the ground's
+  // reflection for every direction, the sky's too.
+  int first_ground = SAMPLES;
+  for (int l = SAMPLES - 1; l >= 0; --l) {
+    if (rayIntersectsGround(atm, r, cos((Float(l) + 0.5) * dtheta))) first_ground = l;
+  }
+  for (int l = 0; l < first_ground; ++l) {
     Float theta = (Float(l) + 0.5) * dtheta;
     Float cos_theta = cos(theta);
     Float sin_theta = sin(theta);
-    bool ray_r_theta_intersects_ground = rayIntersectsGround(atm, r, cos_theta);
-    Float distance_to_ground = 0.0;
-    vec4 ground_light = vec4(0.0);  // transmittance to the ground x albedo / pi
-    if (ray_r_theta_intersects_ground) {
-      distance_to_ground = distanceToBottomAtmosphereBoundary(atm, r, cos_theta);
-      ground_light = transmittanceAlongRay(atm, transmittance_texture, r, cos_theta,
-                                           distance_to_ground, true) *
-                     atm.ground_albedo * (1.0 / ATMOSPHERE_PI);
-    }
-    int slice_y = l * mu_s_size + mu_s_index;
-    Float domega_i = dtheta * dphi * sin_theta;
-    Float cos_phi = cos(0.5 * dphi);
-    Float sin_phi = sin(0.5 * dphi);
+    Float layer = Float(l * mu_s_size + mu_s_index);
+    Float cos_phi = cos_half;
+    Float sin_phi = sin_half;
+    vec4 rayleigh_row = vec4(0.0);
+    vec4 mie_row = vec4(0.0);
     // phi and 2 pi - phi (m and 2 SAMPLES - 1 - m) together: the view direction is in the
     // x-z plane, so both have the same phase functions towards it.
     for (int m = 0; m < SAMPLES; ++m) {
@@ -124,19 +127,55 @@ void main() {
       Float next_cos = cos_phi * cos_step - sin_phi * sin_step;
       sin_phi = sin_phi * cos_step + cos_phi * sin_step;
       cos_phi = next_cos;
-      vec4 incident_radiance =
-          incidentRadiance(r, mu_s, omega_s.x * x + omega_s.y * y + omega_s.z * cos_theta,
-                           slice_y, texel.z, single_order, nu_scale, irradiance_last,
-                           ray_r_theta_intersects_ground, distance_to_ground, ground_light) +
-          incidentRadiance(r, mu_s, omega_s.x * x - omega_s.y * y + omega_s.z * cos_theta,
-                           slice_y, texel.z, single_order, nu_scale, irradiance_last,
-                           ray_r_theta_intersects_ground, distance_to_ground, ground_light);
+      Float nu1_plane = omega_s.x * x + omega_s.z * cos_theta;
+      Float nu1_side = omega_s.y * y;
+      vec4 incident_radiance = skyRadiance(nu1_plane + nu1_side, layer, nu_to_coord) +
+                               skyRadiance(nu1_plane - nu1_side, layer, nu_to_coord);
       Float nu2 = omega.x * x + omega.z * cos_theta;
-      rayleigh_mie += incident_radiance *
-                      (rayleigh_coefficient * rayleighPhaseFunction(nu2) +
-                       mie_coefficient * miePhaseFunction(atm.mie_phase_g, nu2)) *
-                      domega_i;
+      rayleigh_row += incident_radiance * rayleighPhaseFunction(nu2);
+      mie_row += incident_radiance * miePhaseFunction(atm.mie_phase_g, nu2);
     }
+    Float domega_i = dtheta * dphi * sin_theta;
+    rayleigh_sum += rayleigh_row * domega_i;
+    mie_sum += mie_row * domega_i;
   }
+  for (int l = first_ground; l < SAMPLES; ++l) {
+    Float theta = (Float(l) + 0.5) * dtheta;
+    Float cos_theta = cos(theta);
+    Float sin_theta = sin(theta);
+    Float distance_to_ground = distanceToBottomAtmosphereBoundary(atm, r, cos_theta);
+    // The transmittance to the ground times albedo / pi.
+    vec4 ground_light = transmittanceAlongRay(atm, transmittance_texture, r, cos_theta,
+                                              distance_to_ground, true) *
+                        atm.ground_albedo * (1.0 / ATMOSPHERE_PI);
+    Float layer = Float(l * mu_s_size + mu_s_index);
+    Float cos_phi = cos_half;
+    Float sin_phi = sin_half;
+    vec4 rayleigh_row = vec4(0.0);
+    vec4 mie_row = vec4(0.0);
+    for (int m = 0; m < SAMPLES; ++m) {
+      Float x = cos_phi * sin_theta;
+      Float y = sin_phi * sin_theta;
+      Float next_cos = cos_phi * cos_step - sin_phi * sin_step;
+      sin_phi = sin_phi * cos_step + cos_phi * sin_step;
+      cos_phi = next_cos;
+      Float nu1_plane = omega_s.x * x + omega_s.z * cos_theta;
+      Float nu1_side = omega_s.y * y;
+      Float nu1_a = nu1_plane + nu1_side;
+      Float nu1_b = nu1_plane - nu1_side;
+      vec4 incident_radiance =
+          skyRadiance(nu1_a, layer, nu_to_coord) +
+          groundRadiance(r, mu_s, nu1_a, distance_to_ground, ground_light) +
+          skyRadiance(nu1_b, layer, nu_to_coord) +
+          groundRadiance(r, mu_s, nu1_b, distance_to_ground, ground_light);
+      Float nu2 = omega.x * x + omega.z * cos_theta;
+      rayleigh_row += incident_radiance * rayleighPhaseFunction(nu2);
+      mie_row += incident_radiance * miePhaseFunction(atm.mie_phase_g, nu2);
+    }
+    Float domega_i = dtheta * dphi * sin_theta;
+    rayleigh_sum += rayleigh_row * domega_i;
+    mie_sum += mie_row * domega_i;
+  }
+  vec4 rayleigh_mie = rayleigh_coefficient * rayleigh_sum + mie_coefficient * mie_sum;
   imageStore(density_out, texel, rayleigh_mie);
 }

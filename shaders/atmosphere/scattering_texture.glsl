@@ -12,6 +12,20 @@
 #define SKYIG_ATMOSPHERE_SCATTERING_TEXTURE_GLSL
 #include "atmosphere/geometry.glsl"
 
+// u_mu_s: mu_s through the distance from the ground to the top towards the sun, relative to
+// its value at mu_s_min; denser towards the horizon where the light changes fastest. The same
+// at every r and mu.
+Float scatteringUMuSFromMuS(IN(AtmosphereParameters) atm, Float mu_s) {
+  Float H = sqrt(atm.top_radius * atm.top_radius - atm.bottom_radius * atm.bottom_radius);
+  Float d = distanceToTopAtmosphereBoundary(atm, atm.bottom_radius, mu_s);
+  Float d_min = atm.top_radius - atm.bottom_radius;
+  Float d_max = H;
+  Float a = (d - d_min) / (d_max - d_min);
+  Float D = distanceToTopAtmosphereBoundary(atm, atm.bottom_radius, atm.mu_s_min);
+  Float A = (D - d_min) / (d_max - d_min);
+  return textureCoordFromUnitRange(max(1.0 - a / A, 0.0) / (1.0 + a), atm.scattering_mu_s_size);
+}
+
 vec4 scatteringUvwzFromRMuMuSNu(IN(AtmosphereParameters) atm, Float r, Float mu, Float mu_s,
                                 Float nu, bool ray_r_mu_intersects_ground) {
   Float H = sqrt(atm.top_radius * atm.top_radius - atm.bottom_radius * atm.bottom_radius);
@@ -37,18 +51,8 @@ vec4 scatteringUvwzFromRMuMuSNu(IN(AtmosphereParameters) atm, Float r, Float mu,
                                                  atm.scattering_mu_size / 2.0);
   }
 
-  // mu_s through the distance from the ground to the top towards the sun, relative to its
-  // value at mu_s_min; denser towards the horizon where the light changes fastest.
-  Float d = distanceToTopAtmosphereBoundary(atm, atm.bottom_radius, mu_s);
-  Float d_min = atm.top_radius - atm.bottom_radius;
-  Float d_max = H;
-  Float a = (d - d_min) / (d_max - d_min);
-  Float D = distanceToTopAtmosphereBoundary(atm, atm.bottom_radius, atm.mu_s_min);
-  Float A = (D - d_min) / (d_max - d_min);
-  Float u_mu_s = textureCoordFromUnitRange(max(1.0 - a / A, 0.0) / (1.0 + a),
-                                           atm.scattering_mu_s_size);
   Float u_nu = (nu + 1.0) / 2.0;
-  return vec4(u_nu, u_mu_s, u_mu, u_r);
+  return vec4(u_nu, scatteringUMuSFromMuS(atm, mu_s), u_mu, u_r);
 }
 
 void rMuMuSNuFromScatteringUvwz(IN(AtmosphereParameters) atm, IN(vec4) uvwz, OUT(Float) r,

@@ -43,7 +43,10 @@
 #define SKYIG_UNIT_DELTA_DENSITY 5     // scattering density
 #define SKYIG_UNIT_NU_SLICES_A 6       // precompute_nu_slices.comp's two outputs
 #define SKYIG_UNIT_NU_SLICES_B 7
-#define SKYIG_PRECOMPUTE_UNIT_COUNT 8  // units 0 to 7, unbound before and after
+#define SKYIG_UNIT_RAY_TRANSMITTANCE 8  // precompute_ray_transmittance.comp's two outputs
+#define SKYIG_UNIT_RAY_GEOMETRY 9
+#define SKYIG_UNIT_GROUND_IRRADIANCE 10  // the delta irradiance's ground row, a 1D texture
+#define SKYIG_PRECOMPUTE_UNIT_COUNT 11  // units 0 to 10, unbound before and after
 
 // The diffuse night sky (passes/night_diffuse.frag, NightDiffusePass).
 #define SKYIG_UNIT_MILKY_WAY 0
@@ -86,6 +89,8 @@
 #define SKYIG_IMAGE_NU_SLICES_B 1
 #define SKYIG_IMAGE_DELTA_DENSITY 0
 #define SKYIG_IMAGE_DELTA_MULTIPLE 0
+#define SKYIG_IMAGE_RAY_TRANSMITTANCE 0
+#define SKYIG_IMAGE_RAY_GEOMETRY 1
 #define SKYIG_IMAGE_SKY_VIEW 0  // atmosphere/sky_view.comp's panorama
 #define SKYIG_PRECOMPUTE_IMAGE_COUNT 4  // image units 0 to 3, unbound after
 

@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace skyig::services {
@@ -21,9 +22,21 @@ bool SkyWorker::followAtmosphere(const HostSnapshot* host, Clock::time_point now
   if (host) {
     try {
       if (const auto c = hostAtmosphere_.observe(host->state.visibilityM, host->state.humidityPct, now)) {
-        spdlog::info("physical sky: visibility {:.0f} m, humidity {:.0f} %: new tables requested",
-                     host->state.visibilityM, host->state.humidityPct);
-        updater_->request(nodeModelConfig(config_, *c));
+        // Replay waits for the exact tables: no blend for it.
+        const atmosphere::RequestAnswer a = updater_->request(nodeModelConfig(config_, *c), /*blend=*/!wait);
+        const double km = host->state.visibilityM / 1000.0;
+        using Kind = atmosphere::RequestAnswer::Kind;
+        if (a.kind == Kind::kBlended && a.lowerKm != a.upperKm)
+          spdlog::info("physical sky: visibility {:.3g} km: blending the {:.3g} and {:.3g} km tables until the exact ones are built",
+                       km, std::min(a.lowerKm, a.upperKm), std::max(a.lowerKm, a.upperKm));
+        else if (a.kind == Kind::kBlended)
+          spdlog::info("physical sky: visibility {:.3g} km: showing the nearest step, the {:.3g} km tables, until the exact ones are built",
+                       km, a.lowerKm);
+        else if (a.kind == Kind::kStep)
+          spdlog::info("physical sky: visibility {:.3g} km: the cached step's tables", km);
+        else
+          spdlog::info("physical sky: visibility {:.3g} km, humidity {:.0f} %: new tables requested{}{}", km,
+                       host->state.humidityPct, a.why.empty() ? "" : "; no blend: ", a.why);
         if (wait) updater_->waitIdle();
       }
     } catch (const std::invalid_argument& e) {

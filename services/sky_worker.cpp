@@ -2,7 +2,6 @@
 
 #include <spdlog/spdlog.h>
 
-#include <algorithm>
 #include <stdexcept>
 
 namespace skyig::services {
@@ -24,19 +23,9 @@ bool SkyWorker::followAtmosphere(const HostSnapshot* host, Clock::time_point now
       if (const auto c = hostAtmosphere_.observe(host->state.visibilityM, host->state.humidityPct, now)) {
         // Replay waits for the exact tables: no blend for it.
         const atmosphere::RequestAnswer a = updater_->request(nodeModelConfig(config_, *c), /*blend=*/!wait);
-        const double km = host->state.visibilityM / 1000.0;
-        using Kind = atmosphere::RequestAnswer::Kind;
-        if (a.kind == Kind::kBlended && a.lowerKm != a.upperKm)
-          spdlog::info("physical sky: visibility {:.3g} km: blending the {:.3g} and {:.3g} km tables until the exact ones are built",
-                       km, std::min(a.lowerKm, a.upperKm), std::max(a.lowerKm, a.upperKm));
-        else if (a.kind == Kind::kBlended)
-          spdlog::info("physical sky: visibility {:.3g} km: showing the nearest step, the {:.3g} km tables, until the exact ones are built",
-                       km, a.lowerKm);
-        else if (a.kind == Kind::kStep)
-          spdlog::info("physical sky: visibility {:.3g} km: the cached step's tables", km);
-        else
-          spdlog::info("physical sky: visibility {:.3g} km, humidity {:.0f} %: new tables requested{}{}", km,
-                       host->state.humidityPct, a.why.empty() ? "" : "; no blend: ", a.why);
+        spdlog::info("physical sky: visibility {:.3g} km, humidity {:.0f} %: new tables requested{}{}",
+                     host->state.visibilityM / 1000.0, host->state.humidityPct,
+                     a.why.empty() ? "" : " (no blend: ", a.why.empty() ? "" : a.why + ")");
         if (wait) updater_->waitIdle();
       }
     } catch (const std::invalid_argument& e) {
@@ -48,6 +37,15 @@ bool SkyWorker::followAtmosphere(const HostSnapshot* host, Clock::time_point now
   if (generation == generation_) return false;
   generation_ = generation;
   conditions_.atmosphere = updater_->current();
+  const double km = atmosphere::visibilityOf(conditions_.atmosphere->config().medium);
+  if (const auto& b = conditions_.atmosphere->blendOrigin(); b && b->clearerKm != b->hazierKm)
+    spdlog::info("physical sky: visibility {:.3g} km: blending the {:.3g} and {:.3g} km tables until the exact ones are built",
+                 km, b->hazierKm, b->clearerKm);
+  else if (b)
+    spdlog::info("physical sky: visibility {:.3g} km: showing the nearest step's, the {:.3g} km tables, until the exact ones are built",
+                 km, b->clearerKm);
+  else
+    spdlog::info("physical sky: visibility {:.3g} km: its own tables are shown", km);
   return true;
 }
 

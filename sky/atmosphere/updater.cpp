@@ -37,6 +37,7 @@ AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial,
     }
   }
   worker_ = std::thread([this] { run(); });
+  blender_ = std::thread([this] { runBlends(); });
 }
 
 AtmosphereUpdater::~AtmosphereUpdater() {
@@ -47,20 +48,42 @@ AtmosphereUpdater::~AtmosphereUpdater() {
   cancel_ = true;  // a running precomputation stops at its next slice
   yield_ = true;
   wake_.notify_all();
+  blendWake_.notify_all();
   worker_.join();
+  blender_.join();  // a blend in progress ends first (under a second for the medium tables)
 }
 
 RequestAnswer AtmosphereUpdater::request(const ModelConfig& config, bool blend) {
-  std::uint64_t sequence = 0;
+  RequestAnswer answer;
+  std::optional<StepBracket> bracket;
+  if (blend && !steps_.empty()) {
+    // Cheap checks here (hashes, a stat); the blend itself on the blend thread.
+    bracket = bracketSteps(steps_, config);
+    if (!bracket) {
+      answer.why = "the request differs from the visibility steps in more than the aerosols";
+    } else if (directoryFor(config) == stepsDirectory_ || parameterHash(steps_[0]) == parameterHash(config)) {
+      answer.why = "it is a step: its tables load at once";
+      bracket.reset();
+    } else if (cacheFileExists(cacheDirectory_, config)) {
+      answer.why = "its tables are in the cache and load at once";
+      bracket.reset();
+    } else {
+      answer.kind = RequestAnswer::Kind::kBlending;
+      answer.lowerKm = visibilityOf(steps_[bracket->lower].medium);
+      answer.upperKm = visibilityOf(steps_[bracket->upper].medium);
+      answer.weight = bracket->weight;
+    }
+  }
   {
     std::lock_guard<std::mutex> lock(mutex_);
     pending_ = config;
-    sequence = ++requests_;
+    const std::uint64_t sequence = ++requests_;
     if (buildingStep_) yield_ = true;  // the host's tables first; the step is built again later
+    if (bracket) blendJob_ = BlendJob{config, *bracket, sequence};
   }
   wake_.notify_all();
-  if (!blend || steps_.empty()) return {};
-  return blendFor(config, sequence);
+  blendWake_.notify_all();
+  return answer;
 }
 
 const std::filesystem::path& AtmosphereUpdater::directoryFor(const ModelConfig& config) const {
@@ -70,66 +93,62 @@ const std::filesystem::path& AtmosphereUpdater::directoryFor(const ModelConfig& 
   return cacheDirectory_;
 }
 
-RequestAnswer AtmosphereUpdater::blendFor(const ModelConfig& config, std::uint64_t sequence) {
-  RequestAnswer answer;
-  const std::optional<StepBracket> bracket = bracketSteps(steps_, config);
-  if (!bracket) {
-    answer.why = "the request differs from the visibility steps in more than the aerosols";
-    return answer;
-  }
-  const std::uint64_t hash = parameterHash(config);
-  const bool isStep = parameterHash(steps_[bracket->lower]) == hash;
-  // Exact tables in the cache load about as fast as two steps: no blend then.
-  if (!isStep && cacheFileExists(cacheDirectory_, config)) {
-    answer.why = "its tables are in the cache";
-    return answer;
-  }
-  std::lock_guard<std::mutex> steps(stepsMutex_);
+std::shared_ptr<const AtmosphereModel> AtmosphereUpdater::blend(const BlendJob& job) {
+  const StepBracket& bracket = job.bracket;
   auto load = [&](std::size_t i) -> bool {
     if (stepModels_[i]) return true;
     std::string reason;
     auto tables = readTableCache(cacheFilePath(stepsDirectory_, steps_[i]), steps_[i], &reason);
     if (!tables) {
-      answer.why = "the " + std::to_string(visibilityOf(steps_[i].medium)) + " km step is not usable yet (" + reason + ")";
+      std::fprintf(stderr, "physical sky: no blend: the %.3g km visibility step is not usable yet (%s)\n",
+                   visibilityOf(steps_[i].medium), reason.c_str());
       std::lock_guard<std::mutex> lock(mutex_);
       if (std::find(stepsToBuild_.begin(), stepsToBuild_.end(), i) == stepsToBuild_.end()) stepsToBuild_.push_back(i);
+      wake_.notify_all();  // build it
       return false;
     }
     stepModels_[i] = std::make_shared<const AtmosphereModel>(steps_[i], std::move(*tables));
     return true;
   };
-  const bool pair = bracket->lower != bracket->upper;
-  if (!load(bracket->lower) || (pair && !load(bracket->upper))) {
-    wake_.notify_all();  // build it
-    return answer;
-  }
+  const bool pair = bracket.lower != bracket.upper;
+  if (!load(bracket.lower) || (pair && !load(bracket.upper))) return nullptr;
   // A third step sharpens the blend (visibility_blend.h); without its tables, two will do.
-  const bool third = pair && bracket->third && load(*bracket->third);
-  // A step itself is shown as it is; any other visibility with its own config: a blend, or the
-  // nearest step's tables beyond the ladder's ends.
+  const bool third = pair && bracket.third && load(*bracket.third);
   const auto& m = stepModels_;
-  std::shared_ptr<const AtmosphereModel> model =
-      isStep ? m[bracket->lower]
-      : pair ? std::make_shared<const AtmosphereModel>(
-                   blendModels(*m[bracket->lower], *m[bracket->upper], third ? m[*bracket->third].get() : nullptr, config))
-             : std::make_shared<const AtmosphereModel>(nearestStepModel(*m[bracket->lower], config));
+  auto model = pair ? std::make_shared<const AtmosphereModel>(blendModels(
+                          *m[bracket.lower], *m[bracket.upper], third ? m[*bracket.third].get() : nullptr, job.config))
+                    : std::make_shared<const AtmosphereModel>(nearestStepModel(*m[bracket.lower], job.config));
   // Keep the steps just used and the initial model; a fog ramp stays within them.
   for (std::size_t i = 1; i < stepModels_.size(); ++i)
-    if (i != bracket->lower && i != bracket->upper && !(third && i == *bracket->third)) stepModels_[i].reset();
-  answer.kind = isStep ? RequestAnswer::Kind::kStep : RequestAnswer::Kind::kBlended;
-  answer.lowerKm = visibilityOf(steps_[bracket->lower].medium);
-  answer.upperKm = visibilityOf(steps_[bracket->upper].medium);
-  answer.weight = bracket->weight;
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (requests_ != sequence) return RequestAnswer{};  // a newer request came meanwhile
-  current_ = std::move(model);
-  ++generation_;
-  blendSequence_ = sequence;
-  if (isStep && pending_) {  // already exact: nothing left to load
-    pending_.reset();
+    if (i != bracket.lower && i != bracket.upper && !(third && i == *bracket.third)) stepModels_[i].reset();
+  return model;
+}
+
+void AtmosphereUpdater::runBlends() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (true) {
+    blendWake_.wait(lock, [this] { return stop_ || blendJob_.has_value(); });
+    if (stop_) return;
+    const BlendJob job = *blendJob_;
+    blendJob_.reset();
+    blending_ = true;
+    lock.unlock();
+    std::shared_ptr<const AtmosphereModel> model;
+    try {
+      model = blend(job);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "physical sky: no blend: %s\n", e.what());
+    }
+    lock.lock();
+    blending_ = false;
+    // Only while it is the latest request and its exact tables have not come first.
+    if (model && requests_ == job.sequence && exactSequence_ < job.sequence) {
+      current_ = std::move(model);
+      ++generation_;
+      blendSequence_ = job.sequence;
+    }
     idle_.notify_all();
   }
-  return answer;
 }
 
 std::shared_ptr<const AtmosphereModel> AtmosphereUpdater::current() const {
@@ -180,8 +199,13 @@ void AtmosphereUpdater::waitIdle() {
   std::unique_lock<std::mutex> lock(mutex_);
   const CancelToken stopped(stopFlag_);
   // The stop flag is set from a signal handler, which cannot notify: poll it.
-  while (!idle_.wait_for(lock, std::chrono::milliseconds(50), [this] { return !busy_ && !pending_; }))
+  while (!idle_.wait_for(lock, std::chrono::milliseconds(50), [this] { return !busy_ && !pending_ && !blendJob_ && !blending_; }))
     if (stopped.requested()) return;
+}
+
+void AtmosphereUpdater::waitForBlend() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  idle_.wait(lock, [this] { return stop_ || (!blendJob_ && !blending_); });
 }
 
 void AtmosphereUpdater::run() {
@@ -242,6 +266,7 @@ void AtmosphereUpdater::run() {
     } else if (model) {
       current_ = std::move(model);
       ++generation_;
+      exactSequence_ = sequence;
       lastError_.clear();
     } else {
       lastError_ = error;

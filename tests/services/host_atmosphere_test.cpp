@@ -175,8 +175,11 @@ TEST(SkyWorkerVisibility, NextStateShowsTheHostsVisibilityBlendedThenExact) {
   ASSERT_TRUE(first);
   EXPECT_GT(atmosphere::visibilityOf(first->conditions.atmosphere->config().medium), 100.0);  // the configuration's
 
-  // Settled: the request is answered by a blend, and the next state has it.
-  ASSERT_TRUE(worker.followAtmosphere(&host, t0 + 600ms));
+  // Settled: the request is answered by a blend (made on the updater's blend thread, waited for
+  // here), and the next state has it.
+  EXPECT_FALSE(worker.followAtmosphere(&host, t0 + 600ms));  // asks
+  updater.waitForBlend();
+  ASSERT_TRUE(worker.followAtmosphere(&host, t0 + 650ms));
   const auto blended = worker.step(&host, t0 + 600ms, /*force=*/true);
   ASSERT_TRUE(blended);
   const auto& blend = blended->conditions.atmosphere;

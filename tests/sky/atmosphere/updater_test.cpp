@@ -297,10 +297,11 @@ TEST(AtmosphereUpdater, RequestBetweenStepsIsBlendedAtOnceThenExact) {
   const std::uint64_t before = updater.generation();
 
   const RequestAnswer answer = updater.request(tinyAt(7.0));
-  EXPECT_EQ(answer.kind, RequestAnswer::Kind::kBlended) << answer.why;
+  EXPECT_EQ(answer.kind, RequestAnswer::Kind::kBlending) << answer.why;
   EXPECT_NEAR(answer.lowerKm, 10.0, 1e-9);
   EXPECT_NEAR(answer.upperKm, 5.0, 1e-9);
-  // When request() returns, the blend is current; the exact tables are still held back.
+  // Once blended, the blend is current; the exact tables are still held back.
+  updater.waitForBlend();
   const auto blend = updater.current();
   EXPECT_EQ(updater.generation(), before + 1);
   EXPECT_TRUE(updater.currentIsBlend());
@@ -317,15 +318,21 @@ TEST(AtmosphereUpdater, RequestBetweenStepsIsBlendedAtOnceThenExact) {
   EXPECT_NE(exact->tables(0).scattering.texels, blend->tables(0).scattering.texels);
   EXPECT_EQ(exact->tables(0).scattering.texels, testing::cachedModel(tinyAt(7.0)).tables(0).scattering.texels);
 
-  // A step itself is exact at once (its tables were in memory), beyond the ladder the nearest
-  // step stands in, and another ground albedo cannot be blended.
-  EXPECT_EQ(updater.request(tinyAt(5.0)).kind, RequestAnswer::Kind::kStep);
+  // A step itself is loaded, not blended; beyond the ladder the nearest step stands in; another
+  // ground albedo cannot be blended.
+  const RequestAnswer step = updater.request(tinyAt(5.0));
+  EXPECT_EQ(step.kind, RequestAnswer::Kind::kQueued);
+  EXPECT_NE(step.why.find("a step"), std::string::npos) << step.why;
+  updater.waitIdle();
   EXPECT_FALSE(updater.currentIsBlend());
+  std::string reason;
+  const auto stepTables = readTableCache(cacheFilePath(steps.directory, tinyAt(5.0)), tinyAt(5.0), &reason);
+  ASSERT_TRUE(stepTables) << reason;
+  EXPECT_EQ(updater.current()->tables(0).scattering.texels, stepTables->at(0).scattering.texels);
   const RequestAnswer fog = updater.request(tinyAt(0.5));
-  EXPECT_EQ(fog.kind, RequestAnswer::Kind::kBlended);
+  EXPECT_EQ(fog.kind, RequestAnswer::Kind::kBlending);
   EXPECT_NEAR(fog.lowerKm, 2.0, 1e-9);
   EXPECT_NEAR(fog.upperKm, 2.0, 1e-9);
-  EXPECT_TRUE(updater.currentIsBlend());
   ModelConfig albedo = tinyAt(7.0);
   albedo.medium.groundAlbedo = 0.3;
   const RequestAnswer other = updater.request(albedo);
@@ -345,8 +352,12 @@ TEST(AtmosphereUpdater, OlderRequestsTablesNeverReplaceANewerBlend) {
   AtmosphereUpdater updater(tinyAt(50.0), dir, gate.builder(), {}, nullptr, steps);
   updater.waitSteps();
   const std::uint64_t before = updater.generation();
-  EXPECT_EQ(updater.request(tinyAt(7.0)).kind, RequestAnswer::Kind::kBlended);
-  EXPECT_EQ(updater.request(tinyAt(3.0)).kind, RequestAnswer::Kind::kBlended);
+  EXPECT_EQ(updater.request(tinyAt(7.0)).kind, RequestAnswer::Kind::kBlending);
+  updater.waitForBlend();
+  EXPECT_EQ(updater.generation(), before + 1);
+  EXPECT_EQ(updater.request(tinyAt(3.0)).kind, RequestAnswer::Kind::kBlending);
+  updater.waitForBlend();
+  EXPECT_EQ(updater.generation(), before + 2);
   gate.open();
   updater.waitIdle();
   // Two blends and the 3 km tables; the 7 km ones (if built before the newer request replaced

@@ -164,14 +164,22 @@ std::shared_ptr<const atmosphere::AtmosphereModel> loadNodeAtmosphere(const Node
   return loaded;
 }
 
+atmosphere::VisibilitySteps visibilitySteps(const NodeConfig& config) {
+  return {config.atmosphere.visibilityStepsKm, cacheDirectory(config.atmosphere) / "visibility-steps"};
+}
+
 std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config, bool rateLimited,
                                                                      const std::atomic<bool>* stop) {
   if (config.sky.model != sky::SkyModel::Physical) return nullptr;
   atmosphere::UpdaterLimits limits;
   limits.maxCacheBytes = config.atmosphere.cacheMaxBytes;
   limits.minBuildIntervalS = rateLimited ? config.atmosphere.buildIntervalS : 0.0;
+  // serve blends between cached visibility steps while a host's tables are built; replay waits
+  // for each visibility's exact tables anyway.
+  atmosphere::VisibilitySteps steps;
+  if (rateLimited) steps = visibilitySteps(config);
   return std::make_unique<atmosphere::AtmosphereUpdater>(nodeModelConfig(config, {}), cacheDirectory(config.atmosphere),
-                                                         atmosphereTableBuilder(), limits, stop);
+                                                         atmosphereTableBuilder(), limits, stop, std::move(steps));
 }
 
 void loadAtmosphereIfNeeded(NodeConfig& config, const std::atomic<bool>* stop) {

@@ -61,9 +61,14 @@ void loadAtmosphereIfNeeded(NodeConfig& config, const std::atomic<bool>* stop = 
 // (from the cache loadAtmosphereIfNeeded filled), later ones are built by
 // atmosphereTableBuilder. Null unless the sky is physical. The cache keeps to
 // sky.atmosphere_cache_max_mb; with rateLimited (serve) at most one precompute per
-// sky.atmosphere_build_interval seconds; replay builds every held visibility (it waits for the
+// sky.atmosphere_build_interval seconds, and a visibility between two cached steps blended from
+// them at once (visibilitySteps; their missing tables built in the background); replay builds every held visibility (it waits for the
 // tables and follows the recording's clock, not this machine's). `stop` (the command's signal
 // flag) ends its precomputes and waits at once (atmosphere/updater.h).
+// The visibility steps of the node (sky.atmosphere_visibility_steps), cached in the folder
+// "visibility-steps" of the cache directory, which the cache's size bound does not reach.
+atmosphere::VisibilitySteps visibilitySteps(const NodeConfig& config);
+
 std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeConfig& config, bool rateLimited = true,
                                                                      const std::atomic<bool>* stop = nullptr);
 

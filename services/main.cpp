@@ -10,6 +10,7 @@
 #include "services/commands/dome_command.h"
 #include "services/commands/ephemeris_command.h"
 #include "services/commands/host_command.h"
+#include "services/commands/precompute_command.h"
 #include "services/commands/probe_command.h"
 #include "services/commands/render_command.h"
 #include "services/commands/replay_command.h"
@@ -47,6 +48,7 @@ int main(int argc, char** argv) {
   registerHostCommand(app, exitCode);
   registerRecordCommand(app, exitCode);
   registerProbeCommand(app, exitCode);
+  registerPrecomputeCommand(app, exitCode);
   registerReplayCommand(app, exitCode);
   registerDomeCommand(app, exitCode);
 

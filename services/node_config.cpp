@@ -117,6 +117,17 @@ void readSky(TableReader& r, skyig::sky::SkyConditions& sky, AtmosphereSettings&
   atmosphere.cacheMaxBytes = static_cast<std::uint64_t>(
       r.integer("atmosphere_cache_max_mb", static_cast<int>(atmosphere.cacheMaxBytes >> 20), 0, 1 << 20)) << 20;
   atmosphere.buildIntervalS = r.number("atmosphere_build_interval", atmosphere.buildIntervalS, 0.0, 86400.0);
+  if (const toml::node* n = r.find("atmosphere_visibility_steps")) {
+    const toml::array* list = n->as_array();
+    if (!list) r.fail(n, "atmosphere_visibility_steps", "expected a list of visibilities in km, e.g. [2, 5, 10, 20, 50]");
+    atmosphere.visibilityStepsKm.clear();
+    for (const toml::node& item : *list) {
+      const std::optional<double> km = item.value<double>();
+      if (!km || !(*km >= 0.05 && *km <= 280.0))
+        r.fail(&item, "atmosphere_visibility_steps", "expected visibilities in km within [0.05, 280]");
+      atmosphere.visibilityStepsKm.push_back(*km);
+    }
+  }
   starCatalogue = r.string("star_catalogue", starCatalogue);
   r.rejectUnknownKeys();
 }

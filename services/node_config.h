@@ -9,6 +9,7 @@
 #include "sky/common/sky_conditions.h"
 #include "sky/atmosphere/conditions.h"
 #include "sky/atmosphere/medium.h"
+#include "sky/atmosphere/visibility_blend.h"
 #include "sky/sky_state.h"
 
 #include <optional>
@@ -51,6 +52,11 @@ struct AtmosphereSettings {
   // visibility must also be held for the debounce time (services/host_atmosphere.h).
   std::uint64_t cacheMaxBytes = 512ull << 20;
   double buildIntervalS = 60.0;
+  // Visibilities (km) whose tables `serve` keeps besides the configuration's own ([sky]
+  // atmosphere_visibility_steps; built in the background on a first start, or by `skyig
+  // precompute`): a host's visibility between two is shown at once as their blend while its
+  // exact tables are built (sky/atmosphere/visibility_blend.h). Empty: no blending.
+  std::vector<double> visibilityStepsKm = atmosphere::defaultVisibilityStepsKm();
 };
 
 // The default sky: the physical atmosphere (Bruneton & Neyret 2008, docs/atmosphere.md).

@@ -21,9 +21,11 @@ bool SkyWorker::followAtmosphere(const HostSnapshot* host, Clock::time_point now
   if (host) {
     try {
       if (const auto c = hostAtmosphere_.observe(host->state.visibilityM, host->state.humidityPct, now)) {
-        spdlog::info("physical sky: visibility {:.0f} m, humidity {:.0f} %: new tables requested",
-                     host->state.visibilityM, host->state.humidityPct);
-        updater_->request(nodeModelConfig(config_, *c));
+        // Replay waits for the exact tables: no blend for it.
+        const atmosphere::RequestAnswer a = updater_->request(nodeModelConfig(config_, *c), /*blend=*/!wait);
+        spdlog::info("physical sky: visibility {:.3g} km, humidity {:.0f} %: new tables requested{}{}",
+                     host->state.visibilityM / 1000.0, host->state.humidityPct,
+                     a.why.empty() ? "" : " (no blend: ", a.why.empty() ? "" : a.why + ")");
         if (wait) updater_->waitIdle();
       }
     } catch (const std::invalid_argument& e) {
@@ -35,6 +37,15 @@ bool SkyWorker::followAtmosphere(const HostSnapshot* host, Clock::time_point now
   if (generation == generation_) return false;
   generation_ = generation;
   conditions_.atmosphere = updater_->current();
+  const double km = atmosphere::visibilityOf(conditions_.atmosphere->config().medium);
+  if (const auto& b = conditions_.atmosphere->blendOrigin(); b && b->clearerKm != b->hazierKm)
+    spdlog::info("physical sky: visibility {:.3g} km: blending the {:.3g} and {:.3g} km tables until the exact ones are built",
+                 km, b->hazierKm, b->clearerKm);
+  else if (b)
+    spdlog::info("physical sky: visibility {:.3g} km: showing the nearest step's, the {:.3g} km tables, until the exact ones are built",
+                 km, b->clearerKm);
+  else
+    spdlog::info("physical sky: visibility {:.3g} km: its own tables are shown", km);
   return true;
 }
 

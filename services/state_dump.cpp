@@ -75,6 +75,12 @@ void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const sky
       {"sun", {{"azimuth_deg", used.sunAzimuth / kDeg}, {"altitude_deg", used.sunAltitude / kDeg},
                {"altitude_refracted_deg", used.sunApparentAltitude / kDeg}}},
   };
+  // Tables blended from two visibility steps while the exact ones are built (the hash above is
+  // the exact tables' they stand in for).
+  if (used.conditions.atmosphere && used.conditions.atmosphere->blendOrigin()) {
+    const auto& b = *used.conditions.atmosphere->blendOrigin();
+    line["used"]["atmosphere_blend"] = {{"clearer_km", b.clearerKm}, {"hazier_km", b.hazierKm}, {"weight", b.weight}};
+  }
   if (used.ephemeris) {
     const auto& m = used.ephemeris->moon;
     line["moon"] = {{"azimuth_deg", m.azimuthRad / kDeg}, {"altitude_deg", m.altitudeRad / kDeg},

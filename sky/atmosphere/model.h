@@ -13,6 +13,7 @@
 // keys, and the names error messages give bad values.
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <vector>
 
 #include "sky/atmosphere/precompute.h"
@@ -48,6 +49,16 @@ class AtmosphereModel {
   const GroupTables& tables(std::size_t group) const { return tables_.at(group); }
   const AtmosphereParameters& parameters(std::size_t group) const { return params_.at(group); }
 
+  // Set when the tables are not the config's own but blended from two cached visibility steps
+  // (visibility_blend.h), standing in while the exact ones are built; what a state dump says.
+  struct BlendOrigin {
+    double clearerKm;  // the steps' visibilities (equal when the nearest step stands in alone)
+    double hazierKm;
+    double weight;     // of the hazier step
+  };
+  const std::optional<BlendOrigin>& blendOrigin() const { return blendOrigin_; }
+  void setBlendOrigin(const BlendOrigin& origin) { blendOrigin_ = origin; }
+
   // Light scattered into the view ray up to the ground or space; *transmittance (if given)
   // is that of the whole ray, zero when it hits the ground.
   Spectrum skyRadiance(const glm::dvec3& camera, const glm::dvec3& view, const glm::dvec3& sun,
@@ -80,6 +91,7 @@ class AtmosphereModel {
   SpectralConverter converter_;
   std::vector<AtmosphereParameters> params_;
   std::vector<GroupTables> tables_;
+  std::optional<BlendOrigin> blendOrigin_;
 };
 
 // Position of an observer at `altitudeM` above the ground on the +z axis, and directions

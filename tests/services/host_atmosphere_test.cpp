@@ -4,18 +4,31 @@
 // a model whose aerosols give the host's visibility (Koschmieder).
 #include "sky/atmosphere/updater.h"
 #include "services/host_atmosphere.h"
+#include "services/atmosphere_loader.h"
+#include "services/node_config.h"
+#include "services/sky_data.h"
+#include "services/sky_worker.h"
+#include "sky/atmosphere/conditions.h"
+#include "sky/atmosphere/parameter_hash.h"
 
 #include "tests/services/test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdio>
+#include <condition_variable>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
 #include <cmath>
 #include <limits>
 
 using namespace skyig::services;
 namespace atmosphere = skyig::atmosphere;
 using namespace std::chrono_literals;
+using namespace skyig::services::testing;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -113,6 +126,87 @@ TEST(HostAtmosphere, NodeTablesFollowTheConfiguredMedium) {
   hazy.visibilityKm = 5.0;
   EXPECT_NEAR(atmosphere::visibilityOf(nodeModelConfig(config, hazy).medium), 5.0, 1e-9);
   EXPECT_EQ(nodeModelConfig(config, hazy).medium.miePhaseG, 0.7);
+}
+
+// The node's half: a host's new visibility, between two cached steps, is in the very next state
+// the worker builds once the value has settled (a blend: it says so), while the exact tables are
+// still being built (held back here until the test lets them finish); the state after they are
+// done has them. Small tables at 16 wavelengths: the steps and the exact 7 km tables are
+// computed once into the build tree's cache, then loaded.
+TEST(SkyWorkerVisibility, NextStateShowsTheHostsVisibilityBlendedThenExact) {
+  const fs::path dir = freshTestDirectory("skyig_visibility_blend_");
+  const fs::path shared = fs::path(SKYIG_BINARY_DIR) / "atmosphere-test-cache" / "visibility-blend-node";
+  std::ofstream(dir / "node.toml") << "[sky]\nmodel = \"physical\"\natmosphere_tables = \"small\"\natmosphere_cache = \""
+                                   << shared.string() << "\"\n[[channel]]\nname = \"front\"\nwidth = 32\nheight = 24\n";
+  NodeConfig config = loadNodeConfig((dir / "node.toml").string());
+  loadSkyData(config);  // the configuration's tables, from the shared cache
+  atmosphere::Conditions sevenKm;
+  sevenKm.visibilityKm = 7.0;
+  const std::uint64_t held = atmosphere::parameterHash(nodeModelConfig(config, sevenKm));
+  // The "precompute" loads from (or, the first time, computes into) the shared cache; the 7 km
+  // tables wait for the gate.
+  std::mutex mutex;
+  std::condition_variable wake;
+  bool open = false;
+  const atmosphere::TableBuilder builder = [&](const atmosphere::ModelConfig& c, const atmosphere::PrecomputeControl& control) {
+    if (atmosphere::parameterHash(c) == held) {
+      std::unique_lock<std::mutex> lock(mutex);
+      while (!wake.wait_for(lock, 10ms, [&] { return open; })) control.cancel.throwIfRequested();
+    }
+    const atmosphere::AtmosphereModel m = atmosphere::loadOrPrecompute(c, shared, nullptr, atmosphereTableBuilder(), 0, control);
+    std::vector<atmosphere::GroupTables> tables;
+    for (std::size_t g = 0; g < m.groupCount(); ++g) tables.push_back(m.tables(g));
+    return tables;
+  };
+  atmosphere::AtmosphereUpdater updater(nodeModelConfig(config, {}), dir / "cache", builder, {}, nullptr,
+                                        {{10.0, 5.0}, shared / "steps"});
+  updater.waitSteps();
+  ASSERT_EQ(updater.stepFailures(), 0u);
+  NodeStats stats;
+  SkyWorker worker(config, &updater, stats);
+
+  HostSnapshot host;
+  const Clock::time_point t0 = Clock::now();
+  host.state.updates = 1;
+  host.state.received = t0;
+  host.state.visibilityM = 7000.0;
+  EXPECT_FALSE(worker.followAtmosphere(&host, t0));  // not settled yet
+  const auto first = worker.step(&host, t0);
+  ASSERT_TRUE(first);
+  EXPECT_GT(atmosphere::visibilityOf(first->conditions.atmosphere->config().medium), 100.0);  // the configuration's
+
+  // Settled: the request is answered by a blend (made on the updater's blend thread, waited for
+  // here), and the next state has it.
+  EXPECT_FALSE(worker.followAtmosphere(&host, t0 + 600ms));  // asks
+  updater.waitForBlend();
+  ASSERT_TRUE(worker.followAtmosphere(&host, t0 + 650ms));
+  const auto blended = worker.step(&host, t0 + 600ms, /*force=*/true);
+  ASSERT_TRUE(blended);
+  const auto& blend = blended->conditions.atmosphere;
+  EXPECT_NEAR(atmosphere::visibilityOf(blend->config().medium), 7.0, 1e-9);
+  ASSERT_TRUE(blend->blendOrigin());
+  EXPECT_NEAR(blend->blendOrigin()->clearerKm, 10.0, 1e-9);
+  EXPECT_NEAR(blend->blendOrigin()->hazierKm, 5.0, 1e-9);
+  EXPECT_FALSE(worker.followAtmosphere(&host, t0 + 700ms));  // nothing newer yet
+
+  // The exact tables replace it once built.
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    open = true;
+  }
+  wake.notify_all();
+  updater.waitIdle();
+  ASSERT_TRUE(worker.followAtmosphere(&host, t0 + 800ms));
+  const auto exact = worker.step(&host, t0 + 800ms, /*force=*/true);
+  ASSERT_TRUE(exact);
+  EXPECT_FALSE(exact->conditions.atmosphere->blendOrigin());
+  EXPECT_NEAR(atmosphere::visibilityOf(exact->conditions.atmosphere->config().medium), 7.0, 1e-9);
+  // What the eye adapts to (the scene's luminance) barely moves when the exact tables come.
+  std::printf("scene luminance: configured %.4g, blended %.4g, exact %.4g cd/m^2\n", first->sceneLuminance,
+              blended->sceneLuminance, exact->sceneLuminance);
+  EXPECT_NEAR(blended->sceneLuminance / exact->sceneLuminance, 1.0, 0.05);
+  EXPECT_GT(std::abs(first->sceneLuminance / exact->sceneLuminance - 1.0), 0.05);  // the haze shows
+  fs::remove_all(dir);
 }
 
 }  // namespace

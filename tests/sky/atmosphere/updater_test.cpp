@@ -2,7 +2,10 @@
 // request leaves the last good model in place.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
+#include <condition_variable>
+#include <mutex>
 #include <chrono>
 #include <string>
 #include <thread>
@@ -12,6 +15,8 @@
 #include <thread>
 
 #include "sky/atmosphere/conditions.h"
+#include "sky/atmosphere/parameter_hash.h"
+#include "sky/atmosphere/visibility_blend.h"
 #include "sky/atmosphere/precompute.h"
 #include "sky/atmosphere/updater.h"
 #include "shared_models.h"
@@ -237,6 +242,153 @@ TEST(AtmosphereUpdater, StopFlagEndsTheInitialPrecomputeAndWaitIdle) {
 }
 
 // A precompute asked to stop before it starts does no work at all.
+// A builder that holds the tables of chosen configurations back until the test opens its gate
+// (so "while the exact tables are being built" is a state, not a race), and counts its builds.
+class GatedBuilder {
+ public:
+  void hold(const ModelConfig& c) { held_.push_back(parameterHash(c)); }
+  void open() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      open_ = true;
+    }
+    wake_.notify_all();
+  }
+  int builds() const { return builds_; }
+  TableBuilder builder() {
+    return [this](const ModelConfig& c, const PrecomputeControl& control) {
+      if (std::find(held_.begin(), held_.end(), parameterHash(c)) != held_.end()) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        while (!wake_.wait_for(lock, std::chrono::milliseconds(10), [this] { return open_; }))
+          control.cancel.throwIfRequested();
+      }
+      ++builds_;
+      return precomputeTablesOnCpu(c, control);
+    };
+  }
+
+ private:
+  std::vector<std::uint64_t> held_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool open_ = false;
+  std::atomic<int> builds_{0};
+};
+
+ModelConfig tinyAt(double km) { return configAtVisibility(tinyConfig(0.1), km); }
+
+VisibilitySteps freshSteps(const std::filesystem::path& dir) {
+  std::filesystem::remove_all(dir);
+  return {{10.0, 5.0, 2.0}, dir / "visibility-steps"};
+}
+
+// A visibility between two cached steps is shown at once, blended, while its exact tables are
+// built; then the exact tables replace the blend.
+TEST(AtmosphereUpdater, RequestBetweenStepsIsBlendedAtOnceThenExact) {
+  const auto dir = testing::testCacheDirectory() / "updater-steps";
+  VisibilitySteps steps = freshSteps(dir);
+  GatedBuilder gate;
+  gate.hold(tinyAt(7.0));
+  AtmosphereUpdater updater(tinyAt(50.0), dir, gate.builder(), {}, nullptr, steps);
+  updater.waitSteps();
+  EXPECT_EQ(updater.stepBuilds(), 3u);
+  EXPECT_EQ(updater.stepFailures(), 0u);
+  for (double km : {10.0, 5.0, 2.0}) EXPECT_TRUE(cacheFileExists(steps.directory, tinyAt(km))) << km;
+  const std::uint64_t before = updater.generation();
+
+  const RequestAnswer answer = updater.request(tinyAt(7.0));
+  EXPECT_EQ(answer.kind, RequestAnswer::Kind::kBlending) << answer.why;
+  EXPECT_NEAR(answer.lowerKm, 10.0, 1e-9);
+  EXPECT_NEAR(answer.upperKm, 5.0, 1e-9);
+  // Once blended, the blend is current; the exact tables are still held back.
+  updater.waitForBlend();
+  const auto blend = updater.current();
+  EXPECT_EQ(updater.generation(), before + 1);
+  EXPECT_TRUE(updater.currentIsBlend());
+  ASSERT_TRUE(blend->blendOrigin());
+  EXPECT_NEAR(visibilityOf(blend->config().medium), 7.0, 1e-9);
+
+  gate.open();
+  updater.waitIdle();
+  const auto exact = updater.current();
+  EXPECT_EQ(updater.generation(), before + 2);
+  EXPECT_FALSE(updater.currentIsBlend());
+  EXPECT_FALSE(exact->blendOrigin());
+  EXPECT_NEAR(visibilityOf(exact->config().medium), 7.0, 1e-9);
+  EXPECT_NE(exact->tables(0).scattering.texels, blend->tables(0).scattering.texels);
+  EXPECT_EQ(exact->tables(0).scattering.texels, testing::cachedModel(tinyAt(7.0)).tables(0).scattering.texels);
+
+  // A step itself is loaded, not blended; beyond the ladder the nearest step stands in; another
+  // ground albedo cannot be blended.
+  const RequestAnswer step = updater.request(tinyAt(5.0));
+  EXPECT_EQ(step.kind, RequestAnswer::Kind::kQueued);
+  EXPECT_NE(step.why.find("a step"), std::string::npos) << step.why;
+  updater.waitIdle();
+  EXPECT_FALSE(updater.currentIsBlend());
+  std::string reason;
+  const auto stepTables = readTableCache(cacheFilePath(steps.directory, tinyAt(5.0)), tinyAt(5.0), &reason);
+  ASSERT_TRUE(stepTables) << reason;
+  EXPECT_EQ(updater.current()->tables(0).scattering.texels, stepTables->at(0).scattering.texels);
+  const RequestAnswer fog = updater.request(tinyAt(0.5));
+  EXPECT_EQ(fog.kind, RequestAnswer::Kind::kBlending);
+  EXPECT_NEAR(fog.lowerKm, 2.0, 1e-9);
+  EXPECT_NEAR(fog.upperKm, 2.0, 1e-9);
+  ModelConfig albedo = tinyAt(7.0);
+  albedo.medium.groundAlbedo = 0.3;
+  const RequestAnswer other = updater.request(albedo);
+  EXPECT_EQ(other.kind, RequestAnswer::Kind::kQueued);
+  EXPECT_NE(other.why.find("more than the aerosols"), std::string::npos) << other.why;
+  updater.waitIdle();
+}
+
+// The tables of an older request, finished after a newer request's blend went on show, wait in
+// the cache: the sky never steps back to the visibility the host left.
+TEST(AtmosphereUpdater, OlderRequestsTablesNeverReplaceANewerBlend) {
+  const auto dir = testing::testCacheDirectory() / "updater-steps-order";
+  VisibilitySteps steps = freshSteps(dir);
+  GatedBuilder gate;
+  gate.hold(tinyAt(7.0));
+  gate.hold(tinyAt(3.0));
+  AtmosphereUpdater updater(tinyAt(50.0), dir, gate.builder(), {}, nullptr, steps);
+  updater.waitSteps();
+  const std::uint64_t before = updater.generation();
+  EXPECT_EQ(updater.request(tinyAt(7.0)).kind, RequestAnswer::Kind::kBlending);
+  updater.waitForBlend();
+  EXPECT_EQ(updater.generation(), before + 1);
+  EXPECT_EQ(updater.request(tinyAt(3.0)).kind, RequestAnswer::Kind::kBlending);
+  updater.waitForBlend();
+  EXPECT_EQ(updater.generation(), before + 2);
+  gate.open();
+  updater.waitIdle();
+  // Two blends and the 3 km tables; the 7 km ones (if built before the newer request replaced
+  // them) were never shown.
+  EXPECT_EQ(updater.generation(), before + 3);
+  EXPECT_NEAR(visibilityOf(updater.current()->config().medium), 3.0, 1e-9);
+  EXPECT_FALSE(updater.currentIsBlend());
+}
+
+// The steps are built once, into a folder of their own that the cache's bound never empties.
+TEST(AtmosphereUpdater, StepsAreBuiltOnceAndOutliveTheCacheBound) {
+  const auto dir = testing::testCacheDirectory() / "updater-steps-bound";
+  VisibilitySteps steps = freshSteps(dir);
+  UpdaterLimits limits;
+  limits.maxCacheBytes = 1;  // every older file at the top is evicted after a build
+  {
+    AtmosphereUpdater updater(tinyAt(50.0), dir, precomputeTablesOnCpu, limits, nullptr, steps);
+    updater.waitSteps();
+    EXPECT_EQ(updater.stepBuilds(), 3u);
+    updater.request(tinyAt(7.0));
+    updater.waitIdle();
+    updater.request(tinyAt(3.0));
+    updater.waitIdle();
+    EXPECT_FALSE(cacheFileExists(dir, tinyAt(7.0)));  // evicted
+  }
+  for (double km : {10.0, 5.0, 2.0}) EXPECT_TRUE(cacheFileExists(steps.directory, tinyAt(km))) << km;
+  AtmosphereUpdater again(tinyAt(50.0), dir, precomputeTablesOnCpu, limits, nullptr, steps);
+  again.waitSteps();
+  EXPECT_EQ(again.stepBuilds(), 0u);
+}
+
 TEST(PrecomputeGroup, ThrowsCancelledWhenAskedToStop) {
   std::atomic<bool> stop{true};
   const ModelConfig c = tinyConfig(0.1);

@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <numbers>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>

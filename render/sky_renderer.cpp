@@ -6,8 +6,8 @@
 #include "shaders/common/uniforms.h"
 
 #include <algorithm>
-#include <string>
 #include <stdexcept>
+#include <string>
 
 namespace skyig::render {
 
@@ -109,8 +109,8 @@ void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sk
     if (!physical_) physical_ = std::make_unique<PhysicalSkyPass>();
     physical_->use(state.conditions.atmosphere);
     // The tables on screen may still be the previous model's while a new one uploads; both
-    // share the planet, so the camera is the same.
-    // The moonlit sky only where it changes what the displays show (sky/shown_layers.h).
+    // share the planet, so the camera is the same. The moonlit sky only where it changes what
+    // the displays show (sky/shown_layers.h).
     physical_->draw(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
                     skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection,
                     state.shown.moonlitSky ? state.moonlightScale : glm::dvec3(0.0), state.sunRefraction);

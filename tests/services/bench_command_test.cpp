@@ -19,18 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using skyig::services::testing::SkyigResult;
 
 class BenchCommand : public ::testing::Test {
  protected:
@@ -42,13 +31,8 @@ class BenchCommand : public ::testing::Test {
 
   // `environment`: env(1) arguments, e.g. "LP_NUM_THREADS=2"; the tables from the build tree's
   // cache that the atmosphere tests share.
-  Result run(const std::string& args, const std::string& environment = "-u LP_NUM_THREADS") const {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = "env " + environment + " XDG_CACHE_HOME=" + std::string(SKYIG_BINARY_DIR) +
-                                "/atmosphere-test-cache " + std::string(SKYIG_EXECUTABLE) + " bench " + args + " >" +
-                                out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+  SkyigResult run(const std::string& args, const std::string& environment = "-u LP_NUM_THREADS") const {
+    return skyig::services::testing::runSkyig("bench " + args, dir_, environment);
   }
   std::string small() const { return "--config " + (dir_ / "small.toml").string(); }
 
@@ -62,7 +46,7 @@ class BenchCommand : public ::testing::Test {
 // moonless night); it ran llvmpipe on one thread since nothing said otherwise, and said what it
 // was doing on stderr.
 TEST_F(BenchCommand, RatiosPrintEveryNamedRatioAsJson) {
-  const Result r = run("--ratios --json --width 32 --height 24 --rounds 2 --frames 1 " + small());
+  const SkyigResult r = run("--ratios --json --width 32 --height 24 --rounds 2 --frames 1 " + small());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   for (const char* key : {"sky_pass_over_reference", "sky_pass_over_reference_moonless_night", "day_frame_over_sky_pass",
@@ -102,10 +86,10 @@ TEST_F(BenchCommand, RatiosPrintEveryNamedRatioAsJson) {
 // --llvmpipe-threads over it; the table says which.
 TEST_F(BenchCommand, RatiosKeepTheUsersLlvmpipeThreads) {
   const std::string args = "--ratios --json --width 16 --height 16 --rounds 1 --frames 1 " + small();
-  const Result fromEnvironment = run(args, "LP_NUM_THREADS=2");
+  const SkyigResult fromEnvironment = run(args, "LP_NUM_THREADS=2");
   ASSERT_EQ(fromEnvironment.exitCode, 0) << fromEnvironment.err;
   EXPECT_EQ(nlohmann::json::parse(fromEnvironment.out)["llvmpipe_threads"], "2 (LP_NUM_THREADS of the environment)");
-  const Result fromFlag = run(args + " --llvmpipe-threads 3", "LP_NUM_THREADS=2");
+  const SkyigResult fromFlag = run(args + " --llvmpipe-threads 3", "LP_NUM_THREADS=2");
   ASSERT_EQ(fromFlag.exitCode, 0) << fromFlag.err;
   EXPECT_EQ(nlohmann::json::parse(fromFlag.out)["llvmpipe_threads"], "3 (--llvmpipe-threads)");
 }
@@ -129,7 +113,7 @@ TEST_F(BenchCommand, BadRatiosFlagsExitTwo) {
                         {"--ratios --width 8", "--width"}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.args);
-    const Result r = run(c.args + " " + small());
+    const SkyigResult r = run(c.args + " " + small());
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_NE(r.err.find(c.named), std::string::npos) << r.err;
     EXPECT_EQ(r.out, "");

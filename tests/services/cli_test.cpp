@@ -2,6 +2,8 @@
 // message for bad flags, bad configuration and unwritable outputs — writing nothing then.
 #include "render/image_io.h"
 
+#include "tests/services/test_support.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -26,18 +28,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int exitCode = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using Result = skyig::services::testing::SkyigResult;
+using skyig::services::testing::slurp;
 
 class Cli : public ::testing::Test {
  protected:
@@ -52,13 +44,7 @@ class Cli : public ::testing::Test {
   // `environment`: env(1) arguments, e.g. "-u SKYIG_DATA_DIR" (the test programs set it,
   // tests/staged_data_dir.cpp, and skyig inherits it).
   Result run(const std::string& args, const std::string& environment = "") const {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    // The physical sky (the default) keeps its tables in the build tree, not in $HOME.
-    const std::string command = "env " + environment + " XDG_CACHE_HOME=" + std::string(SKYIG_BINARY_DIR) +
-                                "/atmosphere-test-cache " + std::string(SKYIG_EXECUTABLE) + " " + args + " >" +
-                                out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+    return skyig::services::testing::runSkyig(args, dir_, environment);
   }
 
   fs::path write(const std::string& name, const std::string& text) const {

@@ -3,6 +3,8 @@
 #include "calibration/load.h"
 #include "calibration/mpcdi.h"
 
+#include "tests/services/test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -18,17 +20,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using Result = skyig::services::testing::SkyigResult;
 
 skyig::calibration::ProjectorSource source(const std::string& path, const std::string& region) {
   skyig::calibration::ProjectorSource s;
@@ -40,20 +32,10 @@ skyig::calibration::ProjectorSource source(const std::string& path, const std::s
 class DomeCommand : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("skyig_dome_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "-" +
-            std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = skyig::services::testing::freshTestDirectory("skyig_dome_");
   }
   void TearDown() override { fs::remove_all(dir_); }
-  Result run(const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command =
-        std::string(SKYIG_EXECUTABLE) + " dome " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-  }
+  Result run(const std::string& args) const { return skyig::services::testing::runSkyig("dome " + args, dir_); }
   fs::path dir_;
 };
 

@@ -36,19 +36,6 @@ using namespace std::chrono_literals;
 
 namespace {
 
-struct CommandResult {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-
 const std::string kRecording = std::string(SKYIG_SOURCE_DIR) + "/tests/data/circuit_timelapse.pcap";
 
 class RecordReplay : public ::testing::Test {
@@ -60,14 +47,10 @@ class RecordReplay : public ::testing::Test {
 
   // Replays render the analytic sky (what the record/replay checks need, without tables); a
   // physical sky would keep its tables in the build tree.
-  CommandResult skyig(const std::string& args) const {
+  SkyigResult skyig(const std::string& args) const {
     const fs::path analytic = dir_ / "analytic.toml";
     std::ofstream(analytic) << "[sky]\nmodel = \"preetham\"\n";
-    const std::string config = args.rfind("replay ", 0) == 0 ? " --config " + analytic.string() : "";
-    const std::string cmd = "XDG_CACHE_HOME=" + std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache " +
-                            std::string(SKYIG_EXECUTABLE) + " " + args + config + " >" + (dir_ / "o.txt").string() + " 2>" + (dir_ / "e.txt").string();
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "o.txt"), slurp(dir_ / "e.txt")};
+    return runSkyig(args + (args.rfind("replay ", 0) == 0 ? " --config " + analytic.string() : ""), dir_);
   }
 
   // A copy of the fixture with `edit` applied to its bytes.
@@ -107,7 +90,7 @@ TEST_F(RecordReplay, ReplayGivesTheLiveRunsHostStates) {
   node.join();
   EXPECT_EQ(stats.recorded.load(), stats.datagrams.load());
 
-  const CommandResult r = skyig("replay " + (dir_ / "live.pcap").string() + " --quiet --size 32x24 --dump-state " + (dir_ / "replay.jsonl").string());
+  const SkyigResult r = skyig("replay " + (dir_ / "live.pcap").string() + " --quiet --size 32x24 --dump-state " + (dir_ / "replay.jsonl").string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   std::map<long, nlohmann::json> live, replayed;
   for (const auto& l : readStateDump(dir_ / "live.jsonl"))
@@ -129,7 +112,7 @@ TEST_F(RecordReplay, ReplayGivesTheLiveRunsHostStates) {
 
 TEST_F(RecordReplay, TwoReplaysWriteByteIdenticalFrames) {
   for (const char* out : {"a", "b"}) {
-    const CommandResult r = skyig("replay " + kRecording + " --quiet --size 48x32 --to 60 --every 20 --exr --out " + (dir_ / out).string());
+    const SkyigResult r = skyig("replay " + kRecording + " --quiet --size 48x32 --to 60 --every 20 --exr --out " + (dir_ / out).string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
   }
   int compared = 0;
@@ -145,7 +128,7 @@ TEST_F(RecordReplay, TwoReplaysWriteByteIdenticalFrames) {
 }
 
 TEST_F(RecordReplay, FromAndToSelectAPart) {
-  const CommandResult r = skyig("replay " + kRecording + " --quiet --size 32x24 --from 2026-06-21T18:45:00Z --to 2026-06-21T18:46:00Z --png --out " +
+  const SkyigResult r = skyig("replay " + kRecording + " --quiet --size 32x24 --from 2026-06-21T18:45:00Z --to 2026-06-21T18:46:00Z --png --out " +
                       (dir_ / "part").string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   int frames = 0;
@@ -179,7 +162,7 @@ TEST_F(RecordReplay, CandumpLogReplaysThroughTheCanAerospaceDecoder) {
     for (const auto& f : encoder.encode(s)) writer.write(t += 2000, "can0", f);
   std::ofstream(dir_ / "flight.log", std::ios::binary).write(reinterpret_cast<const char*>(sink.data.data()),
                                                              static_cast<std::streamsize>(sink.data.size()));
-  const CommandResult r = skyig("replay " + (dir_ / "flight.log").string() + " --quiet --size 32x24 --dump-state " + (dir_ / "can.jsonl").string());
+  const SkyigResult r = skyig("replay " + (dir_ / "flight.log").string() + " --quiet --size 32x24 --dump-state " + (dir_ / "can.jsonl").string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto last = readStateDump(dir_ / "can.jsonl").back();
   EXPECT_NEAR(last["used"]["lat"].get<double>(), -33.9461, 1e-9);
@@ -190,11 +173,11 @@ TEST_F(RecordReplay, CandumpLogReplaysThroughTheCanAerospaceDecoder) {
 
 TEST_F(RecordReplay, TruncatedPcapNamesTheRecordAndOffset) {
   const fs::path cut = corrupted("cut.pcap", [](std::string& b) { b.resize(b.size() - 70); });
-  const CommandResult r = skyig("replay " + cut.string() + " --quiet --size 16x16 --frame-rate 2");
+  const SkyigResult r = skyig("replay " + cut.string() + " --quiet --size 16x16 --frame-rate 2");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("record 801"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("at byte 168024"), std::string::npos) << r.err;
-  const CommandResult skipping = skyig("replay " + cut.string() + " --quiet --size 16x16 --frame-rate 2 --skip-bad");
+  const SkyigResult skipping = skyig("replay " + cut.string() + " --quiet --size 16x16 --frame-rate 2 --skip-bad");
   EXPECT_EQ(skipping.exitCode, 0) << skipping.err;
   EXPECT_NE(skipping.out.find("skipped 1 bad records"), std::string::npos) << skipping.out;
 }
@@ -209,10 +192,10 @@ TEST_F(RecordReplay, CorruptRecordInTheMiddle) {
     b[header + 10] = '\xff';
     b[header + 11] = '\x7f';
   });
-  const CommandResult r = skyig("replay " + bad.string() + " --quiet --size 16x16 --frame-rate 2");
+  const SkyigResult r = skyig("replay " + bad.string() + " --quiet --size 16x16 --frame-rate 2");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("record 400"), std::string::npos) << r.err;
-  const CommandResult skipping = skyig("replay " + bad.string() + " --quiet --size 16x16 --frame-rate 2 --skip-bad");
+  const SkyigResult skipping = skyig("replay " + bad.string() + " --quiet --size 16x16 --frame-rate 2 --skip-bad");
   EXPECT_EQ(skipping.exitCode, 0) << skipping.err;
   EXPECT_NE(skipping.out.find("replayed 800 host messages"), std::string::npos) << skipping.out;
   EXPECT_NE(skipping.out.find("skipped 1 bad records"), std::string::npos) << skipping.out;
@@ -220,11 +203,11 @@ TEST_F(RecordReplay, CorruptRecordInTheMiddle) {
 
 TEST_F(RecordReplay, UnparseableCandumpLineAndNotARecording) {
   std::ofstream(dir_ / "bad.log") << "(1790000000.000000) can0 137#0000000000000000\n(1790000000.1) can0 nonsense\n";
-  const CommandResult r = skyig("replay " + (dir_ / "bad.log").string() + " --quiet --size 32x24");
+  const SkyigResult r = skyig("replay " + (dir_ / "bad.log").string() + " --quiet --size 32x24");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("line 2"), std::string::npos) << r.err;
   std::ofstream(dir_ / "picture.png") << "\x89PNG\r\n\x1a\n0000000000000000";
-  const CommandResult n = skyig("replay " + (dir_ / "picture.png").string() + " --quiet");
+  const SkyigResult n = skyig("replay " + (dir_ / "picture.png").string() + " --quiet");
   EXPECT_EQ(n.exitCode, 2);
   EXPECT_NE(n.err.find("not a recording"), std::string::npos) << n.err;
 }
@@ -323,7 +306,7 @@ TEST_F(RecordReplay, ServeRecordsTheLargestDatagramWhole) {
   node.join();
   EXPECT_EQ(stats.recordErrors.load(), 0u);
   EXPECT_EQ(stats.recorded.load(), 3u);
-  const CommandResult r = skyig("replay " + (dir_ / "big.pcap").string() + " --quiet --size 16x16");
+  const SkyigResult r = skyig("replay " + (dir_ / "big.pcap").string() + " --quiet --size 16x16");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("replayed 3 host messages"), std::string::npos) << r.out;
 }
@@ -344,13 +327,13 @@ TEST_F(RecordReplay, RecordKeepsTheLargestDatagramWhole) {
     std::this_thread::sleep_for(100ms);
   }
   recorder.join();
-  const CommandResult r = skyig("replay " + out.string() + " --quiet --size 16x16");
+  const SkyigResult r = skyig("replay " + out.string() + " --quiet --size 16x16");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("replayed 2 host messages"), std::string::npos) << r.out;
 }
 
 TEST_F(RecordReplay, LargeDatagramRecordingReplays) {
-  const CommandResult r = skyig("replay " + defect("large_datagram.pcap") + " --quiet --size 16x16");
+  const SkyigResult r = skyig("replay " + defect("large_datagram.pcap") + " --quiet --size 16x16");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("replayed 11 host messages"), std::string::npos) << r.out;
 }
@@ -359,7 +342,7 @@ TEST_F(RecordReplay, LargeDatagramRecordingReplays) {
 // million frames); the pause is skipped and said so.
 TEST_F(RecordReplay, MillionSecondGapIsSkippedInSeconds) {
   const auto start = std::chrono::steady_clock::now();
-  const CommandResult r = skyig("replay " + defect("time_gap.pcap") + " --quiet --size 16x16");
+  const SkyigResult r = skyig("replay " + defect("time_gap.pcap") + " --quiet --size 16x16");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_LT(seconds, 60.0);
@@ -369,10 +352,10 @@ TEST_F(RecordReplay, MillionSecondGapIsSkippedInSeconds) {
 }
 
 TEST_F(RecordReplay, SkipBadResynchronisesWhenTheFirstRecordIsCorrupt) {
-  const CommandResult strict = skyig("replay " + defect("corrupt_first_record.pcap") + " --quiet --size 16x16");
+  const SkyigResult strict = skyig("replay " + defect("corrupt_first_record.pcap") + " --quiet --size 16x16");
   EXPECT_EQ(strict.exitCode, 2);
   EXPECT_NE(strict.err.find("record 1 at byte 24"), std::string::npos) << strict.err;
-  const CommandResult r = skyig("replay " + defect("corrupt_first_record.pcap") + " --quiet --size 16x16 --skip-bad");
+  const SkyigResult r = skyig("replay " + defect("corrupt_first_record.pcap") + " --quiet --size 16x16 --skip-bad");
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("replayed 39 host messages"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("skipped 1 bad records"), std::string::npos) << r.out;
@@ -380,14 +363,14 @@ TEST_F(RecordReplay, SkipBadResynchronisesWhenTheFirstRecordIsCorrupt) {
 
 TEST_F(RecordReplay, UnknownLinkTypeExitsTwoAndSaysWhich) {
   for (const char* extra : {"", " --skip-bad", " --send 127.0.0.1:9"}) {
-    const CommandResult r = skyig("replay " + defect("unknown_link_type.pcap") + " --quiet --size 16x16" + extra);
+    const SkyigResult r = skyig("replay " + defect("unknown_link_type.pcap") + " --quiet --size 16x16" + extra);
     EXPECT_EQ(r.exitCode, 2) << extra;
     EXPECT_NE(r.err.find("pcap link type 147 is not supported"), std::string::npos) << r.err;
   }
 }
 
 TEST_F(RecordReplay, SendToPortZeroExitsTwo) {
-  const CommandResult r = skyig("replay " + kRecording + " --quiet --send 127.0.0.1:0");
+  const SkyigResult r = skyig("replay " + kRecording + " --quiet --send 127.0.0.1:0");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("--send: port 0"), std::string::npos) << r.err;
 }
@@ -412,7 +395,7 @@ TEST_F(RecordReplay, ReplayReadsAFifoAsAStream) {
     }
     ::close(fd);
   });
-  const CommandResult r = skyig("replay " + fifo.string() + " --quiet --size 16x16 --frame-rate 2");
+  const SkyigResult r = skyig("replay " + fifo.string() + " --quiet --size 16x16 --frame-rate 2");
   feeder.join();
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("replayed 801 host messages"), std::string::npos) << r.out;

@@ -1,6 +1,8 @@
 // Stopping the long-running commands as an operator or systemd does: real skyig processes sent
 // SIGTERM or SIGINT stop within 2 s plus a frame, also while the tables are being built, write
 // what they owe (statistics, recording, replay summary) and exit 0; a second signal exits at once.
+#include "tests/services/test_support.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -28,12 +30,7 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using skyig::services::testing::slurp;
 
 // A skyig process with its stdout and stderr in files and a cache directory of its own
 // (`cache` empty: the build's test cache, where tables are already precomputed).

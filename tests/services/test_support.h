@@ -1,11 +1,13 @@
 #pragma once
-// Shared by the services tests: a per-test scratch directory, free loopback ports, state dumps.
+// Shared by the services tests: a per-test scratch directory, a skyig command run to its end,
+// free loopback ports, state dumps.
 #include "services/udp_socket.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <atomic>
+#include <cstdlib>
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
@@ -35,6 +37,35 @@ inline std::filesystem::path freshTestDirectory(const std::string& prefix) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+// A file's bytes.
+inline std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// What a `skyig` command that ran to its end said, and its exit code (-1: killed).
+struct SkyigResult {
+  int exitCode = -1;
+  std::string out;
+  std::string err;
+};
+
+// Runs `skyig ARGS` (SKYIG_EXECUTABLE) to its end, its stdout and stderr through files in `dir`
+// (the test's own), with `environment` given to env(1) first (e.g. "-u SKYIG_DATA_DIR",
+// "LP_NUM_THREADS=2"). The physical sky's tables come from the build tree's cache, which the
+// atmosphere tests share, never from $HOME.
+inline SkyigResult runSkyig(const std::string& args, const std::filesystem::path& dir,
+                            const std::string& environment = "") {
+  const std::filesystem::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string command = "env " + environment + " XDG_CACHE_HOME=" + std::string(SKYIG_BINARY_DIR) +
+                              "/atmosphere-test-cache " + std::string(SKYIG_EXECUTABLE) + " " + args + " >" +
+                              out.string() + " 2>" + err.string();
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
 }
 
 // A UDP port on loopback that was free a moment ago.

@@ -3,11 +3,11 @@
 // test program's own (own_x_display.cpp).
 #include "render/gl/glfw_window.h"
 #include "render/sky_renderer.h"
+#include "tests/render/back_buffer.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <vector>
 
 using namespace skyig::render;
 using namespace skyig::sky;
@@ -31,18 +31,7 @@ TEST(GlfwWindow, PresentsTheToneReproducedFrame) {
   renderer.presentToDefaultFramebuffer(options.width, options.height);
   const DisplayImage frame = renderer.readDisplay();
 
-  std::vector<unsigned char> back(static_cast<size_t>(options.width) * options.height * 4);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glReadBuffer(GL_BACK);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, options.width, options.height, GL_RGBA, GL_UNSIGNED_BYTE, back.data());
+  skyig::render::testing::expectBackBufferShows(frame);
   window.swapBuffers();
-  // The back buffer is bottom-up, the frame top-down; compare RGB.
-  for (int y = 0; y < options.height; ++y)
-    for (int x = 0; x < options.width; ++x)
-      for (int k = 0; k < 3; ++k)
-        ASSERT_EQ(back[(static_cast<size_t>(options.height - 1 - y) * options.width + x) * 4 + k],
-                  frame.rgba[(static_cast<size_t>(y) * options.width + x) * 4 + k])
-            << x << "," << y;
   EXPECT_FALSE(window.closeRequested());
 }

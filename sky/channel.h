@@ -33,6 +33,11 @@ struct DisplayParams {
 inline constexpr int kMinChannelSide = 16;
 inline constexpr int kMaxChannelSide = 8192;
 
+// The spectral band a channel's passes render: the eye's (luminance and colour, linear Rec.709
+// cd/m^2) or a night-vision goggle's NVIS-weighted radiance (MIL-STD-3009's class A or B
+// response), written equally into the three colour channels of the HDR target.
+enum class SpectralBand { Visible, NvisClassA, NvisClassB };
+
 struct ChannelConfig {
   std::string name = "front";
   Attitude offset;
@@ -41,6 +46,7 @@ struct ChannelConfig {
   int height = 1024;
   std::string monitor;  // `serve` in windows: fullscreen on this monitor (GLFW's name); "" windowed
   DisplayParams display;
+  SpectralBand band = SpectralBand::Visible;
 };
 
 }  // namespace skyig::sky

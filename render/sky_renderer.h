@@ -79,6 +79,11 @@ class SkyRenderer {
   // display frame (draw only).
   HdrImage readHdr() const;
   DisplayImage readDisplay() const;
+  // The same two images on the GPU, channel-sized (RGBA32F cd/m^2 and RGBA8 display values),
+  // for a pass that composites them into another framebuffer (render/host_frame.h); 0 before
+  // the first draw.
+  GLuint hdrTexture() const { return hdr_ ? hdr_->texture() : 0; }
+  GLuint displayTexture() const { return display_ ? display_->texture() : 0; }
   // The last drawProjector's outputs at the projector's resolution: the 8-bit image sent to
   // the projector, and the light it contributes (the channel's cd/m^2 warped, times alpha).
   DisplayImage readProjectorDisplay() const;

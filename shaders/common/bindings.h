@@ -71,6 +71,10 @@
 #define SKYIG_UNIT_PROJECTOR_ALPHA 3
 #define SKYIG_UNIT_PROJECTOR_BETA 4
 
+// The host-frame composite (passes/host_frame.frag, HostFrameRenderer): the channel's display
+// frame or its HDR image, copied into the host's framebuffer where its depth is at the far plane.
+#define SKYIG_UNIT_HOST_SOURCE 0
+
 // The displayed-star pass (passes/star_display.vert, StarPass::drawDisplayed): the HDR target
 // without stars, read per star for the sky it sits on.
 #define SKYIG_UNIT_STAR_BACKGROUND 0

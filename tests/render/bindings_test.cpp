@@ -92,6 +92,9 @@ std::vector<ProgramCase> programs() {
         sampler("warpMap", SKYIG_UNIT_PROJECTOR_WARP), sampler("alphaMap", SKYIG_UNIT_PROJECTOR_ALPHA),
         sampler("betaMap", SKYIG_UNIT_PROJECTOR_BETA), output("outDisplay", SKYIG_OUTPUT_PROJECTOR_DISPLAY),
         output("outLight", SKYIG_OUTPUT_PROJECTOR_LIGHT)}},
+      // The composite into a host's framebuffer (HostFrameRenderer).
+      {{"passes/host_frame.vert", "passes/host_frame.frag"},
+       {sampler("hostSource", SKYIG_UNIT_HOST_SOURCE), output("outColor", SKYIG_OUTPUT_COLOR)}},
       // Its variants (passes/physical_sky.frag) and the frozen reference of the pass
       // (render/passes/reference_sky_pass.h), through the same inputs: the transmittance is
       // read by the ground's reflection and the disc, the irradiance by the ground's, the

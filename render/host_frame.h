@@ -1,0 +1,101 @@
+#pragma once
+// Draws the sky into a host image generator's frame (docs/host-frame.md): with the host's GL
+// context current, for the host's camera given as GL view and projection matrices, into the
+// framebuffer the host has bound as GL_DRAW_FRAMEBUFFER, only where the host's depth buffer is
+// still at the far plane (behind everything the host drew), for standard depth and reverse-Z.
+//
+// Conventions. World: the local east-north-up frame at the observer (x east, y north, z up,
+// metres); the view matrix takes it to GL's eye space (x right, y up, -z forward). Only the
+// view's rotation counts: the sky is at infinity, and the observer's position is the state's.
+// The projection is a GL perspective (glFrustum's form, w = -z_eye, any near/far, infinite or
+// reverse-Z), possibly off-axis; orthographic, skewed or mirrored cameras are refused.
+//
+// GL state: every piece the draw changes is saved and restored (render/gl/gl_state_guard.h
+// lists it); the host's framebuffer gets colour (RGB of the sky, alpha 1) where the depth test
+// passes and nothing else: no depth, no stencil.
+#include "render/gl/gl_program.h"
+#include "render/sky_renderer.h"
+#include "sky/camera.h"
+#include "sky/channel.h"
+#include "sky/sky_state.h"
+
+#include <glad/gl.h>
+#include <glm/glm.hpp>
+
+namespace skyig::render {
+
+// How the host's depth buffer marks "nothing drawn here".
+enum class DepthConvention {
+  Standard,  // far plane at window depth 1 (cleared to 1, GL_LESS/GL_LEQUAL): the sky where depth == 1
+  ReverseZ,  // far plane at window depth 0 (cleared to 0, GL_GREATER/GL_GEQUAL): the sky where depth == 0
+};
+
+// What the host's framebuffer receives.
+enum class HostOutput {
+  DisplayReferred,  // skyig's tone-mapped display values (its tone pass), written unchanged (no sRGB encoding)
+  LinearLight,      // the sky's radiance in cd/m^2, linear Rec.709 (a float target; the host tone-maps)
+};
+
+// The host's viewport in window pixels (glViewport's arguments); the channel renders at its size.
+struct HostViewport {
+  int x = 0;
+  int y = 0;
+  int width = 0;
+  int height = 0;
+};
+
+struct HostFrameOptions {
+  DepthConvention depth = DepthConvention::Standard;
+  HostOutput output = HostOutput::DisplayReferred;
+  skyig::sky::DisplayParams display;  // the tone pass's display (DisplayReferred)
+  skyig::sky::SpectralBand band = skyig::sky::SpectralBand::Visible;
+};
+
+// The skyig camera of a host camera: the eye's attitude in the ENU frame (as an ownship
+// attitude with no channel offset) and the frustum's half-angles. An off-axis frustum whose
+// forward axis lies outside it has a negative half-angle on that side.
+struct HostCamera {
+  skyig::sky::Attitude attitude;
+  skyig::sky::Frustum frustum;
+};
+
+// Throws std::invalid_argument for a view that is not a rotation (times a uniform scale and a
+// translation) or a projection that is not a perspective frustum with half-angles under 89 deg.
+HostCamera hostCamera(const glm::dmat4& view, const glm::dmat4& projection);
+
+// The channel SkyRenderer draws for the host: the camera's frustum at the viewport's size.
+skyig::sky::ChannelConfig hostChannel(const HostCamera& camera, const HostViewport& viewport,
+                                      const HostFrameOptions& options);
+
+class HostFrameRenderer {
+ public:
+  // Needs the host's GL context current, now and for every call.
+  HostFrameRenderer();
+  ~HostFrameRenderer();
+  HostFrameRenderer(const HostFrameRenderer&) = delete;
+  HostFrameRenderer& operator=(const HostFrameRenderer&) = delete;
+
+  // Renders the channel of the host camera into skyig's own targets (SkyRenderer::draw), then
+  // draws one triangle at the far plane's depth into the host's draw framebuffer, depth test
+  // on (GL_LEQUAL for standard depth, GL_GEQUAL for reverse-Z), depth writes off, blending
+  // off. Throws std::invalid_argument for a camera hostCamera refuses or a viewport side
+  // outside [kMinChannelSide, kMaxChannelSide]; the host's state is restored either way.
+  void draw(const skyig::sky::SkyState& state, const glm::dmat4& view, const glm::dmat4& projection,
+            const HostViewport& viewport, const HostFrameOptions& options = {});
+
+  // The eye adaptation skyig's tone mapping used (cd/m^2), for a host that tone-maps the linear
+  // output itself and wants the same exposure.
+  static double adaptationLuminance(const skyig::sky::SkyState& state) { return state.adaptationLuminance; }
+
+  // The renderer behind it: its last channel's images (readHdr, readDisplay) are the last draw's.
+  const SkyRenderer& skyRenderer() const { return sky_; }
+
+ private:
+  SkyRenderer sky_;
+  GlProgram program_;
+  GLint farNdcZLocation_ = -1;
+  GLint viewportOriginLocation_ = -1;
+  GLuint emptyVao_ = 0;
+};
+
+}  // namespace skyig::render

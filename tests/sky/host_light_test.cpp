@@ -174,3 +174,30 @@ TEST(HostLight, NearPointKeepsItsOwnColour) {
   const glm::dvec3 seen = own * ap.transmittance + ap.inScattered;
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(seen[c], own[c], 0.01 * own[c]) << c;
 }
+
+// The full moon of 3 January 2026, high over the Alps near midnight: the moon is the probe's
+// moon_lux (0.1-0.4 lux for a high full moon), facing it brighter by 1 / sin(altitude), and the
+// sky it lights adds an ambient a few percent to a few tens of percent of it, as the sun's sky
+// does by day.
+TEST(HostLight, FullMoonLightsTheNight) {
+  ObserverState o;
+  o.latitudeDeg = 47.26;
+  o.longitudeDeg = 11.34;
+  o.heightM = 600.0;
+  o.utc = {2026, 1, 3, 23 * 3600.0};
+  SkyConditions c;
+  c.model = SkyModel::Physical;
+  c.atmosphere = model();
+  const SkyState s = buildSkyState(o, c);
+  ASSERT_TRUE(s.moonDisc);
+  ASSERT_GT(s.moonDisc->centreSeen.z, std::sin(40.0 * kDeg));
+  const HostLight light = hostLight(s, model().get());
+  EXPECT_EQ(light.moon.horizontalLux, moonIlluminanceLux(s));
+  EXPECT_GT(light.moon.horizontalLux, 0.1);
+  EXPECT_LT(light.moon.horizontalLux, 0.4);
+  EXPECT_NEAR(light.moon.normalLux * s.moonDisc->centreSeen.z, light.moon.horizontalLux, 1e-9);
+  EXPECT_NEAR(luminance(light.moon.colour), 1.0, 1e-9);
+  EXPECT_NEAR(glm::length(light.moon.direction), 1.0, 1e-12);
+  EXPECT_GT(light.ambientHorizontalLux, 0.02 * light.moon.horizontalLux);
+  EXPECT_LT(light.ambientHorizontalLux, 0.3 * light.moon.horizontalLux);
+}

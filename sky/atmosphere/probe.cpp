@@ -34,6 +34,12 @@ SpectralProbeLight light(const AtmosphereModel& model, const Spectrum& radiance)
 
 }  // namespace
 
+ProbeIrradiance horizontalIrradiance(const AtmosphereModel& model, const glm::dvec3& camera, const glm::dvec3& sun) {
+  const glm::dvec3 up(0.0, 0.0, 1.0);
+  return {model.converter().luminance(model.sunIrradiance(camera, up, sun)),
+          model.converter().luminance(model.skyIrradiance(camera, up, sun))};
+}
+
 glm::dvec3 localDirection(double zenithDeg, double azimuthDeg) {
   const double z = zenithDeg * kDegree;
   const double a = azimuthDeg * kDegree;
@@ -83,9 +89,7 @@ ProbeResult probe(const AtmosphereModel& model, const ProbeRequest& request) {
     out.views.push_back(r);
   }
   if (request.irradiance) {
-    const glm::dvec3 up(0.0, 0.0, 1.0);
-    out.irradiance = ProbeIrradiance{model.converter().luminance(model.sunIrradiance(camera, up, sun)),
-                                     model.converter().luminance(model.skyIrradiance(camera, up, sun))};
+    out.irradiance = horizontalIrradiance(model, camera, sun);
   }
   return out;
 }

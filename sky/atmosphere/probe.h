@@ -67,6 +67,11 @@ struct ProbeResult {
   std::optional<ProbeIrradiance> irradiance;  // when the request asks for it
 };
 
+// The direct sun's and the sky's illuminance on a horizontal surface at `camera` (metres from
+// the planet's centre, on the +z axis) for a sun in the ENU direction `sun`: what the probe
+// reports with --irradiance, and what a host lights its terrain with (sky/host_light.h).
+ProbeIrradiance horizontalIrradiance(const AtmosphereModel& model, const glm::dvec3& camera, const glm::dvec3& sun);
+
 // Local frame at the observer: x east, y north, z up (the observer on the +z axis).
 glm::dvec3 localDirection(double zenithDeg, double azimuthDeg);
 

@@ -189,12 +189,17 @@ MoonRadiance moonDiscRadiance(const MoonDisc& d, const glm::dvec3& viewEnu) {
   return {rgb, shader::rec709Luminance(rgb)};
 }
 
+glm::dvec3 moonNormalIlluminanceRec709(const MoonDisc& d) {
+  if (d.centreSeen.z <= 0.0) return glm::dvec3(0.0);
+  glm::dvec3 e = d.irradianceRec709;
+  if (d.extinction) e *= d.extinction->rec709(std::asin(std::clamp(d.centre.z, -1.0, 1.0)));
+  return e;
+}
+
 double moonIlluminanceLux(const MoonDisc& d) {
   const double seenAltitude = std::asin(std::clamp(d.centreSeen.z, -1.0, 1.0));
   if (seenAltitude <= 0.0) return 0.0;
-  glm::dvec3 e = d.irradianceRec709;
-  if (d.extinction) e *= d.extinction->rec709(std::asin(std::clamp(d.centre.z, -1.0, 1.0)));
-  return shader::rec709Luminance(e) * std::sin(seenAltitude);
+  return shader::rec709Luminance(moonNormalIlluminanceRec709(d)) * std::sin(seenAltitude);
 }
 
 

@@ -71,7 +71,11 @@ MoonDisc makeMoonDisc(const MoonPlacement& placement,
 // zero off the disc (a hard limb: no pixel footprint on the CPU).
 MoonRadiance moonDiscRadiance(const MoonDisc& disc, const glm::dvec3& viewEnu);
 
-// The moon's illuminance on a horizontal surface at the observer, lux, after extinction.
+// The moon's illuminance on a surface facing it at the observer, lux per linear Rec.709 channel,
+// after extinction (along the airless direction); zero when the disc is seen below the horizon.
+glm::dvec3 moonNormalIlluminanceRec709(const MoonDisc& disc);
+// The moon's illuminance on a horizontal surface at the observer, lux, after extinction: the
+// above times the sine of the disc's apparent altitude.
 double moonIlluminanceLux(const MoonDisc& disc);
 
 }  // namespace skyig::sky::night

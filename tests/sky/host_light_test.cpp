@@ -105,7 +105,7 @@ TEST(HostLight, AmbientIrradianceIsTheHemisphereIntegralOfTheSky) {
 }
 
 // Ramamoorthi & Hanrahan (2001): nine coefficients carry the irradiance, within the error of
-// the band-limited clamped cosine (their section 3: under 9% for any lighting, ~3% on average).
+// the band-limited clamped cosine (their analysis: at most 9% for any lighting; average errors of about 1% in their examples).
 // Here 5.4% (noon) and 5.8% (sunset) high for the zenith normal: the sharp step from the sky to
 // the darker ground at the horizon is what nine terms smooth out.
 TEST(HostLight, SphericalHarmonicsReproduceTheIrradiance) {

@@ -5,17 +5,16 @@
 #include "sky/atmosphere/probe.h"
 #include "sky/night/moon_disc.h"
 #include "sky/sky_state.h"
+#include "sky/view_sphere.h"
 #include "shaders/physics.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace skyig::sky {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // The quadrature of the sphere: cells of equal solid angle, kMu bands in cos(zenith) (half of
 // them above the horizon) x kPhi in azimuth, evaluated at their centres.
 constexpr int kMu = 32, kPhi = 64;
@@ -118,21 +117,14 @@ HostLight hostLight(const SkyState& s, const atmosphere::AtmosphereModel* model)
 
   // One pass over the sphere: E = integral of L cos(theta) over the upper hemisphere, and
   // L_lm = integral of L Y_lm over the sphere (Ramamoorthi & Hanrahan 2001, eq. 4).
-  const double cell = 4.0 * kPi / (kMu * kPhi);
   glm::dvec3 horizontal(0.0);
   ShCoefficients sh{};
-  for (int i = 0; i < kMu; ++i) {
-    const double mu = -1.0 + 2.0 * (i + 0.5) / kMu;
-    const double sinTheta = std::sqrt(1.0 - mu * mu);
-    for (int j = 0; j < kPhi; ++j) {
-      const double phi = 2.0 * kPi * (j + 0.5) / kPhi;
-      const glm::dvec3 view(sinTheta * std::sin(phi), sinTheta * std::cos(phi), mu);
-      const glm::dvec3 l = hostSkyRadiance(s, model, view);
-      if (mu > 0.0) horizontal += l * mu * cell;
-      const std::array<double, 9> y = shBasis(view);
-      for (std::size_t k = 0; k < sh.size(); ++k) sh[k] += l * y[k] * cell;
-    }
-  }
+  forEachEqualAreaCell(kMu, kPhi, [&](const glm::dvec3& view, double cell) {
+    const glm::dvec3 l = hostSkyRadiance(s, model, view);
+    if (view.z > 0.0) horizontal += l * view.z * cell;
+    const std::array<double, 9> y = shBasis(view);
+    for (std::size_t k = 0; k < sh.size(); ++k) sh[k] += l * y[k] * cell;
+  });
   out.ambientHorizontalRec709 = horizontal;
   out.ambientHorizontalLux = luminance(horizontal);
   out.skySh = sh;

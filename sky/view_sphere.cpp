@@ -35,7 +35,6 @@ ViewSphere viewSphere(const SkyState& s) {
   ViewSphere out;
   eye::LuminanceHistogram& h = out.histogram;
   double sum = 0.0;
-  const double cell = 4.0 * kPi / (kMu * kPhi);
   const atmosphere::AtmosphereModel* model =
       s.conditions.model == SkyModel::Physical ? s.conditions.atmosphere.get() : nullptr;
   const glm::dvec3 sun = enuDirection(s.sunAzimuth, s.sunAltitude);
@@ -47,27 +46,21 @@ ViewSphere viewSphere(const SkyState& s) {
   if (s.ephemeris) night = night::makeNightDiffuseSky(*s.ephemeris, s.extinction, false);
   auto cells = std::make_shared<std::vector<ViewCellLight>>();
   cells->reserve(kMu * kPhi);
-  for (int i = 0; i < kMu; ++i) {
-    const double mu = -1.0 + 2.0 * (i + 0.5) / kMu;
-    const double sinTheta = std::sqrt(1.0 - mu * mu);
-    for (int j = 0; j < kPhi; ++j) {
-      const double phi = 2.0 * kPi * (j + 0.5) / kPhi;
-      const glm::dvec3 view(sinTheta * std::sin(phi), sinTheta * std::cos(phi), mu);
-      double sunlit = 0.0, moonlit = 0.0, own = 0.0;
-      if (model) {
-        sunlit = physicalLuminance(*model, camera, view, sun);
-        if (moonScale > 0.0) moonlit = moonScale * physicalLuminance(*model, camera, view, s.moonDirection);
-      } else {
-        sunlit = shader::rec709Luminance(analyticSkyLightOnly(s.sky.params, view));
-      }
-      if (night && view.z > 0.0) own = shader::rec709Luminance(night::nightDiffuseRadianceWithoutMap(*night, view));
-      if (view.z < 0.0) own = shader::rec709Luminance(s.nightGroundRadiance);
-      const double l = sunlit + moonlit + own;
-      cells->push_back({static_cast<float>(sunlit), static_cast<float>(moonlit), static_cast<float>(own)});
-      h.add(l, cell);
-      sum += l;
+  forEachEqualAreaCell(kMu, kPhi, [&](const glm::dvec3& view, double cell) {
+    double sunlit = 0.0, moonlit = 0.0, own = 0.0;
+    if (model) {
+      sunlit = physicalLuminance(*model, camera, view, sun);
+      if (moonScale > 0.0) moonlit = moonScale * physicalLuminance(*model, camera, view, s.moonDirection);
+    } else {
+      sunlit = shader::rec709Luminance(analyticSkyLightOnly(s.sky.params, view));
     }
-  }
+    if (night && view.z > 0.0) own = shader::rec709Luminance(night::nightDiffuseRadianceWithoutMap(*night, view));
+    if (view.z < 0.0) own = shader::rec709Luminance(s.nightGroundRadiance);
+    const double l = sunlit + moonlit + own;
+    cells->push_back({static_cast<float>(sunlit), static_cast<float>(moonlit), static_cast<float>(own)});
+    h.add(l, cell);
+    sum += l;
+  });
   out.meanLuminance = sum / (kMu * kPhi);
   out.cells = std::move(cells);
   double brightest = 0.0;

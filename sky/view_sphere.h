@@ -6,12 +6,34 @@
 // from it (sky/eye/tone_curve.h) once per state, for every channel alike.
 #include "sky/eye/tone_curve.h"
 
+#include <glm/vec3.hpp>
+
+#include <cmath>
 #include <memory>
+#include <numbers>
 #include <vector>
 
 namespace skyig::sky {
 
 struct SkyState;
+
+// The sphere cut into cells of equal solid angle: `bands` equal steps in cos(zenith) from the
+// nadir up (Archimedes' hat-box theorem: equal steps in height cut equal areas) times `sectors`
+// in azimuth from north through east. Calls f(view, solidAngle) at each cell's centre (an ENU
+// unit vector, x east, y north, z up), band by band. The view sphere and the host's light
+// (sky/host_light.h) integrate over it.
+template <class F>
+void forEachEqualAreaCell(int bands, int sectors, F&& f) {
+  const double solidAngle = 4.0 * std::numbers::pi / (bands * sectors);
+  for (int i = 0; i < bands; ++i) {
+    const double mu = -1.0 + 2.0 * (i + 0.5) / bands;
+    const double sinTheta = std::sqrt(1.0 - mu * mu);
+    for (int j = 0; j < sectors; ++j) {
+      const double phi = 2.0 * std::numbers::pi * (j + 0.5) / sectors;
+      f(glm::dvec3(sinTheta * std::sin(phi), sinTheta * std::cos(phi), mu), solidAngle);
+    }
+  }
+}
 
 // One cell's light by source (luminance, cd/m^2): the sun's (sky or terrain, with the analytic
 // model all of it), the moon's (the moonlit sky or terrain) and the night's own (airglow,

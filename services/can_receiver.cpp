@@ -90,7 +90,7 @@ void CanReceiver::handle(const can::CanFrame& frame, Clock::time_point arrival) 
   }
   ++state_.updates;
   state_.received = arrival;
-  out_.publish(HostSnapshot{state_, predictor_, std::nullopt, std::nullopt, Clock::now()});
+  out_.publish(HostSnapshot{state_, predictor_, std::nullopt, std::nullopt, Clock::now(), {}});
   stats_.arrivalToVisible.add(std::chrono::duration<double, std::micro>(Clock::now() - arrival).count());
 }
 

@@ -24,7 +24,7 @@ class CanReceiver {
  private:
   int fd_;
   NodeStats& stats_;
-  Latest<HostSnapshot>& out_;
+  HostPublisher out_;
   protocol::canaerospace::StateDecoder decoder_;
   HostState state_;
   OwnshipPredictor predictor_;

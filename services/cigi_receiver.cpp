@@ -104,7 +104,7 @@ void CigiReceiver::handle(std::span<const std::uint8_t> datagram, const sockaddr
   else if (s.ownshipValid && !predictor_.valid())  // a new session that has not moved it yet: held
     predictor_.addSample(s.ownship, s.ownshipTime, {});
   // The session's host travels with the state, so a frame answers the host whose state it shows.
-  out_.emplace(s, predictor_, tracker_.clock(), sessions_.host(), Clock::now());
+  out_.publish(HostSnapshot{s, predictor_, tracker_.clock(), sessions_.host(), Clock::now(), {}});
   stats_.arrivalToVisible.add(std::chrono::duration<double, std::micro>(Clock::now() - arrival).count());
 }
 

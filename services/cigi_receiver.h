@@ -40,7 +40,7 @@ class CigiReceiver {
  private:
   DatagramRecorder* recorder_ = nullptr;
   NodeStats& stats_;
-  Latest<HostSnapshot>& out_;
+  HostPublisher out_;
   HostSessions sessions_;
   CigiStateTracker tracker_;
   OwnshipPredictor predictor_;

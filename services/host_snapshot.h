@@ -2,12 +2,16 @@
 // What the receiver hands the worker and render threads: the host state plus what it takes
 // to evaluate it at any instant (ownship prediction, the refined sim clock): values only.
 #include "services/cigi_state.h"
+#include "services/latest.h"
 #include "services/host_state.h"
 #include "services/ownship_predictor.h"
 
 #include <netinet/in.h>
 
+#include <deque>
+#include <memory>
 #include <optional>
+#include <vector>
 
 namespace skyig::services {
 
@@ -17,9 +21,26 @@ struct HostSnapshot {
   std::optional<HostClock> cigiClock;    // the CIGI clock, when the host speaks CIGI
   std::optional<sockaddr_in> sender;     // where the last host message came from (UDP)
   Clock::time_point published{};
+  // The snapshots published before this one, oldest first, each without its own `earlier`: the
+  // worker reads only the latest snapshot, so on a busy machine it may skip host messages; with
+  // these it still steps the eye at every host instant (services/sky_worker.h), as a node that
+  // skipped none does.
+  std::vector<std::shared_ptr<const HostSnapshot>> earlier;
 
   // UTC at a local instant: CIGI's refined clock, else the last full time plus elapsed time.
   std::optional<ephemeris::UtcTime> utcAt(Clock::time_point t) const;
+};
+
+// How a receiver publishes: each snapshot goes out with the last kHistory before it.
+class HostPublisher {
+ public:
+  static constexpr std::size_t kHistory = 64;  // two seconds of a 30 Hz host
+  explicit HostPublisher(Latest<HostSnapshot>& out) : out_(out) {}
+  void publish(HostSnapshot next);
+
+ private:
+  Latest<HostSnapshot>& out_;
+  std::deque<std::shared_ptr<const HostSnapshot>> recent_;  // bare: `earlier` empty
 };
 
 }  // namespace skyig::services

@@ -59,11 +59,15 @@ sky::ObserverState SkyWorker::observerAt(const HostSnapshot* host, Clock::time_p
   return o;
 }
 
-sky::SkyState SkyWorker::build(const HostSnapshot* host, Clock::time_point t) {
+sky::SkyState SkyWorker::scene(const HostSnapshot* host, Clock::time_point t) {
   sky::SkyConditions c = conditions_;
   // CIGI Celestial Sphere Control: the host dims or hides the star field.
   if (host) c.starFieldIntensity = host->state.starFieldIntensity;
-  sky::SkyState s = sky::buildSkyState(observerAt(host, t), c, std::nullopt, &caches_);
+  return sky::buildSkyState(observerAt(host, t), c, std::nullopt, &caches_);
+}
+
+sky::SkyState SkyWorker::build(const HostSnapshot* host, Clock::time_point t) {
+  sky::SkyState s = scene(host, t);
   if (config_.temporalAdaptation && eye_.started()) {
     s.adaptationLuminance = eye_.level();
     s.adaptationGain = eye_.gain(s.sceneLuminance);
@@ -106,18 +110,31 @@ std::optional<sky::SkyState> SkyWorker::step(const HostSnapshot* host, Clock::ti
   sky::SkyState s = build(host, t);
   lastBuild_ = std::max(t, lastBuild_.value_or(t));
   if (newHost && config_.temporalAdaptation) {
-    const double hostTime = hostSeconds(*host);
-    if (lastHostObserver_ && isJump(*lastHostObserver_, s.observer)) eye_.reset(s.sceneLuminance, hostTime);
-    else eye_.step(s.sceneLuminance, hostTime);
+    // The host messages published since the last one stepped, which this worker skipped (it
+    // reads only the latest snapshot): the eye steps at each of them too, so what it integrated
+    // does not depend on this machine's load.
+    for (const std::shared_ptr<const HostSnapshot>& e : host->earlier)
+      if (e->state.updates > 0 && (!lastHostMessage_ || e->state.received > *lastHostMessage_)) {
+        const sky::SkyState skipped = scene(e.get(), e->state.received);
+        stepEye(*e, skipped);
+      }
+    stepEye(*host, s);
     s.adaptationLuminance = eye_.level();
     s.adaptationGain = eye_.gain(s.sceneLuminance);
     sky::mapForDisplays(s, displays_);
-  }
-  if (newHost) {
+  } else if (newHost) {
     lastHostMessage_ = host->state.received;
     lastHostObserver_ = s.observer;
   }
   return s;
+}
+
+void SkyWorker::stepEye(const HostSnapshot& host, const sky::SkyState& s) {
+  const double hostTime = hostSeconds(host);
+  if (lastHostObserver_ && isJump(*lastHostObserver_, s.observer)) eye_.reset(s.sceneLuminance, hostTime);
+  else eye_.step(s.sceneLuminance, hostTime);
+  lastHostMessage_ = host.state.received;
+  lastHostObserver_ = s.observer;
 }
 
 FramePose SkyWorker::poseAt(const HostSnapshot* host, Clock::time_point t,

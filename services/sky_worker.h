@@ -44,7 +44,8 @@ class SkyWorker {
 
   // The state due at local instant `now`, if one is: for a host message not seen before, the
   // state at the message's own instant, with the eye's adaptation stepped on the host's clock
-  // (so two nodes and a replay of one stream adapt alike); otherwise, when the host has been
+  // at that message and at each earlier one this worker skipped (HostSnapshot::earlier), so two
+  // nodes and a replay of one stream adapt alike however loaded each machine is; otherwise, when the host has been
   // silent for `refresh` or `force` is set (new tables), the state at `now` with the eye as it
   // is. Throws std::invalid_argument for a host state the sky cannot use: the caller counts it
   // and keeps its last state.
@@ -67,6 +68,11 @@ class SkyWorker {
   FramePose poseAt(const HostSnapshot* host, Clock::time_point t, const std::vector<sky::ChannelConfig>& channels) const;
 
  private:
+  // The sky at `t` without the eye: what the eye adapts to.
+  sky::SkyState scene(const HostSnapshot* host, Clock::time_point t);
+  // Steps the eye to the scene `s` of host message `host` (reset at a jump of the scene).
+  void stepEye(const HostSnapshot& host, const sky::SkyState& s);
+
   const NodeConfig& config_;
   NodeStats& stats_;
   atmosphere::AtmosphereUpdater* updater_;

@@ -623,3 +623,62 @@ TEST(SynchronousWorker, BuildsOnlyAtHostInstants) {
   EXPECT_NEAR(later->observer.utc.secondsOfDay - first->observer.utc.secondsOfDay, 0.5, 1e-6);
   fs::remove_all(dir);
 }
+
+// The eye integrates the scene at every host message, also at those a busy node's worker
+// skipped (it reads only the latest snapshot and steps through the ones published before it):
+// a worker that saw every fourth message of a darkening dusk adapts exactly as one that saw
+// them all. Without the catch-up the two differ by far more than the last bit.
+TEST(SynchronousWorker, SkippedHostMessagesStepTheEyeAlike) {
+  const fs::path dir = freshTestDirectory("skyig_skipped_messages_");
+  std::ofstream(dir / "node.toml") << "[sky]\nmodel = \"preetham\"\n[[channel]]\nname = \"front\"\nwidth = 32\nheight = 24\n";
+  NodeConfig config = loadNodeConfig((dir / "node.toml").string());
+  loadSkyData(config);
+  ASSERT_TRUE(config.temporalAdaptation);
+  NodeStats stats;
+  Latest<HostSnapshot> latest;
+  HostPublisher publisher(latest);
+  SkyWorker everyMessage(config, nullptr, stats), everyFourth(config, nullptr, stats);
+  everyMessage.setHostInstantsOnly(true);
+  everyFourth.setHostInstantsOnly(true);
+
+  const Clock::time_point t0 = Clock::now();
+  HostState state;
+  state.timeValid = true;
+  state.ownshipValid = true;
+  state.ownship = {47.26, 11.34, 900.0, {90.0, 5.0, 0.0}};
+  std::optional<skyig::sky::SkyState> all, some;
+  for (int k = 1; k <= 41; ++k) {
+    // A minute of dusk per message, 100 ms apart: the scene darkens faster than the eye follows.
+    state.updates = static_cast<std::uint64_t>(k);
+    state.received = state.utcTime = t0 + k * 100ms;
+    state.utc = {2026, 6, 21, 19 * 3600.0 + k * 60.0};
+    publisher.publish(HostSnapshot{state, OwnshipPredictor{}, std::nullopt, std::nullopt, state.received, {}});
+    const auto host = latest.get();
+    all = everyMessage.step(host.get(), state.received);
+    ASSERT_TRUE(all.has_value());
+    if (k % 4 == 1) some = everyFourth.step(host.get(), state.received);
+  }
+  ASSERT_TRUE(some.has_value());
+  EXPECT_EQ(some->observer.utc.secondsOfDay, all->observer.utc.secondsOfDay);
+  EXPECT_GT(all->adaptationLuminance / all->sceneLuminance, 1.05);  // the eye lags the dusk
+  EXPECT_EQ(some->adaptationLuminance, all->adaptationLuminance);
+  EXPECT_EQ(some->adaptationGain, all->adaptationGain);
+  fs::remove_all(dir);
+}
+
+// The history a snapshot carries is bounded: a reader stalled for long holds kHistory bare
+// snapshots, not the whole stream.
+TEST(HostPublisher, EachSnapshotCarriesTheLastOnesBeforeIt) {
+  Latest<HostSnapshot> latest;
+  HostPublisher publisher(latest);
+  for (std::uint64_t k = 1; k <= HostPublisher::kHistory + 10; ++k) {
+    HostSnapshot s;
+    s.state.updates = k;
+    publisher.publish(s);
+  }
+  const auto last = latest.get();
+  ASSERT_EQ(last->earlier.size(), HostPublisher::kHistory);
+  EXPECT_EQ(last->earlier.front()->state.updates, 10u);
+  EXPECT_EQ(last->earlier.back()->state.updates, HostPublisher::kHistory + 9);
+  for (const auto& e : last->earlier) EXPECT_TRUE(e->earlier.empty());
+}

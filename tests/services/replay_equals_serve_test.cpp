@@ -233,8 +233,8 @@ TEST(ReplayEqualsServe, TwoNodesFedOneStreamAdaptAlike) {
   const double adaptationA = a["adaptation_cd_m2"].get<double>(), adaptationB = b["adaptation_cd_m2"].get<double>();
   std::cout << "two nodes at the last host frame: adaptation " << adaptationA << " and " << adaptationB
             << " cd/m^2, scene " << a["scene_cd_m2"].get<double>() << " cd/m^2\n";
-  // Alike: a node's worker may skip a host message the other built a state for, which steps the
-  // same time course in other intervals (1e-3 of the level at most).
+  // Alike: a node's worker that skipped host messages steps the eye at them all the same
+  // (HostSnapshot::earlier), so the two integrate the same scenes at the same host instants.
   EXPECT_NEAR(adaptationA / adaptationB, 1.0, 1e-3);
   // And in time: the eye still lags the darkening scene (it is not simply the scene's level).
   EXPECT_GT(std::abs(adaptationA / a["scene_cd_m2"].get<double>() - 1.0), 0.01);

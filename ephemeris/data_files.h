@@ -2,7 +2,10 @@
 // Where skyig reads its data files at run time (bsc5.csv, moon.png, milkyway.png): one rule for
 // every library and command, with no path of the source or build tree compiled in.
 //   1. $SKYIG_DATA_DIR, when it is set and not empty;
-//   2. else <directory of the running executable>/../share/skyig: /usr/bin/skyig reads
+//   2. else, in a host that links libskyig.so (api/), the share/skyig beside the library:
+//      <prefix>/<libdir>/libskyig.so reads <prefix>/share/skyig (the relative path is fixed
+//      when the library is configured, SKYIG_LIBRARY_TO_DATA), whatever the host's executable;
+//   3. else <directory of the running executable>/../share/skyig: /usr/bin/skyig reads
 //      /usr/share/skyig, and the build tree's build/bin/skyig reads build/share/skyig, where
 //      CMake stages the files (services/CMakeLists.txt). Tests set SKYIG_DATA_DIR.
 // It lives in ephemeris/, the lowest library that reads one of the files (the catalogue).
@@ -20,10 +23,12 @@ class DataFileError : public std::runtime_error {
 };
 
 // The rule above with its inputs given: `environment` is SKYIG_DATA_DIR's value (null when
-// unset), `executable` the running program's path. An empty result: neither is known.
-std::filesystem::path dataDirectory(const char* environment, const std::filesystem::path& executable);
+// unset), `library` the path of libskyig.so when this code runs inside it (else empty),
+// `executable` the running program's path. An empty result: none is known.
+std::filesystem::path dataDirectory(const char* environment, const std::filesystem::path& executable,
+                                    const std::filesystem::path& library = {});
 
-// The rule above for this process (/proc/self/exe). Throws DataFileError when SKYIG_DATA_DIR is
+// The rule above for this process (dladdr for the library, /proc/self/exe). Throws DataFileError when SKYIG_DATA_DIR is
 // unset and the executable's path cannot be read.
 std::filesystem::path dataDirectory();
 

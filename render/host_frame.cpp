@@ -129,4 +129,15 @@ void HostFrameRenderer::draw(const skyig::sky::SkyState& state, const glm::dmat4
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+GLuint HostFrameRenderer::drawTexture(const skyig::sky::SkyState& state, const glm::dmat4& view,
+                                      const glm::dmat4& projection, int width, int height,
+                                      const HostFrameOptions& options) {
+  const HostCamera camera = hostCamera(view, projection);
+  const skyig::sky::ChannelConfig channel = hostChannel(camera, HostViewport{0, 0, width, height}, options);
+  const GlStateGuard guard;
+  guard.setSkyigDefaults();
+  sky_.draw(state, camera.attitude, channel);
+  return options.output == HostOutput::LinearLight ? sky_.hdrTexture() : sky_.displayTexture();
+}
+
 }  // namespace skyig::render

@@ -83,6 +83,11 @@ class HostFrameRenderer {
   void draw(const skyig::sky::SkyState& state, const glm::dmat4& view, const glm::dmat4& projection,
             const HostViewport& viewport, const HostFrameOptions& options = {});
 
+  // Renders the host camera's channel at width x height into skyig's own targets and returns
+  // the texture the host composites itself: RGBA32F cd/m^2 (LinearLight) or RGBA8 display
+  // values, valid until the next call. The host's GL state is restored as by draw.
+  GLuint drawTexture(const skyig::sky::SkyState& state, const glm::dmat4& view, const glm::dmat4& projection,
+                     int width, int height, const HostFrameOptions& options = {});
   // The eye adaptation skyig's tone mapping used (cd/m^2), for a host that tone-maps the linear
   // output itself and wants the same exposure.
   static double adaptationLuminance(const skyig::sky::SkyState& state) { return state.adaptationLuminance; }

@@ -43,7 +43,7 @@ int openSocketCan(const std::string& interface) {
 }
 
 CanReceiver::CanReceiver(int fd, const can::IdentifierMap& map, NodeStats& stats, Latest<HostSnapshot>& out)
-    : fd_(fd), stats_(stats), out_(out), decoder_(map) {}
+    : fd_(fd), stats_(stats), out_(out, /*history=*/0), decoder_(map) {}
 
 void CanReceiver::run(const std::atomic<bool>& stop) {
   while (!stop.load(std::memory_order_relaxed)) {

@@ -14,12 +14,13 @@ std::optional<ephemeris::UtcTime> HostSnapshot::utcAt(Clock::time_point t) const
 }
 
 void HostPublisher::publish(HostSnapshot next) {
+  if (history_ == 0) return out_.publish(std::move(next));
   next.earlier.assign(recent_.begin(), recent_.end());
   HostSnapshot bare = next;
   bare.earlier.clear();
   out_.publish(std::move(next));
   recent_.push_back(std::make_shared<const HostSnapshot>(std::move(bare)));
-  if (recent_.size() > kHistory) recent_.pop_front();
+  if (recent_.size() > history_) recent_.pop_front();
 }
 
 }  // namespace skyig::services

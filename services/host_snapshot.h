@@ -31,15 +31,19 @@ struct HostSnapshot {
   std::optional<ephemeris::UtcTime> utcAt(Clock::time_point t) const;
 };
 
-// How a receiver publishes: each snapshot goes out with the last kHistory before it.
+// How a receiver publishes: each snapshot goes out with the last `history` before it. CIGI's
+// are host frames (kHistory); a CANaerospace host sends each value in a CAN frame of its own,
+// dozens per host frame, so its snapshots go out without history (0): the eye steps at the
+// snapshots the worker reads, as many per second as the worker builds.
 class HostPublisher {
  public:
   static constexpr std::size_t kHistory = 64;  // two seconds of a 30 Hz host
-  explicit HostPublisher(Latest<HostSnapshot>& out) : out_(out) {}
+  explicit HostPublisher(Latest<HostSnapshot>& out, std::size_t history = kHistory) : out_(out), history_(history) {}
   void publish(HostSnapshot next);
 
  private:
   Latest<HostSnapshot>& out_;
+  std::size_t history_;
   std::deque<std::shared_ptr<const HostSnapshot>> recent_;  // bare: `earlier` empty
 };
 

@@ -7,6 +7,7 @@
 #include "sky/sky_state.h"
 #include "services/atmosphere_loader.h"
 #include "services/sky_data.h"
+#include "skyig/sky.h"
 
 #include <cstdio>
 #include <fstream>
@@ -26,6 +27,7 @@ struct ProbeCli {
   std::string viewsFile;
   std::optional<double> visibilityKm, humidityPct, groundAlbedo;
   bool irradiance = false;
+  bool light = false;
   std::optional<std::string> tables;  // default: the configuration's ("medium" without one)
   std::optional<std::string> cacheDir;
   std::optional<int> orders;
@@ -41,7 +43,36 @@ atmosphere::ProbeView parseView(const std::string& text, const std::string& wher
   return {z, a};
 }
 
+// `--light`: the light a host embedding skyig gets, through the public API (skyig::Sky): the
+// command is the library's first client, so what it prints is what a host receives.
+int runLight(const ProbeCli& cli) {
+  if (!cli.lat || !cli.lon || cli.utc.empty()) throw ConfigError("--light: give --lat, --lon and --utc");
+  const auto utc = ephemeris::parseIso8601Utc(cli.utc);
+  if (!utc) throw ConfigError("--utc: expected a UTC time like 2026-06-21T19:30:00Z, got \"" + cli.utc + "\"");
+  skyig::Settings settings;
+  settings.configFile = cli.configPath;
+  settings.tables = cli.tables.value_or("");
+  settings.visibilityKm = cli.visibilityKm.value_or(0.0);
+  settings.temporalAdaptation = false;  // a still: the eye adapted to it
+  skyig::Observer observer;
+  observer.latitudeDeg = *cli.lat;
+  observer.longitudeDeg = *cli.lon;
+  observer.heightM = cli.altitudeM;
+  observer.utc = {utc->year, utc->month, utc->day, utc->secondsOfDay};
+  try {
+    skyig::Sky sky(settings);
+    sky.update(observer, 0.0);
+    nlohmann::json out = {{"utc", cli.utc}, {"latitude_deg", *cli.lat}, {"longitude_deg", *cli.lon},
+                          {"altitude_m", cli.altitudeM}, {"light", libraryLightJson(sky.light())}};
+    std::printf("%s\n", out.dump(2).c_str());
+  } catch (const skyig::Error& e) {
+    throw ConfigError(e.what());
+  }
+  return 0;
+}
+
 int run(const ProbeCli& cli) {
+  if (cli.light) return runLight(cli);
   atmosphere::ProbeRequest request;
   request.altitudeM = cli.altitudeM;
   request.irradiance = cli.irradiance;
@@ -117,6 +148,7 @@ void registerProbeCommand(CLI::App& app, int& exitCode) {
   c->add_option("--humidity", cli->humidityPct, "Relative humidity, percent")->check(CLI::Range(0.0, 99.0));
   c->add_option("--ground-albedo", cli->groundAlbedo, "Ground albedo, 0..1 (default: the configuration's sky.ground_albedo, 0.2 without one)")->check(CLI::Range(0.0, 1.0));
   c->add_flag("--irradiance", cli->irradiance, "Add the direct-sun and sky illuminance on a horizontal surface");
+  c->add_flag("--light", cli->light, "Instead: the light a host embedding skyig gets (skyig::Sky::light: sun, moon, sky ambient and spherical harmonics, adaptation) for --lat --lon --utc [--alt --config --tables --visibility]");
   c->add_option("--tables", cli->tables, "Table size: medium (the node's default), small (seconds; coarse at sunset) or default (Bruneton's)")
       ->check(CLI::IsMember({"small", "medium", "default"}));
   c->add_option("--orders", cli->orders, "Scattering orders (4)")->check(CLI::Range(1, 10));

@@ -71,4 +71,20 @@ nlohmann::json nightProbeJson(const sky::NightProbeResult& result) {
   return out;
 }
 
+nlohmann::json libraryLightJson(const skyig::Light& light) {
+  auto direct = [](const skyig::DirectLight& d) {
+    return nlohmann::json{{"direction_enu", d.direction},
+                          {"normal_lux", d.normalLux},
+                          {"horizontal_lux", d.horizontalLux},
+                          {"colour_rec709", d.colour}};
+  };
+  return {{"sun", direct(light.sun)},
+          {"moon", direct(light.moon)},
+          {"ambient_horizontal_lux", light.ambientHorizontalLux},
+          {"ambient_horizontal_rec709_lux", light.ambientHorizontalRec709},
+          {"sky_sh_rec709_cd_m2", light.skySh},
+          {"adaptation_cd_m2", light.adaptationLuminance},
+          {"adaptation_gain", light.adaptationGain}};
+}
+
 }  // namespace skyig::services

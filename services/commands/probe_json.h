@@ -6,6 +6,7 @@
 
 #include "sky/atmosphere/probe.h"
 #include "sky/night_probe.h"
+#include "skyig/sky.h"
 
 namespace skyig::services {
 
@@ -19,5 +20,11 @@ nlohmann::json probeJson(const atmosphere::ProbeResult& result);
 // The day probe's JSON with each view's night lights (under their names) and "total", the
 // irradiance's moon_lux and moonlit_sky_lux, and utc, latitude_deg and longitude_deg.
 nlohmann::json nightProbeJson(const sky::NightProbeResult& result);
+
+// `probe --light`: what the library gives a host (skyig::Sky::light, docs/library.md): sun and
+// moon (direction_enu, normal_lux, horizontal_lux, colour_rec709), ambient_horizontal_lux,
+// ambient_horizontal_rec709_lux, sky_sh_rec709_cd_m2 (nine RGB triples), adaptation_cd_m2 and
+// adaptation_gain.
+nlohmann::json libraryLightJson(const skyig::Light& light);
 
 }  // namespace skyig::services

@@ -26,9 +26,15 @@ ALLOWED = {
     "render/passes": {"calibration", "render/gl", "sky", "sky/atmosphere", "sky/eye", "sky/night", "sky/common", "ephemeris", "shaders"},
     "render": {"calibration", "render/gl", "render/passes", "sky", "sky/atmosphere", "sky/eye", "sky/night", "sky/analytic", "sky/common",
                "ephemeris", "shaders"},
+    # The public library: the node's services (its sky worker, configuration, data loading) and
+    # the renderer behind the headers of api/include/skyig.
+    "api": {"services", "render", "render/gl", "render/passes", "sky", "sky/atmosphere", "sky/common", "sky/analytic",
+            "sky/eye", "sky/night", "ephemeris", "shaders", "calibration", "protocol"},
 }
-# services/ is the executable: it may include every library, and nothing includes it.
-TOP = ["protocol", "ephemeris", "calibration", "shaders", "sky", "render", "services"]
+# services/ is the node: it may include every library but the public one (api/), which is built
+# on it; the commands (services/commands) may include everything, and nothing includes them.
+TOP = ["protocol", "ephemeris", "calibration", "shaders", "sky", "render", "services", "api"]
+EVERYTHING_BUT = {"services": {"api", "services/commands"}, "services/commands": set()}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 
 
@@ -37,7 +43,7 @@ def folder_of(path):
     parts = path.split("/")
     for depth in (2, 1):
         f = "/".join(parts[:depth])
-        if len(parts) > depth and (f in ALLOWED or f == "services"):
+        if len(parts) > depth and (f in ALLOWED or f in EVERYTHING_BUT):
             return f
     return None
 
@@ -70,9 +76,12 @@ def main(root):
                         if dst is None or dst == src:
                             continue
                         edges.setdefault(src, set()).add(dst)
-                        if dst == "services":
-                            errors.append(f"{rel}:{n}: includes {m.group(1)}: nothing may include services/")
-                        elif src != "services" and dst not in ALLOWED[src]:
+                        if src in EVERYTHING_BUT:
+                            if dst in EVERYTHING_BUT[src]:
+                                errors.append(f"{rel}:{n}: includes {m.group(1)}: {src}/ may not depend on {dst}/")
+                        elif dst == "services/commands" or (dst == "services" and "services" not in ALLOWED[src]):
+                            errors.append(f"{rel}:{n}: includes {m.group(1)}: only the public library and the commands may include {dst}/")
+                        elif dst not in ALLOWED[src]:
                             errors.append(f"{rel}:{n}: includes {m.group(1)}: {src}/ may not depend on {dst}/")
     # A loop between folders (also one the table would allow by mistake).
     def visit(node, stack):

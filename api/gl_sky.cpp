@@ -1,0 +1,74 @@
+// The public SkyDraw: render::HostFrameRenderer (render/host_frame.h) behind the public types.
+#include "skyig/gl_sky.h"
+
+#include "api/sky_impl.h"
+#include "render/host_frame.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <stdexcept>
+
+namespace skyig {
+
+struct SkyDraw::Impl {
+  render::HostFrameRenderer renderer;
+};
+
+namespace {
+
+glm::dmat4 matrix(const float* m, const char* name) {
+  if (!m) throw Error(std::string("skyig::SkyDraw: the ") + name + " matrix is null");
+  return glm::dmat4(glm::make_mat4(m));
+}
+
+render::HostFrameOptions options(const Sky& sky, const DrawOptions& o) {
+  render::HostFrameOptions r;
+  r.depth = o.depth == DepthConvention::ReverseZ ? render::DepthConvention::ReverseZ : render::DepthConvention::Standard;
+  r.output = o.output == Output::LinearLight ? render::HostOutput::LinearLight : render::HostOutput::DisplayReferred;
+  // The configuration's first channel's display (its tone curve's): the one its worker maps for.
+  const auto channels = sky.impl().config.channelsOf(sky.impl().config.nodeName);
+  if (!channels.empty()) r.display = channels.front().display;
+  return r;
+}
+
+}  // namespace
+
+SkyDraw::SkyDraw(GlProcAddress getProcAddress) {
+  if (!getProcAddress) throw Error("skyig::SkyDraw: getProcAddress is null");
+  // glad is the library's own (hidden) copy: the host's loader, whatever it is, is not touched.
+  if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(getProcAddress)))
+    throw Error("skyig::SkyDraw: no OpenGL context is current, or it cannot load OpenGL 4.5 core functions");
+  try {
+    impl_ = std::make_unique<Impl>();
+  } catch (const std::exception& e) {
+    throw Error(std::string("skyig::SkyDraw: ") + e.what());
+  }
+}
+
+SkyDraw::~SkyDraw() = default;
+
+void SkyDraw::draw(const Sky& sky, const float* view, const float* projection, const Viewport& viewport,
+                   const DrawOptions& o) {
+  try {
+    impl_->renderer.draw(sky.impl().state, matrix(view, "view"), matrix(projection, "projection"),
+                         render::HostViewport{viewport.x, viewport.y, viewport.width, viewport.height}, options(sky, o));
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw Error(std::string("skyig::SkyDraw::draw: ") + e.what());
+  }
+}
+
+unsigned SkyDraw::texture(const Sky& sky, const float* view, const float* projection, int width, int height,
+                          Output output) {
+  try {
+    return impl_->renderer.drawTexture(sky.impl().state, matrix(view, "view"), matrix(projection, "projection"), width,
+                                       height, options(sky, DrawOptions{DepthConvention::Standard, output}));
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw Error(std::string("skyig::SkyDraw::texture: ") + e.what());
+  }
+}
+
+}  // namespace skyig

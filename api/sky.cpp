@@ -1,0 +1,161 @@
+// The public Sky: a services::SkyWorker fed by the host's calls instead of CIGI datagrams, so a
+// host embedding skyig gets the states `skyig serve` would show for the same observer and clock
+// (the same ephemeris, atmosphere updates and eye adaptation), and sky::hostLight's light.
+#include "skyig/sky.h"
+
+#include "api/sky_impl.h"
+#include "services/atmosphere_loader.h"
+#include "services/sky_data.h"
+#include "sky/host_light.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace skyig {
+
+namespace {
+
+Vec3 toVec3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+glm::dvec3 toGlm(const Vec3& v) { return {v[0], v[1], v[2]}; }
+
+DirectLight toPublic(const sky::HostDirectLight& l) {
+  return {toVec3(l.direction), l.normalLux, l.horizontalLux, toVec3(l.colour)};
+}
+
+// A value the host passed that the sky cannot use: the name and the value in the message.
+void require(bool ok, const char* name, double value, const char* expected) {
+  if (ok) return;
+  char text[64];
+  std::snprintf(text, sizeof text, "%.10g", value);
+  throw Error(std::string("skyig::Sky::update: ") + name + " = " + text + ": expected " + expected);
+}
+
+services::NodeConfig configOf(const Settings& settings) {
+  try {
+    services::NodeConfig config = settings.configFile.empty() ? services::parseNodeConfig("", "skyig's built-in defaults")
+                                                              : services::loadNodeConfig(settings.configFile);
+    if (!settings.model.empty() && !sky::parseSkyModel(settings.model, config.sky.model))
+      throw Error("skyig::Settings::model: \"" + settings.model + "\": expected physical, preetham or cie:<type>");
+    if (!settings.tables.empty()) {
+      if (settings.tables != "small" && settings.tables != "medium" && settings.tables != "default")
+        throw Error("skyig::Settings::tables: \"" + settings.tables + "\": expected small, medium or default");
+      config.atmosphere.tables = settings.tables;
+    }
+    if (settings.visibilityKm > 0.0) config.atmosphere.visibilityKm = settings.visibilityKm;
+    config.temporalAdaptation = settings.temporalAdaptation;
+    return config;
+  } catch (const services::ConfigError& e) {
+    throw Error(e.what());
+  }
+}
+
+}  // namespace
+
+const char* version() { return SKYIG_VERSION; }
+
+Vec3 irradianceFromSh(const Light& light, const Vec3& normal) {
+  sky::ShCoefficients sh;
+  for (std::size_t i = 0; i < sh.size(); ++i) sh[i] = toGlm(light.skySh[i]);
+  return toVec3(sky::shIrradiance(sh, glm::normalize(toGlm(normal))));
+}
+
+Sky::Impl::Impl(const Settings& settings) : config(configOf(settings)) {
+  try {
+    services::loadSkyData(config);
+    if (config.sky.model == sky::SkyModel::Physical) updater = services::makeAtmosphereUpdater(config);
+    worker = std::make_unique<services::SkyWorker>(config, updater.get(), stats);
+    worker->setHostInstantsOnly(true);
+    state = *worker->step(nullptr, services::Clock::now(), /*force=*/true);
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw Error(e.what());
+  }
+}
+
+Sky::Impl::~Impl() = default;
+
+const sky::HostLight& Sky::Impl::hostLight() const {
+  if (!light) light = sky::hostLight(state, state.conditions.atmosphere.get());
+  return *light;
+}
+
+Sky::Sky(const Settings& settings) : impl_(std::make_unique<Impl>(settings)) {}
+Sky::~Sky() = default;
+Sky::Sky(Sky&&) noexcept = default;
+Sky& Sky::operator=(Sky&&) noexcept = default;
+
+void Sky::update(const Observer& o, double hostSeconds, const Weather& weather) {
+  require(std::isfinite(hostSeconds), "hostSeconds", hostSeconds, "a finite time");
+  require(std::abs(o.latitudeDeg) <= 90.0, "latitudeDeg", o.latitudeDeg, "-90 to 90");
+  require(std::abs(o.longitudeDeg) <= 360.0, "longitudeDeg", o.longitudeDeg, "-360 to 360");
+  require(o.heightM > -1000.0 && o.heightM < 1.0e6, "heightM", o.heightM, "-1 km to 1000 km");
+  require(o.utc.month >= 1 && o.utc.month <= 12, "utc.month", o.utc.month, "1 to 12");
+  require(o.utc.day >= 1 && o.utc.day <= 31, "utc.day", o.utc.day, "1 to 31");
+  require(o.utc.secondsOfDay >= 0.0 && o.utc.secondsOfDay < 86401.0, "utc.secondsOfDay", o.utc.secondsOfDay, "0 to 86400");
+  require(o.pressureHpa > 0.0 && o.pressureHpa < 2000.0, "pressureHpa", o.pressureHpa, "0 to 2000 hPa");
+  require(o.temperatureC > -100.0 && o.temperatureC < 100.0, "temperatureC", o.temperatureC, "-100 to 100 C");
+  require(std::isfinite(weather.visibilityKm), "weather.visibilityKm", weather.visibilityKm, "a finite value");
+  require(weather.humidityPct >= 0.0 && weather.humidityPct <= 100.0, "weather.humidityPct", weather.humidityPct, "0 to 100");
+
+  Impl& m = *impl_;
+  // The host's call as the CIGI receiver would have published it (services/host_snapshot.h),
+  // stamped on the host's clock: the worker steps the eye on it.
+  services::HostSnapshot next = m.host;
+  services::HostState& s = next.state;
+  const auto received = services::Clock::time_point(
+      std::chrono::duration_cast<services::Clock::duration>(std::chrono::duration<double>(hostSeconds)));
+  const bool sameInstant = s.updates > 0 && received == s.received;
+  ++s.updates;
+  s.received = s.ownshipTime = s.utcTime = received;
+  s.ownshipValid = s.timeValid = true;
+  s.ownship.latitudeDeg = o.latitudeDeg;
+  s.ownship.longitudeDeg = o.longitudeDeg;
+  s.ownship.heightM = o.heightM;
+  s.utc = {o.utc.year, o.utc.month, o.utc.day, o.utc.secondsOfDay};
+  s.pressureHpa = o.pressureHpa;
+  s.temperatureC = o.temperatureC;
+  // No weather: HostState's defaults, which keep the configuration's atmosphere (as a host that
+  // never sent an Atmosphere Control).
+  const services::HostState unsaid;
+  s.visibilityM = weather.visibilityKm > 0.0 ? weather.visibilityKm * 1000.0 : unsaid.visibilityM;
+  s.humidityPct = weather.visibilityKm > 0.0 ? weather.humidityPct : unsaid.humidityPct;
+  next.predictor = services::OwnshipPredictor{};
+  next.predictor.addSample(s.ownship, received, {});
+  try {
+    const bool newTables = m.worker->followAtmosphere(&next, received);
+    // The same host instant again (a paused host): rebuilt for the new observer, the eye as it is.
+    auto built = m.worker->step(&next, received, newTables || sameInstant);
+    if (built) {
+      m.state = std::move(*built);
+      m.light.reset();
+    }
+    m.host = std::move(next);
+  } catch (const std::exception& e) {
+    throw Error(std::string("skyig::Sky::update: ") + e.what());
+  }
+}
+
+Light Sky::light() const {
+  const sky::HostLight& h = impl_->hostLight();
+  Light l;
+  l.sun = toPublic(h.sun);
+  l.moon = toPublic(h.moon);
+  l.ambientHorizontalLux = h.ambientHorizontalLux;
+  l.ambientHorizontalRec709 = toVec3(h.ambientHorizontalRec709);
+  for (std::size_t i = 0; i < l.skySh.size(); ++i) l.skySh[i] = toVec3(h.skySh[i]);
+  l.adaptationLuminance = h.adaptationLuminance;
+  l.adaptationGain = h.adaptationGain;
+  return l;
+}
+
+AerialPerspective Sky::aerialPerspective(const Vec3& offsetEnuM) const {
+  const auto* model = impl_->state.conditions.atmosphere.get();
+  if (!model || impl_->state.conditions.model != sky::SkyModel::Physical)
+    throw Error("skyig::Sky::aerialPerspective needs the physical sky (Settings::model \"physical\")");
+  const sky::HostAerialPerspective a = sky::hostAerialPerspective(impl_->state, *model, toGlm(offsetEnuM));
+  return {toVec3(a.transmittance), toVec3(a.inScattered)};
+}
+
+}  // namespace skyig

@@ -1,0 +1,173 @@
+// skyig::Sky as a host uses it (docs/library.md): only <skyig/sky.h> and <skyig/gl_sky.h>, and
+// the skyig executable's own output to compare with.
+#include <skyig/gl_sky.h>
+#include <skyig/sky.h>
+
+#include "examples/terrain_host/terrain_host.h"
+
+#include <glad/gl.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace {
+
+// The physical sky's small tables, from the test cache every test of the build shares.
+skyig::Settings smallPhysicalSky(bool temporal = false) {
+  const std::string cache = std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache";
+  ::setenv("XDG_CACHE_HOME", cache.c_str(), 1);
+  skyig::Settings s;
+  s.model = "physical";
+  s.tables = "small";
+  s.temporalAdaptation = temporal;
+  return s;
+}
+
+skyig::Observer at(int hour, int minute, double heightM = 0.0) {
+  skyig::Observer o;
+  o.latitudeDeg = 47.2603;
+  o.longitudeDeg = 11.3439;
+  o.heightM = heightM;
+  o.utc = {2026, 6, 21, hour * 3600.0 + minute * 60.0};
+  return o;
+}
+
+// `skyig ARGS` (the build's executable) -> its JSON on stdout.
+nlohmann::json skyigJson(const std::string& args) {
+  const std::string command = std::string(SKYIG_EXECUTABLE) + " " + args + " 2>/dev/null";
+  FILE* p = ::popen(command.c_str(), "r");
+  if (!p) return nullptr;
+  std::string out;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out.append(buf, n);
+  if (::pclose(p) != 0) return nullptr;
+  return nlohmann::json::parse(out, nullptr, false);
+}
+
+}  // namespace
+
+// The sun's illuminance a host gets is `skyig probe --irradiance`'s direct sun (the same
+// transmittance and solar spectrum), and the sky's ambient on a horizontal surface, integrated
+// over skyig's sky radiance, agrees with the probe's sky irradiance from Bruneton's irradiance
+// table (two independent computations of one quantity).
+TEST(SkyLibrary, SunAndSkyLightAreTheProbesIrradiance) {
+  skyig::Sky sky(smallPhysicalSky());
+  sky.update(at(11, 0, 10.0), 0.0);  // 10 m above the ground: the probe's --alt
+  const skyig::Light light = sky.light();
+  const nlohmann::json probe =
+      skyigJson("probe --irradiance --tables small --alt 10 --lat 47.2603 --lon 11.3439 --utc 2026-06-21T11:00:00Z");
+  ASSERT_TRUE(probe.is_object());
+  const double probeSun = probe["irradiance"]["direct_sun_lux"].get<double>();
+  const double probeSky = probe["irradiance"]["sky_lux"].get<double>();
+  std::printf("sun %.1f lux (probe %.1f), sky ambient %.1f lux (probe %.1f)\n", light.sun.horizontalLux, probeSun,
+              light.ambientHorizontalLux, probeSky);
+  EXPECT_NEAR(light.sun.horizontalLux / probeSun, 1.0, 1e-9);
+  EXPECT_NEAR(light.ambientHorizontalLux / probeSky, 1.0, 0.03);
+}
+
+// `skyig probe --light` prints what the library gives a host: the command is a client of the
+// same API, so the figures are equal to the last digit.
+TEST(SkyLibrary, ProbeLightIsTheLibrarysLight) {
+  skyig::Sky sky(smallPhysicalSky());
+  sky.update(at(18, 50), 0.0);
+  const skyig::Light light = sky.light();
+  const nlohmann::json probe =
+      skyigJson("probe --light --tables small --lat 47.2603 --lon 11.3439 --utc 2026-06-21T18:50:00Z");
+  ASSERT_TRUE(probe.is_object());
+  const nlohmann::json& l = probe["light"];
+  EXPECT_DOUBLE_EQ(l["sun"]["horizontal_lux"].get<double>(), light.sun.horizontalLux);
+  EXPECT_DOUBLE_EQ(l["moon"]["normal_lux"].get<double>(), light.moon.normalLux);
+  EXPECT_DOUBLE_EQ(l["ambient_horizontal_lux"].get<double>(), light.ambientHorizontalLux);
+  EXPECT_DOUBLE_EQ(l["sky_sh_rec709_cd_m2"][4][1].get<double>(), light.skySh[4][1]);
+  EXPECT_DOUBLE_EQ(l["adaptation_cd_m2"].get<double>(), light.adaptationLuminance);
+  EXPECT_GT(light.sun.direction[2], 0.0);  // 20:50 CEST, the sun low above the horizon
+  EXPECT_LT(light.sun.direction[2], 0.1);
+}
+
+// A value the sky cannot use is refused with its name and value, and the last good frame stays.
+TEST(SkyLibrary, BadObserverIsRefusedAndTheLastFrameKept) {
+  skyig::Sky sky(smallPhysicalSky());
+  sky.update(at(11, 0), 0.0);
+  const double before = sky.light().sun.horizontalLux;
+  skyig::Observer bad = at(11, 0);
+  bad.latitudeDeg = std::nan("");
+  try {
+    sky.update(bad, 1.0);
+    FAIL() << "a NaN latitude was accepted";
+  } catch (const skyig::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("latitudeDeg = nan"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(sky.update(at(11, 0), std::nan("")), skyig::Error);
+  skyig::Observer month13 = at(11, 0);
+  month13.utc.month = 13;
+  EXPECT_THROW(sky.update(month13, 2.0), skyig::Error);
+  EXPECT_EQ(sky.light().sun.horizontalLux, before);
+}
+
+// The pilot's eye adapts on the host's clock: nine minutes of dusk in a tenth of a second of
+// host time leave the eye far above the darker scene's level (the level an eye adapted at once
+// has); ten minutes of host time later it has come down to it.
+TEST(SkyLibrary, TheEyeAdaptsOnTheHostsClock) {
+  skyig::Sky adapted(smallPhysicalSky(/*temporal=*/false));
+  adapted.update(at(19, 19), 0.0);
+  const double target = adapted.light().adaptationLuminance;
+
+  skyig::Sky eye(smallPhysicalSky(/*temporal=*/true));
+  eye.update(at(19, 10), 0.0);
+  eye.update(at(19, 19), 0.1);
+  const double lagging = eye.light().adaptationLuminance;
+  eye.update(at(19, 19), 600.0);
+  const double later = eye.light().adaptationLuminance;
+  std::printf("adapted at once %.4g cd/m^2; the eye after 0.1 s %.4g, after 600 s %.4g\n", target, lagging, later);
+  EXPECT_GT(lagging / target, 1.2);
+  EXPECT_NEAR(later / target, 1.0, 0.05);
+}
+
+TEST(SkyLibrary, AerialPerspectiveNeedsThePhysicalSky) {
+  skyig::Settings s = smallPhysicalSky();
+  s.model = "preetham";
+  skyig::Sky sky(s);
+  sky.update(at(11, 0), 0.0);
+  EXPECT_GT(sky.light().sun.horizontalLux, 10000.0);
+  EXPECT_THROW(sky.aerialPerspective({0.0, 1000.0, 0.0}), skyig::Error);
+  s.model = "no such sky";
+  EXPECT_THROW(skyig::Sky{s}, skyig::Error);
+}
+
+// The texture path: the sky a host composites itself is the sky SkyDraw draws into the host's
+// framebuffer, pixel for pixel (linear light).
+TEST(SkyLibrary, TextureIsTheSkyTheDrawShows) {
+  skyig::Sky sky(smallPhysicalSky());
+  sky.update(at(17, 0), 0.0);
+  terrain_host::HeadlessContext context;
+  terrain_host::Options o;
+  o.width = 48;
+  o.height = 32;
+  o.terrainRadiusM = 1.0;  // no terrain to speak of: a sky frame
+  o.pitchDeg = 20.0;
+  const terrain_host::Frame frame = terrain_host::drawFrame(sky, o, terrain_host::HeadlessContext::procAddress());
+
+  ASSERT_TRUE(gladLoadGL(reinterpret_cast<GLADloadfunc>(terrain_host::HeadlessContext::procAddress())));
+  skyig::SkyDraw draw(terrain_host::HeadlessContext::procAddress());
+  // The same camera as the frame's.
+  const terrain_host::Mat4 view = terrain_host::viewMatrix(o.yawDeg, o.pitchDeg);
+  const terrain_host::Mat4 projection =
+      terrain_host::projectionMatrix(o.horizontalFovDeg, double(o.width) / o.height, 10.0, 1.0e6, o.depth);
+  const unsigned texture = draw.texture(sky, view.data(), projection.data(), o.width, o.height, skyig::Output::LinearLight);
+  ASSERT_NE(texture, 0u);
+  std::vector<float> rgba(static_cast<std::size_t>(o.width * o.height * 4));
+  glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(float)), rgba.data());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(o.width * o.height); ++i)
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double a = rgba[i * 4 + c], b = frame.final[i * 3 + c];
+      worst = std::max(worst, std::abs(a - b) / std::max(b, 1e-6));
+    }
+  EXPECT_LT(worst, 1e-5);
+  EXPECT_GT(frame.final[(16 * 48 + 24) * 3 + 2], 100.0f);  // a blue afternoon sky, cd/m^2
+}

@@ -4,12 +4,15 @@
 #include "sky/atmosphere/physical_camera.h"
 #include "sky/atmosphere/probe.h"
 #include "sky/night/moon_disc.h"
+#include "sky/night/night_diffuse.h"
+#include "sky/night/star_field.h"
 #include "sky/sky_state.h"
 #include "sky/view_sphere.h"
 #include "shaders/physics.h"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace skyig::sky {
 
@@ -117,10 +120,17 @@ HostLight hostLight(const SkyState& s, const atmosphere::AtmosphereModel* model)
 
   // One pass over the sphere: E = integral of L cos(theta) over the upper hemisphere, and
   // L_lm = integral of L Y_lm over the sphere (Ramamoorthi & Hanrahan 2001, eq. 4).
-  glm::dvec3 horizontal(0.0);
+  // Above the horizon also the night's own diffuse light (airglow, zodiacal light, the Milky
+  // Way's and the unresolved stars' floor: sky/night/night_diffuse.h), which lights the terrain
+  // on a moonless night; the resolved stars, point sources, add their illuminance to the
+  // horizontal ambient only (sky/night/star_field.h).
+  std::optional<night::NightDiffuseSky> night;
+  if (s.ephemeris) night = night::makeNightDiffuseSky(*s.ephemeris, s.extinction, /*withMilkyWay=*/false);
+  glm::dvec3 horizontal = s.starField ? night::horizontalIlluminance(*s.starField) : glm::dvec3(0.0);
   ShCoefficients sh{};
   forEachEqualAreaCell(kMu, kPhi, [&](const glm::dvec3& view, double cell) {
-    const glm::dvec3 l = hostSkyRadiance(s, model, view);
+    glm::dvec3 l = hostSkyRadiance(s, model, view);
+    if (night && view.z > 0.0) l += night::nightDiffuseRadianceWithoutMap(*night, view);
     if (view.z > 0.0) horizontal += l * view.z * cell;
     const std::array<double, 9> y = shBasis(view);
     for (std::size_t k = 0; k < sh.size(); ++k) sh[k] += l * y[k] * cell;

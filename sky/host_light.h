@@ -36,7 +36,9 @@ struct HostLight {
   HostDirectLight sun;
   HostDirectLight moon;
   // The sky (and, below the horizon, the lit ground with its aerial perspective: what skyig
-  // draws there) without the sun's and moon's discs, which are the direct lights above.
+  // draws there) without the sun's and moon's discs, which are the direct lights above; at
+  // night also the night's own light (airglow, zodiacal light, the Milky Way's floor, and in
+  // the horizontal figures the resolved stars).
   double ambientHorizontalLux = 0.0;          // sky irradiance on a horizontal surface
   glm::dvec3 ambientHorizontalRec709{0.0};    // the same per channel (luminance = the lux)
   ShCoefficients skySh{};                     // of the radiance over the whole sphere

@@ -3,12 +3,15 @@
 #include "sky/host_light.h"
 
 #include "sky/atmosphere/probe.h"
+#include "sky/night/night_diffuse.h"
+#include "sky/night/star_field.h"
 #include "sky/sky_state.h"
 #include "tests/sky/atmosphere/shared_models.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <numbers>
 
@@ -200,4 +203,34 @@ TEST(HostLight, FullMoonLightsTheNight) {
   EXPECT_NEAR(glm::length(light.moon.direction), 1.0, 1e-12);
   EXPECT_GT(light.ambientHorizontalLux, 0.02 * light.moon.horizontalLux);
   EXPECT_LT(light.ambientHorizontalLux, 0.3 * light.moon.horizontalLux);
+}
+
+// On a moonless night far from the sun the terrain is lit by the night's own light: the
+// ambient a host gets is the diffuse night light's illuminance (airglow, zodiacal light, the
+// Milky Way's floor, integrated over 8 x 16 directions by sky/night/night_diffuse.h) plus the
+// resolved stars', about 1e-3 lux at a dark site (Roach & Gordon 1973), not the nothing the
+// sunlit and moonlit sky alone would give.
+TEST(HostLight, MoonlessNightAmbientIsTheNightsOwnLight) {
+  ObserverState o;
+  o.latitudeDeg = 47.26;
+  o.longitudeDeg = 11.34;
+  o.heightM = 600.0;
+  o.utc = {2026, 12, 9, 22 * 3600.0};
+  SkyConditions c;
+  c.model = SkyModel::Physical;
+  c.atmosphere = model();
+  const SkyState s = buildSkyState(o, c);
+  ASSERT_TRUE(s.ephemeris);
+  ASSERT_LT(s.sunAltitude, -18.0 * kDeg);
+  const HostLight light = hostLight(s, model().get());
+  const glm::dvec3 diffuse = night::nightDiffuseIlluminance(*s.ephemeris, s.extinction);
+  const glm::dvec3 stars = s.starField ? night::horizontalIlluminance(*s.starField) : glm::dvec3(0.0);
+  const double expected = luminance(diffuse + stars);
+  std::printf("moonless night: ambient %.3g lux (diffuse night %.3g, stars %.3g), moon %.3g lux\n",
+              light.ambientHorizontalLux, luminance(diffuse), luminance(stars), light.moon.horizontalLux);
+  EXPECT_GT(light.ambientHorizontalLux, 3e-4);
+  EXPECT_LT(light.ambientHorizontalLux, 3e-3);
+  // The moonlit sky, if the moon is up at all, adds to it; the night's own light is the floor.
+  EXPECT_GT(light.ambientHorizontalLux, 0.95 * expected);
+  EXPECT_LT(light.ambientHorizontalLux, 1.05 * expected + 0.1 * light.moon.horizontalLux);
 }

@@ -2,9 +2,11 @@
 
 #include "services/commands/bench_ratios.h"
 #include "render/gl/gl_context.h"
+#include "render/host_frame.h"
 #include "render/sky_renderer.h"
 #include "services/commands/common_options.h"
 #include "services/sky_data.h"
+#include "sky/host_light.h"
 
 #include <glad/gl.h>
 #include <nlohmann/json.hpp>
@@ -104,6 +106,53 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// A host's framebuffer of the channel's size (float colour, depth cleared to the far plane
+// each frame: nothing drawn) and the host camera of the channel looking north, level: what
+// HostFrameRenderer::draw composites into (render/host_frame.h).
+struct HostTarget {
+  GLuint colour = 0, depth = 0, framebuffer = 0;
+  glm::dmat4 view{1.0}, projection{0.0};
+  HostTarget(const sky::ChannelConfig& channel) {
+    glCreateTextures(GL_TEXTURE_2D, 1, &colour);
+    glTextureStorage2D(colour, 1, GL_RGBA16F, channel.width, channel.height);
+    glCreateTextures(GL_TEXTURE_2D, 1, &depth);
+    glTextureStorage2D(depth, 1, GL_DEPTH_COMPONENT32F, channel.width, channel.height);
+    glCreateFramebuffers(1, &framebuffer);
+    glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, colour, 0);
+    glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, depth, 0);
+    // ENU -> eye: x east, y up, -z north.
+    view[1] = glm::dvec4(0.0, 0.0, -1.0, 0.0);
+    view[2] = glm::dvec4(0.0, 1.0, 0.0, 0.0);
+    const double kDeg = 3.14159265358979323846 / 180.0, n = 1.0, f = 1.0e6;
+    const double l = -n * std::tan(channel.frustum.leftDeg * kDeg), r = n * std::tan(channel.frustum.rightDeg * kDeg);
+    const double b = -n * std::tan(channel.frustum.downDeg * kDeg), t = n * std::tan(channel.frustum.upDeg * kDeg);
+    projection[0][0] = 2.0 * n / (r - l);
+    projection[1][1] = 2.0 * n / (t - b);
+    projection[2] = glm::dvec4((r + l) / (r - l), (t + b) / (t - b), -(f + n) / (f - n), -1.0);
+    projection[3][2] = -2.0 * f * n / (f - n);
+  }
+  ~HostTarget() {
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteTextures(1, &colour);
+    glDeleteTextures(1, &depth);
+  }
+  HostTarget(const HostTarget&) = delete;
+  HostTarget& operator=(const HostTarget&) = delete;
+};
+
+// CPU milliseconds of one call of `f`, the median of `n` after a first.
+template <typename F>
+double cpuMsPerCall(int n, F f) {
+  f();
+  std::vector<double> ms;
+  for (int i = 0; i < n; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    f();
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  return median(ms);
+}
+
 int run(const BenchOptions& opt) {
   if (opt.llvmpipeThreads) pinLlvmpipeThreads(opt.llvmpipeThreads);  // before the GL context
   NodeConfig config = opt.sky.resolve();
@@ -126,6 +175,20 @@ int run(const BenchOptions& opt) {
   const Timing warp = timePass(opt.frames, gpuTimers, [&] { renderer.drawWarpBlendPass(projector); });
   const double warpMs = gpuTimers ? median(warp.gpuMs) : median(warp.wallMs);
   const double skyMs = gpuTimers ? median(sky.gpuMs) : median(sky.wallMs);
+  // The sky in a host's frame: the composited draw (the whole channel plus the composite) and
+  // the light a host queries per frame, on the CPU.
+  render::HostFrameRenderer hostRenderer;
+  const HostTarget target(channel);
+  const Timing composite = timePass(opt.frames, gpuTimers, [&] {
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    hostRenderer.draw(state, target.view, target.projection, {0, 0, channel.width, channel.height});
+  });
+  const double compositeMs = gpuTimers ? median(composite.gpuMs) : median(composite.wallMs);
+  const auto* model = state.conditions.atmosphere.get();
+  const double lightMs = cpuMsPerCall(5, [&] { (void)sky::hostLight(state, model); });
+  const double aerialMs =
+      model ? cpuMsPerCall(20, [&] { (void)sky::hostAerialPerspective(state, *model, {0.0, 20000.0, -500.0}); }) : 0.0;
 
   nlohmann::json out = {
       {"renderer", context->info().renderer},
@@ -147,6 +210,10 @@ int run(const BenchOptions& opt) {
       {"warp_blend_pass_ms", warpMs},
       {"warp_blend_pass_wall_ms", median(warp.wallMs)},
       {"warp_blend_over_sky_pass", warpMs / skyMs},
+      {"host_frame_ms", compositeMs},
+      {"host_frame_over_sky_pass", compositeMs / skyMs},
+      {"host_light_cpu_ms", lightMs},
+      {"host_aerial_perspective_cpu_us", aerialMs * 1e3},
   };
   if (opt.json) {
     std::printf("%s\n", out.dump(2).c_str());
@@ -160,6 +227,10 @@ int run(const BenchOptions& opt) {
                 out["sky_and_tone_ms"].get<double>(), full.cpuMs);
     std::printf("  warp and blend:    %8.3f ms/frame  (one %dx%d projector; %.2f times the sky pass)\n", warpMs,
                 projectorWidth, projectorHeight, warpMs / skyMs);
+    std::printf("  in a host's frame: %8.3f ms/frame  (the channel and the composite; %.2f times the sky pass)\n",
+                compositeMs, compositeMs / skyMs);
+    std::printf("  host light:        %8.3f ms/call of CPU  (sun, moon, ambient, SH9); aerial perspective %.1f us/point\n",
+                lightMs, aerialMs * 1e3);
   }
   return 0;
 }

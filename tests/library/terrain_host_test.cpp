@@ -7,7 +7,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ostream>
 #include <string>
+
+namespace skyig {
+// GoogleTest's name for a parameter (ctest lists it beside the test's name).
+inline void PrintTo(DepthConvention d, std::ostream* os) { *os << (d == DepthConvention::Standard ? "standard" : "reverse-Z"); }
+}  // namespace skyig
 
 namespace {
 

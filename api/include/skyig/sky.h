@@ -113,6 +113,8 @@ struct AerialPerspective {
   Vec3 inScattered{0.0, 0.0, 0.0};  // cd/m^2
 };
 
+// One Sky per observer (eye point); use it from one thread at a time. Its tables load once and
+// a background thread builds new ones when the weather asks for them.
 class SKYIG_API Sky {
  public:
   // Loads the configuration, the star catalogue and (physical sky) the atmosphere's tables:

@@ -87,7 +87,7 @@ Sky::Sky(Sky&&) noexcept = default;
 Sky& Sky::operator=(Sky&&) noexcept = default;
 
 void Sky::update(const Observer& o, double hostSeconds, const Weather& weather) {
-  require(std::isfinite(hostSeconds), "hostSeconds", hostSeconds, "a finite time");
+  require(std::abs(hostSeconds) < 1.0e9, "hostSeconds", hostSeconds, "a finite time within 30 years of the clock's origin");
   require(std::abs(o.latitudeDeg) <= 90.0, "latitudeDeg", o.latitudeDeg, "-90 to 90");
   require(std::abs(o.longitudeDeg) <= 360.0, "longitudeDeg", o.longitudeDeg, "-360 to 360");
   require(o.heightM > -1000.0 && o.heightM < 1.0e6, "heightM", o.heightM, "-1 km to 1000 km");

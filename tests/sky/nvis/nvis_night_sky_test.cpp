@@ -112,7 +112,7 @@ SkyState moonHigh(const ephemeris::UtcTime& utc) {
 
 // The moon's light has one spectrum whatever its phase (sunlight times the reflectance), so the
 // quarter moon's NVIS irradiance is the full moon's times their illuminance ratio, to within the
-// different reddening of their paths (< 2%). The full moon high in the sky gives about 0.2 lux.
+// different reddening of their paths (< 2%). The full moon high in the sky gives 0.1-0.4 lux.
 TEST(NvisMoon, QuarterAndFullMoonKeepTheirIrradianceRatio) {
   const SkyState full = moonHigh({2026, 1, 3, 10 * 3600.0});      // full moon 2026-01-03 10:03 UTC
   const SkyState quarter = moonHigh({2026, 1, 26, 5 * 3600.0});   // first quarter 2026-01-26 04:47 UTC

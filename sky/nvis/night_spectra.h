@@ -70,12 +70,12 @@ const Spectrum& sunlightSpectrum();
 // (sky/night/moon_light.h moonReflectanceRelative).
 const Spectrum& moonlightSpectrum();
 // Zodiacal light: sunlight reddened by f(lambda) = 1 + 0.6 log10(lambda / 500 nm), the colour
-// correction Leinert et al. (1998, A&AS 127, 1, section 8) give for the zodiacal light at
-// elongations near 90 deg (stronger nearer the sun; not modelled).
+// correction Leinert et al. (1998, A&AS 127, 1) give for the zodiacal light at elongations near
+// 90 deg, as we recall it (stronger nearer the sun; not modelled); docs/nvis.md.
 const Spectrum& zodiacalSpectrum();
 // The integrated light of the Milky Way and the unresolved stars: the mean colour of the
-// Galaxy's integrated starlight is that of a late-G/early-K star (Leinert et al. 1998,
-// section 9); here a blackbody at the eq. 12 temperature of B-V = kIntegratedStarlightBMinusV.
+// Galaxy's integrated starlight is that of a late-G/early-K star (Leinert et al. 1998); here,
+// an estimate, a blackbody at the eq. 12 temperature of B-V = kIntegratedStarlightBMinusV.
 inline constexpr double kIntegratedStarlightBMinusV = 0.85;
 const Spectrum& integratedStarlightSpectrum();
 // Airglow: the visible part sky/night/night_diffuse.h describes (the OI 557.7 nm line, the Na D

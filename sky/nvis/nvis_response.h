@@ -7,7 +7,8 @@
 // a source of spectral radiance N(lambda) as NR = G_max * integral over 450-930 nm of
 // G(lambda) N(lambda) dlambda, with G the relative response of the class's goggle (peak 1) and
 // G_max its absolute peak. A class A goggle has a 625 nm "minus-blue" objective filter, a
-// class B goggle a 665 nm one (MIL-L-85762A, 1.3). skyig reports the integral alone,
+// class B goggle a 665 nm one (MIL-L-85762A, 1.3; of both standards only the first pages could
+// be read for this work, docs/nvis.md). skyig reports the integral alone,
 // integral of G(lambda) L(lambda) dlambda in SI units (W m^-2 sr^-1 for a radiance, W m^-2 for
 // an irradiance): the "NVIS-weighted radiance" without the standard's G_max and cm^-2.
 //

@@ -59,8 +59,9 @@ double independentPerLux(double temperatureK, NvisClass c) {
 }  // namespace
 
 // A red giant (Betelgeuse, ~3600 K) against a hot star (Rigel, ~12000 K) of the same V: in the
-// goggles' band the red one gives 3.9 times the hot one's light in class A, 4.4 in class B
-// (their blackbody ratio), and the module's figure is that ratio to 0.5%.
+// goggles' band the red one gives 3.36 times the hot one's light in class A, 3.75 in class B
+// (their blackbody ratio with the stand-in response), and the module's figure is that ratio to
+// 0.5%.
 TEST(NvisStars, RedGiantGainsOnAHotStarByTheBlackbodyRatio) {
   for (NvisClass c : {NvisClass::A, NvisClass::B}) {
     auto pick = [c](const NvisRadiance& n) { return c == NvisClass::A ? n.a : n.b; };

@@ -4,6 +4,8 @@
 #include "sky/night/moon_light.h"
 #include "sky/night/night_diffuse.h"
 #include "sky/night/star_luminance.h"
+#include "sky/nvis/night_spectra.h"
+#include "sky/nvis/nvis_sky.h"
 #include "sky/sky_state.h"
 
 #include <cmath>
@@ -21,6 +23,22 @@ glm::dvec3 rec709Of(const std::optional<atmosphere::SpectralProbeLight>& light) 
   return light ? light->rec709 : glm::dvec3(0.0);
 }
 
+// The NVIS radiance of a light of `spectrum` whose Rec.709 radiance (after `t`) is `rgb`.
+nvis::NvisRadiance nvisOf(const nvis::Spectrum& spectrum, const nvis::Transmittance& t, const glm::dvec3& rgb) {
+  return nvis::nvisFromLuminance(spectrum, t, rec709Luminance(rgb));
+}
+
+// The day probe's sun disc (sunlight along the view) and ground (taken as lit by sunlight and
+// grey, an approximation: both are dark at night) in the goggles' band.
+nvis::NvisRadiance dayNvis(const atmosphere::ProbeViewResult& day, const atmosphere::ExtinctionProfile* extinction,
+                           const glm::dvec3& v) {
+  const nvis::Transmittance unit = nvis::unitTransmittance();
+  nvis::NvisRadiance n = nvisOf(nvis::sunlitSkySpectrum(), unit, day.sky.rec709);
+  if (day.sun) n += nvisOf(nvis::sunlightSpectrum(), nvis::transmittanceAlong(extinction, v), day.sun->rec709);
+  if (day.ground) n += nvisOf(nvis::sunlightSpectrum(), unit, day.ground->rec709);
+  return n;
+}
+
 }  // namespace
 
 atmosphere::ProbeLight rec709Light(const glm::dvec3& rec709) { return {rec709Luminance(rec709), rec709}; }
@@ -29,16 +47,57 @@ std::vector<ProbeComponent> nightProbeComponents(const atmosphere::AtmosphereMod
   auto diffuse = nightDiffuseSky(state);
   if (!diffuse) throw std::invalid_argument("night probe: the state has no ephemeris (give a place and a time)");
   auto diffuseSky = std::make_shared<const night::NightDiffuseSky>(std::move(*diffuse));
+  const atmosphere::ExtinctionProfile* extinction = state.extinction.get();
+  // Each component's NVIS radiance is its own luminance along the view, weighted by its
+  // spectrum through the spectral transmittance along the view (none for the skies, whose
+  // light is scattered along the whole path).
+  auto along = [extinction](const nvis::Spectrum& spectrum, std::function<glm::dvec3(const glm::dvec3&)> radiance) {
+    return [extinction, &spectrum, radiance = std::move(radiance)](const glm::dvec3& v) {
+      return nvisOf(spectrum, nvis::transmittanceAlong(extinction, v), radiance(v));
+    };
+  };
+  auto unextinguished = [](const nvis::Spectrum& spectrum, std::function<glm::dvec3(const glm::dvec3&)> radiance) {
+    return [&spectrum, radiance = std::move(radiance)](const glm::dvec3& v) {
+      return nvisOf(spectrum, nvis::unitTransmittance(), radiance(v));
+    };
+  };
   std::vector<ProbeComponent> c;
-  c.push_back({"moonlit_sky", [&model, &state](const glm::dvec3& v) { return moonlitSkyRadiance(model, state, v).rec709; }});
-  if (state.moonDisc)
-    c.push_back({"moon", [d = state.moonDisc](const glm::dvec3& v) { return night::moonDiscRadiance(*d, v).rec709; }});
-  if (state.starField)
-    c.push_back({"stars_planets", [f = state.starField](const glm::dvec3& v) { return night::starLuminance(*f, v).rec709; }});
-  c.push_back({"milky_way", [diffuseSky](const glm::dvec3& v) { return night::nightDiffuseRadiance(*diffuseSky, v).milkyWay; }});
-  c.push_back({"zodiacal_light", [diffuseSky](const glm::dvec3& v) { return night::nightDiffuseRadiance(*diffuseSky, v).zodiacal; }});
-  c.push_back({"airglow", [diffuseSky](const glm::dvec3& v) { return night::nightDiffuseRadiance(*diffuseSky, v).airglow; }});
+  auto add = [&c](std::string name, std::function<glm::dvec3(const glm::dvec3&)> radiance,
+                  std::function<nvis::NvisRadiance(const glm::dvec3&)> nvisRadiance) {
+    c.push_back({std::move(name), std::move(radiance), std::move(nvisRadiance)});
+  };
+  auto moonlit = [&model, &state](const glm::dvec3& v) { return moonlitSkyRadiance(model, state, v).rec709; };
+  add("moonlit_sky", moonlit, unextinguished(nvis::moonlitSkySpectrum(), moonlit));
+  if (state.moonDisc) {
+    auto moon = [d = state.moonDisc](const glm::dvec3& v) { return night::moonDiscRadiance(*d, v).rec709; };
+    add("moon", moon, along(nvis::moonlightSpectrum(), moon));
+  }
+  if (state.starField) {
+    const auto f = state.starField;
+    add("stars_planets", [f](const glm::dvec3& v) { return night::starLuminance(*f, v).rec709; },
+        [f, extinction](const glm::dvec3& v) {
+          return nvis::pointSourcesNvis(*f, extinction, v, night::kStarProbeConeRadiusRad).nvis;
+        });
+  }
+  auto milkyWay = [diffuseSky](const glm::dvec3& v) { return night::nightDiffuseRadiance(*diffuseSky, v).milkyWay; };
+  add("milky_way", milkyWay, along(nvis::integratedStarlightSpectrum(), milkyWay));
+  auto zodiacal = [diffuseSky](const glm::dvec3& v) { return night::nightDiffuseRadiance(*diffuseSky, v).zodiacal; };
+  add("zodiacal_light", zodiacal, along(nvis::zodiacalSpectrum(), zodiacal));
+  auto airglow = [diffuseSky](const glm::dvec3& v) { return night::nightDiffuseRadiance(*diffuseSky, v).airglow; };
+  add("airglow", airglow, along(nvis::airglowSpectrum(), airglow));
   return c;
+}
+
+std::vector<NamedProbeLight> nightProbeLights(const std::vector<ProbeComponent>& components, const glm::dvec3& viewEnu) {
+  std::vector<NamedProbeLight> out;
+  out.reserve(components.size());
+  for (const ProbeComponent& c : components) out.push_back({c.name, rec709Light(c.radiance(viewEnu)), c.nvis(viewEnu)});
+  return out;
+}
+
+std::vector<NamedProbeLight> nightProbeLights(const atmosphere::AtmosphereModel& model, const SkyState& state,
+                                              const glm::dvec3& viewEnu) {
+  return nightProbeLights(nightProbeComponents(model, state), viewEnu);
 }
 
 NightProbeResult nightProbe(const atmosphere::AtmosphereModel& model, const SkyState& state,
@@ -53,14 +112,17 @@ NightProbeResult nightProbe(const atmosphere::AtmosphereModel& model, const SkyS
     const glm::dvec3 v = atmosphere::localDirection(day.view.zenithDeg, day.view.azimuthDeg);
     NightProbeView night;
     // The sunlit sky is the day output's sky, under the name that pairs it with the moonlit one.
-    night.lights.push_back({"sunlit_sky", rec709Light(day.sky.rec709)});
+    night.lights.push_back(
+        {"sunlit_sky", rec709Light(day.sky.rec709), nvisOf(nvis::sunlitSkySpectrum(), nvis::unitTransmittance(), day.sky.rec709)});
     glm::dvec3 total = day.sky.rec709 + rec709Of(day.sun) + rec709Of(day.ground);
-    for (const ProbeComponent& c : components) {
-      const glm::dvec3 rgb = c.radiance(v);
-      night.lights.push_back({c.name, rec709Light(rgb)});
-      total += rgb;
+    nvis::NvisRadiance totalNvis = dayNvis(day, state.extinction.get(), v);
+    for (NamedProbeLight& l : nightProbeLights(components, v)) {
+      total += l.light.rec709;
+      totalNvis += l.nvis;
+      night.lights.push_back(std::move(l));
     }
     night.total = rec709Light(total);
+    night.totalNvis = totalNvis;
     out.views.push_back(std::move(night));
   }
   if (out.day.irradiance) {
@@ -70,7 +132,15 @@ NightProbeResult nightProbe(const atmosphere::AtmosphereModel& model, const SkyS
     const glm::dvec3 moonlitSky =
         model.converter().toRec709(model.skyIrradiance(camera, glm::dvec3(0.0, 0.0, 1.0), state.moonDirection)) *
         state.moonlightScale;
-    out.irradiance = NightProbeIrradiance{moonIlluminanceLux(state), rec709Luminance(moonlitSky)};
+    const double moonlitSkyLux = rec709Luminance(moonlitSky);
+    NightProbeIrradiance e;
+    e.moonLux = moonIlluminanceLux(state);
+    e.moonlitSkyLux = moonlitSkyLux;
+    e.moonNvis = nvis::moonIrradiance(e.moonLux, state.extinction.get(), state.moonDirection).nvis;
+    e.moonlitSkyNvis = nvis::nvisFromLuminance(nvis::moonlitSkySpectrum(), nvis::unitTransmittance(), moonlitSkyLux);
+    if (state.ephemeris)
+      e.moonlessSky = nvis::moonlessSkyIrradiance(*state.ephemeris, state.extinction, state.starField.get()).total();
+    out.irradiance = e;
   }
   out.utc = state.observer.utc;
   out.latitudeDeg = state.observer.latitudeDeg;

@@ -14,6 +14,9 @@
 // With irradiance, the moon's disc (after extinction) and the moonlit sky on a horizontal
 // surface, beside the sun's and the sky's. Plain values: services/commands/probe_json.h prints
 // them as JSON, the names as its keys.
+// Every light also carries its class A and class B NVIS radiance (sky/nvis, docs/nvis.md),
+// weighted through the same spectral extinction as its luminance, and the irradiance adds the
+// moonless sky (airglow, zodiacal light, starlight) on the ground.
 #include <functional>
 #include <optional>
 #include <string>
@@ -24,6 +27,7 @@
 #include "ephemeris/time.h"
 #include "sky/atmosphere/model.h"
 #include "sky/atmosphere/probe.h"
+#include "sky/nvis/nvis_sky.h"
 
 namespace skyig::sky {
 struct SkyState;
@@ -32,10 +36,12 @@ struct SkyState;
 namespace skyig::sky {
 
 // One source of light: its name and its radiance along an ENU view direction (unit vector),
-// linear Rec.709, cd/m^2 per channel.
+// linear Rec.709, cd/m^2 per channel; and its NVIS radiance there (W m^-2 sr^-1), the same
+// light weighted by the goggles' response.
 struct ProbeComponent {
   std::string name;
   std::function<glm::dvec3(const glm::dvec3& viewEnu)> radiance;
+  std::function<nvis::NvisRadiance(const glm::dvec3& viewEnu)> nvis;
 };
 
 // The light sources skyig models for `state` (which must have an ephemeris: a time and place)
@@ -49,6 +55,7 @@ atmosphere::ProbeLight rec709Light(const glm::dvec3& rec709);
 struct NamedProbeLight {
   std::string name;
   atmosphere::ProbeLight light;
+  nvis::NvisRadiance nvis{};
 };
 
 struct NightProbeView {
@@ -56,12 +63,16 @@ struct NightProbeView {
   std::vector<NamedProbeLight> lights;
   // The lights plus the day view's sun disc and ground.
   atmosphere::ProbeLight total;
+  nvis::NvisRadiance totalNvis{};
 };
 
-// On a horizontal surface at the observer, lux.
+// On a horizontal surface at the observer, lux, and NVIS irradiance, W m^-2.
 struct NightProbeIrradiance {
   double moonLux = 0.0;         // the disc, after extinction
   double moonlitSkyLux = 0.0;   // the sky the moon lights
+  nvis::NvisRadiance moonNvis{};
+  nvis::NvisRadiance moonlitSkyNvis{};
+  nvis::NvisLight moonlessSky{};  // airglow, zodiacal light, starlight (nvis::moonlessSkyIrradiance)
 };
 
 struct NightProbeResult {
@@ -72,6 +83,14 @@ struct NightProbeResult {
   double latitudeDeg = 0.0;
   double longitudeDeg = 0.0;
 };
+
+// The night's lights along one ENU view (unit vector) for `state`, each with its luminance beside
+// its NVIS radiance: nightProbeComponents' in their order (not the sunlit sky, the sun or the
+// ground, which come from the day probe).
+std::vector<NamedProbeLight> nightProbeLights(const atmosphere::AtmosphereModel& model, const SkyState& state,
+                                              const glm::dvec3& viewEnu);
+// The same from components already made (nightProbeComponents), for many views.
+std::vector<NamedProbeLight> nightProbeLights(const std::vector<ProbeComponent>& components, const glm::dvec3& viewEnu);
 
 // atmosphere::probe's result for `request` (its sun replaced by the state's), each view with
 // the night's lights and their total; request.altitudeM is the observer's height above the

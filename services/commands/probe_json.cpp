@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "ephemeris/time.h"
+#include "sky/nvis/nvis_response.h"
 
 namespace skyig::services {
 
@@ -26,6 +27,14 @@ nlohmann::json spectralLightJson(const atmosphere::SpectralProbeLight& light) {
 
 nlohmann::json optionalLightJson(const std::optional<atmosphere::SpectralProbeLight>& light) {
   return light ? spectralLightJson(*light) : nlohmann::json(nullptr);
+}
+
+// A night light with its NVIS radiance beside its luminance (sky/nvis, docs/nvis.md).
+nlohmann::json nightLightJson(const atmosphere::ProbeLight& light, const sky::nvis::NvisRadiance& nvis) {
+  nlohmann::json j = probeLightJson(light);
+  j["nvis_a_w_m2_sr"] = nvis.a;
+  j["nvis_b_w_m2_sr"] = nvis.b;
+  return j;
 }
 
 }  // namespace
@@ -58,13 +67,24 @@ nlohmann::json nightProbeJson(const sky::NightProbeResult& result) {
   nlohmann::json out = probeJson(result.day);
   for (std::size_t i = 0; i < result.views.size(); ++i) {
     nlohmann::json& view = out["views"].at(i);
-    for (const sky::NamedProbeLight& l : result.views[i].lights) view[l.name] = probeLightJson(l.light);
-    view["total"] = probeLightJson(result.views[i].total);
+    for (const sky::NamedProbeLight& l : result.views[i].lights) view[l.name] = nightLightJson(l.light, l.nvis);
+    view["total"] = nightLightJson(result.views[i].total, result.views[i].totalNvis);
   }
   if (result.irradiance) {
-    out["irradiance"]["moon_lux"] = result.irradiance->moonLux;
-    out["irradiance"]["moonlit_sky_lux"] = result.irradiance->moonlitSkyLux;
+    const sky::NightProbeIrradiance& e = *result.irradiance;
+    nlohmann::json& j = out["irradiance"];
+    j["moon_lux"] = e.moonLux;
+    j["moonlit_sky_lux"] = e.moonlitSkyLux;
+    j["moon_nvis_a_w_m2"] = e.moonNvis.a;
+    j["moon_nvis_b_w_m2"] = e.moonNvis.b;
+    j["moonlit_sky_nvis_a_w_m2"] = e.moonlitSkyNvis.a;
+    j["moonlit_sky_nvis_b_w_m2"] = e.moonlitSkyNvis.b;
+    j["moonless_sky_lux"] = e.moonlessSky.luminance;
+    j["moonless_sky_nvis_a_w_m2"] = e.moonlessSky.nvis.a;
+    j["moonless_sky_nvis_b_w_m2"] = e.moonlessSky.nvis.b;
   }
+  // The goggles' response is a stand-in until MIL-STD-3009's table is at hand (nvis_response.h).
+  out["nvis_response_provisional"] = sky::nvis::kNvisResponseProvisional;
   out["utc"] = ephemeris::formatIso8601Utc(result.utc);
   out["latitude_deg"] = result.latitudeDeg;
   out["longitude_deg"] = result.longitudeDeg;

@@ -16,12 +16,17 @@ namespace {
 // [360, 370), [370, 380), ... as tabulated by Bruneton's 2017 reference implementation
 // (github.com/ebruneton/precomputed_atmospheric_scattering, atmosphere/demo/demo.cc). Entry i
 // is the mean over [360 + 10 i, 370 + 10 i) nm, so it is placed at the bin centre 365 + 10 i.
-constexpr std::array<double, 48> kSolarIrradiance = {
+// The last ten bins, [840, 850) to [930, 940) nm, extend the table over the night-vision
+// goggles' band (sky/nvis): the same ASTM G-173-03 ETR column, each the mean of its ten 1 nm
+// values at 840, 841, ..., 849 nm etc. (the file pvlib distributes, pvlib/data/ASTMG173.csv);
+// the same rule reproduces Bruneton's [820, 830) and [830, 840) bins, 1.07124 and 1.04992.
+constexpr std::array<double, 58> kSolarIrradiance = {
     1.11776, 1.14259, 1.01249, 1.14716, 1.72765, 1.73054, 1.6887,  1.61253, 1.91198, 2.03474,
     2.02042, 2.02212, 1.93377, 1.95809, 1.91686, 1.8298,  1.8685,  1.8931,  1.85149, 1.8504,
     1.8341,  1.8345,  1.8147,  1.78158, 1.7533,  1.6965,  1.68194, 1.64654, 1.6048,  1.52143,
     1.55622, 1.5113,  1.474,   1.4482,  1.41018, 1.36775, 1.34188, 1.31429, 1.28303, 1.26758,
-    1.2367,  1.2082,  1.18737, 1.14683, 1.12362, 1.1058,  1.07124, 1.04992};
+    1.2367,  1.2082,  1.18737, 1.14683, 1.12362, 1.1058,  1.07124, 1.04992, 1.02668, 0.96828,
+    0.96916, 0.96018, 0.93827, 0.92811, 0.90599, 0.89326, 0.86622, 0.86193};
 
 // Ozone absorption cross-sections at 233 K, m^2: Serdyuchenko, Gorshelev, Weber, Chehade and
 // Burrows 2014, "High spectral resolution ozone absorption cross-sections", Atmos. Meas.
@@ -136,11 +141,11 @@ constexpr std::array<double, 95 * 3> kCie1931 = {
     0.000001251141, 0.000000451810, 0.000000000000,  // 830
 };
 
-void checkRange(double wavelengthNm, const char* what) {
-  if (!(wavelengthNm >= kSpectralDataMinNm && wavelengthNm <= kSpectralDataMaxNm)) {
+void checkRange(double wavelengthNm, const char* what, double maxNm = kSpectralDataMaxNm) {
+  if (!(wavelengthNm >= kSpectralDataMinNm && wavelengthNm <= maxNm)) {
     std::ostringstream msg;
     msg << what << ": wavelength " << wavelengthNm << " nm is outside the tabulated range ["
-        << kSpectralDataMinNm << ", " << kSpectralDataMaxNm << "] nm";
+        << kSpectralDataMinNm << ", " << maxNm << "] nm";
     throw std::out_of_range(msg.str());
   }
 }
@@ -162,7 +167,7 @@ double interpolate(const std::array<double, N>& table, std::size_t stride, std::
 }  // namespace
 
 double solarIrradiance(double wavelengthNm) {
-  checkRange(wavelengthNm, "solarIrradiance");
+  checkRange(wavelengthNm, "solarIrradiance", kSolarSpectrumMaxNm);
   return interpolate(kSolarIrradiance, 1, 0, 365.0, 10.0, wavelengthNm);
 }
 

@@ -11,8 +11,11 @@ namespace skyig::atmosphere {
 inline constexpr double kSpectralDataMinNm = 360.0;
 inline constexpr double kSpectralDataMaxNm = 830.0;
 
+// The solar spectrum alone reaches further, over the night-vision goggles' band (sky/nvis).
+inline constexpr double kSolarSpectrumMaxNm = 940.0;
+
 // Solar spectral irradiance at the top of the atmosphere, W m^-2 nm^-1 (ASTM G-173 ETR,
-// averaged over 10 nm bins).
+// averaged over 10 nm bins), from kSpectralDataMinNm to kSolarSpectrumMaxNm.
 double solarIrradiance(double wavelengthNm);
 
 // Ozone absorption cross-section at 233 K, m^2 per molecule (Serdyuchenko et al. 2014,

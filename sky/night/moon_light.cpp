@@ -31,8 +31,12 @@ glm::dvec3 reflectedColour(double slopePerNm) {
 
 const glm::dvec3& moonlightColour() {
   // 1 - 110 nm x slope = 10^(-0.4 (0.92 - 0.65)): the moon's B (440 nm) to V (550 nm) excess.
-  static const glm::dvec3 colour = reflectedColour(0.0020);
+  static const glm::dvec3 colour = reflectedColour(kMoonReflectanceSlopePerNm);
   return colour;
+}
+
+double moonReflectanceRelative(double wavelengthNm) {
+  return std::max(0.0, 1.0 + kMoonReflectanceSlopePerNm * (wavelengthNm - 550.0));
 }
 
 const glm::dvec3& sunlightColour() {

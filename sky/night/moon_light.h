@@ -17,6 +17,13 @@ const glm::dvec3& moonlightColour();
 // The same for sunlight itself.
 const glm::dvec3& sunlightColour();
 
+// The moon's spectral reflectance above relative to its value at 550 nm: 1 + 0.002 (lambda -
+// 550 nm), kept linear out to the goggles' 930 nm (sky/nvis), 1.76 there, as the ROLO
+// reflectance spectra still rise steadily through the near infrared (Kieffer & Stone 2005, AJ
+// 129, 2887).
+inline constexpr double kMoonReflectanceSlopePerNm = 0.0020;
+double moonReflectanceRelative(double wavelengthNm);
+
 // Sun-moon distance (km) from the topocentric vectors.
 double sunMoonDistanceKm(const ephemeris::SkyEphemeris& sky);
 

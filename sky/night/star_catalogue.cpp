@@ -11,7 +11,8 @@ StarCatalogue::StarCatalogue(const std::vector<ephemeris::Star>& stars, const ep
   stars_.reserve(stars.size());
   for (const ephemeris::Star& s : stars) {
     const ephemeris::Vec3 u = ephemeris::starDirectionAt(s, jdTt);
-    stars_.push_back({glm::dvec3(u.x, u.y, u.z), illuminanceFromVMagnitude(s.vmag), starRec709FromBv(s.bMinusV), s.hr});
+    stars_.push_back({glm::dvec3(u.x, u.y, u.z), illuminanceFromVMagnitude(s.vmag), starRec709FromBv(s.bMinusV), s.hr,
+                      starTemperatureFromBv(s.bMinusV)});
   }
 }
 

@@ -19,6 +19,7 @@ struct CatalogueStar {
   double illuminanceLux = 0.0;               // above the atmosphere, from V
   glm::dvec3 rec709PerLux{1.0};              // colour, luminance 1
   int hr = 0;                                // Harvard Revised number (the scintillation seed)
+  double temperatureK = 5800.0;              // the eq. 12 temperature of its colour (star_colour.h)
 };
 
 class StarCatalogue {

@@ -32,8 +32,10 @@ glm::dvec3 blackbodyRec709(double temperatureK) {
   return atmosphere::xyzToRec709(xyz / xyz.y);
 }
 
-glm::dvec3 starRec709FromBv(std::optional<double> bMinusV) {
-  return blackbodyRec709(ephemeris::colourTemperatureFromBv(bMinusV.value_or(kDefaultBMinusV)));
+double starTemperatureFromBv(std::optional<double> bMinusV) {
+  return ephemeris::colourTemperatureFromBv(bMinusV.value_or(kDefaultBMinusV));
 }
+
+glm::dvec3 starRec709FromBv(std::optional<double> bMinusV) { return blackbodyRec709(starTemperatureFromBv(bMinusV)); }
 
 }  // namespace skyig::sky::night

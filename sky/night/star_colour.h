@@ -17,7 +17,10 @@ glm::dvec3 blackbodyRec709(double temperatureK);
 // B-V the catalogue lacks for 310 stars: 0.6, near the catalogue's median, a sun-like white.
 inline constexpr double kDefaultBMinusV = 0.6;
 
-// blackbodyRec709 at the eq. 12 temperature of `bMinusV` (kDefaultBMinusV when absent).
+// The eq. 12 temperature of `bMinusV` (kDefaultBMinusV when absent), K.
+double starTemperatureFromBv(std::optional<double> bMinusV);
+
+// blackbodyRec709 at starTemperatureFromBv(bMinusV).
 glm::dvec3 starRec709FromBv(std::optional<double> bMinusV);
 
 }  // namespace skyig::sky::night

@@ -25,8 +25,9 @@ double luminance(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0
 double altitudeOf(const glm::dvec3& d) { return std::asin(std::clamp(d.z, -1.0, 1.0)); }
 
 // One source seen through the atmosphere, or false when no light of it arrives.
-bool seen(const glm::dvec3& airless, const glm::dvec3& rec709Lux, int id, const ephemeris::Observer& observer,
-          const atmosphere::ExtinctionProfile& extinction, const StarFieldOptions& options, PointSource& out) {
+bool seen(const glm::dvec3& airless, const glm::dvec3& rec709Lux, double temperatureK, int id,
+          const ephemeris::Observer& observer, const atmosphere::ExtinctionProfile& extinction,
+          const StarFieldOptions& options, PointSource& out) {
   if (airless.z < kLowestSine) return false;
   const double altitude = altitudeOf(airless);
   const glm::dvec3 transmitted = rec709Lux * extinction.rec709(altitude) * options.intensity;
@@ -36,6 +37,7 @@ bool seen(const glm::dvec3& airless, const glm::dvec3& rec709Lux, int id, const 
       options.scintillation ? scintillationFactor(id, options.timeS, airmassKastenYoung(altitudeOf(out.direction))) : 1.0;
   out.rec709Lux = transmitted * twinkle;
   out.illuminanceLux = luminance(out.rec709Lux);
+  out.temperatureK = temperatureK;
   return true;
 }
 
@@ -64,7 +66,7 @@ StarField buildStarField(const StarCatalogue* catalogue, const ephemeris::SkyEph
       const glm::dvec3 u = glm::normalize(s.directionJ2000 + aberration);
       const glm::dvec3 enu(m[0] * u.x + m[1] * u.y + m[2] * u.z, m[3] * u.x + m[4] * u.y + m[5] * u.z,
                            m[6] * u.x + m[7] * u.y + m[8] * u.z);
-      if (seen(enu, s.rec709PerLux * s.illuminanceLux, s.hr, sky.observer, extinction, options, p))
+      if (seen(enu, s.rec709PerLux * s.illuminanceLux, s.temperatureK, s.hr, sky.observer, extinction, options, p))
         field.stars.push_back(p);
     }
   }
@@ -79,8 +81,8 @@ StarField buildStarField(const StarCatalogue* catalogue, const ephemeris::SkyEph
     // Planets twinkle far less than stars (their discs average the turbulence): none here.
     StarFieldOptions steady = options;
     steady.scintillation = false;
-    if (seen(enu, planetColours[static_cast<std::size_t>(i)] * illuminanceFromVMagnitude(planet.magnitude), -1 - i,
-             sky.observer, extinction, steady, p))
+    if (seen(enu, planetColours[static_cast<std::size_t>(i)] * illuminanceFromVMagnitude(planet.magnitude),
+             starTemperatureFromBv(kPlanetBMinusV[i]), -1 - i, sky.observer, extinction, steady, p))
       field.planets.push_back(p);
   }
   return field;

@@ -19,6 +19,7 @@ struct PointSource {
   glm::dvec3 direction{0.0, 0.0, 1.0};  // apparent (refracted) ENU unit vector
   glm::dvec3 rec709Lux{0.0};            // linear Rec.709 illuminance on a surface facing it, lux
   double illuminanceLux = 0.0;          // its luminance-weighted sum (Y)
+  double temperatureK = 5800.0;         // of its colour above the atmosphere (star_colour.h)
 };
 
 struct StarField {

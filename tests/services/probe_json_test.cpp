@@ -2,7 +2,11 @@
 // documented keys, nothing computed on the way.
 #include "services/commands/probe_json.h"
 
+#include "sky/nvis/nvis_response.h"
+
 #include <gtest/gtest.h>
+
+#include <array>
 
 namespace skyig::services {
 namespace {
@@ -59,30 +63,50 @@ TEST(ProbeJson, DayKeysAndValues) {
   EXPECT_FALSE(probeJson(noIrradiance).contains("irradiance"));
 }
 
+// Every night light carries its class A and B NVIS radiance beside its luminance (docs/nvis.md).
 TEST(ProbeJson, NightAddsTheLightsTheirTotalAndThePlace) {
   sky::NightProbeResult r;
   r.day = dayResult();
   for (double base : {1.0, 2.0}) {
     sky::NightProbeView v;
-    v.lights = {{"sunlit_sky", {base, {base, 0.0, 0.0}}}, {"airglow", {10.0 * base, {0.0, base, 0.0}}}};
+    v.lights = {{"sunlit_sky", {base, {base, 0.0, 0.0}}, {3.0 * base, 4.0 * base}},
+                {"airglow", {10.0 * base, {0.0, base, 0.0}}, {5.0 * base, 6.0 * base}}};
     v.total = {100.0 * base, {base, base, 0.0}};
+    v.totalNvis = {7.0 * base, 8.0 * base};
     r.views.push_back(v);
   }
-  r.irradiance = sky::NightProbeIrradiance{0.1, 0.01};
+  sky::NightProbeIrradiance e;
+  e.moonLux = 0.1;
+  e.moonlitSkyLux = 0.01;
+  e.moonNvis = {1e-3, 2e-3};
+  e.moonlitSkyNvis = {3e-3, 4e-3};
+  e.moonlessSky = {1e-3, {5e-3, 6e-3}};
+  r.irradiance = e;
   r.utc = {2026, 1, 18, 19 * 3600.0};
   r.latitudeDeg = 47.26;
   r.longitudeDeg = 11.34;
   const nlohmann::json j = nightProbeJson(r);
 
   nlohmann::json expected = probeJson(r.day);
-  expected["views"][0]["sunlit_sky"] = {{"luminance_cd_m2", 1.0}, {"rgb_cd_m2", {1.0, 0.0, 0.0}}};
-  expected["views"][0]["airglow"] = {{"luminance_cd_m2", 10.0}, {"rgb_cd_m2", {0.0, 1.0, 0.0}}};
-  expected["views"][0]["total"] = {{"luminance_cd_m2", 100.0}, {"rgb_cd_m2", {1.0, 1.0, 0.0}}};
-  expected["views"][1]["sunlit_sky"] = {{"luminance_cd_m2", 2.0}, {"rgb_cd_m2", {2.0, 0.0, 0.0}}};
-  expected["views"][1]["airglow"] = {{"luminance_cd_m2", 20.0}, {"rgb_cd_m2", {0.0, 2.0, 0.0}}};
-  expected["views"][1]["total"] = {{"luminance_cd_m2", 200.0}, {"rgb_cd_m2", {2.0, 2.0, 0.0}}};
+  auto light = [](double l, std::array<double, 3> rgb, double a, double b) {
+    return nlohmann::json{{"luminance_cd_m2", l}, {"rgb_cd_m2", rgb}, {"nvis_a_w_m2_sr", a}, {"nvis_b_w_m2_sr", b}};
+  };
+  expected["views"][0]["sunlit_sky"] = light(1.0, {1.0, 0.0, 0.0}, 3.0, 4.0);
+  expected["views"][0]["airglow"] = light(10.0, {0.0, 1.0, 0.0}, 5.0, 6.0);
+  expected["views"][0]["total"] = light(100.0, {1.0, 1.0, 0.0}, 7.0, 8.0);
+  expected["views"][1]["sunlit_sky"] = light(2.0, {2.0, 0.0, 0.0}, 6.0, 8.0);
+  expected["views"][1]["airglow"] = light(20.0, {0.0, 2.0, 0.0}, 10.0, 12.0);
+  expected["views"][1]["total"] = light(200.0, {2.0, 2.0, 0.0}, 14.0, 16.0);
   expected["irradiance"]["moon_lux"] = 0.1;
   expected["irradiance"]["moonlit_sky_lux"] = 0.01;
+  expected["irradiance"]["moon_nvis_a_w_m2"] = 1e-3;
+  expected["irradiance"]["moon_nvis_b_w_m2"] = 2e-3;
+  expected["irradiance"]["moonlit_sky_nvis_a_w_m2"] = 3e-3;
+  expected["irradiance"]["moonlit_sky_nvis_b_w_m2"] = 4e-3;
+  expected["irradiance"]["moonless_sky_lux"] = 1e-3;
+  expected["irradiance"]["moonless_sky_nvis_a_w_m2"] = 5e-3;
+  expected["irradiance"]["moonless_sky_nvis_b_w_m2"] = 6e-3;
+  expected["nvis_response_provisional"] = sky::nvis::kNvisResponseProvisional;
   expected["utc"] = "2026-01-18T19:00:00.000Z";
   expected["latitude_deg"] = 47.26;
   expected["longitude_deg"] = 11.34;

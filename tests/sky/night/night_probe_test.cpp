@@ -2,6 +2,8 @@
 // prints, on a physical atmosphere (their JSON: tests/services/cli_test.cpp).
 #include "sky/night/moon_disc.h"
 #include "sky/night_probe.h"
+#include "sky/nvis/night_spectra.h"
+#include "sky/nvis/nvis_sky.h"
 #include "sky/sky_state.h"
 #include "tests/sky/atmosphere/shared_models.h"
 
@@ -86,7 +88,8 @@ TEST(NightProbe, MoonlessZenithLuminance) {
   EXPECT_NEAR(out.day.sunZenithDeg, 120.0, 0.5);
 }
 
-// Every key sky/night_probe.h lists, each with luminance and colour; the total is their sum.
+// Every key sky/night_probe.h lists, each with luminance, colour and NVIS radiance; the total is
+// their sum, in the eye's and in the goggles' band (docs/nvis.md).
 TEST(NightProbe, ComponentsAndTheirTotal) {
   const SkyState s = physicalState(darkSiteSunThirtyDown());
   const NightProbeResult out = probeViews(s, {{0.0, 0.0}, {60.0, 90.0}, {85.0, 250.0}, {100.0, 0.0}});
@@ -100,19 +103,40 @@ TEST(NightProbe, ComponentsAndTheirTotal) {
     EXPECT_EQ(names, (std::vector<std::string>{"sunlit_sky", "moonlit_sky", "moon", "stars_planets", "milky_way",
                                                "zodiacal_light", "airglow"}));
     glm::dvec3 sum(0.0);
+    nvis::NvisRadiance nvisSum;
     for (const NamedProbeLight& l : v.lights) {
       const glm::dvec3& c = l.light.rec709;
       EXPECT_NEAR(l.light.luminance, 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b, 1e-15) << l.name;
       for (int k = 0; k < 3; ++k) EXPECT_TRUE(std::isfinite(c[k])) << l.name;
       sum += c;
+      EXPECT_TRUE(std::isfinite(l.nvis.a) && std::isfinite(l.nvis.b)) << l.name;
+      EXPECT_GE(l.nvis.a, 0.0) << l.name;
+      EXPECT_EQ(l.nvis.a > 0.0, l.light.luminance > 0.0) << l.name;  // a light for one is a light for both
+      nvisSum += l.nvis;
     }
     if (day.ground) sum += day.ground->rec709;
     EXPECT_FALSE(day.sun);  // 30 degrees down
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(v.total.rec709[k], sum[k], 1e-12 + 1e-9 * std::abs(sum[k]));
+    if (!day.ground) {
+      EXPECT_NEAR(v.totalNvis.a, nvisSum.a, 1e-9 * nvisSum.a);
+    }
+    EXPECT_GE(v.totalNvis.b, nvisSum.b * (1.0 - 1e-9));
     EXPECT_EQ(lightOf(v, "sunlit_sky").rec709, day.sky.rec709);  // one sky, counted once
   }
   // Below the horizon the ground hides the night's sources.
   EXPECT_EQ(lightOf(out.views[3], "airglow").luminance, 0.0);
+  // One model: the zenith airglow's NVIS radiance is its luminance weighted by the airglow's
+  // spectrum through the state's transmittance there; and it outshines the zodiacal light more
+  // in the goggles' band than in the eye's.
+  const glm::dvec3 up(0.0, 0.0, 1.0);
+  const NamedProbeLight& airglow = out.views[0].lights.back();
+  ASSERT_EQ(airglow.name, "airglow");
+  const nvis::NvisRadiance expected = nvis::nvisFromLuminance(
+      nvis::airglowSpectrum(), nvis::transmittanceAlong(s.extinction.get(), up), airglow.light.luminance);
+  EXPECT_NEAR(airglow.nvis.a, expected.a, 1e-12 * expected.a);
+  const NamedProbeLight& zodiacal = out.views[0].lights[out.views[0].lights.size() - 2];
+  ASSERT_EQ(zodiacal.name, "zodiacal_light");
+  EXPECT_GT(airglow.nvis.a / zodiacal.nvis.a, 1.5 * airglow.light.luminance / zodiacal.light.luminance);
   // The time and place the lights are for.
   EXPECT_EQ(out.utc.day, 18);
   EXPECT_EQ(out.latitudeDeg, 47.26);

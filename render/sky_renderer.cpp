@@ -1,6 +1,7 @@
 #include "render/sky_renderer.h"
 
 #include "render/texture_readback.h"
+#include "shaders/physics.h"
 
 #include "shaders/common/bindings.h"
 #include "shaders/common/uniforms.h"
@@ -40,19 +41,28 @@ FrameBlock toBlock(const skyig::sky::Attitude& attitude, const skyig::sky::Chann
   return b;
 }
 
+// The state's glare sources that give light, in its order: the tone block holds them first and
+// the tone pass's variant evaluates only those.
+std::vector<skyig::sky::eye::GlareSource> litGlareSources(const skyig::sky::SkyState& state) {
+  std::vector<skyig::sky::eye::GlareSource> lit;
+  for (const skyig::sky::eye::GlareSource& g : state.glare)
+    if (g.rec709Lux != glm::dvec3(0.0)) lit.push_back(g);
+  return lit;
+}
+
 ToneBlock toToneBlock(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
   ToneBlock b{};
   const skyig::sky::DisplayParams& d = channel.display;
   b.display = glm::vec4(glm::dvec4(d.maxLuminance, d.ambientLuminance, d.gamma, d.adaptationLuminance));
   const bool histogram = d.toneOperator == skyig::sky::ToneOperator::Histogram;
   b.adaptation = glm::vec4(static_cast<float>(state.adaptationLuminance), 1.0f, histogram ? 0.0f : 1.0f, 0.0f);
-  for (std::size_t i = 0; i < state.glare.size(); ++i) {
-    const skyig::sky::eye::GlareSource& g = state.glare[i];
-    b.glareDirection[i] = glm::vec4(glm::vec3(g.direction), static_cast<float>(g.angularRadiusRad * 180.0 / 3.14159265358979));
-    b.glareLux[i] = glm::vec4(glm::vec3(g.rec709Lux), 0.0f);
+  const std::vector<skyig::sky::eye::GlareSource> lit = litGlareSources(state);
+  for (std::size_t i = 0; i < lit.size(); ++i) {
+    b.glareDirection[i] = glm::vec4(glm::vec3(lit[i].direction), static_cast<float>(lit[i].angularRadiusRad * 180.0 / 3.14159265358979));
+    b.glareLux[i] = glm::vec4(glm::vec3(lit[i].rec709Lux), 0.0f);
   }
-  b.glareObserver = glm::vec4(static_cast<float>(skyig::sky::eye::kGlareObserverAgeYears),
-                              static_cast<float>(skyig::sky::eye::kGlareOcularPigmentation), 0.0f, 0.0f);
+  b.glareCoefficients = glm::vec4(skyig::shader::veilCoefficients(skyig::sky::eye::kGlareObserverAgeYears,
+                                                                  skyig::sky::eye::kGlareOcularPigmentation));
   if (histogram) {
     const skyig::sky::eye::ToneCurve curve = skyig::sky::toneCurveFor(state, d);
     b.curveRange = glm::vec4(static_cast<float>(curve.minLog10), static_cast<float>(curve.maxLog10), 0.0f, 0.0f);
@@ -73,17 +83,6 @@ SkyRenderer::SkyRenderer()
 }
 
 SkyRenderer::~SkyRenderer() { glDeleteVertexArrays(1, &emptyVao_); }
-
-const GlProgram& SkyRenderer::toneProgram(bool tumblinRushmeier, bool glare, bool photopic) {
-  std::unique_ptr<GlProgram>& p = tonePrograms_[(tumblinRushmeier ? 4u : 0u) + (glare ? 2u : 0u) + (photopic ? 1u : 0u)];
-  if (!p) {
-    std::string defines = tumblinRushmeier ? "#define SKYIG_TONE_TUMBLIN_RUSHMEIER\n" : "#define SKYIG_TONE_CURVE\n";
-    if (glare) defines += "#define SKYIG_GLARE\n";
-    if (photopic) defines += "#define SKYIG_PHOTOPIC\n";
-    p = std::make_unique<GlProgram>("passes/fullscreen.vert", "passes/tone.frag", defines);
-  }
-  return *p;
-}
 
 void SkyRenderer::ensureTargets(int width, int height) {
   if (hdr_ && hdr_->width() == width && hdr_->height() == height) return;
@@ -189,16 +188,15 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
   glClearNamedFramebufferfv(pointSources_->framebuffer(), GL_COLOR, 0, none);
   pointSources_->bindForDrawing();
   stars_->drawDisplayed(state.starField, ndcToWorld, hdr_->texture());
-  glBindVertexArray(emptyVao_);
-  toneTarget.bindForDrawing();
-  // The variant of the display's operator, with the glare veil only when a source gives light
-  // and rod vision only where some of the view is dim enough (sky/shown_layers.h).
-  bool glare = false;
-  for (const auto& g : state.glare) glare = glare || g.rec709Lux != glm::dvec3(0.0);
-  toneProgram(channel.display.toneOperator != skyig::sky::ToneOperator::Histogram, glare, !state.shown.mesopic).use();
   glBindTextureUnit(SKYIG_UNIT_HDR_IMAGE, hdr_->texture());
   glBindTextureUnit(SKYIG_UNIT_POINT_SOURCES, pointSources_->texture());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // The variant of the display's operator, with rod vision only where some of the view is dim
+  // enough (sky/shown_layers.h) and the glare veil of the sources that give light.
+  std::vector<glm::dvec3> glareSources;
+  for (const skyig::sky::eye::GlareSource& g : litGlareSources(state)) glareSources.push_back(g.direction);
+  if (!tone_) tone_ = std::make_unique<TonePass>();
+  tone_->draw({channel.display.toneOperator != skyig::sky::ToneOperator::Histogram, !state.shown.mesopic}, ndcToWorld,
+              toneTarget, glareSources);
   // Then into the HDR image in absolute units, every value kept for the EXR.
   hdr_->bindForDrawing();
   stars_->draw(state.starField, ndcToWorld);

@@ -11,6 +11,7 @@
 #include "render/gl/render_target.h"
 #include "sky/sky_state.h"
 #include "render/passes/star_pass.h"
+#include "render/passes/tone_pass.h"
 
 #include <array>
 #include "render/passes/warp_blend_pass.h"
@@ -100,10 +101,6 @@ class SkyRenderer {
   const ProjectorMaps& mapsFor(const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector);
 
   GlProgram skyProgram_;
-  // The tone pass's variants (passes/tone.frag): Tumblin-Rushmeier (else the scene's curve),
-  // the glare veil, photopic only; each compiled when first needed.
-  const GlProgram& toneProgram(bool tumblinRushmeier, bool glare, bool photopic);
-  std::array<std::unique_ptr<GlProgram>, 8> tonePrograms_;
   UniformBuffer frameBlock_;
   UniformBuffer skyBlock_;
   UniformBuffer toneBlock_;
@@ -112,6 +109,7 @@ class SkyRenderer {
   std::unique_ptr<MoonPass> moon_;             // likewise, the first time a state has a moon
   std::unique_ptr<StarPass> stars_;
   std::unique_ptr<NightDiffusePass> nightDiffuse_;  // Milky Way, zodiacal light, airglow
+  std::unique_ptr<TonePass> tone_;
   std::unique_ptr<RenderTarget> hdr_;
   std::unique_ptr<RenderTarget> display_;
   std::unique_ptr<RenderTarget> pointSources_;  // displayed stars, display cd/m^2 (StarPass::drawDisplayed)

@@ -12,11 +12,17 @@
 
 namespace skyig::services {
 
+// How long a host's value must hold before it is asked for: long enough that a slider dragged
+// through the values (a new one every host frame, 17-33 ms at 30-60 Hz) asks once, at its end,
+// rather than for every step of the drag; short, because the answer is a blend of cached
+// visibility steps made in ~0.3 s (sky/atmosphere/visibility_blend.h), not minutes of precompute.
+inline constexpr double kHostAtmosphereDebounceS = 0.1;
+
 class HostAtmosphere {
  public:
   // The host's values before it says anything are HostState's defaults; until they change
   // the node keeps the configuration's atmosphere.
-  HostAtmosphere(const atmosphere::Medium& base, double groundAlbedo, double debounceS = 0.5);
+  HostAtmosphere(const atmosphere::Medium& base, double groundAlbedo, double debounceS = kHostAtmosphereDebounceS);
 
   // The host's values at `now`. Returns the conditions to ask for once the values differ from
   // the last ones asked for and have not changed for the debounce time. Throws

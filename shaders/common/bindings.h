@@ -58,10 +58,11 @@
 #define SKYIG_UNIT_MOON_ALBEDO 20
 #define SKYIG_UNIT_MOON_EXTINCTION 21  // ExtinctionTexture
 
-// Tone reproduction (passes/tone.frag, SkyRenderer): the HDR target, and the displayed stars
-// and planets to add (display cd/m^2).
+// Tone reproduction (passes/tone.frag, TonePass): the HDR target, the displayed stars and
+// planets to add (display cd/m^2), and the glare veil at the vertices of the pass's grid.
 #define SKYIG_UNIT_HDR_IMAGE 0
 #define SKYIG_UNIT_POINT_SOURCES 1
+#define SKYIG_UNIT_GLARE_VEIL 2
 
 // The warp-and-blend pass (passes/warp_blend.frag, WarpBlendPass): the channel's undithered
 // display values and its HDR image, read through the warp; the projector's maps.

@@ -46,9 +46,9 @@ SKYIG_UBO_BEGIN(ToneBlock, SKYIG_BINDING_TONE)
                            // z: 0 the histogram curve below, 1 Tumblin-Rushmeier
   SKYIG_VEC4 curveRange;   // x, y: log10 world luminance of the curve's first and last point
   SKYIG_VEC4 curve[16];    // 64 display log10 luminances (sky/eye/tone_curve.h), 4 a vec4
-  SKYIG_VEC4 glareDirection[2];  // the sun, the moon (sky/eye/glare.h): xyz ENU unit vector; w: radius, deg
+  SKYIG_VEC4 glareDirection[2];  // the sources giving light, first (sky/eye/glare.h): xyz ENU unit vector; w: radius, deg
   SKYIG_VEC4 glareLux[2];        // rgb: linear Rec.709 illuminance at the eye, lux
-  SKYIG_VEC4 glareObserver;      // x: age, years; y: ocular pigmentation (tone/glare.glsl)
+  SKYIG_VEC4 glareCoefficients;  // the observer's veil equation (tone/glare.glsl veilCoefficients)
 SKYIG_UBO_END(ToneBlock)
 
 // The warp-and-blend pass of a projector (passes/warp_blend.frag, tone/projector_blend.glsl).

@@ -9,12 +9,16 @@
 // veiling glare of the sun and the moon (tone/glare.glsl) is added to the world's light first:
 // it is the eye's, so it is shown but not written to the EXR.
 // Variants (SkyRenderer compiles each): SKYIG_TONE_CURVE or SKYIG_TONE_TUMBLIN_RUSHMEIER, the
-// display's operator (tone/display_curve.glsl); SKYIG_GLARE when a glare source gives light;
+// display's operator (tone/display_curve.glsl); SKYIG_GLARE N, the number of glare sources
+// that give light (1 or 2), the veil per pixel, or with SKYIG_GLARE_FROM_GRID too, read
+// bilinearly from its values at a grid's vertices (passes/glare_veil.frag, render/passes/tone_pass.h);
 // SKYIG_PHOTOPIC when no part of the view is dim enough for rod vision. A uniform branch would
 // cost llvmpipe both sides for every pixel.
 #include "common/uniforms.h"
 #include "tone/display_curve.glsl"
-#include "tone/glare.glsl"
+#ifdef SKYIG_GLARE
+#include "tone/glare_veil.glsl"
+#endif
 #include "common/dither.glsl"
 
 layout(binding = SKYIG_UNIT_HDR_IMAGE) uniform sampler2D hdrImage;
@@ -23,23 +27,17 @@ layout(binding = SKYIG_UNIT_POINT_SOURCES) uniform sampler2D pointSourceImage;
 in vec2 vTexCoord;
 layout(location = SKYIG_OUTPUT_COLOR) out vec4 outDisplay;
 
-// The veil of the glare sources along this pixel's view.
-vec3 glareVeil(vec3 view) {
-  vec3 veil = vec3(0.0);
-  for (int i = 0; i < 2; ++i) {
-    if (max(glareLux[i].r, max(glareLux[i].g, glareLux[i].b)) <= 0.0) continue;
-    // atan of |cross| over dot: accurate at the small angles where acos of a float is not.
-    vec3 d = glareDirection[i].xyz;
-    float thetaDeg = degrees(atan(length(cross(view, d)), dot(view, d)));
-    veil += glareLux[i].rgb * veilingLuminancePerLux(thetaDeg, glareDirection[i].w, glareObserver.x, glareObserver.y);
-  }
-  return veil;
-}
+#ifdef SKYIG_GLARE_FROM_GRID
+// The veil at the vertices of a grid of SKYIG_GLARE_CELL_PX-pixel cells (passes/glare_veil.frag).
+layout(binding = SKYIG_UNIT_GLARE_VEIL) uniform sampler2D glareVeilGrid;
+#endif
 
 void main() {
   vec3 world = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0).rgb;
-#ifdef SKYIG_GLARE
-  world += glareVeil(normalize(mat3(ndcToWorld) * vec3(gl_FragCoord.xy * viewport.zw * 2.0 - 1.0, 1.0)));
+#if defined(SKYIG_GLARE_FROM_GRID)
+  world += texture(glareVeilGrid, (gl_FragCoord.xy / SKYIG_GLARE_CELL_PX + 0.5) / vec2(textureSize(glareVeilGrid, 0))).rgb;
+#elif defined(SKYIG_GLARE)
+  world += glareVeil(mat3(ndcToWorld) * vec3(gl_FragCoord.xy * viewport.zw * 2.0 - 1.0, 1.0));
 #endif
   DisplayModel model = toneDisplayModel();
   vec3 ld = toneMapLinear(world) + texelFetch(pointSourceImage, ivec2(gl_FragCoord.xy), 0).rgb;

@@ -14,12 +14,23 @@
 // wrapped in its own light) and the EXR, the scene in cd/m^2, does not.
 #include "common/constants.glsl"
 
+// The equation as a cubic in 1 / theta: L_veil / E = ((a / t + b) / t + c) / t + d, its
+// coefficients (a, b, c, d) those of the observer, so that a pass evaluating it for every pixel
+// computes the age factor once per frame rather than a pow per pixel and source.
+vec4 veilCoefficients(Float ageYears, Float pigmentation) {
+  Float age = 1.0 + pow(ageYears / 62.5, 4.0);
+  return vec4(10.0, 5.0 * age, 0.1 * pigmentation * age, 0.0025 * pigmentation);
+}
+
 // The glare of a source seen at the eye as a disc of angular radius `radiusDeg`: inside the
 // disc and below the equation's 0.1 deg it is held at its value at max(radius, 0.1 deg).
+Float veilPerLux(Float thetaDeg, Float radiusDeg, IN(vec4) k) {
+  Float it = 1.0 / max(thetaDeg, max(radiusDeg, 0.1));
+  return ((k.x * it + k.y) * it + k.z) * it + k.w;
+}
+
 Float veilingLuminancePerLux(Float thetaDeg, Float radiusDeg, Float ageYears, Float pigmentation) {
-  Float t = max(thetaDeg, max(radiusDeg, 0.1));
-  Float age = 1.0 + pow(ageYears / 62.5, 4.0);
-  return 10.0 / (t * t * t) + (5.0 / (t * t) + 0.1 * pigmentation / t) * age + 0.0025 * pigmentation;
+  return veilPerLux(thetaDeg, radiusDeg, veilCoefficients(ageYears, pigmentation));
 }
 
 #endif

@@ -79,11 +79,20 @@ std::vector<ProgramCase> programs() {
       {{"passes/fullscreen.vert", "passes/tone.frag"},
        {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), output("outDisplay", SKYIG_OUTPUT_COLOR)},
-       "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE\n#define SKYIG_PHOTOPIC\n"},
+       "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 2\n#define SKYIG_PHOTOPIC\n"},
       {{"passes/fullscreen.vert", "passes/tone.frag"},
        {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), output("outDisplay", SKYIG_OUTPUT_COLOR)},
        "#define SKYIG_TONE_TUMBLIN_RUSHMEIER\n"},
+      // TonePass: the veil read from its grid, and the grid's veil.
+      {{"passes/fullscreen.vert", "passes/tone.frag"},
+       {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
+        sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), sampler("glareVeilGrid", SKYIG_UNIT_GLARE_VEIL),
+        output("outDisplay", SKYIG_OUTPUT_COLOR)},
+       "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
+      {{"passes/fullscreen.vert", "passes/glare_veil.frag"},
+       {frame, block("ToneBlock", SKYIG_BINDING_TONE), output("outVeil", SKYIG_OUTPUT_COLOR)},
+       "#define SKYIG_GLARE 2\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
       // PhysicalSkyPass: inside the atmosphere, from space, and this frame's slices.
       // The warp-and-blend pass of a projector (WarpBlendPass): two outputs at once.
       {{"passes/fullscreen.vert", "passes/warp_blend.frag"},

@@ -8,6 +8,7 @@
 #include "render/gl/gl_context.h"
 #include "render/image_io.h"
 #include "render/sky_renderer.h"
+#include "render/passes/tone_pass.h"
 #include "shaders/physics.h"
 #include "ephemeris/refraction.h"
 
@@ -62,6 +63,25 @@ class GlRender : public ::testing::Test {
 
   static glm::dvec3 ray(const SkyState& s, const ChannelConfig& c, int x, int y) {
     return pixelRay(ndcToWorld(eyeToEnu(s.observer.attitude, c.offset), c.frustum), x, y, c.width, c.height);
+  }
+
+  // The display values (0-1) the tone pass gives the analytic sky along `r`, from the CPU's
+  // evaluation of the same shader code: the sky's radiance, the glare veil of every source per
+  // pixel (tone/glare.glsl), the display's operator.
+  static glm::dvec3 cpuDisplayValues(const SkyState& s, const ChannelConfig& c, const glm::dvec3& r) {
+    const shader::DisplayModel d{c.display.maxLuminance, c.display.ambientLuminance, c.display.gamma,
+                                 c.display.adaptationLuminance};
+    glm::dvec3 world = analyticSkyRadiance(s.sky.params, r);
+    for (const eye::GlareSource& g : s.glare) {
+      const glm::dvec3 v = glm::normalize(r);
+      const double theta = std::atan2(glm::length(glm::cross(v, g.direction)), glm::dot(v, g.direction)) * 180.0 / std::numbers::pi;
+      world += g.rec709Lux * shader::veilingLuminancePerLux(theta, g.angularRadiusRad * 180.0 / std::numbers::pi,
+                                                           eye::kGlareObserverAgeYears, eye::kGlareOcularPigmentation);
+    }
+    if (c.display.toneOperator == ToneOperator::TumblinRushmeier) return shader::toneReproduce(world, s.adaptationLuminance, d);
+    const eye::ToneCurve curve = toneCurveFor(s, c.display);
+    const glm::dvec3 xyY = shader::mesopicxyY(shader::rec709ToXyz(glm::max(world, glm::dvec3(0.0))));
+    return shader::displayValues(shader::toneReproduceLinearWithCurve(xyY, std::log10(curve.displayLuminance(xyY.z)), d), d);
   }
 
   static glm::dvec3 rgb(const HdrImage& im, int x, int y) {
@@ -166,33 +186,78 @@ TEST_F(GlRender, DisplayFrameEqualsCpuToneReproduction) {
     const SkyState s = state(200.0, 230.0, 8.0);
     renderer_->draw(s, c);
     const DisplayImage im = renderer_->readDisplay();
-    const shader::DisplayModel d{c.display.maxLuminance, c.display.ambientLuminance, c.display.gamma,
-                                 c.display.adaptationLuminance};
-    const eye::ToneCurve curve = toneCurveFor(s, c.display);
     for (int y = 1; y < kH; y += 5)
       for (int x = 1; x < kW; x += 5) {
         const glm::dvec3 r = ray(s, c, x, y);
         if (std::abs(r.z) < 2e-3) continue;
-        // The eye's glare of the sun and moon is part of what is displayed (tone/glare.glsl).
-        glm::dvec3 world = analyticSkyRadiance(s.sky.params, r);
-        for (const eye::GlareSource& g : s.glare) {
-          const glm::dvec3 v = glm::normalize(r);
-          const double theta = std::atan2(glm::length(glm::cross(v, g.direction)), glm::dot(v, g.direction)) * 180.0 / std::numbers::pi;
-          world += g.rec709Lux * shader::veilingLuminancePerLux(theta, g.angularRadiusRad * 180.0 / std::numbers::pi,
-                                                               eye::kGlareObserverAgeYears, eye::kGlareOcularPigmentation);
-        }
-        glm::dvec3 n;
-        if (op == ToneOperator::TumblinRushmeier) {
-          n = shader::toneReproduce(world, s.adaptationLuminance, d);
-        } else {
-          const glm::dvec3 xyY = shader::mesopicxyY(shader::rec709ToXyz(glm::max(world, glm::dvec3(0.0))));
-          n = shader::displayValues(
-              shader::toneReproduceLinearWithCurve(xyY, std::log10(curve.displayLuminance(xyY.z)), d), d);
-        }
+        const glm::dvec3 n = cpuDisplayValues(s, c, r);
         for (int k = 0; k < 3; ++k)
           EXPECT_NEAR(im.rgba[(static_cast<size_t>(y) * kW + x) * 4 + k], n[k] * 255.0, 2.0)
               << (op == ToneOperator::Histogram ? "histogram " : "tumblin-rushmeier ") << x << "," << y;
       }
+  }
+}
+
+// Where the tone pass reads the glare veil from its grid (render/passes/tone_pass.h: away from
+// the sun) and where it evaluates it per pixel (the box of cells around the sun), the display
+// codes equal the CPU's with the veil per pixel, as above. 640x400 over 60 x 40 deg, the sun
+// in view: about two thirds of the frame are outside the sun's box.
+TEST_F(GlRender, GlareVeilFromTheGridEqualsThePerPixelVeil) {
+  ChannelConfig c = channel(5.0, Frustum{30, 30, 20, 20});
+  c.width = 640;
+  c.height = 400;
+  const SkyState s = state(200.0, 215.0, 12.0);
+  renderer_->draw(s, c);
+  const DisplayImage im = renderer_->readDisplay();
+  const GlareGrid grid = glareGrid(ndcToWorld(eyeToEnu(s.observer.attitude, c.offset), c.frustum), c.width, c.height,
+                                   {s.glare[0].direction});
+  const glm::ivec4 box = grid.nearBoxes[0];
+  ASSERT_LT(box.x, box.y);  // the sun's box is in view
+  int fromGrid = 0, perPixel = 0;
+  double gridError = 0.0;
+  for (int y = 1; y < c.height; y += 7)
+    for (int x = 1; x < c.width; x += 7) {
+      const glm::dvec3 r = ray(s, c, x, y);
+      if (std::abs(r.z) < 2e-3) continue;
+      const glm::dvec3 n = cpuDisplayValues(s, c, r);
+      const int cx = x / kGlareCellPx, cy = (c.height - 1 - y) / kGlareCellPx;  // GL rows from the bottom
+      const bool inBox = cx >= box.x && cx < box.y && cy >= box.z && cy < box.w;
+      for (int k = 0; k < 3; ++k) {
+        const double d = im.rgba[(static_cast<size_t>(y) * c.width + x) * 4 + k] - n[k] * 255.0;
+        ASSERT_NEAR(d, 0.0, 2.0) << x << "," << y;
+        if (!inBox) gridError += d;
+      }
+      ++(inBox ? perPixel : fromGrid);
+    }
+  EXPECT_GT(perPixel, 100);
+  EXPECT_GT(fromGrid, perPixel);
+  // Without bias, too: the dither's and the rounding's errors average out over the ~10 000
+  // values (to about 0.005 of a code), an interpolation that misses its grid by half a cell
+  // does not (0.07).
+  EXPECT_LT(std::abs(gridError / (3 * fromGrid)), 0.02);
+}
+
+// The box of cells around a source holds every pixel within kGlareExactCells - 1 cells' angle
+// of it, wherever the source is: in view, at the edge, just outside, behind.
+TEST(GlareGrid, EveryPixelNearASourceIsInItsBox) {
+  const int w = 301, h = 203;  // not whole cells
+  const glm::dmat3 m = ndcToWorld(eyeToEnu({0.0, 0.0, 0.0}, {}), Frustum{35, 25, 20, 28});
+  for (const glm::dvec3 source : {pixelRay(m, 150, 100, w, h), pixelRay(m, 3, 5, w, h), pixelRay(m, 290, 190, w, h),
+                                  glm::normalize(m * glm::dvec3(1.3, 0.2, 1.0)), glm::normalize(m * glm::dvec3(0.1, -0.2, -1.0))}) {
+    const GlareGrid g = glareGrid(m, w, h, {source});
+    ASSERT_GT(g.cellAngleRad, 0.0);
+    const glm::ivec4 b = g.nearBoxes[0];
+    int near = 0;
+    for (int row = 0; row < h; ++row)
+      for (int x = 0; x < w; ++x) {
+        if (glm::dot(pixelRay(m, x, row, w, h), source) <= std::cos((kGlareExactCells - 1.0) * g.cellAngleRad)) continue;
+        ++near;
+        const int cx = x / kGlareCellPx, cy = (h - 1 - row) / kGlareCellPx;
+        ASSERT_TRUE(cx >= b.x && cx < b.y && cy >= b.z && cy < b.w) << "pixel " << x << "," << row;
+      }
+    if (near == 0) {
+      EXPECT_EQ(b.x, b.y) << "an empty box where no pixel is near";
+    }
   }
 }
 

@@ -23,6 +23,7 @@
 #include <mutex>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 using namespace skyig::services;
 namespace atmosphere = skyig::atmosphere;
@@ -42,13 +43,13 @@ TEST(HostAtmosphere, HostDefaultsKeepTheConfiguredAtmosphere) {
 }
 
 TEST(HostAtmosphere, AChangeIsRequestedOnceItSettles) {
-  HostAtmosphere h(kMedium, 0.2, 0.5);
+  HostAtmosphere h(kMedium, 0.2);  // the node's debounce
   const auto t0 = Clock::now();
   EXPECT_FALSE(h.observe(20000.0, 60.0, t0));  // new: wait for it to settle
-  EXPECT_FALSE(h.observe(20000.0, 60.0, t0 + 300ms));
-  EXPECT_FALSE(h.observe(15000.0, 60.0, t0 + 400ms));  // the host ramps the fog: start again
-  EXPECT_FALSE(h.observe(15000.0, 60.0, t0 + 800ms));
-  const auto c = h.observe(15000.0, 60.0, t0 + 950ms);
+  EXPECT_FALSE(h.observe(20000.0, 60.0, t0 + 60ms));
+  EXPECT_FALSE(h.observe(15000.0, 60.0, t0 + 80ms));  // the host ramps the fog: start again
+  EXPECT_FALSE(h.observe(15000.0, 60.0, t0 + 170ms));
+  const auto c = h.observe(15000.0, 60.0, t0 + 190ms);
   ASSERT_TRUE(c);
   EXPECT_DOUBLE_EQ(*c->visibilityKm, 15.0);
   EXPECT_DOUBLE_EQ(*c->relativeHumidity, 0.6);
@@ -57,6 +58,36 @@ TEST(HostAtmosphere, AChangeIsRequestedOnceItSettles) {
   const auto back = (h.observe(50000.0, 0.0, t0 + 3s), h.observe(50000.0, 0.0, t0 + 4s));
   ASSERT_TRUE(back);  // back to the host's defaults is a change like any other
   EXPECT_DOUBLE_EQ(*back->visibilityKm, 50.0);
+}
+
+// A host's slider dragged from 50 to 10 km over a second, a value each 60 Hz frame, each value
+// sent for one to four frames (a hand pauses): nothing is asked for during the drag, and the
+// value the slider stops at is asked for once, a debounce after it stopped and within 0.15 s
+// (the blend of cached steps then shows it ~0.3 s later: the sky follows the host at once).
+TEST(HostAtmosphere, ASliderDragAsksOnceForWhereItStops) {
+  HostAtmosphere h(kMedium, 0.2);
+  const auto t0 = Clock::now();
+  const auto frame = std::chrono::microseconds(16667);
+  int frames = 0;
+  for (int step = 0; step <= 40; ++step) {
+    const double visibilityM = 50000.0 - 1000.0 * step;
+    for (int repeat = 0; repeat < 1 + step % 4; ++repeat, ++frames)
+      EXPECT_FALSE(h.observe(visibilityM, 0.0, t0 + frames * frame)) << "asked during the drag at " << visibilityM << " m";
+  }
+  ASSERT_GT(frames * frame, 1s);
+  const auto stopped = t0 + (frames - 1) * frame;  // 10 km from here on
+  int asked = 0;
+  std::optional<skyig::atmosphere::Conditions> c;
+  for (int f = frames; f < frames + 60; ++f)
+    if (const auto r = h.observe(10000.0, 0.0, t0 + f * frame)) {
+      ++asked;
+      c = r;
+      EXPECT_GE(t0 + f * frame - stopped, std::chrono::duration<double>(kHostAtmosphereDebounceS));
+      EXPECT_LT(t0 + f * frame - stopped, 150ms);
+    }
+  EXPECT_EQ(asked, 1);
+  ASSERT_TRUE(c);
+  EXPECT_DOUBLE_EQ(*c->visibilityKm, 10.0);
 }
 
 TEST(HostAtmosphere, ValuesOutsideTheModelsRangeThrowOnceAndAreIgnored) {
@@ -177,17 +208,17 @@ TEST(SkyWorkerVisibility, NextStateShowsTheHostsVisibilityBlendedThenExact) {
 
   // Settled: the request is answered by a blend (made on the updater's blend thread, waited for
   // here), and the next state has it.
-  EXPECT_FALSE(worker.followAtmosphere(&host, t0 + 600ms));  // asks
+  EXPECT_FALSE(worker.followAtmosphere(&host, t0 + 150ms));  // asks
   updater.waitForBlend();
-  ASSERT_TRUE(worker.followAtmosphere(&host, t0 + 650ms));
-  const auto blended = worker.step(&host, t0 + 600ms, /*force=*/true);
+  ASSERT_TRUE(worker.followAtmosphere(&host, t0 + 200ms));
+  const auto blended = worker.step(&host, t0 + 150ms, /*force=*/true);
   ASSERT_TRUE(blended);
   const auto& blend = blended->conditions.atmosphere;
   EXPECT_NEAR(atmosphere::visibilityOf(blend->config().medium), 7.0, 1e-9);
   ASSERT_TRUE(blend->blendOrigin());
   EXPECT_NEAR(blend->blendOrigin()->clearerKm, 10.0, 1e-9);
   EXPECT_NEAR(blend->blendOrigin()->hazierKm, 5.0, 1e-9);
-  EXPECT_FALSE(worker.followAtmosphere(&host, t0 + 700ms));  // nothing newer yet
+  EXPECT_FALSE(worker.followAtmosphere(&host, t0 + 250ms));  // nothing newer yet
 
   // The exact tables replace it once built.
   {
@@ -196,8 +227,8 @@ TEST(SkyWorkerVisibility, NextStateShowsTheHostsVisibilityBlendedThenExact) {
   }
   wake.notify_all();
   updater.waitIdle();
-  ASSERT_TRUE(worker.followAtmosphere(&host, t0 + 800ms));
-  const auto exact = worker.step(&host, t0 + 800ms, /*force=*/true);
+  ASSERT_TRUE(worker.followAtmosphere(&host, t0 + 350ms));
+  const auto exact = worker.step(&host, t0 + 350ms, /*force=*/true);
   ASSERT_TRUE(exact);
   EXPECT_FALSE(exact->conditions.atmosphere->blendOrigin());
   EXPECT_NEAR(atmosphere::visibilityOf(exact->conditions.atmosphere->config().medium), 7.0, 1e-9);

@@ -1,0 +1,67 @@
+#pragma once
+// The tone pass (shaders/passes/tone.frag): the HDR image and the displayed point sources in,
+// display values out, compiled in variants so that no pixel pays for what the state does not
+// show: the display's operator, photopic only, and the eye's glare veil of the sources that give
+// light. The veil (CIE 146:2002, tone/glare.glsl) is smooth away from its source, so it is
+// evaluated at the vertices of a grid of kGlareCellPx-pixel cells (a small target, one texel per
+// vertex: passes/glare_veil.frag) and read bilinearly, and per pixel only in a box of cells
+// around each source, where it is steep: out to kGlareExactCells cells' angle from the source.
+// Beyond, interpolating its 1/theta^2 term over a cell of angle a errs by at most about
+// 1.5 (a / theta)^2 of the veil (its Hessian is 6 b / theta^4), under 0.6%; measured, the
+// display codes differ from the per-pixel veil's by at most 1 (docs/performance.md).
+#include "render/gl/gl_program.h"
+#include "render/gl/render_target.h"
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace skyig::render {
+
+inline constexpr int kGlareCellPx = 8;
+inline constexpr double kGlareExactCells = 18.0;
+
+// The grid of a channel, columns x rows cells of kGlareCellPx pixels from the bottom-left
+// corner (the last ones may reach past the viewport), and the boxes of cells (x0, x1, y0, y1:
+// [x0, x1) x [y0, y1)) around the sources where the veil is evaluated per pixel: every cell
+// with a corner within kGlareExactCells cells' angle of a source (the angle of the widest cell
+// edge of the grid), so every pixel outside the boxes is at least kGlareExactCells - 1 cells'
+// angle from each source. An empty box has x0 = x1.
+struct GlareGrid {
+  int columns = 0, rows = 0;
+  std::array<glm::ivec4, 2> nearBoxes{};
+  double cellAngleRad = 0.0;
+};
+GlareGrid glareGrid(const glm::dmat3& ndcToWorld, int width, int height, const std::vector<glm::dvec3>& sources);
+
+class TonePass {
+ public:
+  struct Variant {
+    bool tumblinRushmeier = false;  // else the scene's histogram curve
+    bool photopic = false;          // no part of the view dim enough for rod vision
+  };
+  TonePass();
+  ~TonePass();
+  TonePass(const TonePass&) = delete;
+  TonePass& operator=(const TonePass&) = delete;
+
+  // Draws into `target`. The frame and tone blocks must be bound, the HDR image and the
+  // point sources at their units; `glareSources` are the directions of the tone block's glare
+  // sources that give light (at most 2, in its order).
+  void draw(const Variant& variant, const glm::dmat3& ndcToWorld, const RenderTarget& target,
+            const std::vector<glm::dvec3>& glareSources);
+
+ private:
+  // glareSources 0-2; fromGrid: the veil read from the grid's target.
+  const GlProgram& program(const Variant& variant, int glareSources, bool fromGrid);
+  std::array<std::unique_ptr<GlProgram>, 24> programs_;
+  std::array<std::unique_ptr<GlProgram>, 2> veilPrograms_;  // passes/glare_veil.frag, 1 or 2 sources
+  std::unique_ptr<RenderTarget> veil_;                      // the veil at the grid's vertices
+  GLuint emptyVao_ = 0;
+};
+
+}  // namespace skyig::render

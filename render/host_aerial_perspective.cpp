@@ -11,7 +11,7 @@
 namespace skyig::render {
 
 std::string hostAerialPerspectiveGlsl() {
-  return hostShaderSource("atmosphere/host_aerial_perspective.glsl", "skyig_");
+  return hostShaderSource("passes/host_aerial_perspective.glsl", "skyig_");
 }
 
 HostAerialPerspective::~HostAerialPerspective() { release(); }

@@ -1,6 +1,6 @@
 #pragma once
 // Aerial perspective in a host's own shaders (docs/library.md): the GLSL text a host pastes into
-// its programs (shaders/atmosphere/host_aerial_perspective.glsl, every name prefixed skyig_)
+// its programs (shaders/passes/host_aerial_perspective.glsl, every name prefixed skyig_)
 // and the binding of the physical sky's tables and the state's lights to a program of the
 // host's, so that skyigAerialPerspective() gives what sky::hostAerialPerspective gives on the CPU.
 #include "render/passes/physical_sky_pass.h"

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <set>
 #include <regex>
+#include <set>
 #include <sstream>
 
 namespace skyig::render {

@@ -64,13 +64,9 @@ class PhysicalSkyPass {
   // other than the pass's own: a host's aerial perspective (render/host_aerial_perspective.h).
   struct Tables {
     std::shared_ptr<const atmosphere::AtmosphereModel> model;
-    GLuint transmittanceXyz = 0, irradianceXyz = 0, scattering = 0, singleMieRg = 0;
-    glm::dvec3 solarIrradianceXyz{0.0};
+    GLuint scattering = 0, singleMieRg = 0;  // the packed Rec.709 pair
   };
-  Tables tables() const {
-    return {current_.model, current_.transmittance, current_.irradiance, current_.scattering,
-            current_.singleMie, current_.small.solarIrradianceXyz};
-  }
+  Tables tables() const { return {current_.model, current_.scattering, current_.singleMie}; }
 
  private:
   struct TableSet {

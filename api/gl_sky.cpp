@@ -2,6 +2,7 @@
 #include "skyig/gl_sky.h"
 
 #include "api/sky_impl.h"
+#include "render/host_aerial_perspective.h"
 #include "render/host_frame.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -68,6 +69,22 @@ unsigned SkyDraw::texture(const Sky& sky, const float* view, const float* projec
     throw;
   } catch (const std::exception& e) {
     throw Error(std::string("skyig::SkyDraw::texture: ") + e.what());
+  }
+}
+
+std::string SkyDraw::aerialPerspectiveGlsl() {
+  try {
+    return render::hostAerialPerspectiveGlsl();
+  } catch (const std::exception& e) {
+    throw Error(std::string("skyig::SkyDraw::aerialPerspectiveGlsl: ") + e.what());
+  }
+}
+
+void SkyDraw::bindAerialPerspective(const Sky& sky, unsigned program, int firstTextureUnit) {
+  try {
+    impl_->renderer.bindAerialPerspective(sky.impl().state, program, firstTextureUnit);
+  } catch (const std::exception& e) {
+    throw Error(std::string("skyig::SkyDraw::bindAerialPerspective: ") + e.what());
   }
 }
 

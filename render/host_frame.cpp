@@ -1,6 +1,7 @@
 #include "render/host_frame.h"
 
 #include "render/gl/gl_state_guard.h"
+#include "render/host_aerial_perspective.h"
 
 #include "shaders/common/bindings.h"
 
@@ -138,6 +139,19 @@ GLuint HostFrameRenderer::drawTexture(const skyig::sky::SkyState& state, const g
   guard.setSkyigDefaults();
   sky_.draw(state, camera.attitude, channel);
   return options.output == HostOutput::LinearLight ? sky_.hdrTexture() : sky_.displayTexture();
+}
+
+void HostFrameRenderer::bindAerialPerspective(const skyig::sky::SkyState& state, GLuint program, int firstUnit) {
+  if (state.conditions.model != skyig::sky::SkyModel::Physical || !state.conditions.atmosphere)
+    throw std::invalid_argument("aerial perspective needs the physical sky");
+  const PhysicalSkyPass* pass = sky_.physicalPass();
+  if (!pass || !pass->tables().model || aerial_.needsUpload(pass->tables())) {
+    const GlStateGuard guard;  // compiling the pass, uploading tables
+    guard.setSkyigDefaults();
+    pass = &sky_.physicalPassFor(state);
+    aerial_.upload(pass->tables());
+  }
+  aerial_.bind(pass->tables(), state, program, firstUnit);
 }
 
 }  // namespace skyig::render

@@ -14,6 +14,7 @@
 // lists it); the host's framebuffer gets colour (RGB of the sky, alpha 1) where the depth test
 // passes and nothing else: no depth, no stencil.
 #include "render/gl/gl_program.h"
+#include "render/host_aerial_perspective.h"
 #include "render/sky_renderer.h"
 #include "sky/camera.h"
 #include "sky/channel.h"
@@ -92,11 +93,21 @@ class HostFrameRenderer {
   // output itself and wants the same exposure.
   static double adaptationLuminance(const skyig::sky::SkyState& state) { return state.adaptationLuminance; }
 
+  // Aerial perspective in the host's own shaders (render/host_aerial_perspective.h): binds the
+  // physical sky's tables, those the sky is drawn with, to texture units firstUnit ..
+  // firstUnit + HostAerialPerspective::kUnits - 1 and sets `program`'s skyig_ uniforms for
+  // `state`. Before the first draw the tables are uploaded now (the host's GL state saved and
+  // restored around it); after it, a new weather's tables reach the GPU over the next draws, as
+  // the drawn sky's do. Throws std::invalid_argument under an analytic sky, and as
+  // HostAerialPerspective::bind.
+  void bindAerialPerspective(const skyig::sky::SkyState& state, GLuint program, int firstUnit);
+
   // The renderer behind it: its last channel's images (readHdr, readDisplay) are the last draw's.
   const SkyRenderer& skyRenderer() const { return sky_; }
 
  private:
   SkyRenderer sky_;
+  HostAerialPerspective aerial_;
   GlProgram program_;
   GLint farNdcZLocation_ = -1;
   GLint viewportOriginLocation_ = -1;

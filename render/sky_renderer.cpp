@@ -92,6 +92,13 @@ void SkyRenderer::ensureTargets(int width, int height) {
   displayValues_ = std::make_unique<RenderTarget>(width, height, GL_RGBA16F);
 }
 
+PhysicalSkyPass& SkyRenderer::physicalPassFor(const skyig::sky::SkyState& state) {
+  if (!state.conditions.atmosphere) throw std::invalid_argument("physical sky without an atmosphere model");
+  if (!physical_) physical_ = std::make_unique<PhysicalSkyPass>();
+  physical_->use(state.conditions.atmosphere);
+  return *physical_;
+}
+
 void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                               const skyig::sky::ChannelConfig& channel) {
   ensureTargets(channel.width, channel.height);
@@ -104,9 +111,7 @@ void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sk
   glDisable(GL_BLEND);
   hdr_->bindForDrawing();
   if (state.conditions.model == skyig::sky::SkyModel::Physical) {
-    if (!state.conditions.atmosphere) throw std::invalid_argument("physical sky without an atmosphere model");
-    if (!physical_) physical_ = std::make_unique<PhysicalSkyPass>();
-    physical_->use(state.conditions.atmosphere);
+    physicalPassFor(state);
     // The tables on screen may still be the previous model's while a new one uploads; both
     // share the planet, so the camera is the same. The moonlit sky only where it changes what
     // the displays show (sky/shown_layers.h).

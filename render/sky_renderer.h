@@ -72,6 +72,9 @@ class SkyRenderer {
   // The physical sky pass, once a state needed it (its table upload state, for tests and
   // benchmarks); null before.
   const PhysicalSkyPass* physicalPass() const { return physical_.get(); }
+  // The physical sky pass for `state` (a physical sky's), made the first time and told to use
+  // the state's model (uploaded at once the first time, else over the next draws).
+  PhysicalSkyPass& physicalPassFor(const skyig::sky::SkyState& state);
   // Draws the physical sky with `pass` from now on (the frozen reference of
   // render/passes/reference_sky_pass.h, for its benchmark and test) instead of its own.
   void usePhysicalSkyPass(std::unique_ptr<PhysicalSkyPass> pass) { physical_ = std::move(pass); }

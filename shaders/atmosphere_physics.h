@@ -31,4 +31,5 @@ using cpu_texture::texture;
 #include "atmosphere/multiple_scattering.glsl"
 #include "atmosphere/rendering.glsl"
 #include "atmosphere/rendering_rec709.glsl"
+#include "atmosphere/aerial_perspective.glsl"
 #include "common/glsl_cpp_end.h"

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace terrain_host {
 
@@ -68,7 +69,8 @@ Mat4 multiply(const Mat4& a, const Mat4& b) {
   return r;
 }
 
-GLuint compile(GLenum type, const char* source) {
+GLuint compile(GLenum type, const std::string& text) {
+  const char* source = text.c_str();
   const GLuint s = glCreateShader(type);
   glShaderSource(s, 1, &source, nullptr);
   glCompileShader(s);
@@ -84,32 +86,39 @@ GLuint compile(GLenum type, const char* source) {
 
 const char* kVertex = R"(#version 450 core
 layout(location = 0) in vec3 position;   // metres from the eye, east-north-up
-layout(location = 1) in vec3 radiance;   // cd/m^2, lit and fogged on the CPU by skyig
+layout(location = 1) in vec3 radiance;   // cd/m^2, lit by skyig's lights on the CPU
 layout(location = 2) in float distanceM;
 uniform mat4 viewProjection;
 out vec3 vRadiance;
+out vec3 vOffset;
 out float vDistance;
 void main() {
   vRadiance = radiance;
+  vOffset = position;
   vDistance = distanceM;
   gl_Position = viewProjection * vec4(position, 1.0);
 }
 )";
 
-const char* kFragment = R"(#version 450 core
+// Fogged per fragment by skyig's aerial perspective (skyig::SkyDraw::aerialPerspectiveGlsl,
+// pasted after the version line).
+const char* kFragment = R"(
 in vec3 vRadiance;
+in vec3 vOffset;
 in float vDistance;
 layout(location = 0) out vec4 colour;
 layout(location = 1) out float distanceOut;
 void main() {
-  colour = vec4(vRadiance, 1.0);
+  vec3 transmittance;
+  vec3 inScattered = skyigAerialPerspective(vOffset, transmittance);
+  colour = vec4(vRadiance * transmittance + inScattered, 1.0);
   distanceOut = vDistance;
 }
 )";
 
 // The terrain: a flat ground eyeHeight below the eye, a polar grid whose rings grow
 // geometrically from 30 m to the terrain's radius (fine near, coarse far, as a terrain's
-// levels of detail are), each vertex lit by skyig's lights and fogged by its aerial perspective.
+// levels of detail are), each vertex lit by skyig's lights (the fog is the fragment shader's).
 struct Mesh {
   std::vector<float> vertices;  // position, radiance, distance: 7 floats
   std::vector<unsigned> indices;
@@ -132,10 +141,8 @@ Mesh terrain(const skyig::Sky& sky, const Options& o) {
     for (int j = 0; j < kSectors; ++j) {
       const double a = 2.0 * kPi * j / kSectors;
       const skyig::Vec3 p{r * std::cos(a), r * std::sin(a), -o.eyeHeightM};
-      const skyig::AerialPerspective ap = sky.aerialPerspective(p);
       for (double v : p) m.vertices.push_back(static_cast<float>(v));
-      for (std::size_t c = 0; c < 3; ++c)
-        m.vertices.push_back(static_cast<float>(lit[c] * ap.transmittance[c] + ap.inScattered[c]));
+      for (std::size_t c = 0; c < 3; ++c) m.vertices.push_back(static_cast<float>(lit[c]));
       m.vertices.push_back(static_cast<float>(std::sqrt(r * r + o.eyeHeightM * o.eyeHeightM)));
     }
   }
@@ -217,10 +224,14 @@ Frame drawFrame(const skyig::Sky& sky, const Options& o, skyig::GlProcAddress ge
     glVertexArrayAttribBinding(vao, a, 0);
   }
   const GLuint program = glCreateProgram();
-  const GLuint vs = compile(GL_VERTEX_SHADER, kVertex), fs = compile(GL_FRAGMENT_SHADER, kFragment);
+  const GLuint vs = compile(GL_VERTEX_SHADER, kVertex);
+  const GLuint fs =
+      compile(GL_FRAGMENT_SHADER, "#version 450 core\n" + skyig::SkyDraw::aerialPerspectiveGlsl() + kFragment);
   glAttachShader(program, vs);
   glAttachShader(program, fs);
   glLinkProgram(program);
+  // skyig's tables on texture units 0 to 5 (this host binds no textures of its own).
+  skyDraw.bindAerialPerspective(sky, program, 0);
   glUseProgram(program);
   glUniformMatrix4fv(glGetUniformLocation(program, "viewProjection"), 1, GL_FALSE, viewProjection.data());
   glBindVertexArray(vao);

@@ -1,7 +1,7 @@
 #pragma once
 // A tiny image generator of its own that embeds skyig (docs/library.md): a terrain lit by
 // skyig's sun, moon and sky ambient (skyig::Sky::light), fogged by its aerial perspective
-// (skyig::Sky::aerialPerspective, per vertex), drawn first with its depth buffer, and the sky
+// (per fragment, skyig::SkyDraw::aerialPerspectiveGlsl in its own shader), drawn first with its depth buffer, and the sky
 // drawn behind it by skyig::SkyDraw where the terrain left the far plane. All linear light in
 // cd/m^2 (the host tone-maps with skyig's adaptation), so the sky and the terrain share one
 // exposure.

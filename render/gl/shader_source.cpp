@@ -3,7 +3,9 @@
 #include "render/gl/embedded_shaders.h"
 
 #include <algorithm>
+#include <cctype>
 #include <regex>
+#include <set>
 #include <sstream>
 
 namespace skyig::render {
@@ -58,6 +60,48 @@ AssembledShader assembleShader(std::string_view path, std::string_view defines) 
   std::vector<std::string> stack;
   expand("common/glsl_prelude.glsl", out, stack);
   expand(path, out, stack);
+  return out;
+}
+
+std::string hostShaderSource(std::string_view path, std::string_view prefix) {
+  const AssembledShader assembled = assembleShader(path);
+  // The text without the version and line directives.
+  std::string text;
+  {
+    std::istringstream in(assembled.text);
+    static const std::regex directive(R"(^\s*#\s*(version|line)\b.*$)");
+    std::string line;
+    while (std::getline(in, line))
+      if (!std::regex_match(line, directive)) text += line + '\n';
+  }
+  // The names declared at file scope: at the start of a line (skyig's files indent everything
+  // inside a body), a macro, a struct, a constant, a uniform or a function's definition.
+  static const std::regex declaration(
+      R"((?:^|\n)(?:#\s*define\s+(\w+)|struct\s+(\w+)|const\s+\w+\s+(\w+)|uniform\s+\w+\s+(\w+)|\w+\s+(\w+)\s*\())");
+  std::set<std::string> names;
+  auto ours = [&](const std::string& name) {
+    return name.rfind(prefix, 0) == 0 || name.rfind("skyig", 0) == 0 || name.rfind("SKYIG", 0) == 0;
+  };
+  for (std::sregex_iterator it(text.begin(), text.end(), declaration), end; it != end; ++it)
+    for (std::size_t group = 1; group < it->size(); ++group)
+      if ((*it)[group].matched && !ours((*it)[group].str())) names.insert((*it)[group].str());
+  // Every identifier (a word not part of a number) that is one of them, renamed.
+  std::string out;
+  out.reserve(text.size() + text.size() / 8);
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto word = [&](std::size_t k) { return std::isalnum(static_cast<unsigned char>(text[k])) || text[k] == '_'; };
+    if (!word(i)) {
+      out += text[i++];
+      continue;
+    }
+    std::size_t j = i;
+    while (j < text.size() && word(j)) ++j;
+    const std::string token = text.substr(i, j - i);
+    if (!std::isdigit(static_cast<unsigned char>(token[0])) && names.count(token)) out += prefix;
+    out += token;
+    i = j;
+  }
   return out;
 }
 

@@ -25,8 +25,12 @@ GLuint createTexture(GLenum target) {
   return id;
 }
 
+glm::vec3 f3(const glm::dvec3& v) { return glm::vec3(v); }
+
+}  // namespace
+
 // RGBA32F: the transmittance spans more orders of magnitude than half floats hold.
-GLuint upload2D(const shader::cpu_texture::sampler2D& s) {
+GLuint uploadTable2D(const shader::cpu_texture::sampler2D& s) {
   std::vector<float> texels;
   texels.reserve(s.texels.size() * 4);
   for (const glm::dvec4& t : s.texels)
@@ -36,10 +40,6 @@ GLuint upload2D(const shader::cpu_texture::sampler2D& s) {
   glTextureSubImage2D(id, 0, 0, 0, s.width, s.height, GL_RGBA, GL_FLOAT, texels.data());
   return id;
 }
-
-glm::vec3 f3(const glm::dvec3& v) { return glm::vec3(v); }
-
-}  // namespace
 
 PhysicalSkyPass::Program::Program(const char* vertex, const char* fragment, const std::string& defines)
     : program(vertex, fragment, defines),
@@ -85,8 +85,8 @@ PhysicalSkyPass::TableSet PhysicalSkyPass::createSet(std::shared_ptr<const atmos
   TableSet set;
   set.model = std::move(model);
   set.small = packer.packSmallTables();
-  set.transmittance = upload2D(set.small.transmittanceXyz);
-  set.irradiance = upload2D(set.small.irradianceXyz);
+  set.transmittance = uploadTable2D(set.small.transmittanceXyz);
+  set.irradiance = uploadTable2D(set.small.irradianceXyz);
   const auto& s = set.model->tables(0).scattering;
   set.scattering = createTexture(GL_TEXTURE_3D);
   glTextureStorage3D(set.scattering, 1, GL_RGBA16F, s.width, s.height, s.depth);

@@ -19,6 +19,9 @@
 
 namespace skyig::render {
 
+// A 2D table of the atmosphere as an RGBA32F texture (linear filtering, clamped to its edges).
+GLuint uploadTable2D(const shader::cpu_texture::sampler2D& table);
+
 class PhysicalSkyPass {
  public:
   // Scattering slices (radii) a frame packs and uploads while a new model is pending: 2 of the
@@ -56,6 +59,14 @@ class PhysicalSkyPass {
   double lastUploadSeconds() const { return lastUploadSeconds_; }
   // GPU memory of one table set (the current one).
   std::size_t tableBytes() const { return current_.bytes; }
+
+  // The tables draw() reads now (names 0 and no model before the first use()), for shaders
+  // other than the pass's own: a host's aerial perspective (render/host_aerial_perspective.h).
+  struct Tables {
+    std::shared_ptr<const atmosphere::AtmosphereModel> model;
+    GLuint scattering = 0, singleMieRg = 0;  // the packed Rec.709 pair
+  };
+  Tables tables() const { return {current_.model, current_.scattering, current_.singleMie}; }
 
  private:
   struct TableSet {

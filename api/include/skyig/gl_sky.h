@@ -60,6 +60,29 @@ class SKYIG_API SkyDraw {
   unsigned texture(const Sky& sky, const float* view, const float* projection, int width, int height,
                    Output output = Output::LinearLight);
 
+  // Aerial perspective in the host's own shaders, per vertex or per fragment: the same figures
+  // as Sky::aerialPerspective, from the tables the sky is drawn with (physical sky only).
+  //
+  // GLSL source for the host to paste after its own `#version 450 core` line (any stage; no
+  // #version of its own, everything included). Every name it declares starts with skyig (its
+  // uniforms skyig_*, its helpers skyig_*), among them
+  //   vec3 skyigAerialPerspective(vec3 offsetEnuM, out vec3 transmittance);
+  // which returns the radiance scattered in between the observer and the point offsetEnuM
+  // metres from it (east, north, up), linear Rec.709 cd/m^2, and the transmittance per Rec.709
+  // channel: the host shades a surface of radiance L there as L * transmittance + inScattered.
+  static std::string aerialPerspectiveGlsl();
+
+  // Sets the skyig_ uniforms of the host's linked `program` (through glProgramUniform: it need
+  // not be in use) for `sky`'s last update, and binds skyig's tables to the six texture units
+  // firstTextureUnit .. firstTextureUnit + 5 (unbinding any sampler object there). Those six
+  // units are all of the host's GL state it changes: the host must
+  // not bind its own textures to them while drawing with `program`. Call it once per frame
+  // after Sky::update (and after draw, which may have swapped in a new weather's tables), before
+  // the host's draws with `program`. Before the first draw it uploads the tables itself (the
+  // host's state kept). Throws Error under an analytic sky, for a program that is not linked, or
+  // for units beyond GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS.
+  void bindAerialPerspective(const Sky& sky, unsigned program, int firstTextureUnit);
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

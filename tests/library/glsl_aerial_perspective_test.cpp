@@ -5,6 +5,7 @@
 #include <skyig/sky.h>
 
 #include "examples/terrain_host/terrain_host.h"
+#include "tests/library/library_test_support.h"
 
 #include <glad/gl.h>
 #include <gtest/gtest.h>
@@ -22,24 +23,9 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-skyig::Settings smallPhysicalSky() {
-  const std::string cache = std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache";
-  ::setenv("XDG_CACHE_HOME", cache.c_str(), 1);
-  skyig::Settings s;
-  s.model = "physical";
-  s.tables = "small";
-  s.temporalAdaptation = false;
-  return s;
-}
+using skyig::testing::smallPhysicalSky;
 
-skyig::Observer at(int hour, int minute, double heightM) {
-  skyig::Observer o;
-  o.latitudeDeg = 47.2603;
-  o.longitudeDeg = 11.3439;
-  o.heightM = heightM;
-  o.utc = {2026, 6, 21, hour * 3600.0 + minute * 60.0};
-  return o;
-}
+skyig::Observer at(int hour, int minute, double heightM) { return skyig::testing::innsbruckAt(hour, minute, heightM); }
 
 GLuint compile(GLenum stage, const std::string& text) {
   const GLuint s = glCreateShader(stage);

@@ -4,6 +4,7 @@
 #include <skyig/sky.h>
 
 #include "examples/terrain_host/terrain_host.h"
+#include "tests/library/library_test_support.h"
 
 #include <glad/gl.h>
 #include <gtest/gtest.h>
@@ -17,24 +18,10 @@
 
 namespace {
 
-// The physical sky's small tables, from the test cache every test of the build shares.
-skyig::Settings smallPhysicalSky(bool temporal = false) {
-  const std::string cache = std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache";
-  ::setenv("XDG_CACHE_HOME", cache.c_str(), 1);
-  skyig::Settings s;
-  s.model = "physical";
-  s.tables = "small";
-  s.temporalAdaptation = temporal;
-  return s;
-}
+using skyig::testing::smallPhysicalSky;
 
 skyig::Observer at(int hour, int minute, double heightM = 0.0) {
-  skyig::Observer o;
-  o.latitudeDeg = 47.2603;
-  o.longitudeDeg = 11.3439;
-  o.heightM = heightM;
-  o.utc = {2026, 6, 21, hour * 3600.0 + minute * 60.0};
-  return o;
+  return skyig::testing::innsbruckAt(hour, minute, heightM);
 }
 
 // `skyig ARGS` (the build's executable) -> its JSON on stdout.

@@ -1,6 +1,7 @@
 // The example host (examples/terrain_host) rendered headless: skyig's sky behind a terrain the
 // host drew with its own depth buffer, lit and fogged by skyig.
 #include "examples/terrain_host/terrain_host.h"
+#include "tests/library/library_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -18,16 +19,8 @@ inline void PrintTo(DepthConvention d, std::ostream* os) { *os << (d == DepthCon
 namespace {
 
 skyig::Sky afternoonSky() {
-  const std::string cache = std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache";
-  ::setenv("XDG_CACHE_HOME", cache.c_str(), 1);
-  skyig::Settings s;
-  s.model = "physical";
-  s.tables = "small";
-  s.temporalAdaptation = false;
-  skyig::Sky sky(s);
-  skyig::Observer o;
-  o.utc = {2026, 6, 21, 15 * 3600.0};  // 17:00 CEST; the view south, the sun to the west
-  sky.update(o, 0.0);
+  skyig::Sky sky(skyig::testing::smallPhysicalSky());
+  sky.update(skyig::testing::innsbruckAt(15, 0, 581.0), 0.0);  // 17:00 CEST; the view south, the sun to the west
   return sky;
 }
 

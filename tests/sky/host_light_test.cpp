@@ -66,6 +66,20 @@ glm::dvec3 bruteForceHorizontalIrradiance(const SkyState& s) {
   return e;
 }
 
+// The physical sky 600 m up near Innsbruck at `utc`, as buildSkyState makes it (ephemeris,
+// moon, night light).
+SkyState nightOverTheAlps(const ephemeris::UtcTime& utc) {
+  ObserverState o;
+  o.latitudeDeg = 47.26;
+  o.longitudeDeg = 11.34;
+  o.heightM = 600.0;
+  o.utc = utc;
+  SkyConditions c;
+  c.model = SkyModel::Physical;
+  c.atmosphere = model();
+  return buildSkyState(o, c);
+}
+
 }  // namespace
 
 // The sun the host lights with is the probe's: `skyig probe --irradiance`'s direct_sun_lux for
@@ -183,15 +197,7 @@ TEST(HostLight, NearPointKeepsItsOwnColour) {
 // sky it lights adds an ambient a few percent to a few tens of percent of it, as the sun's sky
 // does by day.
 TEST(HostLight, FullMoonLightsTheNight) {
-  ObserverState o;
-  o.latitudeDeg = 47.26;
-  o.longitudeDeg = 11.34;
-  o.heightM = 600.0;
-  o.utc = {2026, 1, 3, 23 * 3600.0};
-  SkyConditions c;
-  c.model = SkyModel::Physical;
-  c.atmosphere = model();
-  const SkyState s = buildSkyState(o, c);
+  const SkyState s = nightOverTheAlps({2026, 1, 3, 23 * 3600.0});
   ASSERT_TRUE(s.moonDisc);
   ASSERT_GT(s.moonDisc->centreSeen.z, std::sin(40.0 * kDeg));
   const HostLight light = hostLight(s, model().get());
@@ -211,15 +217,7 @@ TEST(HostLight, FullMoonLightsTheNight) {
 // resolved stars', about 1e-3 lux at a dark site (Roach & Gordon 1973), not the nothing the
 // sunlit and moonlit sky alone would give.
 TEST(HostLight, MoonlessNightAmbientIsTheNightsOwnLight) {
-  ObserverState o;
-  o.latitudeDeg = 47.26;
-  o.longitudeDeg = 11.34;
-  o.heightM = 600.0;
-  o.utc = {2026, 12, 9, 22 * 3600.0};
-  SkyConditions c;
-  c.model = SkyModel::Physical;
-  c.atmosphere = model();
-  const SkyState s = buildSkyState(o, c);
+  const SkyState s = nightOverTheAlps({2026, 12, 9, 22 * 3600.0});
   ASSERT_TRUE(s.ephemeris);
   ASSERT_LT(s.sunAltitude, -18.0 * kDeg);
   const HostLight light = hostLight(s, model().get());

@@ -38,6 +38,23 @@ inline constexpr int kMaxChannelSide = 8192;
 // response), written equally into the three colour channels of the HDR target.
 enum class SpectralBand { Visible, NvisClassA, NvisClassB };
 
+// The phosphor of a goggle's screen: P43 (Gd2O2S:Tb, green, the usual one) or P45 (Y2O2S:Tb,
+// "white phosphor").
+enum class Phosphor { P43, P45 };
+
+// A night-vision goggle (image intensifier) in front of a channel: what the host switches on
+// with CIGI Sensor Control, and the configuration's [channel.goggle]
+// (render/passes/goggle_pass.h, docs/nvis.md). The channel is a goggle while its `band` is not
+// Visible; the goggle's class is then its band.
+struct GoggleParams {
+  SpectralBand nvisClass = SpectralBand::NvisClassA;  // the band when the goggle is switched on
+  Phosphor phosphor = Phosphor::P43;
+  double fieldOfViewDeg = 40.0;  // circular, centred on the channel's view direction
+  bool automaticGain = true;     // automatic brightness control (ABC)
+  double gain = 1.0;             // without ABC: the tube's gain as a fraction of its maximum, (0, 1]
+  bool operator==(const GoggleParams&) const = default;
+};
+
 struct ChannelConfig {
   std::string name = "front";
   Attitude offset;
@@ -46,7 +63,10 @@ struct ChannelConfig {
   int height = 1024;
   std::string monitor;  // `serve` in windows: fullscreen on this monitor (GLFW's name); "" windowed
   DisplayParams display;
-  SpectralBand band = SpectralBand::Visible;
+  SpectralBand band = SpectralBand::Visible;  // not Visible: the channel is a goggle of this class
+  GoggleParams goggle;
 };
+
+inline bool isGoggle(const ChannelConfig& c) { return c.band != SpectralBand::Visible; }
 
 }  // namespace skyig::sky

@@ -1,6 +1,8 @@
 #include "render/sky_renderer.h"
 
 #include "render/texture_readback.h"
+#include "shaders/common/band_uniforms.h"
+#include "sky/nvis_weights.h"
 #include "shaders/physics.h"
 
 #include "shaders/common/bindings.h"
@@ -72,14 +74,50 @@ ToneBlock toToneBlock(const skyig::sky::SkyState& state, const skyig::sky::Chann
   return b;
 }
 
+// The channel's band for its passes (sky/nvis_weights.h), its weights taken along the
+// channel's centre.
+BandBlock toBandBlock(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                      const skyig::sky::ChannelConfig& channel) {
+  BandBlock b{};
+  if (!skyig::sky::isGoggle(channel)) return b;
+  const glm::dvec3 centre = skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(attitude, channel.offset), channel.frustum) *
+                            glm::dvec3(0.0, 0.0, 1.0);
+  const skyig::sky::NvisWeights w = skyig::sky::nvisWeights(channel.band, state, centre);
+  b.band = glm::vec4(1.0f, static_cast<float>(w.sunDisc / w.sunlitSky), static_cast<float>(w.moonlitSky / w.sunlitSky), 0.0f);
+  b.lightWeights = glm::vec4(glm::dvec4(w.sunlitSky, w.moon, w.airglow, w.zodiacal));
+  b.nightWeights = glm::vec4(static_cast<float>(w.milkyWay), static_cast<float>(w.nightGround), 0.0f, 0.0f);
+  return b;
+}
+
+// The seed of a goggle frame's noise: the state's instant and the channel's name (FNV-1a), so
+// a replay draws the same noise and two goggles of one node do not.
+std::uint32_t goggleSeed(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&h](const void* data, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) {
+      h ^= static_cast<const unsigned char*>(data)[i];
+      h *= 1099511628211ull;
+    }
+  };
+  const skyig::ephemeris::UtcTime& t = state.observer.utc;
+  const std::int64_t ymd[3] = {t.year, t.month, t.day};
+  mix(ymd, sizeof(ymd));
+  mix(&t.secondsOfDay, sizeof(t.secondsOfDay));
+  mix(channel.name.data(), channel.name.size());
+  return static_cast<std::uint32_t>(h ^ (h >> 32));
+}
+
 }  // namespace
 
 SkyRenderer::SkyRenderer()
     : skyProgram_("passes/fullscreen.vert", "passes/analytic_sky.frag"),
       frameBlock_(SKYIG_BINDING_FRAME, sizeof(FrameBlock)),
       skyBlock_(SKYIG_BINDING_SKY, sizeof(AnalyticSkyBlock)),
-      toneBlock_(SKYIG_BINDING_TONE, sizeof(ToneBlock)) {
+      toneBlock_(SKYIG_BINDING_TONE, sizeof(ToneBlock)),
+      bandBlock_(SKYIG_BINDING_BAND, sizeof(BandBlock)) {
   glCreateVertexArrays(1, &emptyVao_);  // the full-screen triangle needs no vertex data
+  bandBlock_.upload(BandBlock{});  // the eye's band until a channel says otherwise
+  bandBlock_.bind();
 }
 
 SkyRenderer::~SkyRenderer() { glDeleteVertexArrays(1, &emptyVao_); }
@@ -104,8 +142,10 @@ void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sk
   ensureTargets(channel.width, channel.height);
   frameBlock_.upload(toBlock(attitude, channel));
   skyBlock_.upload(toBlock(state.sky.params));
+  bandBlock_.upload(toBandBlock(state, attitude, channel));
   frameBlock_.bind();
   skyBlock_.bind();
+  bandBlock_.bind();
   glBindVertexArray(emptyVao_);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
@@ -114,10 +154,12 @@ void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sk
     physicalPassFor(state);
     // The tables on screen may still be the previous model's while a new one uploads; both
     // share the planet, so the camera is the same. The moonlit sky only where it changes what
-    // the displays show (sky/shown_layers.h).
+    // the displays show (sky/shown_layers.h), and always in a goggle, which sees far fainter
+    // light than the eye.
     physical_->draw(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
                     skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection,
-                    state.shown.moonlitSky ? state.moonlightScale : glm::dvec3(0.0), state.sunRefraction);
+                    state.shown.moonlitSky || skyig::sky::isGoggle(channel) ? state.moonlightScale : glm::dvec3(0.0),
+                    state.sunRefraction);
     return;
   }
   skyProgram_.use();
@@ -175,6 +217,10 @@ void SkyRenderer::drawWarpBlendPass(const std::shared_ptr<const skyig::calibrati
 void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                               const skyig::sky::ChannelConfig& channel, const RenderTarget& toneTarget,
                               float ditherLsb) {
+  if (skyig::sky::isGoggle(channel)) {
+    drawGoggleChannel(state, attitude, channel, toneTarget, ditherLsb);
+    return;
+  }
   drawSkyPass(state, attitude, channel);
   if (state.ephemeris) (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, channel);
   // The night's own light only where it changes what the displays show (sky/shown_layers.h).
@@ -205,6 +251,31 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
   // Then into the HDR image in absolute units, every value kept for the EXR.
   hdr_->bindForDrawing();
   stars_->draw(state.starField, ndcToWorld);
+}
+
+void SkyRenderer::drawGoggleChannel(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                                    const skyig::sky::ChannelConfig& channel, const RenderTarget& toneTarget,
+                                    float ditherLsb) {
+  skyig::sky::ChannelConfig c = channel;
+  c.frustum = skyig::sky::goggleFrustum(channel);
+  // Every layer of the night: the goggle sees light far below the eye's threshold, so what the
+  // eye's visibility leaves out (sky/shown_layers.h) is drawn here.
+  drawSkyPass(state, attitude, c);
+  if (state.ephemeris) {
+    (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, c);
+    (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
+  }
+  if (!stars_) stars_ = std::make_unique<StarPass>();
+  hdr_->bindForDrawing();
+  stars_->draw(state.starField, skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(attitude, c.offset), c.frustum), c.band);
+  ToneBlock tone = toToneBlock(state, c);
+  tone.adaptation.y = ditherLsb;
+  toneBlock_.upload(tone);
+  toneBlock_.bind();
+  if (!goggle_) goggle_ = std::make_unique<GogglePass>();
+  goggle_->draw(hdr_->texture(), c,
+                skyig::sky::nvisPerLuxOfBlackbody(kIlluminantAKelvin, skyig::sky::nvisClassOf(c.band)),
+                goggleSeed(state, c), toneTarget);
 }
 
 void SkyRenderer::presentToDefaultFramebuffer(int windowWidth, int windowHeight) const {

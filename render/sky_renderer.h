@@ -12,6 +12,7 @@
 #include "sky/sky_state.h"
 #include "render/passes/star_pass.h"
 #include "render/passes/tone_pass.h"
+#include "render/passes/goggle_pass.h"
 
 #include <array>
 #include "render/passes/warp_blend_pass.h"
@@ -30,7 +31,10 @@ class SkyRenderer {
 
   // Draws every pass of `channel` for the ownship's `attitude` at the frame's instant (the node
   // predicts it per frame; the state was built at the worker's instant and is never patched);
-  // the targets stay bound to the renderer until the next call.
+  // the targets stay bound to the renderer until the next call. A goggle channel
+  // (sky::isGoggle) is drawn in its band with its own frustum (sky::goggleFrustum) and shown
+  // through its image intensifier (render/passes/goggle_pass.h); its HDR image is then the NVIS
+  // radiance, W m^-2 sr^-1 in all three channels.
   void draw(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
             const skyig::sky::ChannelConfig& channel);
   // The same with the state's own observer's attitude (single renders, tests).
@@ -72,6 +76,8 @@ class SkyRenderer {
   // The physical sky pass, once a state needed it (its table upload state, for tests and
   // benchmarks); null before.
   const PhysicalSkyPass* physicalPass() const { return physical_.get(); }
+  // The goggle pass, once a goggle channel was drawn (tests); null before.
+  const GogglePass* gogglePass() const { return goggle_.get(); }
   // The physical sky pass for `state` (a physical sky's), made the first time and told to use
   // the state's model (uploaded at once the first time, else over the next draws).
   PhysicalSkyPass& physicalPassFor(const skyig::sky::SkyState& state);
@@ -101,18 +107,23 @@ class SkyRenderer {
   // Every pass of the channel, the tone pass into `toneTarget` with a dither of `ditherLsb`.
   void drawChannel(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                    const skyig::sky::ChannelConfig& channel, const RenderTarget& toneTarget, float ditherLsb);
+  // The same for a goggle channel: its band, its frustum, its intensifier instead of the eye's tone.
+  void drawGoggleChannel(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                         const skyig::sky::ChannelConfig& channel, const RenderTarget& toneTarget, float ditherLsb);
   const ProjectorMaps& mapsFor(const std::shared_ptr<const skyig::calibration::ProjectorCalibration>& projector);
 
   GlProgram skyProgram_;
   UniformBuffer frameBlock_;
   UniformBuffer skyBlock_;
   UniformBuffer toneBlock_;
+  UniformBuffer bandBlock_;
   GLuint emptyVao_ = 0;
   std::unique_ptr<PhysicalSkyPass> physical_;  // compiled the first time a state needs it
   std::unique_ptr<MoonPass> moon_;             // likewise, the first time a state has a moon
   std::unique_ptr<StarPass> stars_;
   std::unique_ptr<NightDiffusePass> nightDiffuse_;  // Milky Way, zodiacal light, airglow
   std::unique_ptr<TonePass> tone_;
+  std::unique_ptr<GogglePass> goggle_;  // the first time a goggle channel is drawn
   std::unique_ptr<RenderTarget> hdr_;
   std::unique_ptr<RenderTarget> display_;
   std::unique_ptr<RenderTarget> pointSources_;  // displayed stars, display cd/m^2 (StarPass::drawDisplayed)

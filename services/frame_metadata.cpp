@@ -2,6 +2,7 @@
 
 #include "services/version.h"
 #include "sky/camera.h"
+#include "sky/nvis/nvis_response.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,7 +42,7 @@ render::Matrix44f worldToCamera(const sky::Attitude& ownship, const sky::Attitud
 render::ImageAttributes frameAttributes(const sky::SkyState& s, const sky::Attitude& ownship,
                                         const sky::ChannelConfig& c) {
   const auto& o = s.observer;
-  return {
+  render::ImageAttributes a{
       // OpenEXR standard attributes (fixed types: float, string, m44f).
       {"latitude", static_cast<float>(o.latitudeDeg)},
       {"longitude", static_cast<float>(o.longitudeDeg)},
@@ -74,6 +75,24 @@ render::ImageAttributes frameAttributes(const sky::SkyState& s, const sky::Attit
       {"skyig:adaptation_cd_m2", s.adaptationLuminance},
       {"skyig:units", std::string("linear Rec.709, Y in cd/m^2")},
   };
+  if (sky::isGoggle(c)) {
+    // A goggle's image is its NVIS radiance (render/sky_renderer.h), drawn with the goggle's
+    // frustum (sky::goggleFrustum).
+    const bool classA = c.band == sky::SpectralBand::NvisClassA;
+    const sky::Frustum f = sky::goggleFrustum(c);
+    a["skyig:units"] = std::string(classA ? "NVIS radiance, class A" : "NVIS radiance, class B") +
+                       ": W m^-2 sr^-1, the integral over 450-930 nm of the class's relative response (peak 1) times "
+                       "the spectral radiance (MIL-STD-3009 without G_max), the same in R, G and B";
+    a["skyig:nvis_class"] = std::string(classA ? "A" : "B");
+    a["skyig:nvis_response_provisional"] = sky::nvis::kNvisResponseProvisional ? 1 : 0;
+    a["skyig:goggle_phosphor"] = std::string(c.goggle.phosphor == sky::Phosphor::P43 ? "P43" : "P45");
+    a["skyig:goggle_field_of_view_deg"] = c.goggle.fieldOfViewDeg;
+    a["skyig:frustum_left_deg"] = f.leftDeg;
+    a["skyig:frustum_right_deg"] = f.rightDeg;
+    a["skyig:frustum_up_deg"] = f.upDeg;
+    a["skyig:frustum_down_deg"] = f.downDeg;
+  }
+  return a;
 }
 
 void addProjectorAttributes(render::ImageAttributes& attributes, const calibration::ProjectorCalibration& projector) {

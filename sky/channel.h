@@ -3,6 +3,7 @@
 // resolution and the display (projector) it is shown on.
 #include "sky/camera.h"
 
+#include <cmath>
 #include <string>
 
 namespace skyig::sky {
@@ -68,5 +69,17 @@ struct ChannelConfig {
 };
 
 inline bool isGoggle(const ChannelConfig& c) { return c.band != SpectralBand::Visible; }
+
+// A goggle's frustum on `c`'s render size: the goggle's circular field fills the channel's
+// height (half-angle fieldOfViewDeg / 2 up and down) and the width follows the aspect; outside
+// the circle the goggle shows its housing, black.
+inline Frustum goggleFrustum(const ChannelConfig& c) {
+  const double halfRad = c.goggle.fieldOfViewDeg / 2.0 * 3.14159265358979323846 / 180.0;
+  const double sideDeg = std::atan(std::tan(halfRad) * c.width / c.height) * 180.0 / 3.14159265358979323846;
+  Frustum f;
+  f.upDeg = f.downDeg = c.goggle.fieldOfViewDeg / 2.0;
+  f.leftDeg = f.rightDeg = sideDeg;
+  return f;
+}
 
 }  // namespace skyig::sky

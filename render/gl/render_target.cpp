@@ -6,10 +6,10 @@
 
 namespace skyig::render {
 
-RenderTarget::RenderTarget(int width, int height, GLenum internalFormat, bool depth)
+RenderTarget::RenderTarget(int width, int height, GLenum internalFormat, bool depth, int levels)
     : width_(width), height_(height) {
   glCreateTextures(GL_TEXTURE_2D, 1, &texture_);
-  glTextureStorage2D(texture_, 1, internalFormat, width, height);
+  glTextureStorage2D(texture_, levels, internalFormat, width, height);
   glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glCreateFramebuffers(1, &framebuffer_);

@@ -1,13 +1,14 @@
 #pragma once
 // A colour texture with its framebuffer object, sized for one channel; with `depth`, a depth
-// buffer too (the physical sky pass draws the ground's rays and the sky's apart with it).
+// buffer too (the physical sky pass draws the ground's rays and the sky's apart with it); with
+// `levels` above 1, room for a mip chain below the level drawn into (level 0).
 #include <glad/gl.h>
 
 namespace skyig::render {
 
 class RenderTarget {
  public:
-  RenderTarget(int width, int height, GLenum internalFormat, bool depth = false);
+  RenderTarget(int width, int height, GLenum internalFormat, bool depth = false, int levels = 1);
   ~RenderTarget();
   RenderTarget(const RenderTarget&) = delete;
   RenderTarget& operator=(const RenderTarget&) = delete;

@@ -1,6 +1,7 @@
 #include "render/passes/star_pass.h"
 
 #include "shaders/common/bindings.h"
+#include "sky/nvis_weights.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -31,24 +32,29 @@ StarPass::~StarPass() {
   glDeleteVertexArrays(1, &vao_);
 }
 
-void StarPass::upload(const skyig::sky::night::StarField& field) {
+void StarPass::upload(const skyig::sky::night::StarField& field, skyig::sky::SpectralBand band) {
   std::vector<float> data;
   data.reserve((field.stars.size() + field.planets.size()) * 6);
   for (const auto* list : {&field.stars, &field.planets})
-    for (const skyig::sky::night::PointSource& p : *list)
-      for (double v : {p.direction.x, p.direction.y, p.direction.z, p.rec709Lux.r, p.rec709Lux.g, p.rec709Lux.b})
+    for (const skyig::sky::night::PointSource& p : *list) {
+      glm::dvec3 light = p.rec709Lux;
+      if (band != skyig::sky::SpectralBand::Visible)
+        light = glm::dvec3(p.illuminanceLux * skyig::sky::nvisPerLuxOfBlackbody(p.temperatureK, skyig::sky::nvisClassOf(band)));
+      for (double v : {p.direction.x, p.direction.y, p.direction.z, light.r, light.g, light.b})
         data.push_back(static_cast<float>(v));
+    }
   // A new store per state: states change at most at the host's rate, and the size varies.
   glNamedBufferData(buffer_, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
   count_ = static_cast<GLsizei>(data.size() / 6);
 }
 
-bool StarPass::prepare(const std::shared_ptr<const skyig::sky::night::StarField>& field, const GlProgram& program,
-                       GLint worldToNdcLocation, const glm::dmat3& ndcToWorld) {
+bool StarPass::prepare(const std::shared_ptr<const skyig::sky::night::StarField>& field, skyig::sky::SpectralBand band,
+                       const GlProgram& program, GLint worldToNdcLocation, const glm::dmat3& ndcToWorld) {
   if (!field) return false;
-  if (field != uploaded_) {
-    upload(*field);
+  if (field != uploaded_ || band != uploadedBand_) {
+    upload(*field, band);
     uploaded_ = field;
+    uploadedBand_ = band;
   }
   if (count_ == 0) return false;
   program.use();
@@ -61,15 +67,16 @@ bool StarPass::prepare(const std::shared_ptr<const skyig::sky::night::StarField>
   return true;
 }
 
-void StarPass::draw(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld) {
-  if (!prepare(field, program_, worldToNdcLocation_, ndcToWorld)) return;
+void StarPass::draw(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
+                    skyig::sky::SpectralBand band) {
+  if (!prepare(field, band, program_, worldToNdcLocation_, ndcToWorld)) return;
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count_);
   glDisable(GL_BLEND);
 }
 
 void StarPass::drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field,
                              const glm::dmat3& ndcToWorld, GLuint background) {
-  if (!prepare(field, displayProgram_, displayWorldToNdcLocation_, ndcToWorld)) return;
+  if (!prepare(field, skyig::sky::SpectralBand::Visible, displayProgram_, displayWorldToNdcLocation_, ndcToWorld)) return;
   glBindTextureUnit(SKYIG_UNIT_STAR_BACKGROUND, background);
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count_);
   glDisable(GL_BLEND);

@@ -7,6 +7,7 @@
 //   sees them: visibility against the sky behind them kept on the display, a PSF of a fixed
 //   angle (shaders/night/point_source_visibility.glsl, docs/night-sky-stars.md).
 #include "render/gl/gl_program.h"
+#include "sky/channel.h"
 #include "sky/night/star_field.h"
 
 #include <glm/mat3x3.hpp>
@@ -23,18 +24,22 @@ class StarPass {
   StarPass& operator=(const StarPass&) = delete;
 
   // Adds the field's sources into the bound target. The frame block must be bound and hold
-  // `ndcToWorld`. The field is uploaded when it differs from the last one drawn.
-  void draw(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld);
+  // `ndcToWorld`. The field is uploaded when it differs from the last one drawn. In a goggle's
+  // `band`, each source gives its NVIS irradiance (W m^-2) in all three channels instead of its
+  // colour: its illuminance times the NVIS per lux of a blackbody of its temperature
+  // (sky/nvis_weights.h), as the probe weighs it.
+  void draw(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
+            skyig::sky::SpectralBand band = skyig::sky::SpectralBand::Visible);
   // Adds the field's sources as displayed into the bound target. The frame and tone blocks must
   // be bound; `background` is the HDR image of the sky without the sources (cd/m^2).
   void drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
                      GLuint background);
 
  private:
-  void upload(const skyig::sky::night::StarField& field);
+  void upload(const skyig::sky::night::StarField& field, skyig::sky::SpectralBand band);
   // Uploads a new field, sets the blending and the program's view; false when there is nothing to draw.
-  bool prepare(const std::shared_ptr<const skyig::sky::night::StarField>& field, const GlProgram& program,
-               GLint worldToNdcLocation, const glm::dmat3& ndcToWorld);
+  bool prepare(const std::shared_ptr<const skyig::sky::night::StarField>& field, skyig::sky::SpectralBand band,
+               const GlProgram& program, GLint worldToNdcLocation, const glm::dmat3& ndcToWorld);
   GlProgram program_;
   GlProgram displayProgram_;
   GLint worldToNdcLocation_ = -1;
@@ -43,6 +48,7 @@ class StarPass {
   GLuint buffer_ = 0;
   GLsizei count_ = 0;
   std::shared_ptr<const skyig::sky::night::StarField> uploaded_;  // held so its address cannot be reused
+  skyig::sky::SpectralBand uploadedBand_ = skyig::sky::SpectralBand::Visible;
 };
 
 }  // namespace skyig::render

@@ -33,6 +33,8 @@ struct RenderOptions {
   std::string exrPath;
   std::string pngPath;
   bool projector = false;
+  std::string goggle;    // "A" or "B": the channels as goggles of that class
+  std::string phosphor;  // "P43" or "P45"
 };
 
 // "out/sky.exr" + "left" -> "out/sky_left.exr", for one file per channel.
@@ -72,6 +74,13 @@ int run(const RenderOptions& opt) {
   for (const auto& p : projected) channels.push_back(p.channel);
   if (!opt.size.empty())
     for (auto& c : channels) parseSize(opt.size, c.width, c.height);
+  for (auto& c : channels) {  // the goggle switched on, as the host's Sensor Control does
+    if (!opt.goggle.empty()) {
+      c.goggle.nvisClass = opt.goggle == "A" ? sky::SpectralBand::NvisClassA : sky::SpectralBand::NvisClassB;
+      c.band = c.goggle.nvisClass;
+    }
+    if (!opt.phosphor.empty()) c.goggle.phosphor = opt.phosphor == "P43" ? sky::Phosphor::P43 : sky::Phosphor::P45;
+  }
 
   // Every output is checked before any work (the tables included), so a bad path fails fast
   // and writes nothing; two outputs naming one file would leave only the second.
@@ -141,6 +150,12 @@ void registerRenderCommand(CLI::App& app, int& exitCode) {
   c->add_flag("--projector", opt->projector,
               "Write what each channel's projector ([channel.projector]) is sent: the PNG warped and blended at the "
               "projector's resolution, the EXR the light it adds to the screen (cd/m^2 times its blend)");
+  c->add_option("--goggle", opt->goggle,
+                 "Render the channels as night-vision goggles of NVIS class A or B: the EXR holds the NVIS radiance "
+                 "(W m^-2 sr^-1), the PNG the goggle's screen (docs/nvis.md)")
+      ->check(CLI::IsMember({"A", "B"}));
+  c->add_option("--phosphor", opt->phosphor, "The goggle's phosphor: P43 (green) or P45 (white); default the channel's")
+      ->check(CLI::IsMember({"P43", "P45"}));
   c->callback([opt, &exitCode] { exitCode = run(*opt); });
 }
 

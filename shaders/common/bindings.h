@@ -15,6 +15,8 @@
 #define SKYIG_BINDING_SKY 1    // AnalyticSkyBlock
 #define SKYIG_BINDING_TONE 2   // ToneBlock
 #define SKYIG_BINDING_PROJECTOR 3  // ProjectorBlock: the warp-and-blend pass
+#define SKYIG_BINDING_BAND 4       // BandBlock: the eye's band or a goggle's (common/band.glsl)
+#define SKYIG_BINDING_GOGGLE 5     // GoggleBlock: a goggle channel's intensifier
 
 // Texture units. Every pass binds its textures right before it draws, so units may repeat
 // between passes; within a program they must differ.
@@ -75,6 +77,15 @@
 // The host-frame composite (passes/host_frame.frag, HostFrameRenderer): the channel's display
 // frame or its HDR image, copied into the host's framebuffer where its depth is at the far plane.
 #define SKYIG_UNIT_HOST_SOURCE 0
+
+// The goggle (passes/goggle*.frag, GogglePass): the channel's NVIS radiance (the HDR target),
+// the photocathode's illuminance, its means over 8 x 8 pixels (and their mip chain), the halo
+// at that resolution, and the gain.
+#define SKYIG_UNIT_GOGGLE_NVIS 0
+#define SKYIG_UNIT_GOGGLE_CATHODE 1
+#define SKYIG_UNIT_GOGGLE_COARSE 2
+#define SKYIG_UNIT_GOGGLE_HALO 3
+#define SKYIG_UNIT_GOGGLE_GAIN 4  // the automatic brightness control's gain, 1 x 1
 
 // The displayed-star pass (passes/star_display.vert, StarPass::drawDisplayed): the HDR target
 // without stars, read per star for the sky it sits on.

@@ -2,6 +2,7 @@
 // radiance in cd/m^2 into a float target.
 #include "common/uniforms.h"
 #include "sky/analytic_sky.glsl"
+#include "common/band.glsl"
 
 in vec3 vViewRay;
 layout(location = SKYIG_OUTPUT_COLOR) out vec4 outRadiance;
@@ -11,5 +12,5 @@ void main() {
                                 perezK.xyz, zenith.xyz, skySunDirection.xyz, skySunDirection.w,
                                 sunDirection.xyz, sunDirection.w, sunRadiance.rgb,
                                 groundRadiance.rgb);
-  outRadiance = vec4(analyticSkyRadiance(sky, normalize(vViewRay)), 1.0);
+  outRadiance = vec4(inBand(analyticSkyRadiance(sky, normalize(vViewRay)), lightWeights.x), 1.0);
 }

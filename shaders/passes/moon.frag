@@ -3,6 +3,7 @@
 // map and attenuated by the extinction at its elevation (shaders/night/moon.glsl).
 #include "common/uniforms.h"
 #include "night/moon.glsl"
+#include "common/band.glsl"
 
 uniform vec3 moonCentre;        // ENU unit vector, airless
 uniform float moonSinRadius;
@@ -34,5 +35,5 @@ void main() {
   Float albedo = texture(moonAlbedo, uv).r;
   vec3 radiance = moonSurfaceRadiance(n, -moonCentre, towardSun, albedo, sunlitScale, earthshineScale);
   vec3 transmittance = texture(extinctionTable, extinctionCoordinate(asin(clamp(view.z, -1.0, 1.0)))).rgb;
-  outRadiance = vec4(radiance * transmittance * coverage, 0.0);
+  outRadiance = vec4(inBand(radiance * transmittance * coverage, lightWeights.y), 0.0);
 }

@@ -8,6 +8,7 @@
 #include "night/milky_way.glsl"
 #include "night/zodiacal.glsl"
 #include "night/airglow.glsl"
+#include "common/band.glsl"
 
 uniform mat3 enuToJ2000;
 uniform vec3 sunJ2000;
@@ -44,5 +45,6 @@ void main() {
   vec2 lonLat = helioEclipticCoordinates(j2000, sunJ2000);
   vec3 zodiacal = s10ToCdM2(texture(zodiacalS10, zodiacalTexCoord(lonLat)).r) * sunlightRec709;
   vec3 airglow = airglowRadiance(airglowZenith, view.z);
-  outRadiance = vec4(t * (milkyWay + zodiacal + airglow) + (view.z < 0.0 ? nightGroundRadiance : vec3(0.0)), 0.0);
+  vec3 sky = inBand(t * milkyWay, nightWeights.x) + inBand(t * zodiacal, lightWeights.w) + inBand(t * airglow, lightWeights.z);
+  outRadiance = vec4(sky + (view.z < 0.0 ? inBand(nightGroundRadiance, nightWeights.y) : vec3(0.0)), 0.0);
 }

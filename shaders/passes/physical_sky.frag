@@ -28,6 +28,7 @@
 // (No common/uniforms.h here: its analytic-sky block's member names would clash with the
 // atmosphere's functions; the vertex stage alone reads the frame block.)
 #include "passes/physical_sky_uniforms.glsl"
+#include "common/band.glsl"
 
 // This frame's 2D slices of the scattering tables (physical_sky_slice.frag) for the sun and
 // the moon: x = nu texel, y = u_mu.
@@ -89,7 +90,7 @@ vec3 insideRec709(vec3 view) {
     moon += packedGroundReflectionRec709(atm, transmittanceXyz, irradianceXyz, solarIrradianceXyz,
                                          groundAlbedo, camera, view, d, moonDirectionP);
   }
-  rgb += moonlightScale * moon;
+  rgb += bandRatio(band.z) * moonlightScale * moon;
 #endif
 #ifdef SKYIG_SUN_DISC
   // The disc as seen: refracted and flattened (common/refraction.glsl), where the airless
@@ -97,7 +98,7 @@ vec3 insideRec709(vec3 view) {
   // refracted disc can fall in.
   if (!ground && nu >= frameAngles.z) {
     vec3 airless = unrefractView(view, sunRefraction);
-    rgb += xyzToRec709Linear(packedRefractedSunDiscXyz(atm, transmittanceXyz, solarIrradianceXyz,
+    rgb += bandRatio(band.y) * xyzToRec709Linear(packedRefractedSunDiscXyz(atm, transmittanceXyz, solarIrradianceXyz,
                                                        limbDarkeningXyz, camera, view, airless,
                                                        sunDirectionP));
   }
@@ -106,5 +107,7 @@ vec3 insideRec709(vec3 view) {
 }
 
 void main() {
-  outRadiance = vec4(max(insideRec709(normalize(vViewRay)), vec3(0.0)), 1.0);
+  // In a goggle's band the sum is weighted as sunlit sky, its other parts scaled above by their
+  // weights' ratios to it (common/band.glsl).
+  outRadiance = vec4(max(inBand(insideRec709(normalize(vViewRay)), lightWeights.x), vec3(0.0)), 1.0);
 }

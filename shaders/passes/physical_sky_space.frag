@@ -2,6 +2,7 @@
 // case): the general packedViewRec709 of atmosphere/rendering_rec709.glsl for the sun and,
 // when moonlightOn, the moon (Jensen et al. 2001).
 #include "passes/physical_sky_uniforms.glsl"
+#include "common/band.glsl"
 
 void main() {
   vec3 view = normalize(vViewRay);
@@ -9,9 +10,9 @@ void main() {
                               solarIrradianceXyz, limbDarkeningXyz, groundAlbedo, camera, view,
                               sunDirectionP, true);
   if (moonlightOn) {
-    rgb += moonlightScale * packedViewRec709(atm, transmittanceXyz, scatteringPacked, singleMieRG,
+    rgb += bandRatio(band.z) * moonlightScale * packedViewRec709(atm, transmittanceXyz, scatteringPacked, singleMieRG,
                                              irradianceXyz, solarIrradianceXyz, limbDarkeningXyz,
                                              groundAlbedo, camera, view, moonDirectionP, false);
   }
-  outRadiance = vec4(max(rgb, vec3(0.0)), 1.0);
+  outRadiance = vec4(max(inBand(rgb, lightWeights.x), vec3(0.0)), 1.0);
 }

@@ -1,0 +1,187 @@
+#include "render/passes/goggle_pass.h"
+
+#include "render/gl/mip_chain.h"
+#include "shaders/common/bindings.h"
+#include "shaders/common/uniforms.h"
+#include "shaders/goggle/goggle_physics.h"
+#include "shaders/physics.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace skyig::render {
+
+namespace {
+
+constexpr int kCoarsePx = 8;  // passes/goggle_coarse.frag
+
+}  // namespace
+
+glm::dvec3 phosphorRec709(skyig::sky::Phosphor phosphor) {
+  // CIE 1931 chromaticities of the screens' emission, as the tube makers' data give them (as
+  // we recall them; not re-read for this work): P43 (Gd2O2S:Tb, its 545 nm terbium line with
+  // weaker ones at 490, 585 and 620 nm) x 0.333, y 0.556; P45 (Y2O2S:Tb, "white phosphor",
+  // bluish) x 0.253, y 0.312. Both lie inside the Rec.709 gamut.
+  const glm::dvec2 xy = phosphor == skyig::sky::Phosphor::P43 ? glm::dvec2(0.333, 0.556) : glm::dvec2(0.253, 0.312);
+  const glm::dvec3 xyz(xy.x / xy.y, 1.0, (1.0 - xy.x - xy.y) / xy.y);
+  return shader::xyzToRec709(xyz);
+}
+
+GoggleGeometry goggleGeometry(const skyig::sky::ChannelConfig& channel) {
+  if (channel.width < 1 || channel.height < 1) throw std::invalid_argument("goggle: channel size must be positive");
+  const double fov = channel.goggle.fieldOfViewDeg;
+  if (!std::isfinite(fov) || fov <= 0.0 || fov >= 180.0)
+    throw std::invalid_argument("goggle: field of view " + std::to_string(fov) + " deg is not in (0, 180)");
+  GoggleGeometry g;
+  const double half = fov / 2.0 * std::numbers::pi / 180.0;
+  g.radiusPx = 0.5 * channel.height;  // sky::goggleFrustum: the field fills the height
+  g.fieldFraction = std::min(1.0, std::numbers::pi * g.radiusPx * g.radiusPx / (static_cast<double>(channel.width) * channel.height));
+  g.pixelAngleRad = 2.0 * std::tan(half) / channel.height;  // at the centre
+  const double pixelOnCathodeM = shader::kObjectiveFocalLengthM * g.pixelAngleRad;
+  g.electronsPerLux = shader::photoelectrons(1.0, pixelOnCathodeM * pixelOnCathodeM, shader::kFrameSeconds);
+  g.haloSigmaPx = std::tan(shader::kHaloSigmaDeg * std::numbers::pi / 180.0) / std::tan(half) * g.radiusPx;
+  g.mtfSigmaPx = shader::mtfSigmaRad() / g.pixelAngleRad;
+  return g;
+}
+
+GogglePass::GogglePass()
+    : input_("passes/fullscreen.vert", "passes/goggle_input.frag"),
+      coarse_("passes/fullscreen.vert", "passes/goggle_coarse.frag"),
+      halo_("passes/fullscreen.vert", "passes/goggle_halo.frag"),
+      abc_("passes/fullscreen.vert", "passes/goggle_abc.frag"),
+      screen_("passes/fullscreen.vert", "passes/goggle.frag"),
+      block_(SKYIG_BINDING_GOGGLE, sizeof(GoggleBlock)) {
+  seedLocation_ = glGetUniformLocation(screen_.id(), "uSeed");
+  abcLevelLocation_ = glGetUniformLocation(abc_.id(), "uLevel");
+  haloDirectionLocation_ = glGetUniformLocation(halo_.id(), "uDirection");
+  haloLogLocation_ = glGetUniformLocation(halo_.id(), "uWriteLog");
+  glCreateVertexArrays(1, &emptyVao_);
+  glCreateSamplers(1, &linearSampler_);
+  glSamplerParameteri(linearSampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(linearSampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(linearSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(linearSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glCreateSamplers(1, &borderSampler_);
+  glSamplerParameteri(borderSampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+  glSamplerParameteri(borderSampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(borderSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+  glSamplerParameteri(borderSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glSamplerParameterfv(borderSampler_, GL_TEXTURE_BORDER_COLOR, zero);
+}
+
+GogglePass::~GogglePass() {
+  glDeleteSamplers(1, &borderSampler_);
+  glDeleteSamplers(1, &linearSampler_);
+  glDeleteVertexArrays(1, &emptyVao_);
+}
+
+void GogglePass::ensureTargets(int width, int height) {
+  if (cathode_ && cathode_->width() == width && cathode_->height() == height) return;
+  cathode_ = std::make_unique<RenderTarget>(width, height, GL_R32F);
+  const int cw = (width + kCoarsePx - 1) / kCoarsePx, ch = (height + kCoarsePx - 1) / kCoarsePx;
+  coarseTarget_ = std::make_unique<RenderTarget>(cw, ch, GL_R32F, false, mipLevelCount(cw, ch));
+  haloRows_ = std::make_unique<RenderTarget>(cw, ch, GL_R32F);
+  haloTarget_ = std::make_unique<RenderTarget>(cw, ch, GL_R32F);
+  gainTarget_ = std::make_unique<RenderTarget>(1, 1, GL_R32F);
+  glTextureParameteri(haloTarget_->texture(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(haloTarget_->texture(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(haloTarget_->texture(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(haloTarget_->texture(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+void GogglePass::draw(GLuint nvisImage, const skyig::sky::ChannelConfig& channel, double nvisPerCdM2OfIlluminantA,
+                      std::uint32_t seed, const RenderTarget& target, bool screenLuminance) {
+  if (!(nvisPerCdM2OfIlluminantA > 0.0) || !std::isfinite(nvisPerCdM2OfIlluminantA))
+    throw std::invalid_argument("goggle: the illuminant's NVIS radiance per cd/m^2 must be positive");
+  const GoggleGeometry g = goggleGeometry(channel);
+  ensureTargets(channel.width, channel.height);
+  lastFieldFraction_ = g.fieldFraction;
+
+  GoggleBlock b{};
+  b.tube = glm::vec4(0.5f * static_cast<float>(channel.width), 0.5f * static_cast<float>(channel.height),
+                     static_cast<float>(g.radiusPx), static_cast<float>(g.fieldFraction));
+  b.cathode = glm::vec4(static_cast<float>(shader::cathodeIlluminance(1.0 / nvisPerCdM2OfIlluminantA)),
+                        static_cast<float>(g.electronsPerLux), static_cast<float>(g.haloSigmaPx),
+                        static_cast<float>(kCoarsePx));
+  const skyig::sky::GoggleParams& p = channel.goggle;
+  b.gain = glm::vec4(p.automaticGain ? 1.0f : 0.0f, static_cast<float>(p.gain), screenLuminance ? 1.0f : 0.0f, 0.0f);
+  b.phosphor = glm::vec4(glm::vec3(phosphorRec709(p.phosphor)), 0.0f);
+  // The 3 x 3 Gaussian of the tube's modulation transfer, normalised.
+  const double s2 = std::max(g.mtfSigmaPx * g.mtfSigmaPx, 1e-6);
+  const double edge = std::exp(-1.0 / (2.0 * s2)), corner = std::exp(-1.0 / s2);
+  const double sum = 1.0 + 4.0 * edge + 4.0 * corner;
+  b.mtf = glm::vec4(static_cast<float>(1.0 / sum), static_cast<float>(edge / sum), static_cast<float>(corner / sum), 0.0f);
+  block_.upload(b);
+  block_.bind();
+
+  glBindVertexArray(emptyVao_);
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  cathode_->bindForDrawing();
+  glBindTextureUnit(SKYIG_UNIT_GOGGLE_NVIS, nvisImage);
+  input_.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  coarseTarget_->bindForDrawing();
+  glBindTextureUnit(SKYIG_UNIT_GOGGLE_CATHODE, cathode_->texture());
+  glBindSampler(SKYIG_UNIT_GOGGLE_CATHODE, linearSampler_);
+  coarse_.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindSampler(SKYIG_UNIT_GOGGLE_CATHODE, 0);
+  glGenerateTextureMipmap(coarseTarget_->texture());
+
+  haloRows_->bindForDrawing();
+  glBindTextureUnit(SKYIG_UNIT_GOGGLE_COARSE, coarseTarget_->texture());
+  glBindSampler(SKYIG_UNIT_GOGGLE_COARSE, borderSampler_);
+  glProgramUniform2f(halo_.id(), haloDirectionLocation_, 1.0f, 0.0f);
+  glProgramUniform1i(halo_.id(), haloLogLocation_, 0);
+  halo_.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  haloTarget_->bindForDrawing();
+  glBindTextureUnit(SKYIG_UNIT_GOGGLE_COARSE, haloRows_->texture());
+  glProgramUniform2f(halo_.id(), haloDirectionLocation_, 0.0f, 1.0f);
+  glProgramUniform1i(halo_.id(), haloLogLocation_, 1);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindTextureUnit(SKYIG_UNIT_GOGGLE_COARSE, coarseTarget_->texture());
+
+  // The control reads the level whose texels cover 32 x 32 pixels or more, at most 64 across.
+  const int levels = mipLevelCount(coarseTarget_->width(), coarseTarget_->height());
+  int level = std::min(2, levels - 1);
+  while (level + 1 < levels && (std::max(coarseTarget_->width(), coarseTarget_->height()) >> level) > 64) ++level;
+  gainTarget_->bindForDrawing();
+  glProgramUniform1i(abc_.id(), abcLevelLocation_, level);
+  abc_.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  target.bindForDrawing();
+  glBindTextureUnit(SKYIG_UNIT_GOGGLE_CATHODE, cathode_->texture());
+  glBindTextureUnit(SKYIG_UNIT_GOGGLE_HALO, haloTarget_->texture());
+  glBindTextureUnit(SKYIG_UNIT_GOGGLE_GAIN, gainTarget_->texture());
+  glProgramUniform1ui(screen_.id(), seedLocation_, seed);
+  screen_.use();
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindSampler(SKYIG_UNIT_GOGGLE_COARSE, 0);
+}
+
+double GogglePass::readGain() const {
+  if (!gainTarget_) throw std::logic_error("readGain before any draw");
+  float g = 0.0f;
+  glGetTextureImage(gainTarget_->texture(), 0, GL_RED, GL_FLOAT, sizeof(float), &g);
+  return static_cast<double>(g);
+}
+
+double GogglePass::readFieldMeanLux() const {
+  if (!coarseTarget_) throw std::logic_error("readFieldMeanLux before any draw");
+  const int levels = mipLevelCount(coarseTarget_->width(), coarseTarget_->height());
+  float mean = 0.0f;
+  glGetTextureImage(coarseTarget_->texture(), levels - 1, GL_RED, GL_FLOAT, sizeof(float), &mean);
+  return static_cast<double>(mean) / lastFieldFraction_;
+}
+
+}  // namespace skyig::render

@@ -1,0 +1,99 @@
+#ifndef SKYIG_GOGGLE_INTENSIFIER_GLSL
+#define SKYIG_GOGGLE_INTENSIFIER_GLSL
+// The image intensifier of a night-vision goggle: how the NVIS radiance of the scene becomes
+// photoelectrons on the photocathode, light on the phosphor screen, and the noise and halo of
+// both; written once for the goggle pass (passes/goggle*.frag) and, through shaders/
+// goggle_physics.h, for the CPU and the tests (docs/nvis.md gives every figure's source).
+//
+// The numbers are a third-generation (GaAs photocathode, filmed microchannel plate) ANVIS-class
+// goggle's. Where a figure is a published specification it says so; where it is an estimate
+// it says that: the goggle maker's data sheets were not at hand for this work.
+#include "common/constants.glsl"
+
+// The objective (ANVIS class): 27 mm focal length at f/1.23, the 40 deg field on an 18 mm
+// photocathode (2 f tan 20 deg = 19.7 mm, the tube's useful diameter). Transmittance: an
+// estimate for a coated multi-element lens.
+const Float kObjectiveFocalLengthM = 0.027;
+const Float kObjectiveFNumber = 1.23;
+const Float kObjectiveTransmittance = 0.85;
+
+// Photocathode luminous sensitivity to a 2856 K (CIE illuminant A) source, A/lm: Gen III tubes
+// are specified at 1800 uA/lm and more (MIL-PRF-A3256363 class figures as commonly quoted).
+const Float kCathodeSensitivityAPerLm = 1.8e-3;
+// The microchannel plate's excess noise factor (the variance of its gain over the mean
+// squared, plus one): 1.7 to 2.5 for filmed plates; with 2.0 the model's signal-to-noise ratio
+// at the standard's 108 microlux (goggleSignalToNoise) is that of a Gen III tube, above 21.
+const Float kExcessNoiseFactor = 2.0;
+// The luminance gain at full voltage, (cd/m^2 on the screen) per (lux on the photocathode):
+// 50000 fL/fc, within the 30000-70000 fL/fc of Gen III tubes; 1 fL = 3.4263 cd/m^2,
+// 1 fc = 10.7639 lux.
+const Float kFootLambertCdM2 = 3.4262591;
+const Float kFootCandleLux = 10.7639104;
+const Float kMaxLuminanceGain = 50000.0 * kFootLambertCdM2 / kFootCandleLux;
+// The automatic brightness control holds the screen's mean at the tube's maximum output
+// brightness, about 2.5 fL (an estimate within the 2-3 fL quoted for Gen III tubes), by
+// lowering the gain; below that the gain is at its maximum and the screen dims with the scene.
+const Float kAbcScreenCdM2 = 2.5 * kFootLambertCdM2;
+// A bright source saturates the screen locally (the power supply's current limit): an
+// estimate, ten times the ABC's level.
+const Float kScreenSaturationCdM2 = 10.0 * kAbcScreenCdM2;
+
+// The halo (Thomas, Allison et al. 2005, "Physical modeling and characterization of the halo
+// phenomenon in night vision goggles", SPIE 5800): photoelectrons that strike the plate's web
+// between channels bounce back and land within about twice the cathode-to-plate gap, a spot of
+// constant angular size around every bright point whatever its distance, which they model as a
+// Gaussian. Craig, Macuda, Thomas, Allison & Jennings (2005, SPIE 5800) measured halos of
+// 1 deg 48' (+-7') across with Gen III goggles. Here the Gaussian's 2 sigma radius is that
+// half-diameter, 0.9 deg: where a halo shows depends on how far it outshines the scene, so it
+// spreads towards that size as the gain rises. The fraction of a source's light in its halo is
+// an estimate: a few hundredths, enough to outshine the scene only near bright sources.
+const Float kHaloDiameterDeg = 1.8;
+const Float kHaloSigmaDeg = kHaloDiameterDeg / 4.0;
+const Float kHaloFraction = 0.03;
+
+// The tube's modulation transfer: a Gaussian that falls to 3% at the limiting resolution,
+// 64 line pairs per mm on the photocathode (Gen III; MTF(f) = exp(-2 pi^2 sigma^2 f^2)).
+const Float kLimitingResolutionLpPerMm = 64.0;
+const Float kMtfAtLimit = 0.03;
+Float mtfSigmaRad() {
+  Float sigmaMm = sqrt(-log(kMtfAtLimit) / (2.0 * PI * PI)) / kLimitingResolutionLpPerMm;
+  return sigmaMm * 1e-3 / kObjectiveFocalLengthM;
+}
+
+// The photoelectrons' time on the screen: one frame of a 60 Hz display (the P43 phosphor decays
+// to 10% in about 1 ms, so each frame shows its own electrons; the eye averages frames).
+const Float kFrameSeconds = 1.0 / 60.0;
+const Float kElectronCharge = 1.602176634e-19;
+
+// Photocathode illuminance (lux) of a scene of luminance L (cd/m^2) through the objective
+// (image illuminance of a distant scene on the axis: pi tau L / (4 N^2)). For a goggle's scene,
+// L is the luminance of a 2856 K source of the same NVIS radiance: the NVIS radiance over the
+// illuminant A's NVIS radiance per cd/m^2 (the response includes the photocathode's).
+Float cathodeIlluminance(Float equivalentLuminance) {
+  return PI * kObjectiveTransmittance * equivalentLuminance / (4.0 * kObjectiveFNumber * kObjectiveFNumber);
+}
+
+// Photoelectrons released in `seconds` from a patch of the photocathode of area `areaM2` at
+// illuminance `lux` (of illuminant A): I = S E A.
+Float photoelectrons(Float lux, Float areaM2, Float seconds) {
+  return kCathodeSensitivityAPerLm * lux * areaM2 * seconds / kElectronCharge;
+}
+
+// The signal-to-noise ratio as the tube standards measure it: a 0.2 mm spot at 108 microlux
+// (illuminant A) seen through a 10 Hz bandwidth (an integration of 1 / (2 x 10 Hz)); the
+// plate's excess noise factor divides the photoelectrons' Poisson SNR.
+Float goggleSignalToNoise(Float lux) {
+  Float area = PI * 0.1e-3 * 0.1e-3;
+  return sqrt(photoelectrons(lux, area, 0.05) / kExcessNoiseFactor);
+}
+
+// The screen's luminance gain (cd/m^2 per lux) for a mean photocathode illuminance `meanLux`:
+// with automatic brightness control the gain that puts the mean at kAbcScreenCdM2, never above
+// the maximum (before any pixel saturates: passes/goggle_abc.frag solves it with saturation);
+// without it, `manual` (0-1] of the maximum.
+Float intensifierGain(Float meanLux, bool automatic, Float manual) {
+  if (!automatic) return clamp(manual, 0.0, 1.0) * kMaxLuminanceGain;
+  return meanLux > 0.0 ? min(kMaxLuminanceGain, kAbcScreenCdM2 / meanLux) : kMaxLuminanceGain;
+}
+
+#endif

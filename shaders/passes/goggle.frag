@@ -1,0 +1,81 @@
+// The goggle's screen (render/passes/goggle_pass.h, goggle/intensifier.glsl): the
+// photocathode's image through the tube's modulation transfer plus its halo, counted in
+// photoelectrons with their shot noise and the microchannel plate's excess noise, amplified by
+// the gain the automatic brightness control set (passes/goggle_abc.frag), and shown in the
+// phosphor's colour on the channel's display as the goggle's screen looks to the eye (display
+// luminance = the screen's, over the display's ambient). Outside the tube's circle: the
+// housing, black. The noise is a hash of the pixel and the frame's seed, so a frame drawn again
+// (a replay) is the same to the bit.
+#include "common/uniforms.h"
+#include "goggle/intensifier.glsl"
+#include "tone/display_curve.glsl"
+#include "common/dither.glsl"
+
+layout(binding = SKYIG_UNIT_GOGGLE_CATHODE) uniform sampler2D cathodeImage;  // lux
+layout(binding = SKYIG_UNIT_GOGGLE_HALO) uniform sampler2D haloLogImage;     // ln lux, the halo (passes/goggle_halo.frag)
+layout(binding = SKYIG_UNIT_GOGGLE_GAIN) uniform sampler2D gainImage;        // cd/m^2 per lux (passes/goggle_abc.frag)
+uniform uint uSeed;
+layout(location = SKYIG_OUTPUT_COLOR) out vec4 outDisplay;
+
+// PCG's output permutation of a 32-bit state (O'Neill 2014, pcg32 "RXS M XS"): a well-mixed
+// hash for a counter-based generator.
+uint pcgHash(uint v) {
+  uint state = v * 747796405u + 2891336453u;
+  uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+  return (word >> 22u) ^ word;
+}
+float uniform01(inout uint state) {
+  state = pcgHash(state);
+  return (float(state >> 8) + 0.5) / 16777216.0;
+}
+// A Poisson count of mean `mean`: by Knuth's product of uniforms below 30 (the few electrons of
+// a dark pixel, where the count's discreteness is the scintillation one sees), else the normal
+// approximation (Box-Muller).
+float poissonCount(float mean, inout uint state) {
+  if (mean < 30.0) {
+    float limit = exp(-mean);
+    float product = uniform01(state);
+    float k = 0.0;
+    for (int i = 0; i < 80 && product > limit; ++i) {
+      product *= uniform01(state);
+      k += 1.0;
+    }
+    return k;
+  }
+  float u1 = uniform01(state), u2 = uniform01(state);
+  return mean + sqrt(mean) * sqrt(-2.0 * log(u1)) * cos(6.28318530717959 * u2);
+}
+
+float cathodeAt(ivec2 p) {
+  return texelFetch(cathodeImage, clamp(p, ivec2(0), textureSize(cathodeImage, 0) - 1), 0).r;
+}
+
+void main() {
+  vec2 d = gl_FragCoord.xy - tube.xy;
+  if (dot(d, d) > tube.z * tube.z) {
+    outDisplay = vec4(0.0, 0.0, 0.0, 1.0);
+    return;
+  }
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  float sharp = mtf.x * cathodeAt(p) +
+                mtf.y * (cathodeAt(p + ivec2(1, 0)) + cathodeAt(p - ivec2(1, 0)) + cathodeAt(p + ivec2(0, 1)) + cathodeAt(p - ivec2(0, 1))) +
+                mtf.z * (cathodeAt(p + ivec2(1, 1)) + cathodeAt(p - ivec2(1, 1)) + cathodeAt(p + ivec2(1, -1)) + cathodeAt(p + ivec2(-1, 1)));
+  float halo = exp(texture(haloLogImage, gl_FragCoord.xy / (cathode.w * vec2(textureSize(haloLogImage, 0)))).r);
+  float lux = (1.0 - kHaloFraction) * sharp + kHaloFraction * halo;
+  float g = texelFetch(gainImage, ivec2(0), 0).r;
+  float electrons = lux * cathode.y;
+  uint state = pcgHash(uint(p.x) + pcgHash(uint(p.y) + pcgHash(uSeed)));
+  float k = poissonCount(electrons, state);
+  float seen = electrons > 0.0 ? lux * max(1.0 + sqrt(kExcessNoiseFactor) * (k - electrons) / electrons, 0.0) : 0.0;
+  float screen = min(g * seen, kScreenSaturationCdM2);
+  vec3 rgb = phosphor.rgb * screen;
+  if (gain.z > 0.5) {
+    outDisplay = vec4(rgb, 1.0);
+    return;
+  }
+  DisplayModel model = toneDisplayModel();
+  vec3 ld = rgb + vec3(model.ambientLuminance);
+  float white = model.ambientLuminance + model.maxLuminance;
+  vec3 n = displayValues(compressToDisplay(ld, rec709Luminance(ld), white), model);
+  outDisplay = vec4(clamp(n + ditherLsb(gl_FragCoord.xy, adaptation.y), 0.0, 1.0), 1.0);
+}

@@ -1,0 +1,85 @@
+#include "sky/nvis_weights.h"
+
+#include "sky/nvis/nvis_sky.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace skyig::sky {
+
+namespace {
+
+double pick(const nvis::NvisRadiance& r, nvis::NvisClass c) { return c == nvis::NvisClass::A ? r.a : r.b; }
+
+// NVIS radiance per cd/m^2 of a light of spectrum `s` above the air seen through `t`.
+double perLuminance(const nvis::Spectrum& s, const nvis::Transmittance& t, nvis::NvisClass c) {
+  return pick(nvis::nvisFromLuminance(s, t, 1.0), c);
+}
+
+constexpr double kTableMinK = 1500.0;
+constexpr double kTableMaxK = 50000.0;
+constexpr int kTableSize = 256;
+
+struct BlackbodyTable {
+  std::array<std::array<double, kTableSize>, 2> perLux{};
+  BlackbodyTable() {
+    const nvis::Transmittance unit = nvis::unitTransmittance();
+    for (int i = 0; i < kTableSize; ++i) {
+      const double t = kTableMinK * std::pow(kTableMaxK / kTableMinK, static_cast<double>(i) / (kTableSize - 1));
+      const nvis::NvisRadiance r = nvis::nvisFromLuminance(nvis::blackbodySpectrum(t), unit, 1.0);
+      perLux[0][static_cast<std::size_t>(i)] = r.a;
+      perLux[1][static_cast<std::size_t>(i)] = r.b;
+    }
+  }
+};
+
+}  // namespace
+
+nvis::NvisClass nvisClassOf(SpectralBand band) {
+  if (band == SpectralBand::Visible) throw std::invalid_argument("nvisClassOf: the visible band has no NVIS class");
+  return band == SpectralBand::NvisClassA ? nvis::NvisClass::A : nvis::NvisClass::B;
+}
+
+double nvisPerLuxOfBlackbody(double temperatureK, nvis::NvisClass nvisClass) {
+  static const BlackbodyTable table;
+  if (!std::isfinite(temperatureK)) throw std::invalid_argument("nvisPerLuxOfBlackbody: temperature is not finite");
+  const double t = std::clamp(temperatureK, kTableMinK, kTableMaxK);
+  const double x = std::log(t / kTableMinK) / std::log(kTableMaxK / kTableMinK) * (kTableSize - 1);
+  const int i = std::min(static_cast<int>(x), kTableSize - 2);
+  const double f = x - i;
+  const auto& row = table.perLux[nvisClass == nvis::NvisClass::A ? 0 : 1];
+  return row[static_cast<std::size_t>(i)] * (1.0 - f) + row[static_cast<std::size_t>(i + 1)] * f;
+}
+
+NvisWeights nvisWeights(SpectralBand band, const SkyState& state, const glm::dvec3& viewEnu) {
+  if (band == SpectralBand::Visible) return {};
+  const nvis::NvisClass c = nvisClassOf(band);
+  const atmosphere::ExtinctionProfile* extinction = state.extinction.get();
+  const nvis::Transmittance unit = nvis::unitTransmittance();
+  // Above the horizon: the channel's centre may look down, where the diffuse lights do not
+  // reach, so their colour is taken at the horizon at least.
+  glm::dvec3 view = glm::length(viewEnu) > 0.0 ? glm::normalize(viewEnu) : glm::dvec3(0.0, 1.0, 0.0);
+  view.z = std::max(view.z, 0.0);
+  if (glm::length(view) == 0.0) view = glm::dvec3(0.0, 1.0, 0.0);
+  const nvis::Transmittance alongView = nvis::transmittanceAlong(extinction, glm::normalize(view));
+  NvisWeights w;
+  w.nvis = true;
+  // As the probe weights them (sky/night_probe.cpp): the skies without a transmittance (their
+  // light is scattered along the whole path), the discs and the diffuse night through the air.
+  w.sunlitSky = perLuminance(nvis::sunlitSkySpectrum(), unit, c);
+  w.moonlitSky = perLuminance(nvis::moonlitSkySpectrum(), unit, c);
+  const glm::dvec3 sun = enuDirection(state.sunAzimuth, state.sunAltitude);
+  w.sunDisc = perLuminance(nvis::sunlightSpectrum(), nvis::transmittanceAlong(extinction, sun), c);
+  w.moon = perLuminance(nvis::moonlightSpectrum(), nvis::transmittanceAlong(extinction, state.moonDirection), c);
+  w.airglow = perLuminance(nvis::airglowSpectrum(), alongView, c);
+  w.zodiacal = perLuminance(nvis::zodiacalSpectrum(), alongView, c);
+  w.milkyWay = perLuminance(nvis::integratedStarlightSpectrum(), alongView, c);
+  w.nightGround = w.airglow;
+  return w;
+}
+
+}  // namespace skyig::sky

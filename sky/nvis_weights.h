@@ -1,0 +1,49 @@
+#pragma once
+// What turns a goggle channel's passes from the eye's band into the goggles': for each light the
+// sky passes draw, its NVIS radiance per cd/m^2 of its luminance, from the same spectra and
+// transmittance the probe uses (sky/night_probe.h, sky/nvis/), so a goggle channel's image and
+// `skyig probe`'s NVIS figures are one model. The passes keep computing each light's linear
+// Rec.709 radiance and, in a goggle's band, write its luminance times its weight into all three
+// channels (shaders/common/band.glsl): the sky's colour already carries everything the passes
+// know of the light's path; the weight adds what the eye's band cannot see, the light beyond
+// 700 nm.
+//
+// Each weight is one number per frame and channel, taken along the channel's centre where a
+// light's colour depends on its path (the diffuse night lights through the state's spectral
+// extinction; the moon and the sun along their own directions). Across a 40 deg goggle the
+// transmittance's colour changes little above 10 deg elevation; towards the horizon the
+// weight of the centre is kept (docs/nvis.md gives the error).
+#include "sky/channel.h"
+#include "sky/nvis/night_spectra.h"
+#include "sky/nvis/nvis_response.h"
+#include "sky/sky_state.h"
+
+#include <glm/vec3.hpp>
+
+namespace skyig::sky {
+
+struct NvisWeights {
+  bool nvis = false;       // false: the eye's band, every weight 1 (the passes leave their colour)
+  double sunlitSky = 1.0;  // W m^-2 sr^-1 per cd/m^2: the sky and the ground in sunlight
+  double sunDisc = 1.0;    // the sun's disc, through the air along it
+  double moonlitSky = 1.0; // the sky and the ground in moonlight
+  double moon = 1.0;       // the moon's disc, through the air along it
+  double airglow = 1.0;
+  double zodiacal = 1.0;
+  double milkyWay = 1.0;     // the Milky Way and the unresolved stars
+  double nightGround = 1.0;  // the terrain under the night's own light (the airglow's colour: most of it)
+};
+
+// The weights of `band` for `state` seen along the ENU direction `viewEnu` (the channel's centre).
+NvisWeights nvisWeights(SpectralBand band, const SkyState& state, const glm::dvec3& viewEnu);
+
+// The NVIS irradiance per lux of a blackbody of `temperatureK` above the atmosphere (the stars'
+// weight: each star's own, from the temperature it keeps), interpolated in a table of
+// log-spaced temperatures from 1500 K to 50000 K (clamped beyond) that is within 0.1% of the
+// integral (tests/sky/nvis).
+double nvisPerLuxOfBlackbody(double temperatureK, nvis::NvisClass nvisClass);
+
+// The class of a goggle's band (band must not be Visible).
+nvis::NvisClass nvisClassOf(SpectralBand band);
+
+}  // namespace skyig::sky

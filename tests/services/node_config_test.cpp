@@ -76,6 +76,8 @@ TEST(NodeConfig, DocumentedDefaultsEqualBuiltInDefaults) {
   EXPECT_EQ(a.display.ambientLuminance, b.display.ambientLuminance);
   EXPECT_EQ(a.display.gamma, b.display.gamma);
   EXPECT_EQ(a.display.adaptationLuminance, b.display.adaptationLuminance);
+  EXPECT_EQ(a.band, b.band);
+  EXPECT_EQ(a.goggle, b.goggle);
 }
 
 TEST(NodeConfig, DomeHasFiveChannelsWithChinWindows) {

@@ -200,6 +200,22 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
             if (p.topEnable) v->upDeg = up;
             if (p.bottomEnable) v->downDeg = down;
             changed = true;
+          } else if constexpr (std::is_same_v<T, cigi::SensorControl>) {
+            // A view's sensor is its night-vision goggle (one per view: any Sensor ID is that
+            // goggle). On/Off switches the channel between the eye's band and the goggle's
+            // class; a gain that is not a fraction in [0, 1] (CIGI ICD 3.3) is counted and
+            // dropped, the switch still applies. Gain 0 (what hosts send with automatic gain,
+            // the CCL's default) leaves the last gain, which the goggle needs above 0.
+            ViewOverride* v = state_.views.entry(p.viewId, maxViews_);
+            if (!v) {
+              ++droppedViews_;
+              return;
+            }
+            v->sensorOn = p.sensorOn;
+            v->automaticGain = p.automaticGain;
+            if (!std::isfinite(p.gain) || p.gain < 0.0f || p.gain > 1.0f) ++rejected;
+            else if (p.gain > 0.0f) v->gain = p.gain;
+            changed = true;
           }
           // Environmental Region Control has nothing for a sky without regions yet.
         },

@@ -51,7 +51,7 @@ class CigiStateTracker {
   // Timestamps that did not continue the host's clock (more than kMaxTimestampBackS back or
   // kMaxTimestampStepS ahead): the clock went on from where it stood.
   std::uint64_t timestampJumps() const { return timestampJumps_; }
-  // View Control and View Definition packets for a view id at or above the maximum
+  // View Control, View Definition and Sensor Control packets for a view id at or above the maximum
   // (host.max_views, at most kViewTableCapacity): counted and dropped.
   void setMaxViews(std::size_t n) { maxViews_ = std::min(n, kViewTableCapacity); }
   std::uint64_t droppedViews() const { return droppedViews_; }

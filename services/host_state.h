@@ -29,12 +29,16 @@ struct HostTime {
   double rate = 1.0;
 };
 
-// A channel's eyepoint rotation and frustum as the host set them (CIGI View Control and View
-// Definition); view ID n is the node's n-th channel. Unset parts keep the configuration's.
+// A channel's eyepoint rotation, frustum and goggle as the host set them (CIGI View Control,
+// View Definition and Sensor Control); view ID n is the node's n-th channel. Unset parts keep
+// the configuration's.
 struct ViewOverride {
   std::uint16_t viewId = 0;
   std::optional<double> yawDeg, pitchDeg, rollDeg;
   std::optional<double> leftDeg, rightDeg, upDeg, downDeg;  // skyig's half-angles
+  std::optional<bool> sensorOn;       // the channel's night-vision goggle switched on or off
+  std::optional<bool> automaticGain;  // the goggle's automatic brightness control
+  std::optional<double> gain;         // the goggle's gain without it, a fraction in (0, 1]
 };
 
 // The most view ids a node keeps (host.max_views is at most this). The table is a fixed array
@@ -49,7 +53,8 @@ class ViewTable {
   ViewOverride* entry(std::uint16_t id, std::size_t limit) {
     if (id >= limit || id >= kViewTableCapacity) return nullptr;
     if (!(used_ & (1ull << id))) {
-      entries_[id] = ViewOverride{id, {}, {}, {}, {}, {}, {}, {}};
+      entries_[id] = ViewOverride{};
+      entries_[id].viewId = id;
       used_ |= 1ull << id;
     }
     return &entries_[id];

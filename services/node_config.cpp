@@ -76,15 +76,17 @@ class TableReader {
   const std::string& source() const { return source_; }
   const std::string& prefix() const { return prefix_; }
 
+  // A value as the file wrote it (strings quoted), for error messages.
+  static std::string show(const toml::node& n) {
+    std::ostringstream o;
+    n.visit([&o](const auto& x) { o << x; });
+    return o.str();
+  }
+
  private:
   static std::string fmt(double v) {
     std::ostringstream o;
     o << v;
-    return o.str();
-  }
-  static std::string show(const toml::node& n) {
-    std::ostringstream o;
-    n.visit([&o](const auto& x) { o << x; });
     return o.str();
   }
 
@@ -278,6 +280,42 @@ ProjectorSettings readProjector(TableReader& r, const std::string& configPath) {
   return p;
 }
 
+// [channel.goggle]: a night-vision goggle in front of the channel (sky/channel.h GoggleParams).
+// A channel with the table is a goggle the host can switch on (CIGI Sensor Control); `on`
+// switches it on from the start. The class and the phosphor are the goggle's; the gain is
+// "auto" (automatic brightness control) or the tube's gain as a fraction of its maximum.
+void readGoggle(TableReader& r, sky::ChannelConfig& c) {
+  sky::GoggleParams& g = c.goggle;
+  const bool on = r.boolean("on", false);
+  const std::string nvisClass = r.string("class", "A", "\"A\" or \"B\"");
+  if (nvisClass == "A") g.nvisClass = sky::SpectralBand::NvisClassA;
+  else if (nvisClass == "B") g.nvisClass = sky::SpectralBand::NvisClassB;
+  else r.fail(r.find("class"), "class", "expected \"A\" or \"B\" (MIL-STD-3009 NVIS class), got \"" + nvisClass + "\"");
+  const std::string phosphor = r.string("phosphor", "P43", "\"P43\" or \"P45\"");
+  if (phosphor == "P43") g.phosphor = sky::Phosphor::P43;
+  else if (phosphor == "P45") g.phosphor = sky::Phosphor::P45;
+  else r.fail(r.find("phosphor"), "phosphor", "expected \"P43\" or \"P45\", got \"" + phosphor + "\"");
+  if (const toml::node* n = r.find("fov_deg")) {
+    const std::optional<double> v = n->value<double>();  // integers convert too
+    if (!v || !std::isfinite(*v) || *v <= 0.0 || *v >= 180.0)
+      r.fail(n, "fov_deg", "expected a circular field of view in degrees in (0, 180), got " + r.show(*n));
+    g.fieldOfViewDeg = *v;
+  }
+  if (const toml::node* n = r.find("gain")) {
+    const std::optional<double> v = n->is_string() ? std::nullopt : n->value<double>();
+    if (n->is_string() && *n->value<std::string>() == "auto") {
+      g.automaticGain = true;
+    } else if (v && std::isfinite(*v) && *v > 0.0 && *v <= 1.0) {
+      g.automaticGain = false;
+      g.gain = *v;
+    } else {
+      r.fail(n, "gain", "expected \"auto\" or a fraction of the maximum gain in (0, 1], got " + r.show(*n));
+    }
+  }
+  r.rejectUnknownKeys();
+  if (on) c.band = g.nvisClass;
+}
+
 sky::ChannelConfig readChannel(TableReader& r, size_t index, std::string& node, ProjectorSettings& projector) {
   sky::ChannelConfig c;
   node = r.string("node", "");
@@ -314,6 +352,10 @@ sky::ChannelConfig readChannel(TableReader& r, size_t index, std::string& node, 
     c.display.adaptationLuminance =
         d.number("adaptation_luminance", c.display.maxLuminance / 10.0, 0.01, 1e5);
     d.rejectUnknownKeys();
+  }
+  if (const toml::table* t = subTable(r, "goggle")) {
+    TableReader g(*t, r.prefix() + "goggle.", r.source());
+    readGoggle(g, c);
   }
   r.rejectUnknownKeys();
   return c;

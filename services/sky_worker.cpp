@@ -141,7 +141,7 @@ FramePose SkyWorker::poseAt(const HostSnapshot* host, Clock::time_point t,
                             const std::vector<sky::ChannelConfig>& channels) const {
   FramePose pose{observerAt(host, t).attitude, channels};
   if (!host) return pose;
-  // CIGI View Control and View Definition: view n is the node's n-th channel.
+  // CIGI View Control, View Definition and Sensor Control: view n is the node's n-th channel.
   for (std::size_t id = 0; id < pose.channels.size(); ++id) {
     const ViewOverride* found = host->state.views.find(id);
     if (!found) continue;
@@ -154,6 +154,10 @@ FramePose SkyWorker::poseAt(const HostSnapshot* host, Clock::time_point t,
     if (v.rightDeg) c.frustum.rightDeg = *v.rightDeg;
     if (v.upDeg) c.frustum.upDeg = *v.upDeg;
     if (v.downDeg) c.frustum.downDeg = *v.downDeg;
+    // The goggle switched on renders its class's NVIS band; off, the eye's.
+    if (v.sensorOn) c.band = *v.sensorOn ? c.goggle.nvisClass : sky::SpectralBand::Visible;
+    if (v.automaticGain) c.goggle.automaticGain = *v.automaticGain;
+    if (v.gain && *v.gain > 0.0) c.goggle.gain = *v.gain;
   }
   return pose;
 }

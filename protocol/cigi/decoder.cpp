@@ -63,6 +63,7 @@ bool unpack(PacketId id, const std::uint8_t* p, ByteOrder order, std::vector<Pac
     case PacketId::weatherControl: unpackInto<WeatherControl>(packets, p, order); return true;
     case PacketId::viewControl: unpackInto<ViewControl>(packets, p, order); return true;
     case PacketId::viewDefinition: unpackInto<ViewDefinition>(packets, p, order); return true;
+    case PacketId::sensorControl: unpackInto<SensorControl>(packets, p, order); return true;
     case PacketId::startOfFrame: unpackInto<StartOfFrame>(packets, p, order); return true;
   }
   return false;

@@ -106,7 +106,7 @@ std::string appendPacket4(std::vector<std::uint8_t>& out, const Packet& packet, 
   const std::uint16_t size = packetSize4(index);
   if (size == 0)
     return std::string(packetName(index)) + ": not in skyig's CIGI 4.0 subset (IG Control, Entity Position "
-           "Control, Celestial Sphere Control, Atmosphere Control, View Control, View Definition, Start of Frame)";
+           "Control, Celestial Sphere Control, Atmosphere Control, View Control, View Definition, Sensor Control, Start of Frame)";
   const std::size_t start = out.size();
   out.resize(start + size, 0);
   std::uint8_t* p = out.data() + start;

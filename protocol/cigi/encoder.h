@@ -27,7 +27,7 @@ std::string encodeMessage(std::span<const Packet> packets, ByteOrder order, std:
 
 // CIGI 4.0 (the subset in protocol/cigi/layouts4.h): IG Control, Entity Control (sent as
 // Entity Position Control: the pose only), Celestial Sphere Control (with seconds),
-// Atmosphere Control, View Control, View Definition and Start of Frame. Other types are
+// Atmosphere Control, View Control, View Definition, Sensor Control and Start of Frame. Other types are
 // refused by name.
 std::string appendPacket4(std::vector<std::uint8_t>& out, const Packet& packet, ByteOrder order);
 std::string encodeMessage4(std::span<const Packet> packets, ByteOrder order, std::vector<std::uint8_t>& out);

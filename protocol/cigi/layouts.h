@@ -174,6 +174,24 @@ void layout(IO& io, P& m) {
   io.f32(28, m.bottomDeg);
 }
 
+// Sensor Control: CIGI ICD 3.3 / CCL CigiSensorCtrlV3.cpp (Pack and Unpack): byte 7 reserved.
+template <class IO, class P> requires std::is_same_v<std::remove_const_t<P>, SensorControl>
+void layout(IO& io, P& m) {
+  io.u16(2, m.viewId);
+  io.u8(4, m.sensorId);
+  io.bits(5, 0, 1, m.sensorOn, "Sensor On/Off");
+  io.bits(5, 1, 1, m.polarity, "Polarity");
+  io.bits(5, 2, 1, m.lineDropoutEnable, "Line-by-Line Dropout Enable");
+  io.bits(5, 3, 1, m.automaticGain, "Automatic Gain");
+  io.bits(5, 4, 1, m.trackBlack, "Track White/Black");
+  io.bits(5, 5, 3, m.trackMode, "Track Mode");
+  io.bits(6, 0, 1, m.gateAndTargetResponse, "Response Type");
+  io.f32(8, m.gain);
+  io.f32(12, m.level);
+  io.f32(16, m.acCoupling);
+  io.f32(20, m.noise);
+}
+
 template <class IO, class P> requires std::is_same_v<std::remove_const_t<P>, StartOfFrame>
 void layout(IO& io, P& m) {
   io.constantU8(2, kMajorVersion);

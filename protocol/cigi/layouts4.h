@@ -5,7 +5,7 @@
 // how the first packet's size reads. Source: the CIGI 4.0 ICD as implemented by the CIGI
 // Class Library 4.0 port (captainflasmr/cigi-ccl_4_0: CigiIGCtrlV4, CigiSOFV4,
 // CigiEntityPositionCtrlV4, CigiCelestialCtrlV4, CigiAtmosCtrlV4, CigiViewCtrlV4,
-// CigiViewDefV4 Pack functions); the
+// CigiViewDefV4, CigiSensorCtrlV4 Pack functions); the
 // SISO text itself (SISO-STD-013-2014) was not available to check them against.
 #include <type_traits>
 
@@ -114,6 +114,26 @@ void layout4(IO& io, P& m) {
   io.f32(24, m.rightDeg);
   io.f32(28, m.topDeg);
   io.f32(32, m.bottomDeg);
+}
+
+// Sensor Control (id 0x10, 32 bytes), from CCL 4.0 CigiSensorCtrlV4.cpp (Pack and Unpack):
+// the flags move ahead of the View ID, which follows at 8; bytes 7, 10-11 and 28-31 are
+// reserved. Same flag bits as 3.3 (CIGI ICD 3.3 / CCL CigiSensorCtrlV3.cpp).
+template <class IO, class P> requires std::is_same_v<std::remove_const_t<P>, SensorControl>
+void layout4(IO& io, P& m) {
+  io.u8(4, m.sensorId);
+  io.bits(5, 0, 1, m.sensorOn, "Sensor On/Off");
+  io.bits(5, 1, 1, m.polarity, "Polarity");
+  io.bits(5, 2, 1, m.lineDropoutEnable, "Line-by-Line Dropout Enable");
+  io.bits(5, 3, 1, m.automaticGain, "Automatic Gain");
+  io.bits(5, 4, 1, m.trackBlack, "Track White/Black");
+  io.bits(5, 5, 3, m.trackMode, "Track Mode");
+  io.bits(6, 0, 1, m.gateAndTargetResponse, "Response Type");
+  io.u16(8, m.viewId);
+  io.f32(12, m.gain);
+  io.f32(16, m.level);
+  io.f32(20, m.acCoupling);
+  io.f32(24, m.noise);
 }
 
 template <class IO, class P> requires std::is_same_v<std::remove_const_t<P>, StartOfFrame>

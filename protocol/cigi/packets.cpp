@@ -24,6 +24,7 @@ constexpr std::array<PacketInfo, kPacketTypeCount> kInfo{{
     {PacketId::weatherControl, 56, "Weather Control"},
     {PacketId::viewControl, 32, "View Control"},
     {PacketId::viewDefinition, 32, "View Definition"},
+    {PacketId::sensorControl, 24, "Sensor Control"},
     {PacketId::startOfFrame, 24, "Start of Frame"},
 }};
 
@@ -71,6 +72,7 @@ constexpr std::array<Packet4Info, kPacketTypeCount> kInfo4{{
     {0, 0, "Weather Control"},
     {kCigi4ViewControl, 40, "View Control"},
     {kCigi4ViewDefinition, 40, "View Definition"},
+    {kCigi4SensorControl, 32, "Sensor Control"},
     {kCigi4StartOfFrame, 24, "Start of Frame"},
 }};
 

@@ -21,6 +21,7 @@ enum class PacketId : std::uint8_t {
   environmentalRegionControl = 11,
   weatherControl = 12,
   viewControl = 16,
+  sensorControl = 17,
   viewDefinition = 21,
   startOfFrame = 101,
 };
@@ -213,6 +214,29 @@ struct ViewDefinition {
   bool operator==(const ViewDefinition&) const = default;
 };
 
+enum class SensorPolarity : std::uint8_t { whiteHot = 0, blackHot = 1 };
+
+// Sensor Control (id 17, 24 bytes): a sensor (in skyig the night-vision goggle) of a view.
+// Gain, level, AC coupling and noise are fractions, 0..1. skyig has one sensor per view, the
+// goggle: it accepts any Sensor ID and uses Sensor On/Off, Automatic Gain and Gain
+// (services/cigi_state.cpp); the other fields are decoded and encoded but not used.
+struct SensorControl {
+  std::uint16_t viewId = 0;
+  std::uint8_t sensorId = 0;
+  bool sensorOn = false;
+  SensorPolarity polarity = SensorPolarity::whiteHot;
+  bool lineDropoutEnable = false;
+  bool automaticGain = false;
+  bool trackBlack = false;           // track white/black: false = white
+  std::uint8_t trackMode = 0;        // 3 bits: 0 off, 1 force correlate, 2 scene, 3 target, 4 ship, 5-7 IG-defined
+  bool gateAndTargetResponse = false;  // response type: false = gate position only
+  float gain = 0.0f;
+  float level = 0.0f;
+  float acCoupling = 0.0f;
+  float noise = 0.0f;
+  bool operator==(const SensorControl&) const = default;
+};
+
 // --- IG to host ------------------------------------------------------------------------------
 
 // Start of Frame (id 101, 24 bytes in 3.2/3.3). First packet of every IG-to-host message.
@@ -230,7 +254,7 @@ struct StartOfFrame {
 
 using Packet = std::variant<IgControl, EntityControl, RateControl, CelestialSphereControl,
                             AtmosphereControl, EnvironmentalRegionControl, WeatherControl,
-                            ViewControl, ViewDefinition, StartOfFrame>;
+                            ViewControl, ViewDefinition, SensorControl, StartOfFrame>;
 
 // Number of alternatives of Packet, for per-type counters indexed by Packet::index().
 inline constexpr std::size_t kPacketTypeCount = std::variant_size_v<Packet>;
@@ -249,6 +273,7 @@ inline constexpr std::uint16_t kCigi4CelestialSphereControl = 0x0008;
 inline constexpr std::uint16_t kCigi4AtmosphereControl = 0x0009;
 inline constexpr std::uint16_t kCigi4ViewControl = 0x000F;
 inline constexpr std::uint16_t kCigi4ViewDefinition = 0x0014;
+inline constexpr std::uint16_t kCigi4SensorControl = 0x0010;
 inline constexpr std::uint16_t kCigi4StartOfFrame = 0xFFFF;
 // The CIGI 4 id and size of a packet type (size 0: no CIGI 4 mapping in skyig), and the
 // variant index a CIGI 4 id decodes to (kPacketTypeCount: none).

@@ -144,6 +144,40 @@ TEST(Cigi4, ViewControlAndViewDefinition) {
   EXPECT_EQ(std::get<ViewDefinition>(m.packets[2]), d);
 }
 
+// CCL 4.0 CigiSensorCtrlV4.cpp: size 32, id 0x10, sensor id at 4, the 3.3 flag bytes at 5
+// and 6, byte 7 reserved, the view id at 8, bytes 10-11 reserved, the four floats from 12,
+// bytes 28-31 reserved.
+TEST(Cigi4, SensorControl) {
+  SensorControl s;
+  s.viewId = 3;
+  s.sensorId = 2;
+  s.sensorOn = true;
+  s.polarity = SensorPolarity::blackHot;
+  s.automaticGain = true;
+  s.trackBlack = true;
+  s.trackMode = 3;
+  s.gateAndTargetResponse = true;
+  s.gain = 0.5f;
+  s.level = 0.25f;
+  s.acCoupling = 1.0f;
+  s.noise = 0.125f;
+  const auto be = hexBytes("00 20 00 10 02 7B 01 00 | 00 03 00 00 3F 00 00 00 | 3E 80 00 00 3F 80 00 00 |"
+                           "3E 00 00 00 00 00 00 00");
+  const auto le = hexBytes("20 00 10 00 02 7B 01 00 | 03 00 00 00 00 00 00 3F | 00 00 80 3E 00 00 80 3F |"
+                           "00 00 00 3E 00 00 00 00");
+  EXPECT_EQ(toHex(encode4(s, ByteOrder::big)), toHex(be));
+  EXPECT_EQ(toHex(encode4(s, ByteOrder::little)), toHex(le));
+  for (const auto order : {ByteOrder::big, ByteOrder::little}) {
+    std::vector<std::uint8_t> b = encode4(ig4(), order);
+    const auto& bytes = order == ByteOrder::big ? be : le;
+    b.insert(b.end(), bytes.begin(), bytes.end());
+    const DecodedMessage m = decodeMessage(b);
+    ASSERT_TRUE(m.ok()) << m.error->describe();
+    ASSERT_EQ(m.packets.size(), 2u);
+    EXPECT_EQ(std::get<SensorControl>(m.packets[1]), s);
+  }
+}
+
 TEST(Cigi4, StartOfFrame) {
   StartOfFrame s;
   s.databaseNumber = -2;

@@ -24,7 +24,7 @@ TEST(CigiCodec, EveryPacketTypeRoundTripsInBothByteOrders) {
   for (ByteOrder order : {ByteOrder::big, ByteOrder::little}) {
     std::vector<std::uint8_t> b;
     ASSERT_EQ(encodeMessage(packets, order, b), "");
-    EXPECT_EQ(b.size(), 24u + 48 + 32 + 16 + 32 + 48 + 56 + 32 + 32 + 24);
+    EXPECT_EQ(b.size(), 24u + 48 + 32 + 16 + 32 + 48 + 56 + 32 + 32 + 24 + 24);
     const DecodedMessage d = decodeMessage(b);
     ASSERT_TRUE(d.ok()) << d.error->describe();
     EXPECT_EQ(d.byteOrder, order);

@@ -243,6 +243,35 @@ TEST(CigiLayout, ViewDefinition) {
                   "41 F0 00 00 C1 A0 00 00");
 }
 
+// CIGI ICD 3.3 / CCL CigiSensorCtrlV3.cpp: view id at 2, sensor id at 4, the flags at 5
+// (on/off bit 0, polarity 1, line dropout 2, automatic gain 3, track white/black 4, track
+// mode 5-7), response type at 6 bit 0, byte 7 reserved, then gain, level, AC coupling, noise.
+TEST(CigiLayout, SensorControl) {
+  SensorControl s;
+  s.viewId = 3;
+  s.sensorId = 2;
+  s.sensorOn = true;
+  s.polarity = SensorPolarity::blackHot;
+  s.automaticGain = true;
+  s.trackBlack = true;
+  s.trackMode = 3;
+  s.gateAndTargetResponse = true;
+  s.gain = 0.5f;
+  s.level = 0.25f;
+  s.acCoupling = 1.0f;
+  s.noise = 0.125f;
+  // byte 5: on 0x01 | black hot 0x02 | automatic gain 0x08 | track black 0x10 | mode 3 << 5 = 0x7B
+  expectLayout(s, "11 18 00 03 02 7B 01 00 | 3F 00 00 00 3E 80 00 00 | 3F 80 00 00 3E 00 00 00");
+  SensorControl off;
+  off.viewId = 0x0102;
+  off.lineDropoutEnable = true;  // bit 2 alone: the other flags and the floats are zero
+  expectLayout(off, "11 18 01 02 00 04 00 00 | 00 00 00 00 00 00 00 00 | 00 00 00 00 00 00 00 00");
+  // Little-endian: the view id and the floats swap, the flag bytes do not.
+  std::vector<std::uint8_t> le;
+  ASSERT_EQ(appendPacket(le, s, ByteOrder::little), "");
+  EXPECT_EQ(toHex(le), toHex(hexBytes("11 18 03 00 02 7B 01 00 | 00 00 00 3F 00 00 80 3E | 00 00 80 3F 00 00 00 3E")));
+}
+
 TEST(CigiLayout, StartOfFrame) {
   StartOfFrame s;
   s.databaseNumber = -2;  // the IG negates the number while it loads the database
@@ -276,6 +305,9 @@ TEST(CigiLayout, BitFieldOverflowIsRejectedNamingTheField) {
   ViewDefinition v;
   v.viewType = 8;
   EXPECT_EQ(appendPacket(b, v, ByteOrder::big), "View Definition: View Type = 8 does not fit in 3 bits");
+  SensorControl s;
+  s.trackMode = 8;
+  EXPECT_EQ(appendPacket(b, s, ByteOrder::big), "Sensor Control: Track Mode = 8 does not fit in 3 bits");
 }
 
 }  // namespace

@@ -69,12 +69,20 @@ inline std::vector<Packet> everyPacketType() {
   vd.farM = 1e6f;
   vd.mirrorMode = MirrorMode::both;
   vd.orthographic = true;
+  SensorControl sc;
+  sc.viewId = 1;
+  sc.sensorId = 7;
+  sc.sensorOn = true;
+  sc.automaticGain = false;
+  sc.trackMode = 4;
+  sc.gain = 0.375f;
+  sc.noise = 0.5f;
   StartOfFrame s;
   s.igFrameNumber = 99;
   s.lastHostFrameNumber = 98;
   s.hostDefinedEarthModel = true;
   s.igMode = IgMode::debug;
-  return {ig, e, r, c, a, er, w, vc, vd, s};
+  return {ig, e, r, c, a, er, w, vc, vd, sc, s};
 }
 
 }  // namespace skyig::protocol::cigi::test

@@ -103,7 +103,8 @@ TEST(ExternalTools, TsharkDecodesSkyigCigiPcapWithTheValuesWritten) {
   const auto& wc = std::get<cigi::WeatherControl>(sample[6]);
   const auto& vc = std::get<cigi::ViewControl>(sample[7]);
   const auto& vd = std::get<cigi::ViewDefinition>(sample[8]);
-  const auto& sof = std::get<cigi::StartOfFrame>(sample[9]);
+  const auto& sc = std::get<cigi::SensorControl>(sample[9]);
+  const auto& sof = std::get<cigi::StartOfFrame>(sample[10]);
   const std::vector<std::string> fields{
       "cigi.byte_swap", "cigi.ig_control.db_number", "cigi.ig_control.host_frame_number",
       "cigi.ig_control.timestamp", "cigi.ig_control.last_ig_frame_number", "cigi.ig_control.minor_version",
@@ -122,7 +123,9 @@ TEST(ExternalTools, TsharkDecodesSkyigCigiPcapWithTheValuesWritten) {
       "cigi.weather_control.scope", "cigi.view_control.view_id", "cigi.view_control.group_id",
       "cigi.view_control.yaw", "cigi.view_control.zoff", "cigi.view_def.view_id", "cigi.view_def.left",
       "cigi.view_def.right", "cigi.view_def.top", "cigi.view_def.bottom", "cigi.view_def.far",
-      "cigi.view_def.mirror_mode", "cigi.view_def.projection_type", "cigi.sof.ig_frame_number",
+      "cigi.view_def.mirror_mode", "cigi.view_def.projection_type", "cigi.sensor_control.view_id",
+      "cigi.sensor_control.sensor_id", "cigi.sensor_control.sensor_on_off", "cigi.sensor_control.auto_gain",
+      "cigi.sensor_control.track_mode", "cigi.sensor_control.gain", "cigi.sensor_control.noise", "cigi.sof.ig_frame_number",
       "cigi.sof.last_host_frame_number", "cigi.sof.ig_mode", "cigi.sof.earth_reference_model",
       "cigi.sof.minor_version"};
   for (ByteOrder order : {ByteOrder::big, ByteOrder::little}) {
@@ -179,6 +182,13 @@ TEST(ExternalTools, TsharkDecodesSkyigCigiPcapWithTheValuesWritten) {
     EXPECT_NEAR(num(h, "cigi.view_def.far"), vd.farM, 1.0);
     EXPECT_EQ(num(h, "cigi.view_def.mirror_mode"), static_cast<int>(vd.mirrorMode));
     EXPECT_EQ(num(h, "cigi.view_def.projection_type"), 1);
+    EXPECT_EQ(num(h, "cigi.sensor_control.view_id"), sc.viewId);
+    EXPECT_EQ(num(h, "cigi.sensor_control.sensor_id"), sc.sensorId);
+    EXPECT_EQ(num(h, "cigi.sensor_control.sensor_on_off"), 1);
+    EXPECT_EQ(num(h, "cigi.sensor_control.auto_gain"), 0);
+    EXPECT_EQ(num(h, "cigi.sensor_control.track_mode"), sc.trackMode);
+    EXPECT_NEAR(num(h, "cigi.sensor_control.gain"), sc.gain, 1e-6);
+    EXPECT_NEAR(num(h, "cigi.sensor_control.noise"), sc.noise, 1e-6);
     const auto& s = rows[1];
     EXPECT_EQ(num(s, "cigi.sof.ig_frame_number"), sof.igFrameNumber);
     EXPECT_EQ(num(s, "cigi.sof.last_host_frame_number"), sof.lastHostFrameNumber);
@@ -198,7 +208,7 @@ TEST(ExternalTools, TcpdumpReadsSkyigPcap) {
   if (!haveTool("tcpdump")) GTEST_SKIP() << "tcpdump not installed (apt-get install tcpdump): check skipped";
   const std::string path = writeCigiPcap(ByteOrder::little);
   const std::string out = run("tcpdump -n -r " + path);
-  EXPECT_NE(out.find("10.0.0.1.8005 > 10.0.0.2.8004: UDP, length 320"), std::string::npos) << out;
+  EXPECT_NE(out.find("10.0.0.1.8005 > 10.0.0.2.8004: UDP, length 344"), std::string::npos) << out;
   EXPECT_NE(out.find("10.0.0.2.8004 > 10.0.0.1.8005: UDP, length 24"), std::string::npos) << out;
   // tcpdump -vv verifies the UDP checksums it can.
   const std::string verbose = run("tcpdump -vv -n -r " + path);

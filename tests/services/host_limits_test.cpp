@@ -43,11 +43,19 @@ TEST(ViewTable, ViewIdsAtOrAboveTheMaximumAreCountedAndDropped) {
   EXPECT_EQ(*t.state().views.find(3)->yawDeg, 10.0);
   EXPECT_EQ(*t.state().views.find(0)->yawDeg, 40.0);
   EXPECT_EQ(t.state().views.find(4), nullptr);
+  // Sensor Control (a view's goggle) is bounded alike.
+  cigi::SensorControl goggle;
+  goggle.sensorOn = true;
+  goggle.viewId = 4;
+  m.packets = {ig, goggle};
+  t.apply(m, Clock::now());
+  EXPECT_EQ(t.droppedViews(), 3u);
+  EXPECT_EQ(t.state().views.find(4), nullptr);
   // The configured maximum never exceeds the table.
   t.setMaxViews(1000);
   m.packets = {ig, viewControl(kViewTableCapacity, 1.0f)};
   t.apply(m, Clock::now());
-  EXPECT_EQ(t.droppedViews(), 3u);
+  EXPECT_EQ(t.droppedViews(), 4u);
 }
 
 // A host at 60 Hz and, on the same port, two 65 KB datagrams a second each holding ~2000 View

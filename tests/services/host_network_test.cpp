@@ -1,8 +1,10 @@
 // The host link on real loopback sockets: the CIGI receiver thread fed by hosts that restart,
 // strangers and spoofers (127.0.0.2 is another address on loopback), a host whose datagrams
-// come in bursts of two, and `skyig serve` processes competing for a port.
+// come in bursts of two, a host switching a channel's goggle with Sensor Control, and
+// `skyig serve` processes competing for a port.
 #include "protocol/cigi/encoder.h"
 #include "services/cigi_receiver.h"
+#include "services/sky_worker.h"
 
 #include "tests/services/test_support.h"
 
@@ -286,4 +288,101 @@ TEST(HostNetwork, MulticastInterfaceIsNamedWhenRefused) {
   }
   UdpSocket host({"127.0.0.1", 0});
   EXPECT_THROW(host.sendMulticastThrough("127.0.0.1", 256), NetworkError);
+}
+
+namespace {
+
+// A host message switching view `view`'s sensor (the channel's goggle).
+void sendSensorControl(UdpSocket& host, const sockaddr_in& to, std::uint32_t frame, std::uint16_t view, bool on,
+                       bool automaticGain, float gain) {
+  cigi::IgControl ig;
+  ig.hostFrameNumber = frame;
+  cigi::SensorControl s;
+  s.viewId = view;
+  s.sensorId = 3;  // any id: skyig's one sensor per view is the goggle
+  s.sensorOn = on;
+  s.automaticGain = automaticGain;
+  s.gain = gain;
+  const cigi::Packet packets[] = {ig, s};
+  std::vector<std::uint8_t> bytes;
+  ASSERT_EQ(cigi::encodeMessage(packets, skyig::protocol::ByteOrder::big, bytes), "");
+  ASSERT_TRUE(host.sendTo(bytes, to));
+}
+
+// Three channels: the eye's; a class B goggle that starts switched off, on automatic gain; a
+// class A goggle switched on from the start.
+NodeConfig goggleConfig() {
+  return parseNodeConfig("[[channel]]\nname = \"front\"\n[[channel]]\nname = \"nvg\"\nyaw = 30\n"
+                         "[channel.goggle]\nclass = \"B\"\nphosphor = \"P45\"\n"
+                         "[[channel]]\nname = \"nvg-on\"\n[channel.goggle]\non = true\n",
+                         "goggle.toml");
+}
+
+}  // namespace
+
+// CIGI Sensor Control for view 1 switches the node's second channel into goggle mode (the
+// configured class B, the packet's gain without automatic gain) and a later Off back to the
+// eye's band; Off also switches off the third channel's goggle, on from the configuration;
+// channel 0 is never touched. Through the receiver thread and the frame's pose as the render
+// thread takes it (SkyWorker::poseAt).
+TEST(CigiSensorControl, SwitchesTheViewsChannelIntoGoggleModeAndBack) {
+  const NodeConfig config = goggleConfig();
+  ASSERT_EQ(config.channels.size(), 3u);
+  ASSERT_FALSE(skyig::sky::isGoggle(config.channels[1]));
+  ASSERT_EQ(config.channels[2].band, skyig::sky::SpectralBand::NvisClassA);
+  NodeStats workerStats;
+  const SkyWorker worker(config, nullptr, workerStats);
+  Receiver node;
+  UdpSocket host({"127.0.0.1", 0});
+
+  sendSensorControl(host, node.address(), 1, 1, /*on=*/true, /*automaticGain=*/false, 0.375f);
+  ASSERT_TRUE(node.handled(1));
+  FramePose pose = worker.poseAt(node.latest.get().get(), Clock::now(), config.channels);
+  ASSERT_EQ(pose.channels.size(), 3u);
+  EXPECT_EQ(pose.channels[1].band, skyig::sky::SpectralBand::NvisClassB);
+  EXPECT_TRUE(skyig::sky::isGoggle(pose.channels[1]));
+  EXPECT_FALSE(pose.channels[1].goggle.automaticGain);
+  EXPECT_EQ(pose.channels[1].goggle.gain, 0.375);
+  EXPECT_EQ(pose.channels[1].goggle.phosphor, skyig::sky::Phosphor::P45);
+  EXPECT_EQ(pose.channels[1].offset.yawDeg, 30.0);  // the rest of the channel is the configuration's
+  EXPECT_EQ(pose.channels[0].band, skyig::sky::SpectralBand::Visible);
+  EXPECT_EQ(pose.channels[0].goggle, config.channels[0].goggle);
+  EXPECT_EQ(pose.channels[2].band, skyig::sky::SpectralBand::NvisClassA);  // no packet for view 2 yet
+
+  sendSensorControl(host, node.address(), 2, 1, /*on=*/false, /*automaticGain=*/true, 0.0f);
+  sendSensorControl(host, node.address(), 3, 2, /*on=*/false, /*automaticGain=*/true, 0.0f);
+  ASSERT_TRUE(node.handled(3));
+  pose = worker.poseAt(node.latest.get().get(), Clock::now(), config.channels);
+  EXPECT_EQ(pose.channels[2].band, skyig::sky::SpectralBand::Visible);
+  EXPECT_EQ(pose.channels[1].band, skyig::sky::SpectralBand::Visible);
+  EXPECT_TRUE(pose.channels[1].goggle.automaticGain);
+  EXPECT_EQ(pose.channels[1].goggle.gain, 0.375);  // gain 0 (sent with automatic gain) keeps the last
+  EXPECT_EQ(node.stats.rejectedValues.load(), 0u);
+  EXPECT_EQ(node.stats.malformedDatagrams.load(), 0u);
+}
+
+// A NaN or out-of-range gain is counted and dropped; the packet's On/Off still applies, and the
+// goggle keeps its last good gain.
+TEST(CigiSensorControl, NanGainIsCountedAndDroppedWithoutLosingTheSwitch) {
+  const NodeConfig config = goggleConfig();
+  NodeStats workerStats;
+  const SkyWorker worker(config, nullptr, workerStats);
+  Receiver node;
+  UdpSocket host({"127.0.0.1", 0});
+
+  sendSensorControl(host, node.address(), 1, 1, /*on=*/true, /*automaticGain=*/false, std::nanf(""));
+  ASSERT_TRUE(node.handled(1));
+  EXPECT_EQ(node.stats.rejectedValues.load(), 1u);
+  FramePose pose = worker.poseAt(node.latest.get().get(), Clock::now(), config.channels);
+  EXPECT_EQ(pose.channels[1].band, skyig::sky::SpectralBand::NvisClassB);
+  EXPECT_FALSE(pose.channels[1].goggle.automaticGain);
+  EXPECT_EQ(pose.channels[1].goggle.gain, config.channels[1].goggle.gain);  // the configured gain
+
+  sendSensorControl(host, node.address(), 2, 1, /*on=*/true, /*automaticGain=*/false, 0.5f);
+  sendSensorControl(host, node.address(), 3, 1, /*on=*/false, /*automaticGain=*/false, 1.5f);
+  ASSERT_TRUE(node.handled(3));
+  EXPECT_EQ(node.stats.rejectedValues.load(), 2u);
+  pose = worker.poseAt(node.latest.get().get(), Clock::now(), config.channels);
+  EXPECT_EQ(pose.channels[1].band, skyig::sky::SpectralBand::Visible);
+  EXPECT_EQ(pose.channels[1].goggle.gain, 0.5);  // 1.5 dropped, the last good gain kept
 }

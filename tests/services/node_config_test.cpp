@@ -76,6 +76,8 @@ TEST(NodeConfig, DocumentedDefaultsEqualBuiltInDefaults) {
   EXPECT_EQ(a.display.ambientLuminance, b.display.ambientLuminance);
   EXPECT_EQ(a.display.gamma, b.display.gamma);
   EXPECT_EQ(a.display.adaptationLuminance, b.display.adaptationLuminance);
+  EXPECT_EQ(a.band, b.band);
+  EXPECT_EQ(a.goggle, b.goggle);
 }
 
 TEST(NodeConfig, DomeHasFiveChannelsWithChinWindows) {
@@ -236,5 +238,68 @@ TEST(NodeConfig, ProjectorTableErrorsNameTheKey) {
   EXPECT_NE(errorOf("[[channel]]\nwidth = 640\n[channel.projector]\nbourke_mesh = \"b\"\n").find("both width and height"),
             std::string::npos);
   EXPECT_NE(errorOf("[[channel]]\n[channel.projector]\nbourke_mesh = \"b\"\nregoin = \"r\"\n").find("unknown key"),
+            std::string::npos);
+}
+
+// [channel.goggle] makes a channel a night-vision goggle: `on` switches it on from the start
+// (the channel's band is then the goggle's class); without `on` it waits for the host's
+// Sensor Control. A channel without the table keeps the eye's band and the default goggle.
+TEST(NodeConfig, GoggleTableIsReadAndOnSetsTheChannelsBand) {
+  const NodeConfig c = parseNodeConfig(
+      "[[channel]]\nname = \"left\"\n[channel.goggle]\non = true\nclass = \"B\"\nphosphor = \"P45\"\n"
+      "fov_deg = 51.5\ngain = 0.25\n"
+      "[[channel]]\nname = \"right\"\n[channel.goggle]\n"
+      "[[channel]]\nname = \"plain\"\n",
+      "nvg.toml");
+  ASSERT_EQ(c.channels.size(), 3u);
+  const skyig::sky::ChannelConfig& left = c.channels[0];
+  EXPECT_EQ(left.band, skyig::sky::SpectralBand::NvisClassB);
+  EXPECT_TRUE(skyig::sky::isGoggle(left));
+  EXPECT_EQ(left.goggle.nvisClass, skyig::sky::SpectralBand::NvisClassB);
+  EXPECT_EQ(left.goggle.phosphor, skyig::sky::Phosphor::P45);
+  EXPECT_EQ(left.goggle.fieldOfViewDeg, 51.5);
+  EXPECT_FALSE(left.goggle.automaticGain);
+  EXPECT_EQ(left.goggle.gain, 0.25);
+  const skyig::sky::ChannelConfig& right = c.channels[1];  // a goggle the host can switch on
+  EXPECT_FALSE(skyig::sky::isGoggle(right));
+  EXPECT_EQ(right.goggle, skyig::sky::GoggleParams{});
+  EXPECT_EQ(right.goggle.nvisClass, skyig::sky::SpectralBand::NvisClassA);
+  EXPECT_EQ(right.goggle.phosphor, skyig::sky::Phosphor::P43);
+  EXPECT_EQ(right.goggle.fieldOfViewDeg, 40.0);
+  EXPECT_TRUE(right.goggle.automaticGain);
+  EXPECT_FALSE(skyig::sky::isGoggle(c.channels[2]));
+  const NodeConfig autoGain =
+      parseNodeConfig("[[channel]]\n[channel.goggle]\non = true\ngain = \"auto\"\nfov_deg = 40\n", "nvg.toml");
+  EXPECT_EQ(autoGain.channels[0].band, skyig::sky::SpectralBand::NvisClassA);
+  EXPECT_TRUE(autoGain.channels[0].goggle.automaticGain);
+  EXPECT_EQ(autoGain.channels[0].goggle.fieldOfViewDeg, 40.0);
+  EXPECT_EQ(parseNodeConfig("[[channel]]\n[channel.goggle]\ngain = 1\n", "nvg.toml").channels[0].goggle.gain, 1.0);
+}
+
+// Each bad goggle value is refused with the file, the line, the key and the value.
+TEST(NodeConfig, GoggleTableErrorsNameTheLineAndTheValue) {
+  EXPECT_EQ(errorOf("[[channel]]\n[channel.goggle]\non = \"yes\"\n"),
+            "bad.toml:3: channel[0].goggle.on: expected true or false, got 'yes'");
+  EXPECT_EQ(errorOf("[[channel]]\n[channel.goggle]\nclass = \"C\"\n"),
+            "bad.toml:3: channel[0].goggle.class: expected \"A\" or \"B\" (MIL-STD-3009 NVIS class), got \"C\"");
+  EXPECT_EQ(errorOf("[[channel]]\n[channel.goggle]\nclass = 1\n"),
+            "bad.toml:3: channel[0].goggle.class: expected \"A\" or \"B\", got 1");
+  EXPECT_EQ(errorOf("[[channel]]\n[channel.goggle]\nphosphor = \"P20\"\n"),
+            "bad.toml:3: channel[0].goggle.phosphor: expected \"P43\" or \"P45\", got \"P20\"");
+  EXPECT_EQ(errorOf("[[channel]]\n[channel.goggle]\nfov_deg = 0\n"),
+            "bad.toml:3: channel[0].goggle.fov_deg: expected a circular field of view in degrees in (0, 180), got 0");
+  EXPECT_EQ(errorOf("[[channel]]\n[channel.goggle]\n\nfov_deg = 180.0\n"),
+            "bad.toml:4: channel[0].goggle.fov_deg: expected a circular field of view in degrees in (0, 180), got 180.0");
+  EXPECT_NE(errorOf("[[channel]]\n[channel.goggle]\nfov_deg = nan\n").find("bad.toml:3: channel[0].goggle.fov_deg: expected"),
+            std::string::npos);
+  EXPECT_EQ(errorOf("[[channel]]\n[channel.goggle]\ngain = 0\n"),
+            "bad.toml:3: channel[0].goggle.gain: expected \"auto\" or a fraction of the maximum gain in (0, 1], got 0");
+  EXPECT_EQ(errorOf("[[channel]]\n[channel.goggle]\ngain = 1.5\n"),
+            "bad.toml:3: channel[0].goggle.gain: expected \"auto\" or a fraction of the maximum gain in (0, 1], got 1.5");
+  EXPECT_EQ(errorOf("[[channel]]\n[channel.goggle]\ngain = \"manual\"\n"),
+            "bad.toml:3: channel[0].goggle.gain: expected \"auto\" or a fraction of the maximum gain in (0, 1], got 'manual'");
+  EXPECT_NE(errorOf("[[channel]]\n[channel.goggle]\nfov = 40\n").find("bad.toml:3: channel[0].goggle.fov: unknown key"),
+            std::string::npos);
+  EXPECT_NE(errorOf("[[channel]]\ngoggle = true\n").find("bad.toml:2: channel[0].goggle: expected a table [goggle]"),
             std::string::npos);
 }

@@ -3,6 +3,7 @@
 #include "render/gl/mip_chain.h"
 #include "shaders/common/bindings.h"
 #include "shaders/common/uniforms.h"
+#include "shaders/common/goggle_uniforms.h"
 #include "shaders/goggle/goggle_physics.h"
 #include "shaders/physics.h"
 
@@ -104,19 +105,19 @@ void GogglePass::draw(GLuint nvisImage, const skyig::sky::ChannelConfig& channel
   lastFieldFraction_ = g.fieldFraction;
 
   GoggleBlock b{};
-  b.tube = glm::vec4(0.5f * static_cast<float>(channel.width), 0.5f * static_cast<float>(channel.height),
+  b.goggleTube = glm::vec4(0.5f * static_cast<float>(channel.width), 0.5f * static_cast<float>(channel.height),
                      static_cast<float>(g.radiusPx), static_cast<float>(g.fieldFraction));
-  b.cathode = glm::vec4(static_cast<float>(shader::cathodeIlluminance(1.0 / nvisPerCdM2OfIlluminantA)),
+  b.goggleCathode = glm::vec4(static_cast<float>(shader::cathodeIlluminance(1.0 / nvisPerCdM2OfIlluminantA)),
                         static_cast<float>(g.electronsPerLux), static_cast<float>(g.haloSigmaPx),
                         static_cast<float>(kCoarsePx));
   const skyig::sky::GoggleParams& p = channel.goggle;
-  b.gain = glm::vec4(p.automaticGain ? 1.0f : 0.0f, static_cast<float>(p.gain), screenLuminance ? 1.0f : 0.0f, 0.0f);
-  b.phosphor = glm::vec4(glm::vec3(phosphorRec709(p.phosphor)), 0.0f);
+  b.goggleGain = glm::vec4(p.automaticGain ? 1.0f : 0.0f, static_cast<float>(p.gain), screenLuminance ? 1.0f : 0.0f, 0.0f);
+  b.gogglePhosphor = glm::vec4(glm::vec3(phosphorRec709(p.phosphor)), 0.0f);
   // The 3 x 3 Gaussian of the tube's modulation transfer, normalised.
   const double s2 = std::max(g.mtfSigmaPx * g.mtfSigmaPx, 1e-6);
   const double edge = std::exp(-1.0 / (2.0 * s2)), corner = std::exp(-1.0 / s2);
   const double sum = 1.0 + 4.0 * edge + 4.0 * corner;
-  b.mtf = glm::vec4(static_cast<float>(1.0 / sum), static_cast<float>(edge / sum), static_cast<float>(corner / sum), 0.0f);
+  b.goggleMtf = glm::vec4(static_cast<float>(1.0 / sum), static_cast<float>(edge / sum), static_cast<float>(corner / sum), 0.0f);
   block_.upload(b);
   block_.bind();
 

@@ -40,17 +40,6 @@ SKYIG_UBO_BEGIN(ToneBlock, SKYIG_BINDING_TONE)
   SKYIG_VEC4 glareCoefficients;  // the observer's veil equation (tone/glare.glsl veilCoefficients)
 SKYIG_UBO_END(ToneBlock)
 
-// A goggle channel's image intensifier (passes/goggle*.frag, render/passes/goggle_pass.h,
-// goggle/intensifier.glsl).
-SKYIG_UBO_BEGIN(GoggleBlock, SKYIG_BINDING_GOGGLE)
-  SKYIG_VEC4 tube;        // xy: the field's centre (pixels); z: its radius (pixels); w: the fraction of the channel inside it
-  SKYIG_VEC4 cathode;     // x: cathode lux per W m^-2 sr^-1 of NVIS radiance; y: photoelectrons per cathode lux in a pixel
-                          // and a frame; z: the halo's Gaussian sigma (pixels); w: the halo target's texel (pixels)
-  SKYIG_VEC4 gain;        // x: 1 automatic brightness control, 0 manual; y: the manual gain, of the maximum;
-                          // z: 1 show the screen's cd/m^2 (tests, EXR), 0 display values
-  SKYIG_VEC4 phosphor;    // rgb: the phosphor's linear Rec.709 colour of luminance 1
-  SKYIG_VEC4 mtf;         // x, y, z: 3x3 weights of the centre, the edges and the corners
-SKYIG_UBO_END(GoggleBlock)
 // The warp-and-blend pass of a projector (passes/warp_blend.frag, tone/projector_blend.glsl).
 SKYIG_UBO_BEGIN(ProjectorBlock, SKYIG_BINDING_PROJECTOR)
   SKYIG_VEC4 projector;  // width, height (pixels), 1/width, 1/height

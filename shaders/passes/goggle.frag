@@ -7,6 +7,7 @@
 // housing, black. The noise is a hash of the pixel and the frame's seed, so a frame drawn again
 // (a replay) is the same to the bit.
 #include "common/uniforms.h"
+#include "common/goggle_uniforms.h"
 #include "goggle/intensifier.glsl"
 #include "tone/display_curve.glsl"
 #include "common/dither.glsl"
@@ -51,25 +52,25 @@ float cathodeAt(ivec2 p) {
 }
 
 void main() {
-  vec2 d = gl_FragCoord.xy - tube.xy;
-  if (dot(d, d) > tube.z * tube.z) {
+  vec2 d = gl_FragCoord.xy - goggleTube.xy;
+  if (dot(d, d) > goggleTube.z * goggleTube.z) {
     outDisplay = vec4(0.0, 0.0, 0.0, 1.0);
     return;
   }
   ivec2 p = ivec2(gl_FragCoord.xy);
-  float sharp = mtf.x * cathodeAt(p) +
-                mtf.y * (cathodeAt(p + ivec2(1, 0)) + cathodeAt(p - ivec2(1, 0)) + cathodeAt(p + ivec2(0, 1)) + cathodeAt(p - ivec2(0, 1))) +
-                mtf.z * (cathodeAt(p + ivec2(1, 1)) + cathodeAt(p - ivec2(1, 1)) + cathodeAt(p + ivec2(1, -1)) + cathodeAt(p + ivec2(-1, 1)));
-  float halo = exp(texture(haloLogImage, gl_FragCoord.xy / (cathode.w * vec2(textureSize(haloLogImage, 0)))).r);
+  float sharp = goggleMtf.x * cathodeAt(p) +
+                goggleMtf.y * (cathodeAt(p + ivec2(1, 0)) + cathodeAt(p - ivec2(1, 0)) + cathodeAt(p + ivec2(0, 1)) + cathodeAt(p - ivec2(0, 1))) +
+                goggleMtf.z * (cathodeAt(p + ivec2(1, 1)) + cathodeAt(p - ivec2(1, 1)) + cathodeAt(p + ivec2(1, -1)) + cathodeAt(p + ivec2(-1, 1)));
+  float halo = exp(texture(haloLogImage, gl_FragCoord.xy / (goggleCathode.w * vec2(textureSize(haloLogImage, 0)))).r);
   float lux = (1.0 - kHaloFraction) * sharp + kHaloFraction * halo;
   float g = texelFetch(gainImage, ivec2(0), 0).r;
-  float electrons = lux * cathode.y;
+  float electrons = lux * goggleCathode.y;
   uint state = pcgHash(uint(p.x) + pcgHash(uint(p.y) + pcgHash(uSeed)));
   float k = poissonCount(electrons, state);
   float seen = electrons > 0.0 ? lux * max(1.0 + sqrt(kExcessNoiseFactor) * (k - electrons) / electrons, 0.0) : 0.0;
   float screen = min(g * seen, kScreenSaturationCdM2);
-  vec3 rgb = phosphor.rgb * screen;
-  if (gain.z > 0.5) {
+  vec3 rgb = gogglePhosphor.rgb * screen;
+  if (goggleGain.z > 0.5) {
     outDisplay = vec4(rgb, 1.0);
     return;
   }

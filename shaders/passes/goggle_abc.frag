@@ -6,6 +6,7 @@
 // found by bisection in log g on the 8 x 8 means' mip level `uLevel` (a few thousand texels;
 // a bright source inside one of them is diluted there, which only lets it weigh less).
 #include "common/uniforms.h"
+#include "common/goggle_uniforms.h"
 #include "goggle/intensifier.glsl"
 
 layout(binding = SKYIG_UNIT_GOGGLE_COARSE) uniform sampler2D coarseImage;
@@ -17,12 +18,12 @@ float screenMean(float g) {
   float sum = 0.0;
   for (int y = 0; y < size.y; ++y)
     for (int x = 0; x < size.x; ++x) sum += min(g * texelFetch(coarseImage, ivec2(x, y), uLevel).r, kScreenSaturationCdM2);
-  return sum / (float(size.x * size.y) * tube.w);
+  return sum / (float(size.x * size.y) * goggleTube.w);
 }
 
 void main() {
-  if (gain.x < 0.5) {  // manual
-    outGain = vec4(intensifierGain(0.0, false, gain.y), 0.0, 0.0, 1.0);
+  if (goggleGain.x < 0.5) {  // manual
+    outGain = vec4(intensifierGain(0.0, false, goggleGain.y), 0.0, 0.0, 1.0);
     return;
   }
   float hi = kMaxLuminanceGain;

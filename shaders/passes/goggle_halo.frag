@@ -6,6 +6,7 @@
 // bilinearly in log (quadratic in the distance for a Gaussian) its edge stays round where a
 // linear read drew the 8-pixel grid.
 #include "common/uniforms.h"
+#include "common/goggle_uniforms.h"
 
 layout(binding = SKYIG_UNIT_GOGGLE_COARSE) uniform sampler2D coarseImage;
 uniform vec2 uDirection;
@@ -14,7 +15,7 @@ layout(location = SKYIG_OUTPUT_COLOR) out vec4 outHalo;
 
 void main() {
   vec2 size = vec2(textureSize(coarseImage, 0));
-  float sigma = max(cathode.z / cathode.w, 0.3);  // coarse texels
+  float sigma = max(goggleCathode.z / goggleCathode.w, 0.3);  // coarse texels
   int reach = int(ceil(3.0 * sigma));
   float sum = 0.0, weights = 0.0;
   for (int i = -reach; i <= reach; ++i) {

@@ -57,11 +57,13 @@ struct ProgramCase {
 std::vector<ProgramCase> programs() {
   const Expect frame = block("FrameBlock", SKYIG_BINDING_FRAME);
   const Expect radiance = output("outRadiance", SKYIG_OUTPUT_COLOR);
+  const Expect band = block("BandBlock", SKYIG_BINDING_BAND);
   // The physical sky pass's inputs; what a variant does not read is allowed to be inactive (the
   // 3D tables always are inside the atmosphere: it reads this frame's slices of them).
   auto physicalSky = [&](bool transmittance, bool irradiance, bool moon) {
     auto needed = [](bool read, Expect e) { return read ? e : optional(e); };
-    return std::vector<Expect>{frame,
+    // The band block: every variant reads it but the frozen reference, which predates it.
+    return std::vector<Expect>{frame, optional(band),
                                needed(transmittance, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE)),
                                optional(sampler("scatteringPacked", SKYIG_UNIT_SCATTERING)),
                                optional(sampler("singleMieRG", SKYIG_UNIT_SINGLE_MIE)),
@@ -75,7 +77,7 @@ std::vector<ProgramCase> programs() {
   std::vector<ProgramCase> cases = {
       // SkyRenderer: the analytic sky and the tone pass.
       {{"passes/fullscreen.vert", "passes/analytic_sky.frag"},
-       {frame, block("AnalyticSkyBlock", SKYIG_BINDING_SKY), radiance}},
+       {frame, block("AnalyticSkyBlock", SKYIG_BINDING_SKY), band, radiance}},
       {{"passes/fullscreen.vert", "passes/tone.frag"},
        {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), output("outDisplay", SKYIG_OUTPUT_COLOR)},
@@ -122,7 +124,7 @@ std::vector<ProgramCase> programs() {
        "#define SKYIG_SKY\n#define SKYIG_SUN_DISC\n"},
       {{"passes/fullscreen.vert", "reference/physical_sky_reference.frag"}, physicalSky(true, true, true)},
       {{"passes/fullscreen.vert", "passes/physical_sky_space.frag"},
-       {frame, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE), sampler("scatteringPacked", SKYIG_UNIT_SCATTERING),
+       {frame, band, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE), sampler("scatteringPacked", SKYIG_UNIT_SCATTERING),
         sampler("singleMieRG", SKYIG_UNIT_SINGLE_MIE), sampler("irradianceXyz", SKYIG_UNIT_IRRADIANCE), radiance}},
       {{"passes/fullscreen.vert", "passes/physical_sky_slice.frag"},
        {optional(frame), sampler("scatteringPacked", SKYIG_UNIT_SCATTERING),
@@ -130,11 +132,27 @@ std::vector<ProgramCase> programs() {
         output("outSingleMie", SKYIG_OUTPUT_SLICE_SINGLE_MIE)}},
       // MoonPass, NightDiffusePass, StarPass.
       {{"passes/moon.vert", "passes/moon.frag"},
-       {frame, sampler("moonAlbedo", SKYIG_UNIT_MOON_ALBEDO), sampler("extinctionTable", SKYIG_UNIT_MOON_EXTINCTION),
-        radiance}},
+       {frame, band, sampler("moonAlbedo", SKYIG_UNIT_MOON_ALBEDO),
+        sampler("extinctionTable", SKYIG_UNIT_MOON_EXTINCTION), radiance}},
       {{"passes/fullscreen.vert", "passes/night_diffuse.frag"},
-       {frame, sampler("milkyWayS10", SKYIG_UNIT_MILKY_WAY), sampler("zodiacalS10", SKYIG_UNIT_ZODIACAL),
+       {frame, band, sampler("milkyWayS10", SKYIG_UNIT_MILKY_WAY), sampler("zodiacalS10", SKYIG_UNIT_ZODIACAL),
         sampler("extinctionRec709", SKYIG_UNIT_NIGHT_EXTINCTION), radiance}},
+      // GogglePass: the photocathode, its 8 x 8 means, the halo's two passes, the gain, the screen.
+      {{"passes/fullscreen.vert", "passes/goggle_input.frag"},
+       {optional(frame), block("GoggleBlock", SKYIG_BINDING_GOGGLE), sampler("nvisImage", SKYIG_UNIT_GOGGLE_NVIS),
+        output("outCathode", SKYIG_OUTPUT_COLOR)}},
+      {{"passes/fullscreen.vert", "passes/goggle_coarse.frag"},
+       {optional(frame), sampler("cathodeImage", SKYIG_UNIT_GOGGLE_CATHODE), output("outMean", SKYIG_OUTPUT_COLOR)}},
+      {{"passes/fullscreen.vert", "passes/goggle_halo.frag"},
+       {optional(frame), block("GoggleBlock", SKYIG_BINDING_GOGGLE), sampler("coarseImage", SKYIG_UNIT_GOGGLE_COARSE),
+        output("outHalo", SKYIG_OUTPUT_COLOR)}},
+      {{"passes/fullscreen.vert", "passes/goggle_abc.frag"},
+       {optional(frame), block("GoggleBlock", SKYIG_BINDING_GOGGLE), sampler("coarseImage", SKYIG_UNIT_GOGGLE_COARSE),
+        output("outGain", SKYIG_OUTPUT_COLOR)}},
+      {{"passes/fullscreen.vert", "passes/goggle.frag"},
+       {optional(frame), block("GoggleBlock", SKYIG_BINDING_GOGGLE), block("ToneBlock", SKYIG_BINDING_TONE),
+        sampler("cathodeImage", SKYIG_UNIT_GOGGLE_CATHODE), sampler("haloLogImage", SKYIG_UNIT_GOGGLE_HALO),
+        sampler("gainImage", SKYIG_UNIT_GOGGLE_GAIN), output("outDisplay", SKYIG_OUTPUT_COLOR)}},
       {{"passes/star.vert", "passes/star.frag"},
        {frame, input("aDirection", SKYIG_ATTRIB_STAR_DIRECTION), input("aRec709Lux", SKYIG_ATTRIB_STAR_REC709_LUX),
         radiance}},

@@ -20,6 +20,15 @@ double perLuminance(const nvis::Spectrum& s, const nvis::Transmittance& t, nvis:
   return pick(nvis::nvisFromLuminance(s, t, 1.0), c);
 }
 
+// `v` (normalised) lifted to the horizon if it looks down: a light below it is not drawn, and
+// the channel's centre may look at the ground, where the diffuse lights do not reach; their
+// colour is then the horizon's (a zero transmittance would give no weight at all).
+glm::dvec3 aboveHorizon(const glm::dvec3& v) {
+  glm::dvec3 u = glm::length(v) > 0.0 ? glm::normalize(v) : glm::dvec3(0.0, 1.0, 0.0);
+  u.z = std::max(u.z, 0.0);
+  return glm::length(u) > 1e-9 ? glm::normalize(u) : glm::dvec3(0.0, 1.0, 0.0);
+}
+
 constexpr double kTableMinK = 1500.0;
 constexpr double kTableMaxK = 50000.0;
 constexpr int kTableSize = 256;
@@ -60,21 +69,16 @@ NvisWeights nvisWeights(SpectralBand band, const SkyState& state, const glm::dve
   const nvis::NvisClass c = nvisClassOf(band);
   const atmosphere::ExtinctionProfile* extinction = state.extinction.get();
   const nvis::Transmittance unit = nvis::unitTransmittance();
-  // Above the horizon: the channel's centre may look down, where the diffuse lights do not
-  // reach, so their colour is taken at the horizon at least.
-  glm::dvec3 view = glm::length(viewEnu) > 0.0 ? glm::normalize(viewEnu) : glm::dvec3(0.0, 1.0, 0.0);
-  view.z = std::max(view.z, 0.0);
-  if (glm::length(view) == 0.0) view = glm::dvec3(0.0, 1.0, 0.0);
-  const nvis::Transmittance alongView = nvis::transmittanceAlong(extinction, glm::normalize(view));
+  const nvis::Transmittance alongView = nvis::transmittanceAlong(extinction, aboveHorizon(viewEnu));
   NvisWeights w;
   w.nvis = true;
   // As the probe weights them (sky/night_probe.cpp): the skies without a transmittance (their
   // light is scattered along the whole path), the discs and the diffuse night through the air.
   w.sunlitSky = perLuminance(nvis::sunlitSkySpectrum(), unit, c);
   w.moonlitSky = perLuminance(nvis::moonlitSkySpectrum(), unit, c);
-  const glm::dvec3 sun = enuDirection(state.sunAzimuth, state.sunAltitude);
+  const glm::dvec3 sun = aboveHorizon(enuDirection(state.sunAzimuth, state.sunAltitude));
   w.sunDisc = perLuminance(nvis::sunlightSpectrum(), nvis::transmittanceAlong(extinction, sun), c);
-  w.moon = perLuminance(nvis::moonlightSpectrum(), nvis::transmittanceAlong(extinction, state.moonDirection), c);
+  w.moon = perLuminance(nvis::moonlightSpectrum(), nvis::transmittanceAlong(extinction, aboveHorizon(state.moonDirection)), c);
   w.airglow = perLuminance(nvis::airglowSpectrum(), alongView, c);
   w.zodiacal = perLuminance(nvis::zodiacalSpectrum(), alongView, c);
   w.milkyWay = perLuminance(nvis::integratedStarlightSpectrum(), alongView, c);

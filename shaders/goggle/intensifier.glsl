@@ -20,9 +20,12 @@ const Float kObjectiveTransmittance = 0.85;
 // Photocathode luminous sensitivity to a 2856 K (CIE illuminant A) source, A/lm: Gen III tubes
 // are specified at 1800 uA/lm and more (MIL-PRF-A3256363 class figures as commonly quoted).
 const Float kCathodeSensitivityAPerLm = 1.8e-3;
-// The microchannel plate's excess noise factor (the variance of its gain over the mean
-// squared, plus one): 1.7 to 2.5 for filmed plates; with 2.0 the model's signal-to-noise ratio
-// at the standard's 108 microlux (goggleSignalToNoise) is that of a Gen III tube, above 21.
+// The microchannel plate's excess noise factor F = 1 + var(g) / mean(g)^2 of its gain g per
+// photoelectron: 1.7 to 2.5 for filmed plates. skyig takes the gain's distribution to be
+// exponential, the pulse-height distribution of a plate far from saturation, for which F is 2
+// exactly; the model's signal-to-noise ratio at the standard's 108 microlux
+// (goggleSignalToNoise) is then that of a Gen III tube, above 21. passes/goggle.frag draws the
+// gain of k electrons as a sum of k exponentials.
 const Float kExcessNoiseFactor = 2.0;
 // The luminance gain at full voltage, (cd/m^2 on the screen) per (lux on the photocathode):
 // 50000 fL/fc, within the 30000-70000 fL/fc of Gen III tubes; 1 fL = 3.4263 cd/m^2,

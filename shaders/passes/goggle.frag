@@ -29,22 +29,28 @@ float uniform01(inout uint state) {
   state = pcgHash(state);
   return (float(state >> 8) + 0.5) / 16777216.0;
 }
-// A Poisson count of mean `mean`: by Knuth's product of uniforms below 30 (the few electrons of
-// a dark pixel, where the count's discreteness is the scintillation one sees), else the normal
-// approximation (Box-Muller).
-float poissonCount(float mean, inout uint state) {
+// The screen's light from a pixel of `mean` expected photoelectrons, in units of one
+// electron's mean gain: a Poisson count k of electrons, each multiplied by the plate with an
+// exponential gain (goggle/intensifier.glsl: F = 2), so the sum is a Gamma(k) variate, minus
+// the log of a product of k uniforms; mean `mean`, variance F mean. Below 30 electrons (a dark
+// pixel, where the discreteness is the scintillation one sees) exactly so, with Knuth's product
+// of uniforms for the count; above, the normal approximation of the same mean and variance
+// (Box-Muller).
+float amplifiedElectrons(float mean, inout uint state) {
   if (mean < 30.0) {
     float limit = exp(-mean);
     float product = uniform01(state);
-    float k = 0.0;
+    int k = 0;
     for (int i = 0; i < 80 && product > limit; ++i) {
       product *= uniform01(state);
-      k += 1.0;
+      ++k;
     }
-    return k;
+    float gains = 1.0;
+    for (int i = 0; i < k; ++i) gains *= uniform01(state);
+    return k > 0 ? -log(gains) : 0.0;
   }
   float u1 = uniform01(state), u2 = uniform01(state);
-  return mean + sqrt(mean) * sqrt(-2.0 * log(u1)) * cos(6.28318530717959 * u2);
+  return max(mean + sqrt(kExcessNoiseFactor * mean) * sqrt(-2.0 * log(u1)) * cos(6.28318530717959 * u2), 0.0);
 }
 
 float cathodeAt(ivec2 p) {
@@ -66,8 +72,7 @@ void main() {
   float g = texelFetch(gainImage, ivec2(0), 0).r;
   float electrons = lux * goggleCathode.y;
   uint state = pcgHash(uint(p.x) + pcgHash(uint(p.y) + pcgHash(uSeed)));
-  float k = poissonCount(electrons, state);
-  float seen = electrons > 0.0 ? lux * max(1.0 + sqrt(kExcessNoiseFactor) * (k - electrons) / electrons, 0.0) : 0.0;
+  float seen = electrons > 0.0 ? lux * amplifiedElectrons(electrons, state) / electrons : 0.0;
   float screen = min(g * seen, kScreenSaturationCdM2);
   vec3 rgb = gogglePhosphor.rgb * screen;
   if (goggleGain.z > 0.5) {

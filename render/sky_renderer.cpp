@@ -259,11 +259,13 @@ void SkyRenderer::drawGoggleChannel(const skyig::sky::SkyState& state, const sky
   skyig::sky::ChannelConfig c = channel;
   c.frustum = skyig::sky::goggleFrustum(channel);
   // Every layer of the night: the goggle sees light far below the eye's threshold, so what the
-  // eye's visibility leaves out (sky/shown_layers.h) is drawn here.
+  // eye's visibility leaves out (sky/shown_layers.h) is drawn here, but for the diffuse night
+  // light with the sun up: the sunlit sky outshines it by a million in any band.
   drawSkyPass(state, attitude, c);
   if (state.ephemeris) {
     (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, c);
-    (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
+    if (state.sunAltitude < 0.0)
+      (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
   }
   if (!stars_) stars_ = std::make_unique<StarPass>();
   hdr_->bindForDrawing();

@@ -151,10 +151,11 @@ void GogglePass::draw(GLuint nvisImage, const skyig::sky::ChannelConfig& channel
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindTextureUnit(SKYIG_UNIT_GOGGLE_COARSE, coarseTarget_->texture());
 
-  // The control reads the level whose texels cover 32 x 32 pixels or more, at most 64 across.
+  // The control reads the level whose texels cover 32 x 32 pixels or more, at most 32 across:
+  // its one fragment runs on one llvmpipe thread, 20 bisections over the level.
   const int levels = mipLevelCount(coarseTarget_->width(), coarseTarget_->height());
   int level = std::min(2, levels - 1);
-  while (level + 1 < levels && (std::max(coarseTarget_->width(), coarseTarget_->height()) >> level) > 64) ++level;
+  while (level + 1 < levels && (std::max(coarseTarget_->width(), coarseTarget_->height()) >> level) > 32) ++level;
   gainTarget_->bindForDrawing();
   glProgramUniform1i(abc_.id(), abcLevelLocation_, level);
   abc_.use();

@@ -167,6 +167,13 @@ int run(const BenchOptions& opt) {
   const bool gpuTimers = !context->info().softwareRenderer;
   const Timing sky = timePass(opt.frames, gpuTimers, [&] { renderer.drawSkyPass(state, channel); });
   const Timing full = timePass(opt.frames, gpuTimers, [&] { renderer.draw(state, channel); });
+  // The same channel as a class A night-vision goggle (sky::isGoggle): every night layer in the
+  // goggle's band and the image intensifier instead of the eye's tone.
+  sky::ChannelConfig goggle = channel;
+  goggle.band = goggle.goggle.nvisClass;
+  const Timing goggleFrame = timePass(opt.frames, gpuTimers, [&] { renderer.draw(state, goggle); });
+  const double fullMs = gpuTimers ? median(full.gpuMs) : median(full.wallMs);
+  const double goggleMs = gpuTimers ? median(goggleFrame.gpuMs) : median(goggleFrame.wallMs);
   const double pixels = static_cast<double>(channel.width) * channel.height;
   int projectorWidth = 0, projectorHeight = 0;
   parseSize(opt.projectorSize, projectorWidth, projectorHeight);
@@ -210,6 +217,9 @@ int run(const BenchOptions& opt) {
       {"warp_blend_pass_ms", warpMs},
       {"warp_blend_pass_wall_ms", median(warp.wallMs)},
       {"warp_blend_over_sky_pass", warpMs / skyMs},
+      {"goggle_channel_ms", goggleMs},
+      {"goggle_channel_process_cpu_ms_per_frame", goggleFrame.cpuMs},
+      {"goggle_over_channel", goggleMs / fullMs},
       {"host_frame_ms", compositeMs},
       {"host_frame_over_sky_pass", compositeMs / skyMs},
       {"host_light_cpu_ms", lightMs},
@@ -225,6 +235,8 @@ int run(const BenchOptions& opt) {
                 out["sky_pass_fastest_wall_ms"].get<double>(), sky.cpuMs);
     std::printf("  sky + tone passes: %8.3f ms/frame  (process CPU %.1f ms/frame)\n",
                 out["sky_and_tone_ms"].get<double>(), full.cpuMs);
+    std::printf("  as a goggle:       %8.3f ms/frame  (the same channel as a class A goggle; %.2f times the eye's)\n",
+                goggleMs, goggleMs / fullMs);
     std::printf("  warp and blend:    %8.3f ms/frame  (one %dx%d projector; %.2f times the sky pass)\n", warpMs,
                 projectorWidth, projectorHeight, warpMs / skyMs);
     std::printf("  in a host's frame: %8.3f ms/frame  (the channel and the composite; %.2f times the sky pass)\n",

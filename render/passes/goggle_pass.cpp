@@ -19,7 +19,14 @@ namespace skyig::render {
 
 namespace {
 
-constexpr int kCoarsePx = 8;  // passes/goggle_coarse.frag
+// The side of the blocks the halo and the gain work on (passes/goggle_coarse.frag): the largest
+// power of two up to 8 pixels that keeps the halo's sigma 1.5 blocks or more, so its Gaussian
+// is sampled finely enough to stay round (a coarser grid drew a diamond on a small channel).
+int coarseBlockPx(double haloSigmaPx) {
+  int block = 1;
+  while (block < 8 && 2 * block <= haloSigmaPx / 1.5) block *= 2;
+  return block;
+}
 
 }  // namespace
 
@@ -82,10 +89,11 @@ GogglePass::~GogglePass() {
   glDeleteVertexArrays(1, &emptyVao_);
 }
 
-void GogglePass::ensureTargets(int width, int height) {
-  if (cathode_ && cathode_->width() == width && cathode_->height() == height) return;
+void GogglePass::ensureTargets(int width, int height, int block) {
+  if (cathode_ && cathode_->width() == width && cathode_->height() == height && block == blockPx_) return;
+  blockPx_ = block;
   cathode_ = std::make_unique<RenderTarget>(width, height, GL_R32F);
-  const int cw = (width + kCoarsePx - 1) / kCoarsePx, ch = (height + kCoarsePx - 1) / kCoarsePx;
+  const int cw = (width + block - 1) / block, ch = (height + block - 1) / block;
   coarseTarget_ = std::make_unique<RenderTarget>(cw, ch, GL_R32F, false, mipLevelCount(cw, ch));
   haloRows_ = std::make_unique<RenderTarget>(cw, ch, GL_R32F);
   haloTarget_ = std::make_unique<RenderTarget>(cw, ch, GL_R32F);
@@ -101,7 +109,8 @@ void GogglePass::draw(GLuint nvisImage, const skyig::sky::ChannelConfig& channel
   if (!(nvisPerCdM2OfIlluminantA > 0.0) || !std::isfinite(nvisPerCdM2OfIlluminantA))
     throw std::invalid_argument("goggle: the illuminant's NVIS radiance per cd/m^2 must be positive");
   const GoggleGeometry g = goggleGeometry(channel);
-  ensureTargets(channel.width, channel.height);
+  const int block = coarseBlockPx(g.haloSigmaPx);
+  ensureTargets(channel.width, channel.height, block);
   lastFieldFraction_ = g.fieldFraction;
 
   GoggleBlock b{};
@@ -109,7 +118,7 @@ void GogglePass::draw(GLuint nvisImage, const skyig::sky::ChannelConfig& channel
                      static_cast<float>(g.radiusPx), static_cast<float>(g.fieldFraction));
   b.goggleCathode = glm::vec4(static_cast<float>(shader::cathodeIlluminance(1.0 / nvisPerCdM2OfIlluminantA)),
                         static_cast<float>(g.electronsPerLux), static_cast<float>(g.haloSigmaPx),
-                        static_cast<float>(kCoarsePx));
+                        static_cast<float>(block));
   const skyig::sky::GoggleParams& p = channel.goggle;
   b.goggleGain = glm::vec4(p.automaticGain ? 1.0f : 0.0f, static_cast<float>(p.gain), screenLuminance ? 1.0f : 0.0f, 0.0f);
   b.gogglePhosphor = glm::vec4(glm::vec3(phosphorRec709(p.phosphor)), 0.0f);
@@ -151,10 +160,13 @@ void GogglePass::draw(GLuint nvisImage, const skyig::sky::ChannelConfig& channel
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindTextureUnit(SKYIG_UNIT_GOGGLE_COARSE, coarseTarget_->texture());
 
-  // The control reads the level whose texels cover 32 x 32 pixels or more, at most 32 across:
-  // its one fragment runs on one llvmpipe thread, 20 bisections over the level.
+  // The control reads the finest level at most 32 texels across: its one fragment runs on one
+  // llvmpipe thread, 20 bisections over the level. A bright source saturates its own pixels
+  // but the control sees it diluted over a texel, where it may saturate the texel: with at
+  // least a few hundred texels (or all 8 x 8 means of a small channel) one saturated texel
+  // weighs a few percent of the mean at most.
   const int levels = mipLevelCount(coarseTarget_->width(), coarseTarget_->height());
-  int level = std::min(2, levels - 1);
+  int level = 0;
   while (level + 1 < levels && (std::max(coarseTarget_->width(), coarseTarget_->height()) >> level) > 32) ++level;
   gainTarget_->bindForDrawing();
   glProgramUniform1i(abc_.id(), abcLevelLocation_, level);

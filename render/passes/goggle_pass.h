@@ -3,9 +3,9 @@
 // the channel's NVIS radiance (the sky passes drew it in the goggle's band, sky/nvis_weights.h)
 // in, the goggle's screen out, as display values or in cd/m^2. Five passes:
 //   1. passes/goggle_input.frag: the photocathode's illuminance inside the tube's field;
-//   2. passes/goggle_coarse.frag: its means over 8 x 8 pixels, then their mip chain, whose last
-//      level is the field's mean (what the automatic brightness control senses);
-//   3. passes/goggle_halo.frag: the halo, a Gaussian on the 8 x 8 means (the halo is 1.8 deg
+//   2. passes/goggle_coarse.frag: its means over blocks of 8 x 8 pixels (fewer on a small
+//      channel, to keep the halo round), then their mip chain;
+//   3. passes/goggle_halo.frag: the halo, a Gaussian on the block means (the halo is 1.8 deg
 //      across, some 50 pixels of a 1200-pixel goggle: smooth at that resolution), and
 //      passes/goggle_abc.frag, the automatic brightness control's gain (one fragment);
 //   4. passes/goggle.frag: the tube's modulation transfer (3 x 3), the halo, the photoelectrons'
@@ -63,7 +63,7 @@ class GogglePass {
   double readGain() const;
 
  private:
-  void ensureTargets(int width, int height);
+  void ensureTargets(int width, int height, int block);
   GlProgram input_;
   GlProgram coarse_;
   GlProgram halo_;
@@ -76,13 +76,14 @@ class GogglePass {
   GLint haloLogLocation_ = -1;
   GLuint emptyVao_ = 0;
   GLuint linearSampler_ = 0;   // the cathode image read between its pixels (coarse pass)
-  GLuint borderSampler_ = 0;   // the 8 x 8 means: zero beyond the channel, bilinear, mip-mapped
+  GLuint borderSampler_ = 0;   // the block means: zero beyond the channel, bilinear, mip-mapped
   std::unique_ptr<RenderTarget> cathode_;
   std::unique_ptr<RenderTarget> coarseTarget_;
   std::unique_ptr<RenderTarget> haloRows_;  // the halo's first, horizontal pass
   std::unique_ptr<RenderTarget> haloTarget_;
   std::unique_ptr<RenderTarget> gainTarget_;  // 1 x 1
   double lastFieldFraction_ = 1.0;
+  int blockPx_ = 0;  // the coarse targets' block side, pixels
 };
 
 }  // namespace skyig::render

@@ -11,7 +11,7 @@
 SKYIG_UBO_BEGIN(GoggleBlock, SKYIG_BINDING_GOGGLE)
   SKYIG_VEC4 goggleTube;        // xy: the field's centre (pixels); z: its radius (pixels); w: the fraction of the channel inside it
   SKYIG_VEC4 goggleCathode;     // x: cathode lux per W m^-2 sr^-1 of NVIS radiance; y: photoelectrons per cathode lux in a pixel
-                          // and a frame; z: the halo's Gaussian sigma (pixels); w: the halo target's texel (pixels)
+                          // and a frame; z: the halo's Gaussian sigma (pixels); w: the coarse blocks' side (pixels: 1, 2, 4 or 8)
   SKYIG_VEC4 goggleGain;        // x: 1 automatic brightness control, 0 manual; y: the manual gain, of the maximum;
                           // z: 1 show the screen's cd/m^2 (tests, EXR), 0 display values
   SKYIG_VEC4 gogglePhosphor;    // rgb: the phosphor's linear Rec.709 colour of luminance 1

@@ -3,7 +3,7 @@
 // bright source's pixels saturate (kScreenSaturationCdM2): the full moon in the field does not
 // darken the whole scene by its radiance alone. So the gain g solves
 //   mean over the field of min(g E, saturation) = kAbcScreenCdM2,
-// found by bisection in log g on the 8 x 8 means' mip level `uLevel` (a few hundred texels;
+// found by bisection in log g on the block means' mip level `uLevel` (a few hundred texels;
 // a bright source inside one of them is diluted there, which only lets it weigh less).
 #include "common/uniforms.h"
 #include "common/goggle_uniforms.h"

@@ -1,6 +1,6 @@
 // The halo (goggle/intensifier.glsl): the photocathode illuminance around each point weighted
 // by the halo's Gaussian (Thomas, Allison et al. 2005 model the halo's profile as one), on the
-// 8 x 8 means (render/passes/goggle_pass.h), in two separable passes along uDirection (1, 0)
+// block means (render/passes/goggle_pass.h), in two separable passes along uDirection (1, 0)
 // then (0, 1), out to 3 sigma. Zero beyond the channel (the sampler's border). The second pass
 // writes the natural log: a halo falls by orders of magnitude over a few coarse texels, and read
 // bilinearly in log (quadratic in the distance for a Gaussian) its edge stays round where a

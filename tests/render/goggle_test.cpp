@@ -195,8 +195,8 @@ TEST_F(GogglePassGl, NoiseGrowsAsLightFalls) {
 // of its light, but the gain that lets the scene show rises as the scene darkens, so the halo
 // outshines the scene farther out: its visible radius (where the screen is twice the scene's)
 // grows as light falls, up to the reach of the halo's Gaussian (3 sigma, 1.35 deg) beyond the
-// moon's edge, and the 8 x 8 grid it is computed on (1.5 of its cells: 1.25 deg at this
-// channel's 0.104 deg pixels).
+// moon's edge, and the blocks it is computed on (1.5 of them, at most 8 pixels each: 1.25 deg
+// at this channel's 0.104 deg pixels).
 TEST_F(GogglePassGl, HaloGrowsAsLightFalls) {
   const GoggleGeometry g = goggleGeometry(goggleChannel());
   double previous = 0.0;

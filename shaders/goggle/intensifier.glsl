@@ -6,8 +6,12 @@
 // goggle_physics.h, for the CPU and the tests (docs/nvis.md gives every figure's source).
 //
 // The numbers are a third-generation (GaAs photocathode, filmed microchannel plate) ANVIS-class
-// goggle's. Where a figure is a published specification it says so; where it is an estimate
-// it says that: the goggle maker's data sheets were not at hand for this work.
+// goggle's. The tube's figures are the US Army's Omnibus ("Omni") procurement minimums for
+// MX-10160 tubes as compiled by the night-vision community's public wiki (nv-intl, "Tubes"):
+// Omni IV-V (1996-1999) 64 lp/mm, S/N 21, 1800 uA/lm at 2856 K, gain 40000-70000 fL/fc, MTF
+// 0.92/0.80/0.61/0.38 at 2.5/7.5/15/25 lp/mm, halo 1.25 mm, P43; Omni VII (2006) S/N 28,
+// 2200 uA/lm, halo 0.70 mm. Where a figure is an estimate it says so: the goggle makers' data
+// sheets were not at hand for this work.
 #include "common/constants.glsl"
 
 // The objective (ANVIS class): 27 mm focal length at f/1.23, the 40 deg field on an 18 mm
@@ -17,19 +21,18 @@ const Float kObjectiveFocalLengthM = 0.027;
 const Float kObjectiveFNumber = 1.23;
 const Float kObjectiveTransmittance = 0.85;
 
-// Photocathode luminous sensitivity to a 2856 K (CIE illuminant A) source, A/lm: Gen III tubes
-// are specified at 1800 uA/lm and more (MIL-PRF-A3256363 class figures as commonly quoted).
+// Photocathode luminous sensitivity to a 2856 K (CIE illuminant A) source, A/lm: Omni IV-V's
+// 1800 uA/lm.
 const Float kCathodeSensitivityAPerLm = 1.8e-3;
 // The microchannel plate's excess noise factor F = 1 + var(g) / mean(g)^2 of its gain g per
 // photoelectron: 1.7 to 2.5 for filmed plates. skyig takes the gain's distribution to be
 // exponential, the pulse-height distribution of a plate far from saturation, for which F is 2
 // exactly; the model's signal-to-noise ratio at the standard's 108 microlux
-// (goggleSignalToNoise) is then that of a Gen III tube, above 21. passes/goggle.frag draws the
-// gain of k electrons as a sum of k exponentials.
+// (goggleSignalToNoise) is then 30.9, a tenth above Omni VII's 28 and within the Gen III tubes'
+// 21-28 and better. passes/goggle.frag draws the gain of k electrons as a sum of k exponentials.
 const Float kExcessNoiseFactor = 2.0;
 // The luminance gain at full voltage, (cd/m^2 on the screen) per (lux on the photocathode):
-// 50000 fL/fc, within the 30000-70000 fL/fc of Gen III tubes; 1 fL = 3.4263 cd/m^2,
-// 1 fc = 10.7639 lux.
+// 50000 fL/fc, within Omni IV-V's 40000-70000 fL/fc; 1 fL = 3.4263 cd/m^2, 1 fc = 10.7639 lux.
 const Float kFootLambertCdM2 = 3.4262591;
 const Float kFootCandleLux = 10.7639104;
 const Float kMaxLuminanceGain = 50000.0 * kFootLambertCdM2 / kFootCandleLux;
@@ -46,7 +49,8 @@ const Float kScreenSaturationCdM2 = 10.0 * kAbcScreenCdM2;
 // between channels bounce back and land within about twice the cathode-to-plate gap, a spot of
 // constant angular size around every bright point whatever its distance, which they model as a
 // Gaussian. Craig, Macuda, Thomas, Allison & Jennings (2005, SPIE 5800) measured halos of
-// 1 deg 48' (+-7') across with Gen III goggles. Here the Gaussian's 2 sigma radius is that
+// 1 deg 48' (+-7') across with Gen III goggles; the Omni contracts' 0.70-1.25 mm on the tube are
+// 1.5-2.7 deg through a 27 mm objective. Here the Gaussian's 2 sigma radius is that
 // half-diameter, 0.9 deg: where a halo shows depends on how far it outshines the scene, so it
 // spreads towards that size as the gain rises. The fraction of a source's light in its halo is
 // an estimate: a few hundredths, enough to outshine the scene only near bright sources.
@@ -54,12 +58,14 @@ const Float kHaloDiameterDeg = 1.8;
 const Float kHaloSigmaDeg = kHaloDiameterDeg / 4.0;
 const Float kHaloFraction = 0.03;
 
-// The tube's modulation transfer: a Gaussian that falls to 3% at the limiting resolution,
-// 64 line pairs per mm on the photocathode (Gen III; MTF(f) = exp(-2 pi^2 sigma^2 f^2)).
-const Float kLimitingResolutionLpPerMm = 64.0;
-const Float kMtfAtLimit = 0.03;
+// The tube's modulation transfer: a Gaussian MTF(f) = exp(-2 pi^2 sigma^2 f^2) through Omni
+// IV-V's 0.38 at 25 lp/mm on the photocathode (sigma 8.9 um). The specification's 0.92 at
+// 2.5 lp/mm, more loss at low frequency than a Gaussian has, is the veiling of the whole
+// image, which the halo models for bright points only.
+const Float kMtfReferenceLpPerMm = 25.0;
+const Float kMtfAtReference = 0.38;
 Float mtfSigmaRad() {
-  Float sigmaMm = sqrt(-log(kMtfAtLimit) / (2.0 * PI * PI)) / kLimitingResolutionLpPerMm;
+  Float sigmaMm = sqrt(-log(kMtfAtReference) / (2.0 * PI * PI)) / kMtfReferenceLpPerMm;
   return sigmaMm * 1e-3 / kObjectiveFocalLengthM;
 }
 

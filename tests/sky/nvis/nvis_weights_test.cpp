@@ -70,9 +70,9 @@ TEST(NvisWeights, RedderLightsWeighMoreInTheGogglesBand) {
 }
 
 // The tube standards' signal-to-noise test: a 0.2 mm spot at 108 microlux of illuminant A
-// through a 10 Hz bandwidth. Third-generation tubes are specified at 21 and above (the best
-// reach the high 20s and 30s); the model's photocathode and plate give that, and the closed
-// form sqrt(S E A t / (e F)) its number.
+// through a 10 Hz bandwidth. The Omni contracts' third-generation tubes are specified at 21
+// (Omni IV-V, whose 1800 uA/lm the model has) to 28 (Omni VII); the model gives 30.9, the
+// closed form sqrt(S E A t / (e F)), within 30% of that range.
 TEST(GogglePhysics, SignalToNoiseAtTheStandardsLevelIsAThirdGenerationTubes) {
   const double snr = shader::goggleSignalToNoise(108e-6);
   const double area = std::numbers::pi * 1e-4 * 1e-4;

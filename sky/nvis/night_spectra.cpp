@@ -1,5 +1,7 @@
 #include "sky/nvis/night_spectra.h"
 
+#include "sky/nvis/gas_bands.h"
+
 #include "night/diffuse_physics.h"
 #include "sky/atmosphere/spectral_data.h"
 #include "sky/night/moon_light.h"
@@ -64,19 +66,26 @@ Transmittance unitTransmittance() {
 Transmittance transmittanceOf(const atmosphere::ExtinctionProfile& profile, double elevationRad) {
   const std::vector<double> values = profile.spectral(elevationRad);
   const std::vector<double>& w = profile.wavelengths();
+  // Beyond the profile's last wavelength: its optical depth extended by the local power law of
+  // its last two (Angstrom's law applied to the whole extinction: Rayleigh's lambda^-4 and the
+  // aerosol's flatter one in their mixture's proportion), the exponent kept within [0, 4].
+  const std::size_t n = w.size();
+  double exponent = 0.0;
+  if (n >= 2 && values[n - 1] > 0.0 && values[n - 2] > 0.0 && values[n - 1] < 1.0 && values[n - 2] < 1.0)
+    exponent = std::clamp(std::log(std::log(values[n - 2]) / std::log(values[n - 1])) / std::log(w[n - 1] / w[n - 2]), 0.0, 4.0);
   Transmittance t{};
   for (int i = 0; i < kGridSize; ++i) {
     const double l = gridWavelength(i);
     const auto hi = std::lower_bound(w.begin(), w.end(), l);
     double v;
     if (hi == w.begin()) v = values.front();
-    else if (hi == w.end()) v = values.back();
+    else if (hi == w.end()) v = values.back() > 0.0 ? std::exp(std::log(values.back()) * std::pow(l / w.back(), -exponent)) : 0.0;
     else {
       const auto k = static_cast<std::size_t>(hi - w.begin());
       const double f = (l - w[k - 1]) / (w[k] - w[k - 1]);
       v = values[k - 1] * (1.0 - f) + values[k] * f;
     }
-    t[static_cast<std::size_t>(i)] = v;
+    t[static_cast<std::size_t>(i)] = v * gasTransmittance(l, elevationRad, profile.altitudeM());
   }
   return t;
 }

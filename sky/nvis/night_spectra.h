@@ -27,10 +27,9 @@ struct Spectrum {
 using Transmittance = std::array<double, kGridSize>;
 Transmittance unitTransmittance();
 // The profile's transmittance to space at an elevation (radians), interpolated linearly between
-// its wavelengths and held at its last one (830 nm) beyond: the medium's ozone table stops
-// there (sky/atmosphere/spectral_data.h), and Rayleigh and aerosol extinction only fall further
-// towards 930 nm, so the band's far end is dimmed slightly too much. The O2 A band (762 nm) and
-// the water bands are not modelled (left for the atmosphere's own extension to 930 nm).
+// its wavelengths, extended beyond its last one (830 nm: the medium's ozone table stops there,
+// sky/atmosphere/spectral_data.h) by the power law of its last two, and times the oxygen and
+// water vapour bands the medium does not have (gas_bands.h), at the profile's altitude.
 Transmittance transmittanceOf(const atmosphere::ExtinctionProfile& profile, double elevationRad);
 
 // Class A and class B NVIS radiance (W m^-2 sr^-1) or irradiance (W m^-2).

@@ -6,13 +6,15 @@
 
 #include "protocol/cigi/decoder.h"
 #include "protocol/cigi/encoder.h"
+#include "tests/protocol/cigi_samples.h"
 #include "tests/protocol/hex.h"
 
 namespace skyig::protocol::cigi {
 namespace {
 
-using test::hexBytes;
-using test::toHex;
+using skyig::protocol::test::hexBytes;
+using skyig::protocol::test::toHex;
+using skyig::protocol::cigi::test::sensorControlWithEveryField;
 
 IgControl ig4() {
   IgControl c;
@@ -148,19 +150,7 @@ TEST(Cigi4, ViewControlAndViewDefinition) {
 // and 6, byte 7 reserved, the view id at 8, bytes 10-11 reserved, the four floats from 12,
 // bytes 28-31 reserved.
 TEST(Cigi4, SensorControl) {
-  SensorControl s;
-  s.viewId = 3;
-  s.sensorId = 2;
-  s.sensorOn = true;
-  s.polarity = SensorPolarity::blackHot;
-  s.automaticGain = true;
-  s.trackBlack = true;
-  s.trackMode = 3;
-  s.gateAndTargetResponse = true;
-  s.gain = 0.5f;
-  s.level = 0.25f;
-  s.acCoupling = 1.0f;
-  s.noise = 0.125f;
+  const SensorControl s = sensorControlWithEveryField();
   const auto be = hexBytes("00 20 00 10 02 7B 01 00 | 00 03 00 00 3F 00 00 00 | 3E 80 00 00 3F 80 00 00 |"
                            "3E 00 00 00 00 00 00 00");
   const auto le = hexBytes("20 00 10 00 02 7B 01 00 | 03 00 00 00 00 00 00 3F | 00 00 80 3E 00 00 80 3F |"

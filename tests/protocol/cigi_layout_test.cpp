@@ -6,13 +6,15 @@
 
 #include "protocol/cigi/decoder.h"
 #include "protocol/cigi/encoder.h"
+#include "tests/protocol/cigi_samples.h"
 #include "tests/protocol/hex.h"
 
 namespace skyig::protocol::cigi {
 namespace {
 
-using test::hexBytes;
-using test::toHex;
+using skyig::protocol::test::hexBytes;
+using skyig::protocol::test::toHex;
+using skyig::protocol::cigi::test::sensorControlWithEveryField;
 
 IgControl sampleIgControl() {
   IgControl c;
@@ -247,19 +249,7 @@ TEST(CigiLayout, ViewDefinition) {
 // (on/off bit 0, polarity 1, line dropout 2, automatic gain 3, track white/black 4, track
 // mode 5-7), response type at 6 bit 0, byte 7 reserved, then gain, level, AC coupling, noise.
 TEST(CigiLayout, SensorControl) {
-  SensorControl s;
-  s.viewId = 3;
-  s.sensorId = 2;
-  s.sensorOn = true;
-  s.polarity = SensorPolarity::blackHot;
-  s.automaticGain = true;
-  s.trackBlack = true;
-  s.trackMode = 3;
-  s.gateAndTargetResponse = true;
-  s.gain = 0.5f;
-  s.level = 0.25f;
-  s.acCoupling = 1.0f;
-  s.noise = 0.125f;
+  const SensorControl s = sensorControlWithEveryField();
   // byte 5: on 0x01 | black hot 0x02 | automatic gain 0x08 | track black 0x10 | mode 3 << 5 = 0x7B
   expectLayout(s, "11 18 00 03 02 7B 01 00 | 3F 00 00 00 3E 80 00 00 | 3F 80 00 00 3E 00 00 00");
   SensorControl off;

@@ -85,4 +85,23 @@ inline std::vector<Packet> everyPacketType() {
   return {ig, e, r, c, a, er, w, vc, vd, sc, s};
 }
 
+// A Sensor Control with every field away from its default, for the 3.3 and 4.0 layouts' tests
+// (their hand-written bytes: tests/protocol/cigi_layout_test.cpp, cigi4_test.cpp).
+inline SensorControl sensorControlWithEveryField() {
+  SensorControl s;
+  s.viewId = 3;
+  s.sensorId = 2;
+  s.sensorOn = true;
+  s.polarity = SensorPolarity::blackHot;
+  s.automaticGain = true;
+  s.trackBlack = true;
+  s.trackMode = 3;
+  s.gateAndTargetResponse = true;
+  s.gain = 0.5f;
+  s.level = 0.25f;
+  s.acCoupling = 1.0f;
+  s.noise = 0.125f;
+  return s;
+}
+
 }  // namespace skyig::protocol::cigi::test

@@ -256,17 +256,7 @@ TEST_F(GogglePassGl, OutsideTheFieldIsBlack) {
 
 namespace {
 
-// Tiny physical tables (seconds, once, through the test cache): at night the diffuse light and
-// the moon decide, not the tables' resolution.
-std::shared_ptr<const atmosphere::AtmosphereModel> tinyModel() {
-  static const auto m = [] {
-    atmosphere::ModelConfig c = atmosphere::testing::smallEarthConfig();
-    c.sizes = atmosphere::testing::tinySizes();
-    c.options.scatteringOrders = 2;
-    return std::make_shared<const atmosphere::AtmosphereModel>(atmosphere::testing::cachedModel(c));
-  }();
-  return m;
-}
+std::shared_ptr<const atmosphere::AtmosphereModel> tinyModel() { return atmosphere::testing::tinyNightModel(); }
 
 // A dark site in the Alps (2000 m) on the moonless night of 18 January 2026, sun 30 deg down.
 SkyState alpsMoonless(double extraSeconds = 0.0) {

@@ -4,6 +4,7 @@
 // precomputes it (seconds), the others load it (milliseconds). The cache is itself tested in
 // cache_test.cpp.
 #include <filesystem>
+#include <memory>
 
 #include "sky/atmosphere/table_cache.h"
 
@@ -46,6 +47,18 @@ inline TableSizes tinySizes() {
 
 inline AtmosphereModel cachedModel(const ModelConfig& config) {
   return loadOrPrecompute(config, testCacheDirectory());
+}
+
+// Tiny tables of two scattering orders (seconds, once, through the test cache): at night, with
+// the sun far down, the night's own lights and the moon decide, not the tables' resolution.
+inline std::shared_ptr<const AtmosphereModel> tinyNightModel() {
+  static const auto m = [] {
+    ModelConfig c = smallEarthConfig();
+    c.sizes = tinySizes();
+    c.options.scatteringOrders = 2;
+    return std::make_shared<const AtmosphereModel>(cachedModel(c));
+  }();
+  return m;
 }
 
 }  // namespace skyig::atmosphere::testing

@@ -24,16 +24,8 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Tiny tables: at sun -30 deg the sunlit sky is 1e-8 cd/m^2 or less whatever their size, so the
-// night components decide; seconds to precompute (once, through the test cache).
-std::shared_ptr<const atmosphere::AtmosphereModel> model() {
-  static const auto m = [] {
-    atmosphere::ModelConfig c = atmosphere::testing::smallEarthConfig();
-    c.sizes = atmosphere::testing::tinySizes();
-    c.options.scatteringOrders = 2;
-    return std::make_shared<const atmosphere::AtmosphereModel>(atmosphere::testing::cachedModel(c));
-  }();
-  return m;
-}
+// night components decide.
+std::shared_ptr<const atmosphere::AtmosphereModel> model() { return atmosphere::testing::tinyNightModel(); }
 
 // A dark site in the Alps (2000 m) on the evening of the new moon of 18 January 2026, the first
 // minute the sun is 30 deg down.

@@ -1,14 +1,15 @@
 #pragma once
 // The image intensifier of a goggle channel (shaders/goggle/intensifier.glsl, docs/nvis.md):
 // the channel's NVIS radiance (the sky passes drew it in the goggle's band, sky/nvis_weights.h)
-// in, the goggle's screen out, as display values or in cd/m^2. Five passes:
+// in, the goggle's screen out, as display values or in cd/m^2. Six draws:
 //   1. passes/goggle_input.frag: the photocathode's illuminance inside the tube's field;
 //   2. passes/goggle_coarse.frag: its means over blocks of 8 x 8 pixels (fewer on a small
 //      channel, to keep the halo round), then their mip chain;
-//   3. passes/goggle_halo.frag: the halo, a Gaussian on the block means (the halo is 1.8 deg
-//      across, some 50 pixels of a 1200-pixel goggle: smooth at that resolution), and
-//      passes/goggle_abc.frag, the automatic brightness control's gain (one fragment);
-//   4. passes/goggle.frag: the tube's modulation transfer (3 x 3), the halo, the photoelectrons'
+//   3. passes/goggle_halo.frag, twice (rows, then columns): the halo, a Gaussian on the block
+//      means (the halo is 1.8 deg across, some 50 pixels of a 1200-pixel goggle: smooth at that
+//      resolution);
+//   4. passes/goggle_abc.frag: the automatic brightness control's gain (one fragment);
+//   5. passes/goggle.frag: the tube's modulation transfer (3 x 3), the halo, the photoelectrons'
 //      noise, the gain and the phosphor, per pixel.
 #include "render/gl/gl_program.h"
 #include "render/gl/render_target.h"

@@ -16,6 +16,23 @@ double lunarPhaseLaw(double phi) {
   return std::max(0.0, 1.0 - std::sin(h) * std::tan(h) * std::log(cotQuarter));
 }
 
+double lunarMagnitude(double phaseAngleRad) {
+  const double phiDeg = std::clamp(phaseAngleRad, 0.0, 3.14159265358979323846) * 180.0 / 3.14159265358979323846;
+  return -12.73 + 0.026 * phiDeg + 4e-9 * std::pow(phiDeg, 4.0);
+}
+
+double lunarPhaseFunction(double phaseAngleRad) {
+  return std::pow(10.0, -0.4 * (lunarMagnitude(phaseAngleRad) - lunarMagnitude(0.0)));
+}
+
+double lunarOppositionFactor(double phaseAngleRad) {
+  const double lommelSeeliger = lunarPhaseLaw(phaseAngleRad);
+  if (!(lommelSeeliger > 1e-9)) return 0.0;
+  const double r = kMoonRadiusKm / kMeanMoonDistanceKm;
+  const double eq9 = 2.0 / 3.0 * kMoonAlbedo * r * r * kSolarConstantWm2 * lommelSeeliger;
+  return irradianceFromMagnitude(lunarMagnitude(phaseAngleRad)) / eq9;
+}
+
 double moonIrradiance(double phaseAngleRad, double moonDistanceKm, double sunMoonDistanceKm) {
   constexpr double kAuKm = 149597870.7;
   const double sunAtMoon = kSolarConstantWm2 * (kAuKm / sunMoonDistanceKm) * (kAuKm / sunMoonDistanceKm);
@@ -24,7 +41,7 @@ double moonIrradiance(double phaseAngleRad, double moonDistanceKm, double sunMoo
   const double earthAtMoon = 2.0 / 3.0 * kEarthAlbedo * (kEarthRadiusKm / moonDistanceKm) *
                              (kEarthRadiusKm / moonDistanceKm) * sunAtMoon * lunarPhaseLaw(pi - phaseAngleRad);
   return 2.0 / 3.0 * kMoonAlbedo * (kMoonRadiusKm / moonDistanceKm) * (kMoonRadiusKm / moonDistanceKm) *
-         (sunAtMoon + earthAtMoon) * lunarPhaseLaw(phaseAngleRad);
+         (sunAtMoon * lunarPhaseLaw(phaseAngleRad) * lunarOppositionFactor(phaseAngleRad) + earthAtMoon);
 }
 
 double irradianceFromMagnitude(double m) { return std::pow(10.0, -(m + 19.0) / 2.5); }

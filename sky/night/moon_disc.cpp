@@ -164,12 +164,17 @@ MoonDisc makeMoonDisc(const MoonPlacement& p, std::shared_ptr<const atmosphere::
   const double earthAtMoon = 2.0 / 3.0 * ephemeris::kEarthAlbedo * re * re * sunAtMoon *
                              ephemeris::lunarPhaseLaw(std::numbers::pi - p.phaseAngleRad);
   const glm::dvec3& colour = moonlightColour();
-  d.sunlitScale = shader::MOON_RADIANCE_COEFFICIENT * sunAtMoon * cachedAlbedoNormalisation(d, albedo) * colour;
+  // Lommel-Seeliger over the disc, its total the measured moon's (ephemeris::
+  // lunarOppositionFactor: Krisciunas & Schaefer 1991).
+  d.sunlitScale = shader::MOON_RADIANCE_COEFFICIENT * sunAtMoon * ephemeris::lunarOppositionFactor(p.phaseAngleRad) *
+                  cachedAlbedoNormalisation(d, albedo) * colour;
   d.earthshineScale = shader::MOON_RADIANCE_COEFFICIENT * earthAtMoon * colour;
-  // Eq. 9 for the sunlit part; the earthshine is lit from the earth's direction (phase 0), where
+  // Eq. 9 for the sunlit part, with the measured phase function; the earthshine is lit from the earth's direction (phase 0), where
   // eq. 9 applies the sun's phase law to it too (a difference of 1% of the total at 170 deg, less before).
   const double disc = 2.0 / 3.0 * shader::MOON_ALBEDO_CA * sinRadius * sinRadius;
-  d.irradianceRec709 = disc * (sunAtMoon * ephemeris::lunarPhaseLaw(p.phaseAngleRad) + earthAtMoon) * colour;
+  d.irradianceRec709 = disc *
+                       (sunAtMoon * ephemeris::lunarPhaseLaw(p.phaseAngleRad) * ephemeris::lunarOppositionFactor(p.phaseAngleRad) + earthAtMoon) *
+                       colour;
   return d;
 }
 

@@ -101,10 +101,17 @@ TEST(NightIrradiance, MoonEq9) {
     ASSERT_LT(f, last) << phi;
     last = f;
   }
-  // Full moon at the mean distance, sun-moon distance 1 au: 2/3 * 0.072 * (1737.4/384400)^2 * 1361
-  // = 1.335e-3 W/m^2 plus the earthshine, which vanishes at full moon (earth's phase law at pi).
+  // Full moon at the mean distance, sun-moon distance 1 au: the measured moon's V = -12.73
+  // (Krisciunas & Schaefer 1991) through eq. 11, 10^(-(19 - 12.73) / 2.5) = 3.105e-3 W/m^2, 2.33
+  // times eq. 9's 2/3 * 0.072 * (1737.4/384400)^2 * 1361 = 1.335e-3 (a smooth sphere has no
+  // opposition surge); the earthshine vanishes at full moon (the earth's phase law at pi).
   const double full = moonIrradiance(0.0, 384400.0, kAuKm);
-  EXPECT_NEAR(full, 2.0 / 3.0 * 0.072 * std::pow(1737.4 / 384400.0, 2) * 1361.0, 1e-9);
+  EXPECT_NEAR(full, std::pow(10.0, -(19.0 - 12.73) / 2.5), 1e-12);
+  EXPECT_NEAR(lunarOppositionFactor(0.0), full / (2.0 / 3.0 * 0.072 * std::pow(1737.4 / 384400.0, 2) * 1361.0), 1e-12);
+  // First quarter: Krisciunas & Schaefer's 0.026 x 90 + 4e-9 x 90^4 = 2.60 magnitudes below full,
+  // 0.0911 of it, where the smooth sphere's law keeps 0.377.
+  EXPECT_NEAR(lunarPhaseFunction(kPi / 2), std::pow(10.0, -0.4 * (2.34 + 4e-9 * std::pow(90.0, 4))), 1e-12);
+  EXPECT_NEAR(moonIrradiance(kPi / 2, 384400.0, kAuKm) / full, 0.0911, 0.002);  // plus a little earthshine
   // Inverse square with distance.
   EXPECT_NEAR(moonIrradiance(0.3, 363300.0, kAuKm) / moonIrradiance(0.3, 405500.0, kAuKm),
               std::pow(405500.0 / 363300.0, 2), 1e-3);

@@ -15,10 +15,9 @@ StarPass::StarPass()
   worldToNdcLocation_ = glGetUniformLocation(program_.id(), "uWorldToNdc");
   displayWorldToNdcLocation_ = glGetUniformLocation(displayProgram_.id(), "uWorldToNdc");
   glCreateVertexArrays(1, &vao_);
-  glCreateBuffers(1, &buffer_);
-  glVertexArrayVertexBuffer(vao_, 0, buffer_, 0, 6 * sizeof(float));
+  for (Instances& i : instances_) glCreateBuffers(1, &i.buffer);
   glVertexArrayBindingDivisor(vao_, 0, 1);  // one source per instance of the quad
-  // Per source: direction (3 floats), then illuminance (3 floats); see upload().
+  // Per source: direction (3 floats), then illuminance (3 floats); see instanceData().
   const GLuint attributes[][2] = {{SKYIG_ATTRIB_STAR_DIRECTION, 0}, {SKYIG_ATTRIB_STAR_REC709_LUX, 3 * sizeof(float)}};
   for (const auto& [location, offset] : attributes) {
     glEnableVertexArrayAttrib(vao_, location);
@@ -28,11 +27,11 @@ StarPass::StarPass()
 }
 
 StarPass::~StarPass() {
-  glDeleteBuffers(1, &buffer_);
+  for (Instances& i : instances_) glDeleteBuffers(1, &i.buffer);
   glDeleteVertexArrays(1, &vao_);
 }
 
-void StarPass::upload(const skyig::sky::night::StarField& field, skyig::sky::SpectralBand band) {
+std::vector<float> StarPass::instanceData(const skyig::sky::night::StarField& field, skyig::sky::SpectralBand band) {
   std::vector<float> data;
   data.reserve((field.stars.size() + field.planets.size()) * 6);
   for (const auto* list : {&field.stars, &field.planets})
@@ -43,20 +42,22 @@ void StarPass::upload(const skyig::sky::night::StarField& field, skyig::sky::Spe
       for (double v : {p.direction.x, p.direction.y, p.direction.z, light.r, light.g, light.b})
         data.push_back(static_cast<float>(v));
     }
-  // A new store per state: states change at most at the host's rate, and the size varies.
-  glNamedBufferData(buffer_, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
-  count_ = static_cast<GLsizei>(data.size() / 6);
+  return data;
 }
 
-bool StarPass::prepare(const std::shared_ptr<const skyig::sky::night::StarField>& field, skyig::sky::SpectralBand band,
+GLsizei StarPass::prepare(const std::shared_ptr<const skyig::sky::night::StarField>& field, skyig::sky::SpectralBand band,
                        const GlProgram& program, GLint worldToNdcLocation, const glm::dmat3& ndcToWorld) {
-  if (!field) return false;
-  if (field != uploaded_ || band != uploadedBand_) {
-    upload(*field, band);
-    uploaded_ = field;
-    uploadedBand_ = band;
+  if (!field) return 0;
+  Instances& in = instances_[static_cast<std::size_t>(band)];
+  if (field != in.field) {
+    // A new store per state: states change at most at the host's rate, and the size varies.
+    const std::vector<float> data = instanceData(*field, band);
+    glNamedBufferData(in.buffer, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
+    in.count = static_cast<GLsizei>(data.size() / 6);
+    in.field = field;
   }
-  if (count_ == 0) return false;
+  if (in.count == 0) return 0;
+  glVertexArrayVertexBuffer(vao_, 0, in.buffer, 0, 6 * sizeof(float));
   program.use();
   const glm::mat3 worldToNdc(glm::inverse(ndcToWorld));
   glUniformMatrix3fv(worldToNdcLocation, 1, GL_FALSE, glm::value_ptr(worldToNdc));
@@ -64,21 +65,24 @@ bool StarPass::prepare(const std::shared_ptr<const skyig::sky::night::StarField>
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
   glBindVertexArray(vao_);
-  return true;
+  return in.count;
 }
 
 void StarPass::draw(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
                     skyig::sky::SpectralBand band) {
-  if (!prepare(field, band, program_, worldToNdcLocation_, ndcToWorld)) return;
-  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count_);
+  const GLsizei count = prepare(field, band, program_, worldToNdcLocation_, ndcToWorld);
+  if (count == 0) return;
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
   glDisable(GL_BLEND);
 }
 
 void StarPass::drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field,
                              const glm::dmat3& ndcToWorld, GLuint background) {
-  if (!prepare(field, skyig::sky::SpectralBand::Visible, displayProgram_, displayWorldToNdcLocation_, ndcToWorld)) return;
+  const GLsizei count =
+      prepare(field, skyig::sky::SpectralBand::Visible, displayProgram_, displayWorldToNdcLocation_, ndcToWorld);
+  if (count == 0) return;
   glBindTextureUnit(SKYIG_UNIT_STAR_BACKGROUND, background);
-  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count_);
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
   glDisable(GL_BLEND);
 }
 

@@ -12,6 +12,7 @@
 
 #include <glm/mat3x3.hpp>
 
+#include <array>
 #include <memory>
 
 namespace skyig::render {
@@ -36,19 +37,24 @@ class StarPass {
                      GLuint background);
 
  private:
-  void upload(const skyig::sky::night::StarField& field, skyig::sky::SpectralBand band);
-  // Uploads a new field, sets the blending and the program's view; false when there is nothing to draw.
-  bool prepare(const std::shared_ptr<const skyig::sky::night::StarField>& field, skyig::sky::SpectralBand band,
+  static std::vector<float> instanceData(const skyig::sky::night::StarField& field, skyig::sky::SpectralBand band);
+  // Uploads a new field for `band`, sets the blending and the program's view; the number of
+  // sources to draw (0: nothing).
+  GLsizei prepare(const std::shared_ptr<const skyig::sky::night::StarField>& field, skyig::sky::SpectralBand band,
                const GlProgram& program, GLint worldToNdcLocation, const glm::dmat3& ndcToWorld);
   GlProgram program_;
   GlProgram displayProgram_;
   GLint worldToNdcLocation_ = -1;
   GLint displayWorldToNdcLocation_ = -1;
   GLuint vao_ = 0;
-  GLuint buffer_ = 0;
-  GLsizei count_ = 0;
-  std::shared_ptr<const skyig::sky::night::StarField> uploaded_;  // held so its address cannot be reused
-  skyig::sky::SpectralBand uploadedBand_ = skyig::sky::SpectralBand::Visible;
+  // One instance buffer per band (the eye's, NVIS class A and B): a node with a goggle channel
+  // beside the eye's draws both every frame, and each is uploaded once per field.
+  struct Instances {
+    GLuint buffer = 0;
+    GLsizei count = 0;
+    std::shared_ptr<const skyig::sky::night::StarField> field;  // held so its address cannot be reused
+  };
+  std::array<Instances, 3> instances_{};
 };
 
 }  // namespace skyig::render

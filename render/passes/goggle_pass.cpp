@@ -69,23 +69,9 @@ GogglePass::GogglePass()
   haloDirectionLocation_ = glGetUniformLocation(halo_.id(), "uDirection");
   haloLogLocation_ = glGetUniformLocation(halo_.id(), "uWriteLog");
   glCreateVertexArrays(1, &emptyVao_);
-  glCreateSamplers(1, &linearSampler_);
-  glSamplerParameteri(linearSampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glSamplerParameteri(linearSampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glSamplerParameteri(linearSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(linearSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glCreateSamplers(1, &borderSampler_);
-  glSamplerParameteri(borderSampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
-  glSamplerParameteri(borderSampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glSamplerParameteri(borderSampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-  glSamplerParameteri(borderSampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  glSamplerParameterfv(borderSampler_, GL_TEXTURE_BORDER_COLOR, zero);
 }
 
 GogglePass::~GogglePass() {
-  glDeleteSamplers(1, &borderSampler_);
-  glDeleteSamplers(1, &linearSampler_);
   glDeleteVertexArrays(1, &emptyVao_);
 }
 
@@ -98,10 +84,21 @@ void GogglePass::ensureTargets(int width, int height, int block) {
   haloRows_ = std::make_unique<RenderTarget>(cw, ch, GL_R32F);
   haloTarget_ = std::make_unique<RenderTarget>(cw, ch, GL_R32F);
   gainTarget_ = std::make_unique<RenderTarget>(1, 1, GL_R32F);
-  glTextureParameteri(haloTarget_->texture(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(haloTarget_->texture(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(haloTarget_->texture(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(haloTarget_->texture(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  // Read bilinearly: the cathode between its pixels (the coarse pass), the halo up to the
+  // channel's size; the block means and the halo's rows with zero beyond the channel (the
+  // halo's Gaussian reaches past its edge), the means mip-mapped for the gain.
+  auto bilinear = [](const RenderTarget& t, GLint wrap, GLint minFilter) {
+    glTextureParameteri(t.texture(), GL_TEXTURE_MIN_FILTER, minFilter);
+    glTextureParameteri(t.texture(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t.texture(), GL_TEXTURE_WRAP_S, wrap);
+    glTextureParameteri(t.texture(), GL_TEXTURE_WRAP_T, wrap);
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glTextureParameterfv(t.texture(), GL_TEXTURE_BORDER_COLOR, zero);
+  };
+  bilinear(*cathode_, GL_CLAMP_TO_EDGE, GL_LINEAR);
+  bilinear(*coarseTarget_, GL_CLAMP_TO_BORDER, GL_LINEAR_MIPMAP_NEAREST);
+  bilinear(*haloRows_, GL_CLAMP_TO_BORDER, GL_LINEAR);
+  bilinear(*haloTarget_, GL_CLAMP_TO_EDGE, GL_LINEAR);
 }
 
 void GogglePass::draw(GLuint nvisImage, const skyig::sky::ChannelConfig& channel, double nvisPerCdM2OfIlluminantA,
@@ -111,7 +108,6 @@ void GogglePass::draw(GLuint nvisImage, const skyig::sky::ChannelConfig& channel
   const GoggleGeometry g = goggleGeometry(channel);
   const int block = coarseBlockPx(g.haloSigmaPx);
   ensureTargets(channel.width, channel.height, block);
-  lastFieldFraction_ = g.fieldFraction;
 
   GoggleBlock b{};
   b.goggleTube = glm::vec4(0.5f * static_cast<float>(channel.width), 0.5f * static_cast<float>(channel.height),
@@ -140,15 +136,12 @@ void GogglePass::draw(GLuint nvisImage, const skyig::sky::ChannelConfig& channel
 
   coarseTarget_->bindForDrawing();
   glBindTextureUnit(SKYIG_UNIT_GOGGLE_CATHODE, cathode_->texture());
-  glBindSampler(SKYIG_UNIT_GOGGLE_CATHODE, linearSampler_);
   coarse_.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindSampler(SKYIG_UNIT_GOGGLE_CATHODE, 0);
   glGenerateTextureMipmap(coarseTarget_->texture());
 
   haloRows_->bindForDrawing();
   glBindTextureUnit(SKYIG_UNIT_GOGGLE_COARSE, coarseTarget_->texture());
-  glBindSampler(SKYIG_UNIT_GOGGLE_COARSE, borderSampler_);
   glProgramUniform2f(halo_.id(), haloDirectionLocation_, 1.0f, 0.0f);
   glProgramUniform1i(halo_.id(), haloLogLocation_, 0);
   halo_.use();
@@ -180,7 +173,6 @@ void GogglePass::draw(GLuint nvisImage, const skyig::sky::ChannelConfig& channel
   glProgramUniform1ui(screen_.id(), seedLocation_, seed);
   screen_.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindSampler(SKYIG_UNIT_GOGGLE_COARSE, 0);
 }
 
 double GogglePass::readGain() const {
@@ -188,14 +180,6 @@ double GogglePass::readGain() const {
   float g = 0.0f;
   glGetTextureImage(gainTarget_->texture(), 0, GL_RED, GL_FLOAT, sizeof(float), &g);
   return static_cast<double>(g);
-}
-
-double GogglePass::readFieldMeanLux() const {
-  if (!coarseTarget_) throw std::logic_error("readFieldMeanLux before any draw");
-  const int levels = mipLevelCount(coarseTarget_->width(), coarseTarget_->height());
-  float mean = 0.0f;
-  glGetTextureImage(coarseTarget_->texture(), levels - 1, GL_RED, GL_FLOAT, sizeof(float), &mean);
-  return static_cast<double>(mean) / lastFieldFraction_;
 }
 
 }  // namespace skyig::render

@@ -57,10 +57,7 @@ class GogglePass {
   void draw(GLuint nvisImage, const skyig::sky::ChannelConfig& channel, double nvisPerCdM2OfIlluminantA,
             std::uint32_t seed, const RenderTarget& target, bool screenLuminance = false);
 
-  // The last draw's photocathode illuminance (lux), channel-sized; the field's mean
-  // illuminance and the gain (cd/m^2 per lux) it was shown with (read back: tests).
-  GLuint cathodeTexture() const { return cathode_ ? cathode_->texture() : 0; }
-  double readFieldMeanLux() const;
+  // The gain (cd/m^2 per lux) the last draw was shown with (read back: tests).
   double readGain() const;
 
  private:
@@ -76,14 +73,11 @@ class GogglePass {
   GLint haloDirectionLocation_ = -1;
   GLint haloLogLocation_ = -1;
   GLuint emptyVao_ = 0;
-  GLuint linearSampler_ = 0;   // the cathode image read between its pixels (coarse pass)
-  GLuint borderSampler_ = 0;   // the block means: zero beyond the channel, bilinear, mip-mapped
   std::unique_ptr<RenderTarget> cathode_;
   std::unique_ptr<RenderTarget> coarseTarget_;
   std::unique_ptr<RenderTarget> haloRows_;  // the halo's first, horizontal pass
   std::unique_ptr<RenderTarget> haloTarget_;
   std::unique_ptr<RenderTarget> gainTarget_;  // 1 x 1
-  double lastFieldFraction_ = 1.0;
   int blockPx_ = 0;  // the coarse targets' block side, pixels
 };
 

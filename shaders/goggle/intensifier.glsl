@@ -96,13 +96,9 @@ Float goggleSignalToNoise(Float lux) {
   return sqrt(photoelectrons(lux, area, 0.05) / kExcessNoiseFactor);
 }
 
-// The screen's luminance gain (cd/m^2 per lux) for a mean photocathode illuminance `meanLux`:
-// with automatic brightness control the gain that puts the mean at kAbcScreenCdM2, never above
-// the maximum (before any pixel saturates: passes/goggle_abc.frag solves it with saturation);
-// without it, `manual` (0-1] of the maximum.
-Float intensifierGain(Float meanLux, bool automatic, Float manual) {
-  if (!automatic) return clamp(manual, 0.0, 1.0) * kMaxLuminanceGain;
-  return meanLux > 0.0 ? min(kMaxLuminanceGain, kAbcScreenCdM2 / meanLux) : kMaxLuminanceGain;
-}
+// Without automatic brightness control: the screen's luminance gain (cd/m^2 per lux) at a
+// fraction `fraction` (0-1] of the maximum. With it, passes/goggle_abc.frag solves for the gain
+// that holds the screen's mean at kAbcScreenCdM2, at most kMaxLuminanceGain.
+Float manualGain(Float fraction) { return clamp(fraction, 0.0, 1.0) * kMaxLuminanceGain; }
 
 #endif

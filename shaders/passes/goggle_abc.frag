@@ -23,7 +23,7 @@ float screenMean(float g) {
 
 void main() {
   if (goggleGain.x < 0.5) {  // manual
-    outGain = vec4(intensifierGain(0.0, false, goggleGain.y), 0.0, 0.0, 1.0);
+    outGain = vec4(manualGain(goggleGain.y), 0.0, 0.0, 1.0);
     return;
   }
   float hi = kMaxLuminanceGain;

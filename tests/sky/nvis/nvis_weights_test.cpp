@@ -84,13 +84,12 @@ TEST(GogglePhysics, SignalToNoiseAtTheStandardsLevelIsAThirdGenerationTubes) {
   std::cout << "signal-to-noise at 108 microlux: " << snr << "\n";
 }
 
-// The automatic brightness control: the gain that puts the mean at the control's level, never
-// above the tube's maximum; a manual gain is its fraction of the maximum.
-TEST(GogglePhysics, AutomaticGainHoldsTheMeanUntilTheTubesMaximum) {
-  const double knee = shader::kAbcScreenCdM2 / shader::kMaxLuminanceGain;  // cathode lux
-  for (double lux : {knee * 1000.0, knee * 10.0, knee * 1.01}) EXPECT_NEAR(shader::intensifierGain(lux, true, 0.0) * lux, shader::kAbcScreenCdM2, 1e-9);
-  for (double lux : {knee * 0.5, knee * 1e-3}) EXPECT_DOUBLE_EQ(shader::intensifierGain(lux, true, 0.0), shader::kMaxLuminanceGain);
-  EXPECT_DOUBLE_EQ(shader::intensifierGain(1.0, false, 0.25), 0.25 * shader::kMaxLuminanceGain);
-  // 50000 fL/fc in SI.
-  EXPECT_NEAR(shader::kMaxLuminanceGain, 50000.0 * 3.4262591 / 10.7639104, 1e-6);
+// The tube's gain in SI: 50000 fL/fc is 15915 (cd/m^2) per lux (1 fL = 1/pi cd/ft^2, 1 fc =
+// 1 lm/ft^2: the ratio is 1/pi); a manual gain is its fraction, clamped to the tube's range.
+// The automatic control's gain is the GPU's (GogglePassGl.AutomaticBrightness...).
+TEST(GogglePhysics, ManualGainIsItsShareOfFiftyThousandFootLambertsPerFootCandle) {
+  EXPECT_NEAR(shader::kMaxLuminanceGain, 50000.0 / std::numbers::pi, 1e-3);
+  EXPECT_DOUBLE_EQ(shader::manualGain(0.25), 0.25 * shader::kMaxLuminanceGain);
+  EXPECT_DOUBLE_EQ(shader::manualGain(1.5), shader::kMaxLuminanceGain);
+  EXPECT_DOUBLE_EQ(shader::manualGain(-1.0), 0.0);
 }

@@ -124,10 +124,14 @@ SkyRenderer::~SkyRenderer() { glDeleteVertexArrays(1, &emptyVao_); }
 
 void SkyRenderer::ensureTargets(int width, int height) {
   if (hdr_ && hdr_->width() == width && hdr_->height() == height) return;
+  foldedDisplay_.reset();  // before the targets they draw into
+  foldedValues_.reset();
   hdr_ = std::make_unique<RenderTarget>(width, height, GL_RGBA32F, true);
   display_ = std::make_unique<RenderTarget>(width, height, GL_RGBA8);
   pointSources_ = std::make_unique<RenderTarget>(width, height, GL_RGBA16F);
   displayValues_ = std::make_unique<RenderTarget>(width, height, GL_RGBA16F);
+  foldedDisplay_ = std::make_unique<TwoTargetFramebuffer>(*hdr_, *display_);
+  foldedValues_ = std::make_unique<TwoTargetFramebuffer>(*hdr_, *displayValues_);
 }
 
 PhysicalSkyPass& SkyRenderer::physicalPassFor(const skyig::sky::SkyState& state) {
@@ -137,33 +141,44 @@ PhysicalSkyPass& SkyRenderer::physicalPassFor(const skyig::sky::SkyState& state)
   return *physical_;
 }
 
-void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
-                              const skyig::sky::ChannelConfig& channel) {
-  ensureTargets(channel.width, channel.height);
+void SkyRenderer::bindChannelBlocks(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                                    const skyig::sky::ChannelConfig& channel) {
   frameBlock_.upload(toBlock(attitude, channel));
   skyBlock_.upload(toBlock(state.sky.params));
   bandBlock_.upload(toBandBlock(state, attitude, channel));
   frameBlock_.bind();
   skyBlock_.bind();
   bandBlock_.bind();
+}
+
+bool SkyRenderer::drawSky(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel,
+                          const std::string& toneDefines) {
   glBindVertexArray(emptyVao_);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  hdr_->bindForDrawing();
   if (state.conditions.model == skyig::sky::SkyModel::Physical) {
     physicalPassFor(state);
     // The tables on screen may still be the previous model's while a new one uploads; both
     // share the planet, so the camera is the same. The moonlit sky only where it changes what
     // the displays show (sky/shown_layers.h), and always in a goggle, which sees far fainter
     // light than the eye.
-    physical_->draw(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
-                    skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection,
-                    state.shown.moonlitSky || skyig::sky::isGoggle(channel) ? state.moonlightScale : glm::dvec3(0.0),
-                    state.sunRefraction);
-    return;
+    return physical_->draw(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
+                           skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection,
+                           state.shown.moonlitSky || skyig::sky::isGoggle(channel) ? state.moonlightScale
+                                                                                    : glm::dvec3(0.0),
+                           state.sunRefraction, toneDefines);
   }
   skyProgram_.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  return false;
+}
+
+void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                              const skyig::sky::ChannelConfig& channel) {
+  ensureTargets(channel.width, channel.height);
+  bindChannelBlocks(state, attitude, channel);
+  hdr_->bindForDrawing();
+  drawSky(state, channel, {});
 }
 
 void SkyRenderer::draw(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
@@ -221,18 +236,40 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
     drawGoggleChannel(state, attitude, channel, toneTarget, ditherLsb);
     return;
   }
-  drawSkyPass(state, attitude, channel);
-  if (state.ephemeris) (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, channel);
-  // The night's own light only where it changes what the displays show (sky/shown_layers.h).
-  if (state.ephemeris && state.shown.nightLight)
-    (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
-  if (!stars_) stars_ = std::make_unique<StarPass>();
   const glm::dmat3 ndcToWorld = skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(attitude, channel.offset), channel.frustum);
-  glBindVertexArray(emptyVao_);
+  bindChannelBlocks(state, attitude, channel);
   ToneBlock tone = toToneBlock(state, channel);
   tone.adaptation.y = ditherLsb;
   toneBlock_.upload(tone);
   toneBlock_.bind();
+  // The tone's variant: the display's operator, with rod vision only where some of the view is
+  // dim enough (sky/shown_layers.h) and the glare veil of the sources that give light.
+  std::vector<glm::dvec3> glareSources;
+  for (const skyig::sky::eye::GlareSource& g : litGlareSources(state)) glareSources.push_back(g.direction);
+  if (!tone_) tone_ = std::make_unique<TonePass>();
+  tone_->prepare({channel.display.toneOperator != skyig::sky::ToneOperator::Histogram, !state.shown.mesopic}, ndcToWorld,
+                 channel.width, channel.height, glareSources);
+  // The night's own light only where it changes what the displays show (sky/shown_layers.h).
+  const bool nightLight = state.ephemeris && state.shown.nightLight;
+  // Where no full-screen pass follows the sky pass (the night's light is one), the sky pass
+  // maps its own pixels to the display as it computes them, and the tone pass runs again only
+  // where later passes drew: a second pass reading every pixel back cost about a tenth of the
+  // day frame on llvmpipe (docs/performance.md). Elsewhere (the night's light drawn, the
+  // analytic skies, the physical one from space) the tone pass maps every pixel after the others.
+  bool folded = false;
+  if (foldTone_ && !nightLight && state.conditions.model == skyig::sky::SkyModel::Physical) {
+    (toneTarget.texture() == display_->texture() ? *foldedDisplay_ : *foldedValues_).bindForDrawing();
+    folded = drawSky(state, channel, tone_->foldedDefines());
+  } else {
+    hdr_->bindForDrawing();
+    drawSky(state, channel, {});
+  }
+  hdr_->bindForDrawing();
+  glm::ivec4 moonPixels(0);
+  if (state.ephemeris) moonPixels = (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, channel);
+  if (nightLight) (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
+  if (!stars_) stars_ = std::make_unique<StarPass>();
+  glBindVertexArray(emptyVao_);
   // Stars and planets as displayed, against the sky without them; the tone pass adds them to
   // the mapped sky, so it never maps a star as if it were sky (docs/night-sky-stars.md).
   const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
@@ -241,13 +278,12 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
   stars_->drawDisplayed(state.starField, ndcToWorld, hdr_->texture());
   glBindTextureUnit(SKYIG_UNIT_HDR_IMAGE, hdr_->texture());
   glBindTextureUnit(SKYIG_UNIT_POINT_SOURCES, pointSources_->texture());
-  // The variant of the display's operator, with rod vision only where some of the view is dim
-  // enough (sky/shown_layers.h) and the glare veil of the sources that give light.
-  std::vector<glm::dvec3> glareSources;
-  for (const skyig::sky::eye::GlareSource& g : litGlareSources(state)) glareSources.push_back(g.direction);
-  if (!tone_) tone_ = std::make_unique<TonePass>();
-  tone_->draw({channel.display.toneOperator != skyig::sky::ToneOperator::Histogram, !state.shown.mesopic}, ndcToWorld,
-              toneTarget, glareSources);
+  if (folded)
+    tone_->drawOver(toneTarget, {moonPixels}, [&](const GlProgram& quads) {
+      stars_->drawFootprints(state.starField, ndcToWorld, hdr_->texture(), quads);
+    });
+  else
+    tone_->draw(toneTarget);
   // Then into the HDR image in absolute units, every value kept for the EXR.
   hdr_->bindForDrawing();
   stars_->draw(state.starField, ndcToWorld);
@@ -261,7 +297,10 @@ void SkyRenderer::drawGoggleChannel(const skyig::sky::SkyState& state, const sky
   // Every layer of the night: the goggle sees light far below the eye's threshold, so what the
   // eye's visibility leaves out (sky/shown_layers.h) is drawn here, but for the diffuse night
   // light with the sun up: the sunlit sky outshines it by a million in any band.
-  drawSkyPass(state, attitude, c);
+  ensureTargets(c.width, c.height);
+  bindChannelBlocks(state, attitude, c);
+  hdr_->bindForDrawing();
+  drawSky(state, c, {});
   if (state.ephemeris) {
     (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, c);
     if (state.sunAltitude < 0.0)

@@ -18,6 +18,7 @@
 #include "render/passes/warp_blend_pass.h"
 
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -69,6 +70,11 @@ class SkyRenderer {
     drawSkyPass(state, state.observer.attitude, channel);
   }
 
+  // Whether the physical sky pass maps its own pixels to the display where no full-screen pass
+  // follows it (on by default; drawChannel in sky_renderer.cpp): off, the tone pass maps every
+  // pixel after the others, as it always did; for the tests and the benchmark that compare the two.
+  void setToneFolding(bool on) { foldTone_ = on; }
+
   // Copies the last tone-reproduced frame to the window's back buffer (windowed channels): the
   // projector's image when the last draw was drawProjector.
   void presentToDefaultFramebuffer(int windowWidth, int windowHeight) const;
@@ -104,6 +110,14 @@ class SkyRenderer {
 
  private:
   void ensureTargets(int width, int height);
+  // The frame, sky and band blocks of a channel, uploaded and bound.
+  void bindChannelBlocks(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                         const skyig::sky::ChannelConfig& channel);
+  // The sky pass into the bound framebuffer; with toneDefines (TonePass::foldedDefines) the
+  // physical pass maps its pixels to the display too, into the framebuffer's second target:
+  // whether it did.
+  bool drawSky(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel,
+               const std::string& toneDefines);
   // Every pass of the channel, the tone pass into `toneTarget` with a dither of `ditherLsb`.
   void drawChannel(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                    const skyig::sky::ChannelConfig& channel, const RenderTarget& toneTarget, float ditherLsb);
@@ -128,6 +142,10 @@ class SkyRenderer {
   std::unique_ptr<RenderTarget> display_;
   std::unique_ptr<RenderTarget> pointSources_;  // displayed stars, display cd/m^2 (StarPass::drawDisplayed)
   std::unique_ptr<RenderTarget> displayValues_;  // a projector channel's undithered display values (RGBA16F)
+  // The HDR image with the display (or the projector's display values) beside it, for a sky
+  // pass that maps its own pixels.
+  std::unique_ptr<TwoTargetFramebuffer> foldedDisplay_, foldedValues_;
+  bool foldTone_ = true;
   std::unique_ptr<WarpBlendPass> warpBlend_;     // the first time a projector is drawn
   // The calibrations drawn so far and their maps on the GPU; holding them keeps their
   // addresses from being reused by another calibration.

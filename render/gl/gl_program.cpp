@@ -44,11 +44,15 @@ GLuint linkProgram(std::initializer_list<GLuint> shaders, const std::string& wha
   return program;
 }
 
-GlProgram::GlProgram(const std::string& vertexPath, const std::string& fragmentPath, const std::string& defines) {
-  const GLuint vs = compileShaderStage(GL_VERTEX_SHADER, vertexPath, defines);
+GlProgram::GlProgram(const std::string& vertexPath, const std::string& fragmentPath, const std::string& defines)
+    : GlProgram(vertexPath, defines, fragmentPath, defines) {}
+
+GlProgram::GlProgram(const std::string& vertexPath, const std::string& vertexDefines, const std::string& fragmentPath,
+                     const std::string& fragmentDefines) {
+  const GLuint vs = compileShaderStage(GL_VERTEX_SHADER, vertexPath, vertexDefines);
   GLuint fs = 0;
   try {
-    fs = compileShaderStage(GL_FRAGMENT_SHADER, fragmentPath, defines);
+    fs = compileShaderStage(GL_FRAGMENT_SHADER, fragmentPath, fragmentDefines);
   } catch (...) {
     glDeleteShader(vs);
     throw;

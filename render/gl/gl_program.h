@@ -26,6 +26,10 @@ class GlProgram {
  public:
   // `defines` go to both stages (a variant of the same files: assembleShader).
   GlProgram(const std::string& vertexPath, const std::string& fragmentPath, const std::string& defines = {});
+  // Each stage its own defines: one stage shared with another program that must run exactly as
+  // it does there (the displayed stars' quads, under the tone pass's fragment).
+  GlProgram(const std::string& vertexPath, const std::string& vertexDefines, const std::string& fragmentPath,
+            const std::string& fragmentDefines);
   ~GlProgram();
   GlProgram(const GlProgram&) = delete;
   GlProgram& operator=(const GlProgram&) = delete;

@@ -40,4 +40,31 @@ void RenderTarget::bindForDrawing() const {
   glViewport(0, 0, width_, height_);
 }
 
+TwoTargetFramebuffer::TwoTargetFramebuffer(const RenderTarget& first, const RenderTarget& second)
+    : width_(first.width()), height_(first.height()) {
+  if (second.width() != width_ || second.height() != height_)
+    throw GlContextError("two targets of " + std::to_string(width_) + "x" + std::to_string(height_) + " and " +
+                         std::to_string(second.width()) + "x" + std::to_string(second.height()) + " in one framebuffer");
+  glCreateFramebuffers(1, &framebuffer_);
+  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, first.texture(), 0);
+  glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT1, second.texture(), 0);
+  if (first.depthRenderbuffer() != 0)
+    glNamedFramebufferRenderbuffer(framebuffer_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, first.depthRenderbuffer());
+  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};  // fragment output i -> attachment i
+  glNamedFramebufferDrawBuffers(framebuffer_, 2, buffers);
+  const GLenum status = glCheckNamedFramebufferStatus(framebuffer_, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    glDeleteFramebuffers(1, &framebuffer_);
+    throw GlContextError("two-target framebuffer of " + std::to_string(width_) + "x" + std::to_string(height_) +
+                         " is incomplete (status 0x" + std::to_string(status) + ")");
+  }
+}
+
+TwoTargetFramebuffer::~TwoTargetFramebuffer() { glDeleteFramebuffers(1, &framebuffer_); }
+
+void TwoTargetFramebuffer::bindForDrawing() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glViewport(0, 0, width_, height_);
+}
+
 }  // namespace skyig::render

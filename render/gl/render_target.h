@@ -16,6 +16,7 @@ class RenderTarget {
   void bindForDrawing() const;
   GLuint texture() const { return texture_; }
   GLuint framebuffer() const { return framebuffer_; }
+  GLuint depthRenderbuffer() const { return depth_; }  // 0 without depth
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -25,6 +26,22 @@ class RenderTarget {
   GLuint texture_ = 0;
   GLuint framebuffer_ = 0;
   GLuint depth_ = 0;
+};
+
+// One framebuffer drawing into two targets' colour textures at once, `first`'s at colour
+// attachment 0 (with its depth, if it has one) and `second`'s at 1: a pass with two outputs
+// (the physical sky pass writing the light and the display values). Both of one size.
+class TwoTargetFramebuffer {
+ public:
+  TwoTargetFramebuffer(const RenderTarget& first, const RenderTarget& second);
+  ~TwoTargetFramebuffer();
+  TwoTargetFramebuffer(const TwoTargetFramebuffer&) = delete;
+  TwoTargetFramebuffer& operator=(const TwoTargetFramebuffer&) = delete;
+  void bindForDrawing() const;
+
+ private:
+  int width_, height_;
+  GLuint framebuffer_ = 0;
 };
 
 }  // namespace skyig::render

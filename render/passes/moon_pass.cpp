@@ -48,16 +48,17 @@ MoonPass::~MoonPass() {
   glDeleteVertexArrays(1, &emptyVao_);
 }
 
-void MoonPass::draw(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
-                    const skyig::sky::ChannelConfig& channel) {
+glm::ivec4 MoonPass::draw(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                          const skyig::sky::ChannelConfig& channel) {
   // Well below the horizon (more than the largest dip of the horizon, 5 deg at 25 km) nothing
   // of it can be seen: skip the pass.
   const skyig::sky::night::MoonDisc* d = state.moonDisc.get();
-  if (!d || d->centreSeen.z < -std::sin(5.5 * std::numbers::pi / 180.0)) return;
-  draw(*d, skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(attitude, channel.offset), channel.frustum), channel);
+  if (!d || d->centreSeen.z < -std::sin(5.5 * std::numbers::pi / 180.0)) return glm::ivec4(0);
+  return draw(*d, skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(attitude, channel.offset), channel.frustum), channel);
 }
 
-void MoonPass::draw(const skyig::sky::night::MoonDisc& d, const glm::dmat3& ndcToWorldMatrix, const skyig::sky::ChannelConfig& channel) {
+glm::ivec4 MoonPass::draw(const skyig::sky::night::MoonDisc& d, const glm::dmat3& ndcToWorldMatrix,
+                          const skyig::sky::ChannelConfig& channel) {
   extinction_.use(d.extinction);
   const GLuint p = program_.id();
   // The quad: the disc's radius plus three pixels for the limb ramp (the widest pixel of the
@@ -68,9 +69,10 @@ void MoonPass::draw(const skyig::sky::night::MoonDisc& d, const glm::dmat3& ndcT
   const double halfSize = 1.2 * std::tan(d.angularRadiusRad) + 3.0 * pixel;
   const glm::dvec3 up = std::abs(d.centreSeen.z) < 0.999 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
   const glm::dvec3 right = glm::normalize(glm::cross(d.centreSeen, up));
+  const glm::dvec3 quadUp = glm::cross(right, d.centreSeen);
   set3(p, "moonCentreSeen", d.centreSeen);
   set3(p, "quadRight", right);
-  set3(p, "quadUp", glm::cross(right, d.centreSeen));
+  set3(p, "quadUp", quadUp);
   set1(p, "quadHalfSize", halfSize);
   const glm::mat3 worldToNdc(glm::inverse(ndcToWorldMatrix));
   glProgramUniformMatrix3fv(p, glGetUniformLocation(p, "worldToNdc"), 1, GL_FALSE, &worldToNdc[0][0]);
@@ -91,6 +93,33 @@ void MoonPass::draw(const skyig::sky::night::MoonDisc& d, const glm::dmat3& ndcT
   program_.use();
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
   glDisable(GL_BLEND);
+  // The quad as moon.vert places it, in eye coordinates (z the depth along the view axis),
+  // clipped to the half-space in front of the eye as the rasteriser clips it, then projected.
+  const glm::dmat3 toNdc = glm::inverse(ndcToWorldMatrix);
+  std::vector<glm::dvec3> quad;
+  for (const glm::dvec2 corner : {glm::dvec2(-1, -1), glm::dvec2(1, -1), glm::dvec2(1, 1), glm::dvec2(-1, 1)})
+    quad.push_back(toNdc * (d.centreSeen + halfSize * (corner.x * right + corner.y * quadUp)));
+  constexpr double kNear = 1e-6;
+  std::vector<glm::dvec3> inFront;
+  for (std::size_t i = 0; i < quad.size(); ++i) {
+    const glm::dvec3& a = quad[i];
+    const glm::dvec3& b = quad[(i + 1) % quad.size()];
+    if (a.z >= kNear) inFront.push_back(a);
+    if ((a.z >= kNear) != (b.z >= kNear)) inFront.push_back(a + (b - a) * ((kNear - a.z) / (b.z - a.z)));
+  }
+  if (inFront.empty()) return glm::ivec4(0);  // behind the eye
+  glm::dvec2 lo(1e300), hi(-1e300);
+  for (const glm::dvec3& q : inFront) {
+    const glm::dvec2 px = (glm::dvec2(q) / q.z * 0.5 + 0.5) * glm::dvec2(channel.width, channel.height);
+    lo = glm::min(lo, px);
+    hi = glm::max(hi, px);
+  }
+  // A pixel of margin (the rasteriser covers the pixels whose centres are inside), clamped to
+  // the channel in double before the integers.
+  const auto clampTo = [](double v, int n) { return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(n))); };
+  const int x0 = clampTo(std::floor(lo.x) - 1.0, channel.width), x1 = clampTo(std::ceil(hi.x) + 1.0, channel.width);
+  const int y0 = clampTo(std::floor(lo.y) - 1.0, channel.height), y1 = clampTo(std::ceil(hi.y) + 1.0, channel.height);
+  return glm::ivec4(x0, y0, x1 - x0, y1 - y0);
 }
 
 }  // namespace skyig::render

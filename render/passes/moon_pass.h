@@ -7,6 +7,7 @@
 #include "sky/night/moon_disc.h"
 
 #include <glm/mat3x3.hpp>
+#include <glm/vec4.hpp>
 
 #include <memory>
 
@@ -25,11 +26,13 @@ class MoonPass {
   MoonPass& operator=(const MoonPass&) = delete;
 
   // Adds the state's moon (skyig::sky::SkyState::moonDisc) to the bound target; nothing without one. The frame block
-  // (shaders/common/uniforms.h) of `channel` must be bound.
-  void draw(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
-            const skyig::sky::ChannelConfig& channel);
+  // (shaders/common/uniforms.h) of `channel` must be bound. Returns the pixels it may have
+  // drawn: x, y, width, height, a rectangle holding the quad (width 0: none).
+  glm::ivec4 draw(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                  const skyig::sky::ChannelConfig& channel);
   // The same for a given disc and the channel's eq. 22 matrix (ndcToWorld).
-  void draw(const skyig::sky::night::MoonDisc& disc, const glm::dmat3& ndcToWorld, const skyig::sky::ChannelConfig& channel);
+  glm::ivec4 draw(const skyig::sky::night::MoonDisc& disc, const glm::dmat3& ndcToWorld,
+                  const skyig::sky::ChannelConfig& channel);
 
  private:
   GlProgram program_;

@@ -127,13 +127,34 @@ void PhysicalSkyPass::makeCurrent(TableSet set) {
     for (const auto& v : variants) programs.push_back(v.get());
   for (const auto& variants : withDisc_)
     for (const auto& v : variants) programs.push_back(v.get());
-  for (const Program* program : programs) {
-    const GLuint p = program->program.id();
-    setAtmosphereUniforms(p, "atm", current_.model->parameters(0));
-    glProgramUniform3fv(p, glGetUniformLocation(p, "solarIrradianceXyz"), 1, &f3(current_.small.solarIrradianceXyz)[0]);
-    glProgramUniform3fv(p, glGetUniformLocation(p, "limbDarkeningXyz"), 1, &f3(current_.small.limbDarkeningXyz)[0]);
-    glProgramUniform1f(p, glGetUniformLocation(p, "groundAlbedo"), static_cast<float>(current_.small.groundAlbedo));
+  for (const auto& [defines, program] : folded_) programs.push_back(program.get());
+  for (const Program* program : programs) setModelUniforms(*program);
+}
+
+void PhysicalSkyPass::setModelUniforms(const Program& program) const {
+  const GLuint p = program.program.id();
+  setAtmosphereUniforms(p, "atm", current_.model->parameters(0));
+  glProgramUniform3fv(p, glGetUniformLocation(p, "solarIrradianceXyz"), 1, &f3(current_.small.solarIrradianceXyz)[0]);
+  glProgramUniform3fv(p, glGetUniformLocation(p, "limbDarkeningXyz"), 1, &f3(current_.small.limbDarkeningXyz)[0]);
+  glProgramUniform1f(p, glGetUniformLocation(p, "groundAlbedo"), static_cast<float>(current_.small.groundAlbedo));
+}
+
+const PhysicalSkyPass::Program& PhysicalSkyPass::variant(bool moonlit, Part part, bool disc,
+                                                         const std::string& toneDefines) {
+  if (toneDefines.empty()) return disc ? *withDisc_[moonlit ? 1 : 0][part] : *inside_[moonlit ? 1 : 0][part];
+  std::string defines = moonlit ? "#define SKYIG_MOONLIT\n" : "";
+  if (part == kSky) defines += "#define SKYIG_SKY\n";
+  if (part == kGround) defines += "#define SKYIG_GROUND\n";
+  if (disc) defines += "#define SKYIG_SUN_DISC\n";
+  defines += "#define SKYIG_FOLD_TONE\n" + toneDefines;
+  std::unique_ptr<Program>& p = folded_[defines];
+  if (!p) {  // compiled when a frame first needs it: a node uses a few of the many
+    p = std::make_unique<Program>(disc ? "passes/sun_disc.vert"
+                                       : (part == kGround ? "passes/ground_cap.vert" : "passes/fullscreen.vert"),
+                                  "passes/physical_sky.frag", defines);
+    if (current_.model) setModelUniforms(*p);
   }
+  return *p;
 }
 
 void PhysicalSkyPass::releaseSlices() {
@@ -235,8 +256,9 @@ void PhysicalSkyPass::setFrameUniforms(const Program& program, const glm::dvec3&
   glProgramUniform4fv(p, program.sunRefraction, 1, &refraction[0]);
 }
 
-void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirection, const glm::dvec3& moonDirection,
-                           const glm::dvec3& moonlightScale, const glm::dvec4& sunRefraction) {
+bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirection, const glm::dvec3& moonDirection,
+                           const glm::dvec3& moonlightScale, const glm::dvec4& sunRefraction,
+                           const std::string& toneDefines) {
   stepUpload();
   if (!current_.model) throw std::logic_error("PhysicalSkyPass::draw before use()");
   const atmosphere::AtmosphereParameters& a = current_.model->parameters(0);
@@ -254,7 +276,7 @@ void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
     glProgramUniform3fv(p, space_.moonScale, 1, &f3(moonlightScale)[0]);
     space_.program.use();
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    return;
+    return false;
   }
   // The camera inside the atmosphere (every IG frame): what every pixel shares, in double, once.
   const glm::dvec4 sunUvwz = shader::scatteringUvwzFromRMuMuSNu(a, r, 1.0, std::clamp(glm::dot(camera, sunDirection) / r, -1.0, 1.0), 0.0, false);
@@ -301,7 +323,7 @@ void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
     prepare(*reference_);
     glProgramUniform1i(reference_->program.id(), reference_->moonOn, moon ? 1 : 0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    return;
+    return false;
   }
   GLint depthType = GL_NONE;
   if (target != 0)
@@ -314,33 +336,34 @@ void PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
   };
   if (depthType == GL_NONE) {
-    prepare(insideProgram(moon, kBoth));
+    prepare(variant(moon, kBoth, false, toneDefines));
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    drawDisc(discProgram(moon, kBoth));
-  } else {
-    const Program& ground = insideProgram(moon, kGround);
-    prepare(ground);
-    // The ring a little above the horizon (mu = -sqrt(1 - (Rg/r)^2)): 0.1 deg encloses the
-    // horizon's circle whatever the fan's chords cut (2 pi / 256)^2 / 8 = 7.5e-5 rad inside it.
-    constexpr int kSegments = 256;
-    const double horizon = std::asin(-std::sqrt(std::max(0.0, 1.0 - (a.bottom_radius / r) * (a.bottom_radius / r))));
-    const double ring = horizon + 0.1 * std::numbers::pi / 180.0;
-    glProgramUniform3f(ground.program.id(), ground.groundCap, static_cast<float>(std::sin(ring)),
-                       static_cast<float>(std::cos(ring)), static_cast<float>(kSegments));
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);
-    glClearDepth(1.0);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    glDepthFunc(GL_ALWAYS);
-    glDrawArrays(GL_TRIANGLES, 0, 3 * kSegments);
-    prepare(insideProgram(moon, kSky));
-    glDepthFunc(GL_LESS);  // both at depth 0.5: the sky only where the clear's 1 is left
-    glDepthMask(GL_FALSE);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    drawDisc(discProgram(moon, kSky));  // where the sky is: no depth written
-    glDepthMask(GL_TRUE);
-    glDisable(GL_DEPTH_TEST);
+    drawDisc(variant(moon, kBoth, true, toneDefines));
+    return !toneDefines.empty();
   }
+  const Program& ground = variant(moon, kGround, false, toneDefines);
+  prepare(ground);
+  // The ring a little above the horizon (mu = -sqrt(1 - (Rg/r)^2)): 0.1 deg encloses the
+  // horizon's circle whatever the fan's chords cut (2 pi / 256)^2 / 8 = 7.5e-5 rad inside it.
+  constexpr int kSegments = 256;
+  const double horizon = std::asin(-std::sqrt(std::max(0.0, 1.0 - (a.bottom_radius / r) * (a.bottom_radius / r))));
+  const double ring = horizon + 0.1 * std::numbers::pi / 180.0;
+  glProgramUniform3f(ground.program.id(), ground.groundCap, static_cast<float>(std::sin(ring)),
+                     static_cast<float>(std::cos(ring)), static_cast<float>(kSegments));
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
+  glClearDepth(1.0);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glDepthFunc(GL_ALWAYS);
+  glDrawArrays(GL_TRIANGLES, 0, 3 * kSegments);
+  prepare(variant(moon, kSky, false, toneDefines));
+  glDepthFunc(GL_LESS);  // both at depth 0.5: the sky only where the clear's 1 is left
+  glDepthMask(GL_FALSE);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  drawDisc(variant(moon, kSky, true, toneDefines));  // where the sky is: no depth written
+  glDepthMask(GL_TRUE);
+  glDisable(GL_DEPTH_TEST);
+  return !toneDefines.empty();
 }
 
 }  // namespace skyig::render

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -44,10 +45,15 @@ class PhysicalSkyPass {
   // directions (airless), all in the local east-north-up frame; a zero moonlightScale skips the
   // moon. sunRefraction is the refraction about the sun's apparent centre (SkyState::
   // sunRefraction; zero: none) the disc is drawn through. The frame block must be bound.
-  void draw(const glm::dvec3& camera, const glm::dvec3& sunDirection,
+  // toneDefines, when not empty, are the tone pass's variant (TonePass::foldedDefines): the pass
+  // then also maps each pixel to the display and writes it at SKYIG_OUTPUT_FOLDED_DISPLAY
+  // (passes/physical_sky.frag, SKYIG_FOLD_TONE); the tone block must be bound, and the veil's
+  // grid at its unit if the defines read it. Returns whether it did (never from space, whose
+  // program has no such variant, nor for a reference pass).
+  bool draw(const glm::dvec3& camera, const glm::dvec3& sunDirection,
             const glm::dvec3& moonDirection = glm::dvec3(0.0, 0.0, 1.0),
             const glm::dvec3& moonlightScale = glm::dvec3(0.0),
-            const glm::dvec4& sunRefraction = glm::dvec4(0.0));
+            const glm::dvec4& sunRefraction = glm::dvec4(0.0), const std::string& toneDefines = {});
 
   const atmosphere::AtmosphereModel* current() const { return current_.model.get(); }
   const atmosphere::AtmosphereModel* pending() const { return pending_ ? pending_->set.model.get() : nullptr; }
@@ -97,8 +103,9 @@ class PhysicalSkyPass {
   // Which rays a variant of physical_sky.frag draws: both (a target without depth), the sky's
   // (where the ground's wrote no depth), the ground's (first, on the cap below the horizon).
   enum Part { kBoth = 0, kSky = 1, kGround = 2 };
-  const Program& insideProgram(bool moonlit, Part part) const { return *inside_[moonlit ? 1 : 0][part]; }
-  const Program& discProgram(bool moonlit, Part part) const { return *withDisc_[moonlit ? 1 : 0][part]; }
+  // The program of a variant: the eager ones without toneDefines, else a folded one.
+  const Program& variant(bool moonlit, Part part, bool disc, const std::string& toneDefines);
+  void setModelUniforms(const Program& program) const;
 
   // This frame's 2D slice of the scattering tables for one light (physical_sky_slice.frag).
   struct Slice {
@@ -115,6 +122,8 @@ class PhysicalSkyPass {
   std::array<std::array<std::unique_ptr<Program>, 3>, 2> inside_;
   // The same with the sun's disc, drawn again on the quad around it, by [moonlit][kBoth or kSky].
   std::array<std::array<std::unique_ptr<Program>, 2>, 2> withDisc_;
+  // The variants that map to the display too, by their defines (variant()).
+  std::map<std::string, std::unique_ptr<Program>> folded_;
   std::unique_ptr<Program> reference_;  // another inside fragment, drawn alone (the reference)
   Program space_;
   GlProgram sliceProgram_;

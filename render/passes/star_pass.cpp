@@ -86,4 +86,14 @@ void StarPass::drawDisplayed(const std::shared_ptr<const skyig::sky::night::Star
   glDisable(GL_BLEND);
 }
 
+void StarPass::drawFootprints(const std::shared_ptr<const skyig::sky::night::StarField>& field,
+                              const glm::dmat3& ndcToWorld, GLuint background, const GlProgram& program) {
+  const GLsizei count = prepare(field, skyig::sky::SpectralBand::Visible, program,
+                                glGetUniformLocation(program.id(), "uWorldToNdc"), ndcToWorld);
+  glDisable(GL_BLEND);  // the program writes what the pixel shows, once or again: nothing adds
+  if (count == 0) return;
+  glBindTextureUnit(SKYIG_UNIT_STAR_BACKGROUND, background);
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
+}
+
 }  // namespace skyig::render

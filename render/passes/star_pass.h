@@ -35,6 +35,11 @@ class StarPass {
   // be bound; `background` is the HDR image of the sky without the sources (cd/m^2).
   void drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
                      GLuint background);
+  // The quads drawDisplayed() drew with the same arguments, drawn again without blending by
+  // `program`: passes/star_display.vert compiled as drawDisplayed() compiles it, with another
+  // fragment (the tone pass's, where the sky pass mapped its own pixels: TonePass::drawOver).
+  void drawFootprints(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
+                      GLuint background, const GlProgram& program);
 
  private:
   static std::vector<float> instanceData(const skyig::sky::night::StarField& field, skyig::sky::SpectralBand band);

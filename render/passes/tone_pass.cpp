@@ -54,59 +54,89 @@ TonePass::TonePass() { glCreateVertexArrays(1, &emptyVao_); }
 
 TonePass::~TonePass() { glDeleteVertexArrays(1, &emptyVao_); }
 
+std::string TonePass::defines(const Variant& variant, int glareSources, bool fromGrid) {
+  std::string d = variant.tumblinRushmeier ? "#define SKYIG_TONE_TUMBLIN_RUSHMEIER\n" : "#define SKYIG_TONE_CURVE\n";
+  if (glareSources > 0) d += "#define SKYIG_GLARE " + std::to_string(glareSources) + "\n";
+  if (fromGrid) d += "#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX " + std::to_string(kGlareCellPx) + ".0\n";
+  if (variant.photopic) d += "#define SKYIG_PHOTOPIC\n";
+  return d;
+}
+
 const GlProgram& TonePass::program(const Variant& variant, int glareSources, bool fromGrid) {
   std::unique_ptr<GlProgram>& p = programs_[static_cast<std::size_t>(
       (variant.tumblinRushmeier ? 12 : 0) + (fromGrid ? 6 : 0) + 2 * glareSources + (variant.photopic ? 1 : 0))];
-  if (!p) {
-    std::string defines = variant.tumblinRushmeier ? "#define SKYIG_TONE_TUMBLIN_RUSHMEIER\n" : "#define SKYIG_TONE_CURVE\n";
-    if (glareSources > 0) defines += "#define SKYIG_GLARE " + std::to_string(glareSources) + "\n";
-    if (fromGrid) defines += "#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX " + std::to_string(kGlareCellPx) + ".0\n";
-    if (variant.photopic) defines += "#define SKYIG_PHOTOPIC\n";
-    p = std::make_unique<GlProgram>("passes/fullscreen.vert", "passes/tone.frag", defines);
-  }
+  if (!p) p = std::make_unique<GlProgram>("passes/fullscreen.vert", "passes/tone.frag", defines(variant, glareSources, fromGrid));
   return *p;
 }
 
-void TonePass::draw(const Variant& variant, const glm::dmat3& ndcToWorld, const RenderTarget& target,
-                    const std::vector<glm::dvec3>& glareSources) {
-  glBindVertexArray(emptyVao_);
-  const int n = static_cast<int>(std::min<std::size_t>(glareSources.size(), 2));
-  const int width = target.width(), height = target.height();
-  if (n == 0) {
-    target.bindForDrawing();
-    program(variant, n, false).use();
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    return;
-  }
-  const GlareGrid g = glareGrid(ndcToWorld, width, height, glareSources);
-  // The veil at the grid's vertices.
-  if (!veil_ || veil_->width() != g.columns + 1 || veil_->height() != g.rows + 1) {
-    veil_ = std::make_unique<RenderTarget>(g.columns + 1, g.rows + 1, GL_RGBA32F);
+void TonePass::prepare(const Variant& variant, const glm::dmat3& ndcToWorld, int width, int height,
+                       const std::vector<glm::dvec3>& glareSources) {
+  variant_ = variant;
+  sources_ = static_cast<int>(std::min<std::size_t>(glareSources.size(), 2));
+  grid_ = GlareGrid{};
+  if (sources_ == 0) return;
+  grid_ = glareGrid(ndcToWorld, width, height, glareSources);
+  if (!veil_ || veil_->width() != grid_.columns + 1 || veil_->height() != grid_.rows + 1) {
+    veil_ = std::make_unique<RenderTarget>(grid_.columns + 1, grid_.rows + 1, GL_RGBA32F);
     glTextureParameteri(veil_->texture(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(veil_->texture(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(veil_->texture(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(veil_->texture(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }
-  std::unique_ptr<GlProgram>& veil = veilPrograms_[static_cast<std::size_t>(n - 1)];
+  std::unique_ptr<GlProgram>& veil = veilPrograms_[static_cast<std::size_t>(sources_ - 1)];
   if (!veil)
     veil = std::make_unique<GlProgram>("passes/fullscreen.vert", "passes/glare_veil.frag",
-                                       "#define SKYIG_GLARE " + std::to_string(n) + "\n#define SKYIG_GLARE_CELL_PX " +
+                                       "#define SKYIG_GLARE " + std::to_string(sources_) + "\n#define SKYIG_GLARE_CELL_PX " +
                                            std::to_string(kGlareCellPx) + ".0\n");
+  glBindVertexArray(emptyVao_);
   veil_->bindForDrawing();
   veil->use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  // Every pixel with the veil read from the grid, then those near a source again with the veil
-  // per pixel (overlapping boxes draw the same values twice).
-  target.bindForDrawing();
   glBindTextureUnit(SKYIG_UNIT_GLARE_VEIL, veil_->texture());
-  program(variant, n, true).use();
+}
+
+void TonePass::draw(const RenderTarget& target) {
+  glBindVertexArray(emptyVao_);
+  target.bindForDrawing();
+  // Every pixel with the veil read from the grid, then those near a source again with the veil
+  // per pixel.
+  program(variant_, sources_, sources_ > 0).use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  program(variant, n, false).use();
+  drawNearBoxes(target);
+}
+
+void TonePass::drawOver(const RenderTarget& target, const std::vector<glm::ivec4>& rectangles,
+                        const std::function<void(const GlProgram&)>& drawQuads) {
+  glBindVertexArray(emptyVao_);
+  target.bindForDrawing();
+  program(variant_, sources_, sources_ > 0).use();
   glEnable(GL_SCISSOR_TEST);
-  for (const glm::ivec4& b : g.nearBoxes) {
+  for (const glm::ivec4& r : rectangles) {
+    if (r.z <= 0 || r.w <= 0) continue;
+    glScissor(r.x, r.y, r.z, r.w);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glDisable(GL_SCISSOR_TEST);
+  // The stars' vertex stage exactly as the displayed-star pass compiled it (no defines), so the
+  // quads fall where it drew; the fragment is this frame's variant.
+  std::unique_ptr<GlProgram>& quads = starQuadPrograms_[static_cast<std::size_t>(
+      (variant_.tumblinRushmeier ? 6 : 0) + 2 * sources_ + (variant_.photopic ? 1 : 0))];
+  if (!quads)
+    quads = std::make_unique<GlProgram>("passes/star_display.vert", "", "passes/tone.frag",
+                                        defines(variant_, sources_, sources_ > 0));
+  drawQuads(*quads);
+  glBindVertexArray(emptyVao_);
+  drawNearBoxes(target);
+}
+
+void TonePass::drawNearBoxes(const RenderTarget& target) {
+  if (sources_ == 0) return;
+  program(variant_, sources_, false).use();
+  glEnable(GL_SCISSOR_TEST);
+  for (const glm::ivec4& b : grid_.nearBoxes) {
     if (b.x >= b.y || b.z >= b.w) continue;
     const int x0 = b.x * kGlareCellPx, y0 = b.z * kGlareCellPx;
-    glScissor(x0, y0, std::min(b.y * kGlareCellPx, width) - x0, std::min(b.w * kGlareCellPx, height) - y0);
+    glScissor(x0, y0, std::min(b.y * kGlareCellPx, target.width()) - x0, std::min(b.w * kGlareCellPx, target.height()) - y0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
   glDisable(GL_SCISSOR_TEST);

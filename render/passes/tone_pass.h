@@ -17,7 +17,9 @@
 #include <glm/vec4.hpp>
 
 #include <array>
+#include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace skyig::render {
@@ -49,19 +51,39 @@ class TonePass {
   TonePass(const TonePass&) = delete;
   TonePass& operator=(const TonePass&) = delete;
 
-  // Draws into `target`. The frame and tone blocks must be bound, the HDR image and the
-  // point sources at their units; `glareSources` are the directions of the tone block's glare
-  // sources that give light (at most 2, in its order).
-  void draw(const Variant& variant, const glm::dmat3& ndcToWorld, const RenderTarget& target,
-            const std::vector<glm::dvec3>& glareSources);
+  // A frame's tone starts here: its variant, and the veil at the grid's vertices of a
+  // width x height channel for `glareSources`, the directions of the tone block's glare sources
+  // that give light (at most 2, in its order; none: no veil). The frame and tone blocks must be
+  // bound. Then either draw(), or the folded sky pass and drawOver().
+  void prepare(const Variant& variant, const glm::dmat3& ndcToWorld, int width, int height,
+               const std::vector<glm::dvec3>& glareSources);
+  // Every pixel of `target`, from the HDR image and the point sources at their units.
+  void draw(const RenderTarget& target);
+  // The defines with which the physical sky pass maps its pixels as draw() would everywhere
+  // but in the boxes of the exact veil (PhysicalSkyPass::draw's toneDefines); the veil's grid is
+  // bound at its unit by prepare().
+  std::string foldedDefines() const { return defines(variant_, sources_, sources_ > 0); }
+  // After a folded sky pass: `target` again only where later passes drew. The rectangles (x, y,
+  // width, height in pixels; the moon's quad), the quads `drawQuads` draws with the program it
+  // is given (the displayed stars': StarPass::drawFootprints, with the program of
+  // passes/star_display.vert and the tone fragment), then the boxes of the exact veil.
+  void drawOver(const RenderTarget& target, const std::vector<glm::ivec4>& rectangles,
+                const std::function<void(const GlProgram&)>& drawQuads);
 
  private:
+  static std::string defines(const Variant& variant, int glareSources, bool fromGrid);
   // glareSources 0-2; fromGrid: the veil read from the grid's target.
   const GlProgram& program(const Variant& variant, int glareSources, bool fromGrid);
+  void drawNearBoxes(const RenderTarget& target);
   std::array<std::unique_ptr<GlProgram>, 24> programs_;
+  std::array<std::unique_ptr<GlProgram>, 12> starQuadPrograms_;  // passes/star_display.vert + passes/tone.frag
   std::array<std::unique_ptr<GlProgram>, 2> veilPrograms_;  // passes/glare_veil.frag, 1 or 2 sources
   std::unique_ptr<RenderTarget> veil_;                      // the veil at the grid's vertices
   GLuint emptyVao_ = 0;
+  // The frame's, from prepare().
+  Variant variant_;
+  int sources_ = 0;
+  GlareGrid grid_;
 };
 
 }  // namespace skyig::render

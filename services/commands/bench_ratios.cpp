@@ -125,11 +125,17 @@ int runRatiosBench(NodeConfig config, const RatiosOptions& opt) {
   render::SkyRenderer live;
   render::SkyRenderer reference;
   reference.usePhysicalSkyPass(render::makeReferenceSkyPass());
+  // The frame as it was drawn before the sky pass mapped its own pixels: the tone pass over
+  // every pixel after the others.
+  render::SkyRenderer toneEverywhere;
+  toneEverywhere.setToneFolding(false);
   std::vector<Item> items = {
       {"reference_sky_pass_day", "reference sky pass", &kDay, [&] { reference.drawSkyPass(day, channel); }, {}},
       {"sky_pass_day", "sky pass", &kDay, [&] { live.drawSkyPass(day, channel); }, {}},
       {"day_frame", "day frame (every pass + tone)", &kDay, [&] { live.draw(day, channel); }, {}},
       {"day_frame_sun_forced", "day frame, sun forced (no night)", &kDay, [&] { live.draw(dayForced, channel); }, {}},
+      {"day_frame_tone_over_every_pixel", "day frame, the tone pass over every pixel", &kDay,
+       [&] { toneEverywhere.draw(day, channel); }, {}},
       {"moonlit_night_frame", "night frame (every pass + tone)", &kMoonlit, [&] { live.draw(moonlit, channel); }, {}},
       {"moonless_night_frame", "night frame (every pass + tone)", &kMoonless, [&] { live.draw(moonless, channel); }, {}},
       {"reference_sky_pass_moonless_night", "reference sky pass", &kMoonless,
@@ -143,6 +149,8 @@ int runRatiosBench(NodeConfig config, const RatiosOptions& opt) {
       {"day_frame_over_sky_pass", "day frame / sky pass", "day_frame", "sky_pass_day"},
       {"day_frame_over_sun_forced_day_frame", "day frame / day frame with the sun forced", "day_frame",
        "day_frame_sun_forced"},
+      {"day_frame_over_tone_over_every_pixel", "day frame / the same with the tone pass over every pixel", "day_frame",
+       "day_frame_tone_over_every_pixel"},
       {"moonlit_night_frame_over_day_frame", "moonlit night frame / day frame", "moonlit_night_frame", "day_frame"},
       {"moonless_night_frame_over_day_frame", "moonless night frame / day frame", "moonless_night_frame", "day_frame"},
       {"bruneton_2017_estimate", "\u2248 x of Bruneton 2017 (sky pass / reference x 0.38)", "sky_pass_day",

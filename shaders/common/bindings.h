@@ -61,10 +61,12 @@
 #define SKYIG_UNIT_MOON_EXTINCTION 21  // ExtinctionTexture
 
 // Tone reproduction (passes/tone.frag, TonePass): the HDR target, the displayed stars and
-// planets to add (display cd/m^2), and the glare veil at the vertices of the pass's grid.
+// planets to add (display cd/m^2), and the glare veil at the vertices of the pass's grid; the
+// veil's unit clear of the sky pass's 0 to 7, since the sky pass reads it too when it maps its
+// own pixels (tone/tone_display.glsl).
 #define SKYIG_UNIT_HDR_IMAGE 0
 #define SKYIG_UNIT_POINT_SOURCES 1
-#define SKYIG_UNIT_GLARE_VEIL 2
+#define SKYIG_UNIT_GLARE_VEIL 8
 
 // The warp-and-blend pass (passes/warp_blend.frag, WarpBlendPass): the channel's undithered
 // display values and its HDR image, read through the warp; the projector's maps.
@@ -121,6 +123,9 @@
 #define SKYIG_OUTPUT_COLOR 0
 #define SKYIG_OUTPUT_SLICE_SCATTERING 0
 #define SKYIG_OUTPUT_SLICE_SINGLE_MIE 1
+// The physical sky pass mapping its own pixels (SKYIG_FOLD_TONE) writes the display values
+// beside the light, into SkyRenderer's framebuffer of both targets.
+#define SKYIG_OUTPUT_FOLDED_DISPLAY 1
 // The warp-and-blend pass writes both of WarpBlendPass's targets at once: the 8-bit image sent
 // to the projector and the light it contributes (cd/m^2).
 #define SKYIG_OUTPUT_PROJECTOR_DISPLAY 0

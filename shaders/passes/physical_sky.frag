@@ -20,6 +20,11 @@
 //   SKYIG_SKY       the rays that miss it, drawn after over the whole channel where the ground
 //                   variant wrote no depth: the sky's pixels never pay for the ground's
 //                   reflection. Neither: both, for a target without depth.
+//   SKYIG_FOLD_TONE with the tone pass's variant defines: the pass also writes what the display
+//                   is sent (tone/tone_display.glsl) at SKYIG_OUTPUT_FOLDED_DISPLAY, when it is
+//                   the frame's last full-screen pass: no second pass reads every pixel back
+//                   (SkyRenderer::drawChannel; the tone pass then runs only where later passes
+//                   drew: the moon's quad, the displayed stars, the boxes of the exact veil).
 // With the camera inside the atmosphere (every IG frame), r, u_r and u_mu_s are the same for
 // every pixel and come from the CPU (PhysicalSkyPass::draw): the scattering tables are read
 // from this frame's 2D slices (physical_sky_slice.frag); only u_mu and u_nu are per pixel.
@@ -29,6 +34,10 @@
 // atmosphere's functions; the vertex stage alone reads the frame block.)
 #include "passes/physical_sky_uniforms.glsl"
 #include "common/band.glsl"
+#ifdef SKYIG_FOLD_TONE
+#include "tone/tone_display.glsl"
+layout(location = SKYIG_OUTPUT_FOLDED_DISPLAY) out vec4 outDisplay;
+#endif
 
 // This frame's 2D slices of the scattering tables (physical_sky_slice.frag) for the sun and
 // the moon: x = nu texel, y = u_mu.
@@ -109,5 +118,9 @@ vec3 insideRec709(vec3 view) {
 void main() {
   // In a goggle's band the sum is weighted as sunlit sky, its other parts scaled above by their
   // weights' ratios to it (common/band.glsl).
-  outRadiance = vec4(max(inBand(insideRec709(normalize(vViewRay)), lightWeights.x), vec3(0.0)), 1.0);
+  vec3 radiance = max(inBand(insideRec709(normalize(vViewRay)), lightWeights.x), vec3(0.0));
+  outRadiance = vec4(radiance, 1.0);
+#ifdef SKYIG_FOLD_TONE
+  outDisplay = toneDisplayValue(radiance, vec3(0.0), gl_FragCoord.xy);  // no point source drawn yet
+#endif
 }

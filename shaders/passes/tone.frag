@@ -15,32 +15,18 @@
 // SKYIG_PHOTOPIC when no part of the view is dim enough for rod vision. A uniform branch would
 // cost llvmpipe both sides for every pixel.
 #include "common/uniforms.h"
-#include "tone/display_curve.glsl"
-#ifdef SKYIG_GLARE
-#include "tone/glare_veil.glsl"
-#endif
-#include "common/dither.glsl"
+#include "tone/tone_display.glsl"
 
 layout(binding = SKYIG_UNIT_HDR_IMAGE) uniform sampler2D hdrImage;
 // The displayed stars and planets (passes/star_display.vert): display cd/m^2 to add.
 layout(binding = SKYIG_UNIT_POINT_SOURCES) uniform sampler2D pointSourceImage;
-in vec2 vTexCoord;
 layout(location = SKYIG_OUTPUT_COLOR) out vec4 outDisplay;
 
-#ifdef SKYIG_GLARE_FROM_GRID
-// The veil at the vertices of a grid of SKYIG_GLARE_CELL_PX-pixel cells (passes/glare_veil.frag).
-layout(binding = SKYIG_UNIT_GLARE_VEIL) uniform sampler2D glareVeilGrid;
-#endif
-
+// Any geometry: the whole channel (passes/fullscreen.vert), or, where the sky pass mapped its
+// own pixels, only where a later pass drew (the displayed stars' quads, passes/star_display.vert,
+// and rectangles): it reads nothing but the fragment's position.
 void main() {
-  vec3 world = texelFetch(hdrImage, ivec2(gl_FragCoord.xy), 0).rgb;
-#if defined(SKYIG_GLARE_FROM_GRID)
-  world += texture(glareVeilGrid, (gl_FragCoord.xy / SKYIG_GLARE_CELL_PX + 0.5) / vec2(textureSize(glareVeilGrid, 0))).rgb;
-#elif defined(SKYIG_GLARE)
-  world += glareVeil(mat3(ndcToWorld) * vec3(gl_FragCoord.xy * viewport.zw * 2.0 - 1.0, 1.0));
-#endif
-  DisplayModel model = toneDisplayModel();
-  vec3 ld = toneMapLinear(world) + texelFetch(pointSourceImage, ivec2(gl_FragCoord.xy), 0).rgb;
-  vec3 n = displayValues(compressToDisplay(ld, rec709Luminance(ld), model.ambientLuminance + model.maxLuminance), model);
-  outDisplay = vec4(clamp(n + ditherLsb(gl_FragCoord.xy, adaptation.y), 0.0, 1.0), 1.0);
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  outDisplay = toneDisplayValue(texelFetch(hdrImage, pixel, 0).rgb, texelFetch(pointSourceImage, pixel, 0).rgb,
+                                gl_FragCoord.xy);
 }

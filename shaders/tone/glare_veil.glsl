@@ -4,7 +4,7 @@
 // SKYIG_GLARE of them, those that give light (the renderer puts them first). GPU only (it
 // reads the block); the tone pass evaluates it per pixel near a source and at the vertices of
 // a grid elsewhere (passes/glare_veil.frag, render/passes/tone_pass.h).
-#include "common/uniforms.h"
+#include "common/tone_uniforms.h"
 #include "tone/glare.glsl"
 
 // `view` of any length: the angle, the atan of |cross| over dot (accurate at the small angles

@@ -122,6 +122,18 @@ std::vector<ProgramCase> programs() {
       {{"passes/sun_disc.vert", "passes/physical_sky.frag"},
        physicalSky(true, false, false),
        "#define SKYIG_SKY\n#define SKYIG_SUN_DISC\n"},
+      // The sky's variant that maps its own pixels to the display (SkyRenderer::drawChannel):
+      // the tone block, the veil's grid, the display values beside the light.
+      {{"passes/fullscreen.vert", "passes/physical_sky.frag"},
+       [&] {
+         std::vector<Expect> e = physicalSky(false, false, false);
+         e.push_back(block("ToneBlock", SKYIG_BINDING_TONE));
+         e.push_back(sampler("glareVeilGrid", SKYIG_UNIT_GLARE_VEIL));
+         e.push_back(output("outDisplay", SKYIG_OUTPUT_FOLDED_DISPLAY));
+         return e;
+       }(),
+       "#define SKYIG_SKY\n#define SKYIG_FOLD_TONE\n#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 2\n"
+       "#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
       {{"passes/fullscreen.vert", "reference/physical_sky_reference.frag"}, physicalSky(true, true, true)},
       {{"passes/fullscreen.vert", "passes/physical_sky_space.frag"},
        {frame, band, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE), sampler("scatteringPacked", SKYIG_UNIT_SCATTERING),
@@ -160,6 +172,14 @@ std::vector<ProgramCase> programs() {
       {{"passes/star_display.vert", "passes/star.frag"},
        {frame, block("ToneBlock", SKYIG_BINDING_TONE), input("aDirection", SKYIG_ATTRIB_STAR_DIRECTION),
         input("aRec709Lux", SKYIG_ATTRIB_STAR_REC709_LUX), sampler("hdrImage", SKYIG_UNIT_STAR_BACKGROUND), radiance}},
+      // The tone pass over the displayed stars' quads after a sky pass that mapped its pixels
+      // (TonePass::drawOver).
+      {{"passes/star_display.vert", "passes/tone.frag"},
+       {frame, block("ToneBlock", SKYIG_BINDING_TONE), input("aDirection", SKYIG_ATTRIB_STAR_DIRECTION),
+        input("aRec709Lux", SKYIG_ATTRIB_STAR_REC709_LUX), sampler("hdrImage", SKYIG_UNIT_STAR_BACKGROUND),
+        sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), sampler("glareVeilGrid", SKYIG_UNIT_GLARE_VEIL),
+        output("outDisplay", SKYIG_OUTPUT_COLOR)},
+       "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
       // AtmosphereGpuPrecompute, in the order it runs them.
       {{"atmosphere/precompute_transmittance.comp"}, {image("transmittance_out", SKYIG_IMAGE_TRANSMITTANCE)}},
       {{"atmosphere/precompute_direct_irradiance.comp"},

@@ -12,6 +12,8 @@
 #include "shaders/physics.h"
 #include "ephemeris/refraction.h"
 
+#include "tests/sky/night/star_test_support.h"
+
 #include <gtest/gtest.h>
 #include <png.h>
 
@@ -691,4 +693,63 @@ TEST_F(GlRender, LayersLeftOutChangeNoDisplayCode) {
     EXPECT_EQ(moreThanOne, 0) << k.utc;
     EXPECT_LT(one, kW * kH * 3 / 100) << k.utc;
   }
+}
+
+// Where the sky pass maps its own pixels to the display (SkyRenderer::drawChannel: no
+// full-screen pass follows it) the channel shows, to the bit, what the tone pass mapping every
+// pixel after all the others shows: the same function on the same float, and the tone pass
+// again wherever a later pass drew. At noon with the sun in view (its box of the exact veil);
+// the moon up by day, in view (its quad and box); the sun 5 deg down after a June sunset (the
+// night's light left out, a few faint displayed stars); at 12 km; a moonless night with the
+// night's light left out by hand (its stars over a folded sky pass, mapped again on their
+// quads). On a moonless night as it is, the night's light follows the sky pass and the tone
+// pass maps every pixel: one path either way.
+TEST_F(GlRender, SkyPassMappingItsOwnPixelsShowsWhatTheTonePassShows) {
+  const ChannelConfig c = channel(10.0, Frustum{40, 40, 30, 30});
+  struct Case {
+    const char* utc;
+    double yaw;
+    double heightM;
+    bool stars;  // displayed stars expected in view
+    bool leaveOutNightLight = false;  // by hand: the stars of a moonless night over a folded sky
+  };
+  for (const Case& k : {Case{"2026-06-21T11:00:00Z", 180.0, 0.0, false}, Case{"2026-06-23T17:00:00Z", 150.0, 0.0, false},
+                        Case{"2026-06-21T19:45:00Z", 315.0, 0.0, true}, Case{"2026-06-21T11:00:00Z", 200.0, 12000.0, false},
+                        Case{"2026-12-09T22:00:00Z", 180.0, 0.0, true},
+                        Case{"2026-12-09T22:00:00Z", 180.0, 0.0, true, true}}) {
+    ObserverState o;
+    o.utc = *ephemeris::parseIso8601Utc(k.utc);
+    o.attitude = {k.yaw, 0.0, 0.0};
+    o.heightM = k.heightM;
+    SkyConditions conditions = physicalConditions(smallModel());
+    conditions.starCatalogue = std::make_shared<const night::StarCatalogue>(night_testing::catalogue(), o.utc);
+    SkyState s = buildSkyState(o, conditions);
+    mapForDisplays(s, {c.display});
+    if (k.leaveOutNightLight) s.shown.nightLight = false;
+    renderer_->setToneFolding(false);
+    renderer_->draw(s, c);
+    const DisplayImage everyPixel = renderer_->readDisplay();
+    const HdrImage light = renderer_->readHdr();
+    const HdrImage stars = renderer_->readPointSources();
+    renderer_->setToneFolding(true);
+    renderer_->draw(s, c);
+    const DisplayImage folded = renderer_->readDisplay();
+    int starPixels = 0;
+    float brightest = 0.0f;
+    for (std::size_t i = 0; i < stars.rgba.size(); i += 4) {
+      starPixels += stars.rgba[i + 1] > 0.0f ? 1 : 0;
+      brightest = std::max(brightest, stars.rgba[i + 1]);
+    }
+    std::printf("brightest star pixel %g cd/m^2 on the display\n", double(brightest));
+    std::printf("%s yaw %.0f, %.0f m: sun %.1f deg, glare sources %zu, displayed-star pixels %d, night light %s\n",
+                k.utc, k.yaw, k.heightM, s.sunAltitude / kDeg, s.glare.size(), starPixels,
+                s.shown.nightLight ? "drawn" : "left out");
+    EXPECT_EQ(renderer_->readHdr().rgba, light.rgba) << k.utc << ": the light written for the EXR";
+    const auto [moreThanOne, one] = codeDifferences(everyPixel, folded);
+    EXPECT_EQ(moreThanOne + one, 0) << k.utc;
+    if (k.stars) {
+      EXPECT_GT(starPixels, 0) << k.utc;
+    }
+  }
+  renderer_->setToneFolding(true);
 }

@@ -48,7 +48,9 @@ class MoonGl : public ::testing::Test {
   }
 
   // The moon pass alone into a black float target; returns Rec.709 per pixel (row 0 at top).
-  static std::vector<glm::dvec3> drawAlone(const MoonDisc& d, const glm::dmat3& m, const ChannelConfig& c) {
+  // `drawn`, if given: the rectangle the pass says it may have drawn (x, y from the bottom).
+  static std::vector<glm::dvec3> drawAlone(const MoonDisc& d, const glm::dmat3& m, const ChannelConfig& c,
+                                           glm::ivec4* drawn = nullptr) {
     RenderTarget target(c.width, c.height, GL_RGBA32F);
     UniformBuffer frame(SKYIG_BINDING_FRAME, sizeof(FrameBlock));
     FrameBlock b{};
@@ -60,7 +62,8 @@ class MoonGl : public ::testing::Test {
     target.bindForDrawing();
     const float black[4] = {0, 0, 0, 0};
     glClearBufferfv(GL_COLOR, 0, black);
-    pass_->draw(d, m, c);
+    const glm::ivec4 rectangle = pass_->draw(d, m, c);
+    if (drawn) *drawn = rectangle;
     glFinish();
     std::vector<float> rgba(static_cast<std::size_t>(c.width) * static_cast<std::size_t>(c.height) * 4);
     glGetTextureImage(target.texture(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(float)), rgba.data());
@@ -145,6 +148,40 @@ TEST_F(MoonGl, FrameEnergyEqualsCpuIrradianceAtTwoResolutions) {
       }
     EXPECT_NEAR(sum, cpu, 0.03 * cpu) << width << " pixels wide";
     std::printf("%d px: GL %.6g lux, CPU %.6g lux\n", width, sum, cpu);
+  }
+}
+
+// The rectangle the pass returns holds every pixel it lit (the tone pass maps only those again
+// after a sky pass that mapped its own: SkyRenderer::drawChannel) and is not much larger than
+// the quad: the moon in the middle of the channel, half out at its right edge, beside the view,
+// behind the eye, and 90 deg off the view's axis (the quad across the eye's plane).
+TEST_F(MoonGl, TheReturnedRectangleHoldsEveryPixelItLit) {
+  const MoonDisc d = makeMoonDisc(placeMoon(200.0, 40.0, 60.0, 70.0), seaLevelExtinction());
+  const ChannelConfig c = channel(160, 120, 3.0);
+  for (const double yaw : {200.0, 197.0, 190.0, 20.0, 110.0}) {
+    const glm::dmat3 m = ndcToWorld(eyeToEnu(Attitude{yaw, 40.0, 0.0}, c.offset), c.frustum);
+    glm::ivec4 r(-1);
+    const std::vector<glm::dvec3> rgb = drawAlone(d, m, c, &r);
+    int lit = 0;
+    for (int y = 0; y < c.height; ++y)
+      for (int x = 0; x < c.width; ++x) {
+        if (rgb[static_cast<std::size_t>(y) * static_cast<std::size_t>(c.width) + static_cast<std::size_t>(x)] == glm::dvec3(0.0))
+          continue;
+        ++lit;
+        const int glRow = c.height - 1 - y;
+        ASSERT_TRUE(x >= r.x && x < r.x + r.z && glRow >= r.y && glRow < r.y + r.w)
+            << "yaw " << yaw << ": pixel " << x << "," << glRow << " outside " << r.x << "," << r.y << " " << r.z << "x" << r.w;
+      }
+    // The quad: 1.2 radii and 3 pixels each side of the centre (0.26 deg = 6.9 pixels here),
+    // one pixel of margin: about 26 pixels square.
+    if (yaw == 190.0 || yaw == 20.0 || yaw == 110.0) {  // beside the view, behind the eye, 90 deg off
+      EXPECT_EQ(lit, 0);
+      EXPECT_TRUE(r.z == 0 || r.w == 0) << yaw << ": nothing in view, nothing to map again";
+    } else {
+      EXPECT_GT(lit, 50) << yaw;
+      EXPECT_LE(r.z, 28) << yaw;
+      EXPECT_LE(r.w, 28) << yaw;
+    }
   }
 }
 

@@ -1,0 +1,37 @@
+#ifndef SKYIG_TONE_TONE_DISPLAY_GLSL
+#define SKYIG_TONE_TONE_DISPLAY_GLSL
+// What a channel's display is sent for one pixel: the world's light (linear Rec.709, cd/m^2)
+// with the eye's glare veil added, mapped by the display's operator, the displayed point
+// sources added in display luminance, encoded for the display (eq. 18) and dithered. One
+// function for the two places that map pixels: the tone pass (passes/tone.frag), and the
+// physical sky pass when it is the frame's last full-screen pass (passes/physical_sky.frag,
+// SKYIG_FOLD_TONE), which maps the light it has just computed instead of writing it for a
+// second pass to read back: the same code on the same float, so the same display value.
+// GPU only (it reads the tone block). The variants are the tone pass's (passes/tone.frag).
+#include "common/tone_uniforms.h"
+#include "tone/display_curve.glsl"
+#ifdef SKYIG_GLARE
+#include "tone/glare_veil.glsl"
+#endif
+#include "common/dither.glsl"
+
+#ifdef SKYIG_GLARE_FROM_GRID
+// The veil at the vertices of a grid of SKYIG_GLARE_CELL_PX-pixel cells (passes/glare_veil.frag).
+layout(binding = SKYIG_UNIT_GLARE_VEIL) uniform sampler2D glareVeilGrid;
+#elif defined(SKYIG_GLARE)
+#include "common/frame_uniforms.h"
+#endif
+
+vec4 toneDisplayValue(vec3 world, vec3 pointSources, vec2 fragCoord) {
+#if defined(SKYIG_GLARE_FROM_GRID)
+  world += texture(glareVeilGrid, (fragCoord / SKYIG_GLARE_CELL_PX + 0.5) / vec2(textureSize(glareVeilGrid, 0))).rgb;
+#elif defined(SKYIG_GLARE)
+  world += glareVeil(mat3(ndcToWorld) * vec3(fragCoord * viewport.zw * 2.0 - 1.0, 1.0));
+#endif
+  DisplayModel model = toneDisplayModel();
+  vec3 ld = toneMapLinear(world) + pointSources;
+  vec3 n = displayValues(compressToDisplay(ld, rec709Luminance(ld), model.ambientLuminance + model.maxLuminance), model);
+  return vec4(clamp(n + ditherLsb(fragCoord, adaptation.y), 0.0, 1.0), 1.0);
+}
+
+#endif

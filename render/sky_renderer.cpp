@@ -130,6 +130,7 @@ void SkyRenderer::ensureTargets(int width, int height) {
   display_ = std::make_unique<RenderTarget>(width, height, GL_RGBA8);
   pointSources_ = std::make_unique<RenderTarget>(width, height, GL_RGBA16F);
   displayValues_ = std::make_unique<RenderTarget>(width, height, GL_RGBA16F);
+  pointSourcesDrawn_ = true;  // a new target's texels are undefined: cleared before first use
   foldedDisplay_ = std::make_unique<TwoTargetFramebuffer>(*hdr_, *display_);
   foldedValues_ = std::make_unique<TwoTargetFramebuffer>(*hdr_, *displayValues_);
 }
@@ -271,16 +272,24 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
   if (!stars_) stars_ = std::make_unique<StarPass>();
   glBindVertexArray(emptyVao_);
   // Stars and planets as displayed, against the sky without them; the tone pass adds them to
-  // the mapped sky, so it never maps a star as if it were sky (docs/night-sky-stars.md).
-  const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  glClearNamedFramebufferfv(pointSources_->framebuffer(), GL_COLOR, 0, none);
-  pointSources_->bindForDrawing();
-  stars_->drawDisplayed(state.starField, ndcToWorld, hdr_->texture());
+  // the mapped sky, so it never maps a star as if it were sky (docs/night-sky-stars.md). Not
+  // where none can pass the eye's threshold against the darkest of the view (sky/shown_layers.h):
+  // the target is then left clear.
+  if (state.shown.pointSources || pointSourcesDrawn_) {
+    const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearNamedFramebufferfv(pointSources_->framebuffer(), GL_COLOR, 0, none);
+    pointSourcesDrawn_ = false;
+  }
+  if (state.shown.pointSources) {
+    pointSources_->bindForDrawing();
+    stars_->drawDisplayed(state.starField, ndcToWorld, hdr_->texture());
+    pointSourcesDrawn_ = true;
+  }
   glBindTextureUnit(SKYIG_UNIT_HDR_IMAGE, hdr_->texture());
   glBindTextureUnit(SKYIG_UNIT_POINT_SOURCES, pointSources_->texture());
   if (folded)
     tone_->drawOver(toneTarget, {moonPixels}, [&](const GlProgram& quads) {
-      stars_->drawFootprints(state.starField, ndcToWorld, hdr_->texture(), quads);
+      if (state.shown.pointSources) stars_->drawFootprints(state.starField, ndcToWorld, hdr_->texture(), quads);
     });
   else
     tone_->draw(toneTarget);

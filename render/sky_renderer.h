@@ -141,6 +141,7 @@ class SkyRenderer {
   std::unique_ptr<RenderTarget> hdr_;
   std::unique_ptr<RenderTarget> display_;
   std::unique_ptr<RenderTarget> pointSources_;  // displayed stars, display cd/m^2 (StarPass::drawDisplayed)
+  bool pointSourcesDrawn_ = true;  // pointSources_ may hold something: clear it before a frame reads it
   std::unique_ptr<RenderTarget> displayValues_;  // a projector channel's undithered display values (RGBA16F)
   // The HDR image with the display (or the projector's display values) beside it, for a sky
   // pass that maps its own pixels.

@@ -1,6 +1,10 @@
 #include "sky/shown_layers.h"
 
+#include "shaders/night/star_physics.h"
 #include "shaders/physics.h"
+
+#include <algorithm>
+#include <limits>
 
 namespace skyig::sky {
 
@@ -45,6 +49,13 @@ ShownLayers shownLayers(const std::vector<ViewCellLight>& cells, const std::vect
                                       kNightLightMargin);
   }
   return shown;
+}
+
+bool pointSourcesSeen(const std::vector<ViewCellLight>& cells, double brightestLux) {
+  if (cells.empty()) return true;
+  double darkest = std::numeric_limits<double>::infinity();
+  for (const ViewCellLight& c : cells) darkest = std::min(darkest, double(c.sunlit) + double(c.moonlit) + double(c.night));
+  return brightestLux > shader::pointSourceThresholdLux(darkest / kPointSourceMargin);
 }
 
 }  // namespace skyig::sky

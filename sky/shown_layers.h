@@ -10,6 +10,11 @@
 // by a margin: the cells are ~0.4 sr wide and their mean hides the moon's aureole (margin 10)
 // and the Milky Way's bright clouds, which the cells leave out, and the display maps the mesopic
 // rather than the photopic luminance (margin 8 for the night's light).
+// The displayed stars and planets are left out where even the brightest of them cannot pass the
+// eye's point-source threshold against the darkest of the view (pointSourcesSeen): in practice
+// rarely by day, since Venus or Jupiter is usually up and can be seen in daylight, but whenever
+// the sky is too bright for them (the displayed-star pass's per-star test still decides which
+// are drawn when it runs).
 #include "sky/channel.h"
 #include "sky/eye/tone_curve.h"
 #include "sky/view_sphere.h"
@@ -26,17 +31,28 @@ inline constexpr double kPhotopicCdM2 = 3.98107;
 inline constexpr double kPhotopicMargin = 4.0;
 inline constexpr double kMoonlitSkyMargin = 10.0;
 inline constexpr double kNightLightMargin = 8.0;
+// Point sources: a cell's mean hides its darker pixels, so the darkest cell's luminance is
+// divided by this before its threshold is taken (Schaefer's threshold grows as sqrt(B) by day,
+// so the brightest source must beat the darkest cell's threshold by about 3).
+inline constexpr double kPointSourceMargin = 10.0;
 
 struct ShownLayers {
   bool moonlitSky = true;
   bool nightLight = true;
   bool mesopic = true;  // some of the view may be dim enough for rod vision (else photopic only)
+  bool pointSources = true;  // some star or planet may be seen (the displayed-star pass is drawn)
 };
 
 // All true where a display has no tone curve (Tumblin-Rushmeier maps each pixel by itself) or
 // there are no cells.
 ShownLayers shownLayers(const std::vector<ViewCellLight>& cells, const std::vector<DisplayParams>& displays,
                         const std::vector<std::pair<DisplayParams, eye::ToneCurve>>& curves);
+
+// Whether the brightest point source of the field (its illuminance at the eye, lux) can pass
+// the eye's threshold anywhere on the view sphere: against the darkest cell's luminance over
+// kPointSourceMargin (Schaefer 1990, night/point_source_visibility.glsl, the displayed-star
+// pass's own test). True without cells.
+bool pointSourcesSeen(const std::vector<ViewCellLight>& cells, double brightestLux);
 
 // The displayed 8-bit code (0-255, unrounded) of a grey world luminance through `curve` on
 // `display` (the tone pass's mapping, shaders/tone/display_curve.glsl, for a grey).

@@ -156,7 +156,13 @@ void mapForDisplays(SkyState& state, const std::vector<DisplayParams>& displays)
     for (const auto& [e, curve] : state.toneCurves) seen = seen || e == d;
     if (!seen) state.toneCurves.emplace_back(d, toneCurveFor(state, d));
   }
-  if (state.viewLight) state.shown = shownLayers(*state.viewLight, displays, state.toneCurves);
+  if (!state.viewLight) return;
+  state.shown = shownLayers(*state.viewLight, displays, state.toneCurves);
+  double brightest = 0.0;
+  if (state.starField)
+    for (const auto* list : {&state.starField->stars, &state.starField->planets})
+      for (const night::PointSource& p : *list) brightest = std::max(brightest, p.illuminanceLux);
+  state.shown.pointSources = pointSourcesSeen(*state.viewLight, brightest);
 }
 
 std::optional<night::NightDiffuseSky> nightDiffuseSky(const SkyState& state) {

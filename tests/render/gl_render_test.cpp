@@ -640,7 +640,9 @@ SkyState mappedState(const char* utc, double yaw, const ChannelConfig& c) {
   ObserverState o;
   o.utc = *ephemeris::parseIso8601Utc(utc);
   o.attitude = {yaw, 0.0, 0.0};
-  SkyState s = buildSkyState(o, physicalConditions(smallModel()));
+  SkyConditions conditions = physicalConditions(smallModel());
+  conditions.starCatalogue = std::make_shared<const night::StarCatalogue>(night_testing::catalogue(), o.utc);
+  SkyState s = buildSkyState(o, conditions);
   mapForDisplays(s, {c.display});
   return s;
 }
@@ -678,9 +680,9 @@ TEST_F(GlRender, LayersLeftOutChangeNoDisplayCode) {
                         Case{"2026-12-24T20:00:00Z", 60.0, true, true},
                         Case{"2026-12-09T22:00:00Z", 180.0, false, true}}) {
     SkyState s = mappedState(k.utc, k.yaw, c);
-    std::printf("%s: sun %.1f deg, adaptation %.3g cd/m^2, moonlit sky %s, night light %s\n", k.utc,
+    std::printf("%s: sun %.1f deg, adaptation %.3g cd/m^2, moonlit sky %s, night light %s, point sources %s\n", k.utc,
                 s.sunAltitude / kDeg, s.adaptationLuminance, s.shown.moonlitSky ? "drawn" : "left out",
-                s.shown.nightLight ? "drawn" : "left out");
+                s.shown.nightLight ? "drawn" : "left out", s.shown.pointSources ? "drawn" : "left out");
     EXPECT_EQ(s.shown.moonlitSky, k.moonlit) << k.utc;
     EXPECT_EQ(s.shown.nightLight, k.night) << k.utc;
     renderer_->draw(s, c);
@@ -752,4 +754,26 @@ TEST_F(GlRender, SkyPassMappingItsOwnPixelsShowsWhatTheTonePassShows) {
     }
   }
   renderer_->setToneFolding(true);
+}
+
+// Where no star or planet can pass the eye's threshold (sky/shown_layers.h) the displayed-star
+// pass is not drawn, and what an earlier frame drew into its target does not stay: a moonless
+// night's stars, then a day whose point sources are left out, shows the codes of the same day
+// with the pass drawn (no star passes the threshold in that view) and an empty target.
+TEST_F(GlRender, PointSourcesLeftOutLeaveNoStarsBehind) {
+  const ChannelConfig c = channel(10.0, Frustum{40, 40, 30, 30});
+  SkyState day = mappedState("2026-06-23T17:00:00Z", 150.0, c);
+  ASSERT_TRUE(day.shown.pointSources);  // Venus and Jupiter are up: they can be seen by day
+  renderer_->draw(day, c);
+  const DisplayImage drawn = renderer_->readDisplay();
+  for (float v : renderer_->readPointSources().rgba) ASSERT_EQ(v, 0.0f) << "no star is shown in this view";
+  renderer_->draw(mappedState("2026-12-09T22:00:00Z", 180.0, c), c);
+  int starTexels = 0;
+  for (float v : renderer_->readPointSources().rgba) starTexels += v > 0.0f ? 1 : 0;
+  ASSERT_GT(starTexels, 0);
+  day.shown.pointSources = false;
+  renderer_->draw(day, c);
+  for (float v : renderer_->readPointSources().rgba) ASSERT_EQ(v, 0.0f) << "the night's stars were cleared";
+  const auto [moreThanOne, one] = codeDifferences(drawn, renderer_->readDisplay());
+  EXPECT_EQ(moreThanOne + one, 0);
 }

@@ -9,12 +9,15 @@
 #include "shaders/common/uniforms.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace skyig::render {
 
 namespace {
+
+constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
 
 glm::vec4 v4(const glm::dvec3& v, double w = 0.0) { return glm::vec4(glm::dvec4(v, w)); }
 
@@ -153,7 +156,7 @@ void SkyRenderer::bindChannelBlocks(const skyig::sky::SkyState& state, const sky
 }
 
 bool SkyRenderer::drawSky(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel,
-                          const std::string& toneDefines) {
+                          const std::string& toneDefines, const NightLayer& night) {
   glBindVertexArray(emptyVao_);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
@@ -167,11 +170,11 @@ bool SkyRenderer::drawSky(const skyig::sky::SkyState& state, const skyig::sky::C
                            skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection,
                            state.shown.moonlitSky || skyig::sky::isGoggle(channel) ? state.moonlightScale
                                                                                     : glm::dvec3(0.0),
-                           state.sunRefraction, toneDefines);
+                           state.sunRefraction, toneDefines, night);
   }
   skyProgram_.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  return false;
+  return toneDefines.empty() && night.texture == 0;
 }
 
 void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
@@ -179,7 +182,7 @@ void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sk
   ensureTargets(channel.width, channel.height);
   bindChannelBlocks(state, attitude, channel);
   hdr_->bindForDrawing();
-  drawSky(state, channel, {});
+  drawSky(state, channel, {}, {});
 }
 
 void SkyRenderer::draw(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
@@ -252,23 +255,33 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
                  channel.width, channel.height, glareSources);
   // The night's own light only where it changes what the displays show (sky/shown_layers.h).
   const bool nightLight = state.ephemeris && state.shown.nightLight;
-  // Where no full-screen pass follows the sky pass (the night's light is one), the sky pass
-  // maps its own pixels to the display as it computes them, and the tone pass runs again only
-  // where later passes drew: a second pass reading every pixel back cost about a tenth of the
-  // day frame on llvmpipe (docs/performance.md). Elsewhere (the night's light drawn, the
-  // analytic skies, the physical one from space) the tone pass maps every pixel after the others.
-  bool folded = false;
-  if (foldTone_ && !nightLight && state.conditions.model == skyig::sky::SkyModel::Physical) {
-    (toneTarget.texture() == display_->texture() ? *foldedDisplay_ : *foldedValues_).bindForDrawing();
-    folded = drawSky(state, channel, tone_->foldedDefines());
-  } else {
-    hdr_->bindForDrawing();
-    drawSky(state, channel, {});
+  // The physical sky pass draws the night's own light too, from a layer at about the Milky Way
+  // map's resolution (NightDiffusePass::drawLayer), and maps its own pixels to the display as it
+  // computes them: one pass over every pixel, where the night pass and the tone pass each read
+  // every pixel back (docs/performance.md). The tone pass then runs only where later passes
+  // drew. Where the sky pass cannot (the analytic skies, the physical one from space), the
+  // night's pass and the tone pass cover every pixel after it.
+  const bool physical = state.conditions.model == skyig::sky::SkyModel::Physical;
+  NightLayer night;
+  if (nightLight && physical) {
+    if (!nightDiffuse_) nightDiffuse_ = std::make_unique<NightDiffusePass>();
+    const double pixelRad = (std::tan(channel.frustum.leftDeg * kRadPerDeg) + std::tan(channel.frustum.rightDeg * kRadPerDeg)) /
+                            std::max(channel.width, 1);
+    glBindVertexArray(emptyVao_);
+    night = nightDiffuse_->drawLayer(state, channel.width, channel.height, NightDiffusePass::layerScale(pixelRad));
   }
+  const bool fold = foldTone_ && physical;
+  if (fold)
+    (toneTarget.texture() == display_->texture() ? *foldedDisplay_ : *foldedValues_).bindForDrawing();
+  else
+    hdr_->bindForDrawing();
+  const bool drewAll = drawSky(state, channel, fold ? tone_->foldedDefines() : std::string(), night);
+  const bool folded = fold && drewAll;
   hdr_->bindForDrawing();
   glm::ivec4 moonPixels(0);
   if (state.ephemeris) moonPixels = (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, channel);
-  if (nightLight) (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
+  if (nightLight && !(night.texture && drewAll))
+    (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
   if (!stars_) stars_ = std::make_unique<StarPass>();
   glBindVertexArray(emptyVao_);
   // Stars and planets as displayed, against the sky without them; the tone pass adds them to
@@ -309,7 +322,7 @@ void SkyRenderer::drawGoggleChannel(const skyig::sky::SkyState& state, const sky
   ensureTargets(c.width, c.height);
   bindChannelBlocks(state, attitude, c);
   hdr_->bindForDrawing();
-  drawSky(state, c, {});
+  drawSky(state, c, {}, {});
   if (state.ephemeris) {
     (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, c);
     if (state.sunAltitude < 0.0)

@@ -114,10 +114,10 @@ class SkyRenderer {
   void bindChannelBlocks(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                          const skyig::sky::ChannelConfig& channel);
   // The sky pass into the bound framebuffer; with toneDefines (TonePass::foldedDefines) the
-  // physical pass maps its pixels to the display too, into the framebuffer's second target:
-  // whether it did.
+  // physical pass maps its pixels to the display too, into the framebuffer's second target, and
+  // with a night layer adds the night's light: whether it drew all it was asked.
   bool drawSky(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel,
-               const std::string& toneDefines);
+               const std::string& toneDefines, const NightLayer& night);
   // Every pass of the channel, the tone pass into `toneTarget` with a dither of `ditherLsb`.
   void drawChannel(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                    const skyig::sky::ChannelConfig& channel, const RenderTarget& toneTarget, float ditherLsb);

@@ -23,6 +23,7 @@ class ExtinctionTexture {
   // as a real profile's table does below the horizon.
   void use(const std::shared_ptr<const atmosphere::ExtinctionProfile>& profile);
   void bind(GLuint unit) const { glBindTextureUnit(unit, id_); }
+  GLuint id() const { return id_; }
 
  private:
   GLuint id_ = 0;

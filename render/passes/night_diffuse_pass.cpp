@@ -8,7 +8,10 @@
 #include <glm/gtc/packing.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <vector>
 
 namespace skyig::render {
@@ -52,16 +55,19 @@ GLuint uploadZodiacal() {
 
 }  // namespace
 
-NightDiffusePass::NightDiffusePass()
-    : program_("passes/fullscreen.vert", "passes/night_diffuse.frag"),
-      enuToJ2000Location_(glGetUniformLocation(program_.id(), "enuToJ2000")),
-      sunLocation_(glGetUniformLocation(program_.id(), "sunJ2000")),
-      airglowLocation_(glGetUniformLocation(program_.id(), "airglowZenith")),
-      groundLocation_(glGetUniformLocation(program_.id(), "nightGroundRadiance")) {
+NightDiffusePass::Program::Program(const std::string& defines)
+    : program("passes/fullscreen.vert", "passes/night_diffuse.frag", defines),
+      enuToJ2000(glGetUniformLocation(program.id(), "enuToJ2000")),
+      sun(glGetUniformLocation(program.id(), "sunJ2000")),
+      airglow(glGetUniformLocation(program.id(), "airglowZenith")),
+      ground(glGetUniformLocation(program.id(), "nightGroundRadiance")) {
+  const glm::vec3 sunlight(skyig::sky::night::sunlightRec709());
+  glProgramUniform3fv(program.id(), glGetUniformLocation(program.id(), "sunlightRec709"), 1, glm::value_ptr(sunlight));
+}
+
+NightDiffusePass::NightDiffusePass() : program_("") {
   milkyWay_ = uploadMilkyWay(*skyig::sky::night::MilkyWayMap::standard());
   zodiacal_ = uploadZodiacal();
-  const glm::vec3 sun(skyig::sky::night::sunlightRec709());
-  glProgramUniform3fv(program_.id(), glGetUniformLocation(program_.id(), "sunlightRec709"), 1, glm::value_ptr(sun));
 }
 
 NightDiffusePass::~NightDiffusePass() {
@@ -75,23 +81,52 @@ void NightDiffusePass::draw(const skyig::sky::SkyState& state) {
 }
 
 void NightDiffusePass::draw(const skyig::sky::night::NightDiffuseSky& sky, const glm::dvec3& groundRadiance) {
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  drawWith(program_, sky, groundRadiance);
+  glDisable(GL_BLEND);
+}
+
+int NightDiffusePass::layerScale(double pixelRad) {
+  const double texelRad = 2.0 * std::numbers::pi / skyig::sky::night::MilkyWayMap::standard()->width();
+  return std::clamp(static_cast<int>(std::floor(texelRad / std::max(pixelRad, 1e-9))), 1, 8);
+}
+
+NightLayer NightDiffusePass::drawLayer(const skyig::sky::SkyState& state, int width, int height, int scale) {
+  const auto sky = skyig::sky::nightDiffuseSky(state);
+  if (!sky) return {};
+  const int w = (width + scale - 1) / scale, h = (height + scale - 1) / scale;
+  if (!layer_ || layer_->width() != w || layer_->height() != h) {
+    // Float: the night's light is ~1e-4 cd/m^2, where half floats are denormal.
+    layer_ = std::make_unique<RenderTarget>(w, h, GL_RGBA32F);
+    glTextureParameteri(layer_->texture(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(layer_->texture(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(layer_->texture(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(layer_->texture(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  if (!layerProgram_) layerProgram_ = std::make_unique<Program>("#define SKYIG_NIGHT_LAYER\n");
+  layer_->bindForDrawing();
+  glDisable(GL_BLEND);
+  drawWith(*layerProgram_, *sky, glm::dvec3(0.0));
+  return {layer_->texture(), extinction_.id(), state.nightGroundRadiance};
+}
+
+void NightDiffusePass::drawWith(const Program& v, const skyig::sky::night::NightDiffuseSky& sky,
+                                const glm::dvec3& groundRadiance) {
   extinction_.use(sky.extinction);
-  const GLuint p = program_.id();
+  const GLuint p = v.program.id();
   const glm::mat3 m(sky.enuToJ2000);
-  glProgramUniformMatrix3fv(p, enuToJ2000Location_, 1, GL_FALSE, glm::value_ptr(m));
+  glProgramUniformMatrix3fv(p, v.enuToJ2000, 1, GL_FALSE, glm::value_ptr(m));
   const glm::vec3 sun(sky.sunJ2000), airglow(sky.airglowZenith);
-  glProgramUniform3fv(p, sunLocation_, 1, glm::value_ptr(sun));
-  glProgramUniform3fv(p, airglowLocation_, 1, glm::value_ptr(airglow));
+  glProgramUniform3fv(p, v.sun, 1, glm::value_ptr(sun));
+  glProgramUniform3fv(p, v.airglow, 1, glm::value_ptr(airglow));
   const glm::vec3 ground(groundRadiance);
-  glProgramUniform3fv(p, groundLocation_, 1, glm::value_ptr(ground));
+  glProgramUniform3fv(p, v.ground, 1, glm::value_ptr(ground));
   glBindTextureUnit(SKYIG_UNIT_MILKY_WAY, milkyWay_);
   glBindTextureUnit(SKYIG_UNIT_ZODIACAL, zodiacal_);
   extinction_.bind(SKYIG_UNIT_NIGHT_EXTINCTION);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE);
-  program_.use();
+  v.program.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  glDisable(GL_BLEND);
 }
 
 }  // namespace skyig::render

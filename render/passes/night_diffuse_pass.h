@@ -5,9 +5,12 @@
 // state's extinction profile (512 RGB32F, re-uploaded when the profile changes).
 #include "render/passes/extinction_texture.h"
 #include "render/gl/gl_program.h"
+#include "render/gl/render_target.h"
+#include "render/passes/night_layer.h"
 #include "sky/night/night_diffuse.h"
 
 #include <memory>
+#include <string>
 
 namespace skyig::sky {
 struct SkyState;
@@ -28,13 +31,28 @@ class NightDiffusePass {
   // Draws nothing for a state without an ephemeris (no J2000 frame).
   void draw(const skyig::sky::SkyState& state);
   void draw(const skyig::sky::night::NightDiffuseSky& sky, const glm::dvec3& groundRadiance = glm::dvec3(0.0));
+  // The sky's part of the same light above the atmosphere (no transmittance, no terrain), in the
+  // eye's band, into a target of its own a `scale`-th of the channel's width x height (rounded
+  // up), for the physical sky pass to read bilinearly and complete per pixel (SKYIG_NIGHT_LAYER):
+  // that target's texture (linear filtering, clamped), the state's transmittance table and its
+  // terrain's radiance; no texture for a state without an ephemeris. Leaves the target bound;
+  // the frame block and a vertex array must be bound.
+  NightLayer drawLayer(const skyig::sky::SkyState& state, int width, int height, int scale);
+  // The scale for a channel whose pixel at its centre spans `pixelRad`: the layer's texel about
+  // the Milky Way map's (its finest structure), at least 1, at most 8.
+  static int layerScale(double pixelRad);
 
  private:
-  GlProgram program_;
-  GLint enuToJ2000Location_ = -1;
-  GLint sunLocation_ = -1;
-  GLint airglowLocation_ = -1;
-  GLint groundLocation_ = -1;
+  // A variant of the pass's program and its per-frame uniforms.
+  struct Program {
+    explicit Program(const std::string& defines);
+    GlProgram program;
+    GLint enuToJ2000, sun, airglow, ground;
+  };
+  void drawWith(const Program& program, const skyig::sky::night::NightDiffuseSky& sky, const glm::dvec3& groundRadiance);
+  Program program_;
+  std::unique_ptr<Program> layerProgram_;  // SKYIG_NIGHT_LAYER, the first time a layer is drawn
+  std::unique_ptr<RenderTarget> layer_;
   GLuint milkyWay_ = 0;
   GLuint zodiacal_ = 0;
   ExtinctionTexture extinction_;

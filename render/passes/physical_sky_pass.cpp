@@ -51,7 +51,8 @@ PhysicalSkyPass::Program::Program(const char* vertex, const char* fragment, cons
       moonScale(glGetUniformLocation(program.id(), "moonlightScale")),
       radii(glGetUniformLocation(program.id(), "frameRadii")),
       angles(glGetUniformLocation(program.id(), "frameAngles")),
-      groundCap(glGetUniformLocation(program.id(), "groundCap")) {}
+      groundCap(glGetUniformLocation(program.id(), "groundCap")),
+      nightGround(glGetUniformLocation(program.id(), "nightGroundRadiance")) {}
 
 PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame, const char* insideFragment)
     : slicesPerFrame_(slicesPerFrame),
@@ -127,7 +128,7 @@ void PhysicalSkyPass::makeCurrent(TableSet set) {
     for (const auto& v : variants) programs.push_back(v.get());
   for (const auto& variants : withDisc_)
     for (const auto& v : variants) programs.push_back(v.get());
-  for (const auto& [defines, program] : folded_) programs.push_back(program.get());
+  for (const auto& [defines, program] : extended_) programs.push_back(program.get());
   for (const Program* program : programs) setModelUniforms(*program);
 }
 
@@ -140,14 +141,14 @@ void PhysicalSkyPass::setModelUniforms(const Program& program) const {
 }
 
 const PhysicalSkyPass::Program& PhysicalSkyPass::variant(bool moonlit, Part part, bool disc,
-                                                         const std::string& toneDefines) {
-  if (toneDefines.empty()) return disc ? *withDisc_[moonlit ? 1 : 0][part] : *inside_[moonlit ? 1 : 0][part];
+                                                         const std::string& extraDefines) {
+  if (extraDefines.empty()) return disc ? *withDisc_[moonlit ? 1 : 0][part] : *inside_[moonlit ? 1 : 0][part];
   std::string defines = moonlit ? "#define SKYIG_MOONLIT\n" : "";
   if (part == kSky) defines += "#define SKYIG_SKY\n";
   if (part == kGround) defines += "#define SKYIG_GROUND\n";
   if (disc) defines += "#define SKYIG_SUN_DISC\n";
-  defines += "#define SKYIG_FOLD_TONE\n" + toneDefines;
-  std::unique_ptr<Program>& p = folded_[defines];
+  defines += extraDefines;
+  std::unique_ptr<Program>& p = extended_[defines];
   if (!p) {  // compiled when a frame first needs it: a node uses a few of the many
     p = std::make_unique<Program>(disc ? "passes/sun_disc.vert"
                                        : (part == kGround ? "passes/ground_cap.vert" : "passes/fullscreen.vert"),
@@ -258,7 +259,9 @@ void PhysicalSkyPass::setFrameUniforms(const Program& program, const glm::dvec3&
 
 bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirection, const glm::dvec3& moonDirection,
                            const glm::dvec3& moonlightScale, const glm::dvec4& sunRefraction,
-                           const std::string& toneDefines) {
+                           const std::string& toneDefines, const NightLayer& night) {
+  const std::string extra = (night.texture ? std::string("#define SKYIG_NIGHT_LAYER\n") : std::string()) +
+                            (toneDefines.empty() ? std::string() : "#define SKYIG_FOLD_TONE\n" + toneDefines);
   stepUpload();
   if (!current_.model) throw std::logic_error("PhysicalSkyPass::draw before use()");
   const atmosphere::AtmosphereParameters& a = current_.model->parameters(0);
@@ -268,6 +271,10 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   glBindTextureUnit(SKYIG_UNIT_SINGLE_MIE, current_.singleMie);
   glBindTextureUnit(SKYIG_UNIT_TRANSMITTANCE, current_.transmittance);
   glBindTextureUnit(SKYIG_UNIT_IRRADIANCE, current_.irradiance);
+  if (night.texture) {
+    glBindTextureUnit(SKYIG_UNIT_NIGHT_LAYER, night.texture);
+    glBindTextureUnit(SKYIG_UNIT_NIGHT_LAYER_EXTINCTION, night.extinction);
+  }
   if (r > a.top_radius) {  // from space: the general program, the moon a uniform branch
     const GLuint p = space_.program.id();
     setFrameUniforms(space_, camera, sunDirection, sunRefraction, glm::vec4(0.0f), glm::vec3(0.0f));
@@ -276,7 +283,7 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
     glProgramUniform3fv(p, space_.moonScale, 1, &f3(moonlightScale)[0]);
     space_.program.use();
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    return false;
+    return extra.empty();
   }
   // The camera inside the atmosphere (every IG frame): what every pixel shares, in double, once.
   const glm::dvec4 sunUvwz = shader::scatteringUvwzFromRMuMuSNu(a, r, 1.0, std::clamp(glm::dot(camera, sunDirection) / r, -1.0, 1.0), 0.0, false);
@@ -317,13 +324,14 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
       glProgramUniform3fv(program.program.id(), program.moonDirection, 1, &f3(moonDirection)[0]);
       glProgramUniform3fv(program.program.id(), program.moonScale, 1, &f3(moonlightScale)[0]);
     }
+    if (night.texture) glProgramUniform3fv(program.program.id(), program.nightGround, 1, &f3(night.groundRadiance)[0]);
     program.program.use();
   };
   if (reference_) {  // the frozen reference: everything in one program, the moon a uniform branch
     prepare(*reference_);
     glProgramUniform1i(reference_->program.id(), reference_->moonOn, moon ? 1 : 0);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    return false;
+    return extra.empty();
   }
   GLint depthType = GL_NONE;
   if (target != 0)
@@ -336,12 +344,12 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
   };
   if (depthType == GL_NONE) {
-    prepare(variant(moon, kBoth, false, toneDefines));
+    prepare(variant(moon, kBoth, false, extra));
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    drawDisc(variant(moon, kBoth, true, toneDefines));
-    return !toneDefines.empty();
+    drawDisc(variant(moon, kBoth, true, extra));
+    return true;
   }
-  const Program& ground = variant(moon, kGround, false, toneDefines);
+  const Program& ground = variant(moon, kGround, false, extra);
   prepare(ground);
   // The ring a little above the horizon (mu = -sqrt(1 - (Rg/r)^2)): 0.1 deg encloses the
   // horizon's circle whatever the fan's chords cut (2 pi / 256)^2 / 8 = 7.5e-5 rad inside it.
@@ -356,14 +364,14 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   glClear(GL_DEPTH_BUFFER_BIT);
   glDepthFunc(GL_ALWAYS);
   glDrawArrays(GL_TRIANGLES, 0, 3 * kSegments);
-  prepare(variant(moon, kSky, false, toneDefines));
+  prepare(variant(moon, kSky, false, extra));
   glDepthFunc(GL_LESS);  // both at depth 0.5: the sky only where the clear's 1 is left
   glDepthMask(GL_FALSE);
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  drawDisc(variant(moon, kSky, true, toneDefines));  // where the sky is: no depth written
+  drawDisc(variant(moon, kSky, true, extra));  // where the sky is: no depth written
   glDepthMask(GL_TRUE);
   glDisable(GL_DEPTH_TEST);
-  return !toneDefines.empty();
+  return true;
 }
 
 }  // namespace skyig::render

@@ -8,6 +8,7 @@
 #include "sky/atmosphere/rec709_tables.h"
 #include "render/passes/atmosphere_uniforms.h"
 #include "render/gl/gl_program.h"
+#include "render/passes/night_layer.h"
 #include "sky/atmosphere/physical_camera.h"
 
 #include <glm/glm.hpp>
@@ -48,12 +49,14 @@ class PhysicalSkyPass {
   // toneDefines, when not empty, are the tone pass's variant (TonePass::foldedDefines): the pass
   // then also maps each pixel to the display and writes it at SKYIG_OUTPUT_FOLDED_DISPLAY
   // (passes/physical_sky.frag, SKYIG_FOLD_TONE); the tone block must be bound, and the veil's
-  // grid at its unit if the defines read it. Returns whether it did (never from space, whose
-  // program has no such variant, nor for a reference pass).
+  // grid at its unit if the defines read it. `night`, when it has a texture, adds the night's
+  // own light (SKYIG_NIGHT_LAYER). Returns whether it drew what was asked (never from space,
+  // whose program has neither, nor for a reference pass): if not, only the sky was drawn.
   bool draw(const glm::dvec3& camera, const glm::dvec3& sunDirection,
             const glm::dvec3& moonDirection = glm::dvec3(0.0, 0.0, 1.0),
             const glm::dvec3& moonlightScale = glm::dvec3(0.0),
-            const glm::dvec4& sunRefraction = glm::dvec4(0.0), const std::string& toneDefines = {});
+            const glm::dvec4& sunRefraction = glm::dvec4(0.0), const std::string& toneDefines = {},
+            const NightLayer& night = {});
 
   const atmosphere::AtmosphereModel* current() const { return current_.model.get(); }
   const atmosphere::AtmosphereModel* pending() const { return pending_ ? pending_->set.model.get() : nullptr; }
@@ -98,13 +101,14 @@ class PhysicalSkyPass {
   struct Program {
     Program(const char* vertex, const char* fragment, const std::string& defines = "");
     GlProgram program;
-    GLint camera, sun, sunRefraction, moonOn, moonDirection, moonScale, radii, angles, groundCap;
+    GLint camera, sun, sunRefraction, moonOn, moonDirection, moonScale, radii, angles, groundCap, nightGround;
   };
   // Which rays a variant of physical_sky.frag draws: both (a target without depth), the sky's
   // (where the ground's wrote no depth), the ground's (first, on the cap below the horizon).
   enum Part { kBoth = 0, kSky = 1, kGround = 2 };
-  // The program of a variant: the eager ones without toneDefines, else a folded one.
-  const Program& variant(bool moonlit, Part part, bool disc, const std::string& toneDefines);
+  // The program of a variant: the eager ones without extraDefines, else one compiled with them
+  // (the night layer, the tone) the first time a frame needs it.
+  const Program& variant(bool moonlit, Part part, bool disc, const std::string& extraDefines);
   void setModelUniforms(const Program& program) const;
 
   // This frame's 2D slice of the scattering tables for one light (physical_sky_slice.frag).
@@ -122,8 +126,8 @@ class PhysicalSkyPass {
   std::array<std::array<std::unique_ptr<Program>, 3>, 2> inside_;
   // The same with the sun's disc, drawn again on the quad around it, by [moonlit][kBoth or kSky].
   std::array<std::array<std::unique_ptr<Program>, 2>, 2> withDisc_;
-  // The variants that map to the display too, by their defines (variant()).
-  std::map<std::string, std::unique_ptr<Program>> folded_;
+  // The variants with the night layer or the tone, by their defines (variant()).
+  std::map<std::string, std::unique_ptr<Program>> extended_;
   std::unique_ptr<Program> reference_;  // another inside fragment, drawn alone (the reference)
   Program space_;
   GlProgram sliceProgram_;

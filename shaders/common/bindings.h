@@ -54,6 +54,10 @@
 #define SKYIG_UNIT_MILKY_WAY 0
 #define SKYIG_UNIT_ZODIACAL 1
 #define SKYIG_UNIT_NIGHT_EXTINCTION 2  // ExtinctionTexture
+// The night's light at a few pixels a texel (NightDiffusePass::drawLayer), read by the physical
+// sky pass beside its own 0 to 7 and the tone's glare veil.
+#define SKYIG_UNIT_NIGHT_LAYER 9
+#define SKYIG_UNIT_NIGHT_LAYER_EXTINCTION 10  // the same ExtinctionTexture as the night pass's
 
 // The moon (passes/moon.frag, MoonPass). Kept apart from the sky pass's 0 to 7 as they always
 // were; nothing needs it (see above), and any GL 4.5 driver has far more units than 22.

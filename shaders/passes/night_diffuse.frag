@@ -3,12 +3,17 @@
 // al. 1998 table 17, S10) and the airglow (van Rhijn), all dimmed by the transmittance to space
 // along the view. Below the horizon, the terrain as that light shows it (SkyState::
 // nightGroundRadiance). The CPU twin is sky/night/night_diffuse.h.
+// SKYIG_NIGHT_LAYER: the sky's part alone, above the atmosphere (no transmittance), without
+// blending, into the small target of NightDiffusePass::drawLayer, which the physical sky pass
+// reads bilinearly, dims by the transmittance and adds with the terrain's step, both at full
+// resolution (passes/physical_sky.frag): what changes fast at the horizon is per pixel.
 #include "common/bindings.h"
 #include "night/units.glsl"
 #include "night/milky_way.glsl"
 #include "night/zodiacal.glsl"
 #include "night/airglow.glsl"
 #include "common/band.glsl"
+#include "night/transmittance_to_space.glsl"
 
 uniform mat3 enuToJ2000;
 uniform vec3 sunJ2000;
@@ -22,14 +27,13 @@ layout(binding = SKYIG_UNIT_NIGHT_EXTINCTION) uniform sampler1D extinctionRec709
 in vec3 vViewRay;
 layout(location = SKYIG_OUTPUT_COLOR) out vec4 outRadiance;
 
-// sky/atmosphere/extinction_profile.h: u = (1 + sign(e) sqrt(|e| / 90 deg)) / 2.
-float extinctionTexCoord(float elevation) {
-  return 0.5 * (1.0 + sign(elevation) * sqrt(abs(elevation) / (0.5 * 3.14159265358979)));
-}
-
 void main() {
   vec3 view = normalize(vViewRay);
-  vec3 t = max(texture(extinctionRec709, extinctionTexCoord(asin(clamp(view.z, -1.0, 1.0)))).rgb, vec3(0.0));
+#ifdef SKYIG_NIGHT_LAYER
+  const vec3 t = vec3(1.0);  // the sky pass applies it per pixel: it is steep at the horizon
+#else
+  vec3 t = transmittanceToSpace(extinctionRec709, view);
+#endif
   vec3 j2000 = enuToJ2000 * view;
   // The panorama's u jumps from 1 to 0 at RA 90 deg: take the mip level from the gradient of a
   // copy that is continuous there, so the seam does not pick the coarsest level.
@@ -46,5 +50,9 @@ void main() {
   vec3 zodiacal = s10ToCdM2(texture(zodiacalS10, zodiacalTexCoord(lonLat)).r) * sunlightRec709;
   vec3 airglow = airglowRadiance(airglowZenith, view.z);
   vec3 sky = inBand(t * milkyWay, nightWeights.x) + inBand(t * zodiacal, lightWeights.w) + inBand(t * airglow, lightWeights.z);
+#ifdef SKYIG_NIGHT_LAYER
+  outRadiance = vec4(sky, 0.0);
+#else
   outRadiance = vec4(sky + (view.z < 0.0 ? inBand(nightGroundRadiance, nightWeights.y) : vec3(0.0)), 0.0);
+#endif
 }

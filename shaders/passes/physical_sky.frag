@@ -20,6 +20,12 @@
 //   SKYIG_SKY       the rays that miss it, drawn after over the whole channel where the ground
 //                   variant wrote no depth: the sky's pixels never pay for the ground's
 //                   reflection. Neither: both, for a target without depth.
+//   SKYIG_NIGHT_LAYER the night's own light added (the eye's band only): the sky's part above the
+//                   atmosphere read bilinearly from the small target NightDiffusePass::drawLayer
+//                   drew (it varies over the Milky Way map's 0.18 deg texels, coarser than a
+//                   pixel), dimmed by the transmittance to space, and the terrain's below the
+//                   horizon, both per pixel, as passes/night_diffuse.frag adds them over the
+//                   whole channel: one full-screen pass instead of two;
 //   SKYIG_FOLD_TONE with the tone pass's variant defines: the pass also writes what the display
 //                   is sent (tone/tone_display.glsl) at SKYIG_OUTPUT_FOLDED_DISPLAY, when it is
 //                   the frame's last full-screen pass: no second pass reads every pixel back
@@ -34,6 +40,13 @@
 // atmosphere's functions; the vertex stage alone reads the frame block.)
 #include "passes/physical_sky_uniforms.glsl"
 #include "common/band.glsl"
+#ifdef SKYIG_NIGHT_LAYER
+#include "common/frame_uniforms.h"
+#include "night/transmittance_to_space.glsl"
+layout(binding = SKYIG_UNIT_NIGHT_LAYER) uniform sampler2D nightLayer;
+layout(binding = SKYIG_UNIT_NIGHT_LAYER_EXTINCTION) uniform sampler1D nightExtinction;
+uniform vec3 nightGroundRadiance;  // linear Rec.709, cd/m^2: the terrain under the night's light
+#endif
 #ifdef SKYIG_FOLD_TONE
 #include "tone/tone_display.glsl"
 layout(location = SKYIG_OUTPUT_FOLDED_DISPLAY) out vec4 outDisplay;
@@ -118,7 +131,12 @@ vec3 insideRec709(vec3 view) {
 void main() {
   // In a goggle's band the sum is weighted as sunlit sky, its other parts scaled above by their
   // weights' ratios to it (common/band.glsl).
-  vec3 radiance = max(inBand(insideRec709(normalize(vViewRay)), lightWeights.x), vec3(0.0));
+  vec3 view = normalize(vViewRay);
+  vec3 radiance = max(inBand(insideRec709(view), lightWeights.x), vec3(0.0));
+#ifdef SKYIG_NIGHT_LAYER
+  radiance += transmittanceToSpace(nightExtinction, view) * texture(nightLayer, gl_FragCoord.xy * viewport.zw).rgb +
+              (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
+#endif
   outRadiance = vec4(radiance, 1.0);
 #ifdef SKYIG_FOLD_TONE
   outDisplay = toneDisplayValue(radiance, vec3(0.0), gl_FragCoord.xy);  // no point source drawn yet

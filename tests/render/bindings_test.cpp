@@ -134,6 +134,15 @@ std::vector<ProgramCase> programs() {
        }(),
        "#define SKYIG_SKY\n#define SKYIG_FOLD_TONE\n#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 2\n"
        "#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
+      // With the night's layer added (SkyRenderer::drawChannel at night).
+      {{"passes/ground_cap.vert", "passes/physical_sky.frag"},
+       [&] {
+         std::vector<Expect> e = physicalSky(true, true, false);
+         e.push_back(sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER));
+         e.push_back(sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION));
+         return e;
+       }(),
+       "#define SKYIG_GROUND\n#define SKYIG_NIGHT_LAYER\n"},
       {{"passes/fullscreen.vert", "reference/physical_sky_reference.frag"}, physicalSky(true, true, true)},
       {{"passes/fullscreen.vert", "passes/physical_sky_space.frag"},
        {frame, band, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE), sampler("scatteringPacked", SKYIG_UNIT_SCATTERING),
@@ -149,6 +158,11 @@ std::vector<ProgramCase> programs() {
       {{"passes/fullscreen.vert", "passes/night_diffuse.frag"},
        {frame, band, sampler("milkyWayS10", SKYIG_UNIT_MILKY_WAY), sampler("zodiacalS10", SKYIG_UNIT_ZODIACAL),
         sampler("extinctionRec709", SKYIG_UNIT_NIGHT_EXTINCTION), radiance}},
+      // Its layer for the physical sky pass (NightDiffusePass::drawLayer): no transmittance.
+      {{"passes/fullscreen.vert", "passes/night_diffuse.frag"},
+       {frame, band, sampler("milkyWayS10", SKYIG_UNIT_MILKY_WAY), sampler("zodiacalS10", SKYIG_UNIT_ZODIACAL),
+        optional(sampler("extinctionRec709", SKYIG_UNIT_NIGHT_EXTINCTION)), radiance},
+       "#define SKYIG_NIGHT_LAYER\n"},
       // GogglePass: the photocathode, its 8 x 8 means, the halo's two passes, the gain, the screen.
       {{"passes/fullscreen.vert", "passes/goggle_input.frag"},
        {optional(frame), block("GoggleBlock", SKYIG_BINDING_GOGGLE), sampler("nvisImage", SKYIG_UNIT_GOGGLE_NVIS),

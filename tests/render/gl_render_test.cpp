@@ -705,10 +705,9 @@ TEST_F(GlRender, LayersLeftOutChangeNoDisplayCode) {
 // pixel after all the others shows: the same function on the same float, and the tone pass
 // again wherever a later pass drew. At noon with the sun in view (its box of the exact veil);
 // the moon up by day, in view (its quad and box); the sun 5 deg down after a June sunset (the
-// night's light left out, a few faint displayed stars); at 12 km; a moonless night with the
-// night's light left out by hand (its stars over a folded sky pass, mapped again on their
-// quads). On a moonless night as it is, the night's light follows the sky pass and the tone
-// pass maps every pixel: one path either way.
+// night's light left out, a few faint displayed stars); at 12 km; a moonless night (the night's
+// light added by the sky pass, the displayed stars mapped again on their quads), and the same
+// with the night's light left out by hand.
 TEST_F(GlRender, SkyPassMappingItsOwnPixelsShowsWhatTheTonePassShows) {
   const ChannelConfig c = channel(10.0, Frustum{40, 40, 30, 30});
   struct Case {

@@ -37,7 +37,8 @@
 // From space physical_sky_space.frag runs instead (a second program: a branch between the two
 // costs llvmpipe the untaken side too).
 // (No common/uniforms.h here: its analytic-sky block's member names would clash with the
-// atmosphere's functions; the vertex stage alone reads the frame block.)
+// atmosphere's functions; the frame block, which the vertex stage and the night layer read, is
+// in common/frame_uniforms.h, the tone block in common/tone_uniforms.h.)
 #include "passes/physical_sky_uniforms.glsl"
 #include "common/band.glsl"
 #ifdef SKYIG_NIGHT_LAYER

@@ -9,6 +9,8 @@
 // Beyond, interpolating its 1/theta^2 term over a cell of angle a errs by at most about
 // 1.5 (a / theta)^2 of the veil (its Hessian is 6 b / theta^4), under 0.6%; measured, the
 // display codes differ from the per-pixel veil's by at most 1 (docs/performance.md).
+// The same mapping runs in the physical sky pass (foldedDefines); the pass then maps again only
+// where later passes drew (drawOver).
 #include "render/gl/gl_program.h"
 #include "render/gl/render_target.h"
 

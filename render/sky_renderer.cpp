@@ -268,7 +268,7 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
     const double pixelRad = (std::tan(channel.frustum.leftDeg * kRadPerDeg) + std::tan(channel.frustum.rightDeg * kRadPerDeg)) /
                             std::max(channel.width, 1);
     glBindVertexArray(emptyVao_);
-    night = nightDiffuse_->drawLayer(state, channel.width, channel.height, NightDiffusePass::layerScale(pixelRad));
+    night = nightDiffuse_->drawLayer(state, channel.width, channel.height, nightDiffuse_->layerScale(pixelRad));
   }
   const bool fold = foldTone_ && physical;
   if (fold)
@@ -301,7 +301,7 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
   glBindTextureUnit(SKYIG_UNIT_HDR_IMAGE, hdr_->texture());
   glBindTextureUnit(SKYIG_UNIT_POINT_SOURCES, pointSources_->texture());
   if (folded)
-    tone_->drawOver(toneTarget, {moonPixels}, [&](const GlProgram& quads) {
+    tone_->drawOver(toneTarget, std::span(&moonPixels, 1), [&](const GlProgram& quads) {
       if (state.shown.pointSources) stars_->drawFootprints(state.starField, ndcToWorld, hdr_->texture(), quads);
     });
   else
@@ -319,10 +319,7 @@ void SkyRenderer::drawGoggleChannel(const skyig::sky::SkyState& state, const sky
   // Every layer of the night: the goggle sees light far below the eye's threshold, so what the
   // eye's visibility leaves out (sky/shown_layers.h) is drawn here, but for the diffuse night
   // light with the sun up: the sunlit sky outshines it by a million in any band.
-  ensureTargets(c.width, c.height);
-  bindChannelBlocks(state, attitude, c);
-  hdr_->bindForDrawing();
-  drawSky(state, c, {}, {});
+  drawSkyPass(state, attitude, c);
   if (state.ephemeris) {
     (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, c);
     if (state.sunAltitude < 0.0)

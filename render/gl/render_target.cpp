@@ -35,6 +35,15 @@ RenderTarget::~RenderTarget() {
   if (depth_) glDeleteRenderbuffers(1, &depth_);
 }
 
+void RenderTarget::readBilinear(GLint wrap, GLint minFilter) const {
+  glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, minFilter);
+  glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(texture_, GL_TEXTURE_WRAP_S, wrap);
+  glTextureParameteri(texture_, GL_TEXTURE_WRAP_T, wrap);
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glTextureParameterfv(texture_, GL_TEXTURE_BORDER_COLOR, zero);
+}
+
 void RenderTarget::bindForDrawing() const {
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   glViewport(0, 0, width_, height_);

@@ -14,6 +14,9 @@ class RenderTarget {
   RenderTarget& operator=(const RenderTarget&) = delete;
 
   void bindForDrawing() const;
+  // Read through a sampler with linear magnification (a target made small to be read at a
+  // larger size): `minFilter` below it, `wrap` at its edges (a border is zero).
+  void readBilinear(GLint wrap = GL_CLAMP_TO_EDGE, GLint minFilter = GL_LINEAR) const;
   GLuint texture() const { return texture_; }
   GLuint framebuffer() const { return framebuffer_; }
   GLuint depthRenderbuffer() const { return depth_; }  // 0 without depth

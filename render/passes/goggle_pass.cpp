@@ -87,18 +87,10 @@ void GogglePass::ensureTargets(int width, int height, int block) {
   // Read bilinearly: the cathode between its pixels (the coarse pass), the halo up to the
   // channel's size; the block means and the halo's rows with zero beyond the channel (the
   // halo's Gaussian reaches past its edge), the means mip-mapped for the gain.
-  auto bilinear = [](const RenderTarget& t, GLint wrap, GLint minFilter) {
-    glTextureParameteri(t.texture(), GL_TEXTURE_MIN_FILTER, minFilter);
-    glTextureParameteri(t.texture(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(t.texture(), GL_TEXTURE_WRAP_S, wrap);
-    glTextureParameteri(t.texture(), GL_TEXTURE_WRAP_T, wrap);
-    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glTextureParameterfv(t.texture(), GL_TEXTURE_BORDER_COLOR, zero);
-  };
-  bilinear(*cathode_, GL_CLAMP_TO_EDGE, GL_LINEAR);
-  bilinear(*coarseTarget_, GL_CLAMP_TO_BORDER, GL_LINEAR_MIPMAP_NEAREST);
-  bilinear(*haloRows_, GL_CLAMP_TO_BORDER, GL_LINEAR);
-  bilinear(*haloTarget_, GL_CLAMP_TO_EDGE, GL_LINEAR);
+  cathode_->readBilinear();
+  coarseTarget_->readBilinear(GL_CLAMP_TO_BORDER, GL_LINEAR_MIPMAP_NEAREST);
+  haloRows_->readBilinear(GL_CLAMP_TO_BORDER);
+  haloTarget_->readBilinear();
 }
 
 void GogglePass::draw(GLuint nvisImage, const skyig::sky::ChannelConfig& channel, double nvisPerCdM2OfIlluminantA,

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -96,24 +97,26 @@ glm::ivec4 MoonPass::draw(const skyig::sky::night::MoonDisc& d, const glm::dmat3
   // The quad as moon.vert places it, in eye coordinates (z the depth along the view axis),
   // clipped to the half-space in front of the eye as the rasteriser clips it, then projected.
   const glm::dmat3 toNdc = glm::inverse(ndcToWorldMatrix);
-  std::vector<glm::dvec3> quad;
-  for (const glm::dvec2 corner : {glm::dvec2(-1, -1), glm::dvec2(1, -1), glm::dvec2(1, 1), glm::dvec2(-1, 1)})
-    quad.push_back(toNdc * (d.centreSeen + halfSize * (corner.x * right + corner.y * quadUp)));
+  std::array<glm::dvec3, 4> quad;
+  const glm::dvec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  for (std::size_t i = 0; i < quad.size(); ++i)
+    quad[i] = toNdc * (d.centreSeen + halfSize * (corners[i].x * right + corners[i].y * quadUp));
   constexpr double kNear = 1e-6;
-  std::vector<glm::dvec3> inFront;
-  for (std::size_t i = 0; i < quad.size(); ++i) {
-    const glm::dvec3& a = quad[i];
-    const glm::dvec3& b = quad[(i + 1) % quad.size()];
-    if (a.z >= kNear) inFront.push_back(a);
-    if ((a.z >= kNear) != (b.z >= kNear)) inFront.push_back(a + (b - a) * ((kNear - a.z) / (b.z - a.z)));
-  }
-  if (inFront.empty()) return glm::ivec4(0);  // behind the eye
   glm::dvec2 lo(1e300), hi(-1e300);
-  for (const glm::dvec3& q : inFront) {
+  bool inFront = false;
+  const auto extend = [&](const glm::dvec3& q) {
     const glm::dvec2 px = (glm::dvec2(q) / q.z * 0.5 + 0.5) * glm::dvec2(channel.width, channel.height);
     lo = glm::min(lo, px);
     hi = glm::max(hi, px);
+    inFront = true;
+  };
+  for (std::size_t i = 0; i < quad.size(); ++i) {
+    const glm::dvec3& a = quad[i];
+    const glm::dvec3& b = quad[(i + 1) % quad.size()];
+    if (a.z >= kNear) extend(a);
+    if ((a.z >= kNear) != (b.z >= kNear)) extend(a + (b - a) * ((kNear - a.z) / (b.z - a.z)));
   }
+  if (!inFront) return glm::ivec4(0);  // behind the eye
   // A pixel of margin (the rasteriser covers the pixels whose centres are inside), clamped to
   // the channel in double before the integers.
   const auto clampTo = [](double v, int n) { return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(n))); };

@@ -66,7 +66,9 @@ NightDiffusePass::Program::Program(const std::string& defines)
 }
 
 NightDiffusePass::NightDiffusePass() : program_("") {
-  milkyWay_ = uploadMilkyWay(*skyig::sky::night::MilkyWayMap::standard());
+  const skyig::sky::night::MilkyWayMap& map = *skyig::sky::night::MilkyWayMap::standard();
+  milkyWay_ = uploadMilkyWay(map);
+  milkyWayWidth_ = map.width();
   zodiacal_ = uploadZodiacal();
 }
 
@@ -87,8 +89,8 @@ void NightDiffusePass::draw(const skyig::sky::night::NightDiffuseSky& sky, const
   glDisable(GL_BLEND);
 }
 
-int NightDiffusePass::layerScale(double pixelRad) {
-  const double texelRad = 2.0 * std::numbers::pi / skyig::sky::night::MilkyWayMap::standard()->width();
+int NightDiffusePass::layerScale(double pixelRad) const {
+  const double texelRad = 2.0 * std::numbers::pi / milkyWayWidth_;
   return std::clamp(static_cast<int>(std::floor(texelRad / std::max(pixelRad, 1e-9))), 1, 8);
 }
 
@@ -99,10 +101,7 @@ NightLayer NightDiffusePass::drawLayer(const skyig::sky::SkyState& state, int wi
   if (!layer_ || layer_->width() != w || layer_->height() != h) {
     // Float: the night's light is ~1e-4 cd/m^2, where half floats are denormal.
     layer_ = std::make_unique<RenderTarget>(w, h, GL_RGBA32F);
-    glTextureParameteri(layer_->texture(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(layer_->texture(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(layer_->texture(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(layer_->texture(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    layer_->readBilinear();
   }
   if (!layerProgram_) layerProgram_ = std::make_unique<Program>("#define SKYIG_NIGHT_LAYER\n");
   layer_->bindForDrawing();

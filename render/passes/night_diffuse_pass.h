@@ -40,7 +40,7 @@ class NightDiffusePass {
   NightLayer drawLayer(const skyig::sky::SkyState& state, int width, int height, int scale);
   // The scale for a channel whose pixel at its centre spans `pixelRad`: the layer's texel about
   // the Milky Way map's (its finest structure), at least 1, at most 8.
-  static int layerScale(double pixelRad);
+  int layerScale(double pixelRad) const;
 
  private:
   // A variant of the pass's program and its per-frame uniforms.
@@ -54,6 +54,7 @@ class NightDiffusePass {
   std::unique_ptr<Program> layerProgram_;  // SKYIG_NIGHT_LAYER, the first time a layer is drawn
   std::unique_ptr<RenderTarget> layer_;
   GLuint milkyWay_ = 0;
+  int milkyWayWidth_ = 0;  // texels around the sky
   GLuint zodiacal_ = 0;
   ExtinctionTexture extinction_;
 };

@@ -78,10 +78,7 @@ void TonePass::prepare(const Variant& variant, const glm::dmat3& ndcToWorld, int
   grid_ = glareGrid(ndcToWorld, width, height, glareSources);
   if (!veil_ || veil_->width() != grid_.columns + 1 || veil_->height() != grid_.rows + 1) {
     veil_ = std::make_unique<RenderTarget>(grid_.columns + 1, grid_.rows + 1, GL_RGBA32F);
-    glTextureParameteri(veil_->texture(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(veil_->texture(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(veil_->texture(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(veil_->texture(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    veil_->readBilinear();
   }
   std::unique_ptr<GlProgram>& veil = veilPrograms_[static_cast<std::size_t>(sources_ - 1)];
   if (!veil)
@@ -105,7 +102,7 @@ void TonePass::draw(const RenderTarget& target) {
   drawNearBoxes(target);
 }
 
-void TonePass::drawOver(const RenderTarget& target, const std::vector<glm::ivec4>& rectangles,
+void TonePass::drawOver(const RenderTarget& target, std::span<const glm::ivec4> rectangles,
                         const std::function<void(const GlProgram&)>& drawQuads) {
   glBindVertexArray(emptyVao_);
   target.bindForDrawing();

@@ -21,6 +21,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -69,7 +70,7 @@ class TonePass {
   // width, height in pixels; the moon's quad), the quads `drawQuads` draws with the program it
   // is given (the displayed stars': StarPass::drawFootprints, with the program of
   // passes/star_display.vert and the tone fragment), then the boxes of the exact veil.
-  void drawOver(const RenderTarget& target, const std::vector<glm::ivec4>& rectangles,
+  void drawOver(const RenderTarget& target, std::span<const glm::ivec4> rectangles,
                 const std::function<void(const GlProgram&)>& drawQuads);
 
  private:

@@ -801,7 +801,6 @@ TEST_F(GlRender, NightLayerShowsTheNightsLightOfEveryPixel) {
   mapForDisplays(s, {c.display});
   ASSERT_TRUE(s.shown.nightLight);
   ASSERT_LT(s.moonDirection.z, -0.2);  // no moon
-  ASSERT_EQ(NightDiffusePass::layerScale(2.0 * std::tan(30.0 * kDeg) / c.width), 3);
   renderer_->draw(s, c);
   const HdrImage frame = renderer_->readHdr();
   renderer_->drawSkyPass(s, c);
@@ -812,6 +811,7 @@ TEST_F(GlRender, NightLayerShowsTheNightsLightOfEveryPixel) {
   glClearNamedFramebufferfv(target.framebuffer(), GL_COLOR, 0, zero);
   target.bindForDrawing();
   NightDiffusePass pass;
+  ASSERT_EQ(pass.layerScale(2.0 * std::tan(30.0 * kDeg) / c.width), 3);  // the renderer's scale here
   pass.draw(s);  // the renderer's frame block is still bound, for this channel
   const HdrImage full = readFloatTexture(target.texture(), c.width, c.height);
   double sumLayer = 0.0, sumFull = 0.0;

@@ -163,14 +163,15 @@ bool SkyRenderer::drawSky(const skyig::sky::SkyState& state, const skyig::sky::C
   if (state.conditions.model == skyig::sky::SkyModel::Physical) {
     physicalPassFor(state);
     // The tables on screen may still be the previous model's while a new one uploads; both
-    // share the planet, so the camera is the same. The moonlit sky only where it changes what
-    // the displays show (sky/shown_layers.h), and always in a goggle, which sees far fainter
-    // light than the eye.
+    // share the planet, so the camera is the same. The moonlit sky, and the sun's own sky at
+    // night, only where they change what the displays show (sky/shown_layers.h), and always in
+    // a goggle, which sees far fainter light than the eye.
     return physical_->draw(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
                            skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection,
                            state.shown.moonlitSky || skyig::sky::isGoggle(channel) ? state.moonlightScale
                                                                                     : glm::dvec3(0.0),
-                           state.sunRefraction, toneDefines, night);
+                           state.sunRefraction, toneDefines, night,
+                           state.shown.sunlitSky || skyig::sky::isGoggle(channel));
   }
   skyProgram_.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);

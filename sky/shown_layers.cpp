@@ -37,10 +37,13 @@ ShownLayers shownLayers(const std::vector<ViewCellLight>& cells, const std::vect
   if (cells.empty() || displays.empty()) return shown;
   for (const DisplayParams& d : displays)
     if (d.toneOperator != ToneOperator::Histogram) return shown;
-  shown.moonlitSky = shown.nightLight = shown.mesopic = false;
+  shown.sunlitSky = shown.moonlitSky = shown.nightLight = shown.mesopic = false;
   for (const ViewCellLight& c : cells)
     shown.mesopic = shown.mesopic || double(c.sunlit) + double(c.moonlit) + double(c.night) < kPhotopicCdM2 * kPhotopicMargin;
   for (const auto& [display, curve] : curves) {
+    shown.sunlitSky = shown.sunlitSky ||
+                      shownSomewhere(cells, curve, display, [](const ViewCellLight& c) { return double(c.sunlit); },
+                                     kSunlitSkyMargin);
     shown.moonlitSky = shown.moonlitSky ||
                        shownSomewhere(cells, curve, display, [](const ViewCellLight& c) { return double(c.moonlit); },
                                       kMoonlitSkyMargin);

@@ -15,6 +15,12 @@
 // rarely by day, since Venus or Jupiter is usually up and can be seen in daylight, but whenever
 // the sky is too bright for them (the displayed-star pass's per-star test still decides which
 // are drawn when it runs).
+// The sun's own sky and ground are left out the same way once night has fallen: with the sun
+// far below the horizon its twilight is fainter than the night's own light (astronomical
+// twilight ends at -18 degrees by that definition), and a moonlit or moonless night then pays
+// for one sky lookup per pixel, or none, instead of two or one. Margin 10 as for the moon: the
+// twilight's arch is brightest at the horizon below the sun, a few degrees under the centre of
+// the lowest cells.
 #include "sky/channel.h"
 #include "sky/eye/tone_curve.h"
 #include "sky/view_sphere.h"
@@ -30,6 +36,7 @@ inline constexpr double kShownCodes = 0.25;
 inline constexpr double kPhotopicCdM2 = 3.98107;
 inline constexpr double kPhotopicMargin = 4.0;
 inline constexpr double kMoonlitSkyMargin = 10.0;
+inline constexpr double kSunlitSkyMargin = 10.0;
 inline constexpr double kNightLightMargin = 8.0;
 // Point sources: a cell's mean hides its darker pixels, so the darkest cell's luminance is
 // divided by this before its threshold is taken (Schaefer's threshold grows as sqrt(B) by day,
@@ -37,6 +44,7 @@ inline constexpr double kNightLightMargin = 8.0;
 inline constexpr double kPointSourceMargin = 10.0;
 
 struct ShownLayers {
+  bool sunlitSky = true;
   bool moonlitSky = true;
   bool nightLight = true;
   bool mesopic = true;  // some of the view may be dim enough for rod vision (else photopic only)

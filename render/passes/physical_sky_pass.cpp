@@ -259,9 +259,11 @@ void PhysicalSkyPass::setFrameUniforms(const Program& program, const glm::dvec3&
 
 bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirection, const glm::dvec3& moonDirection,
                            const glm::dvec3& moonlightScale, const glm::dvec4& sunRefraction,
-                           const std::string& toneDefines, const NightLayer& night) {
+                           const std::string& toneDefines, const NightLayer& night, bool sunlit) {
   const std::string extra = (night.texture ? std::string("#define SKYIG_NIGHT_LAYER\n") : std::string()) +
                             (toneDefines.empty() ? std::string() : "#define SKYIG_FOLD_TONE\n" + toneDefines);
+  // The sun's light left out only inside the atmosphere (the space program keeps it).
+  const std::string insideExtra = sunlit ? extra : "#define SKYIG_SUNLESS\n" + extra;
   stepUpload();
   if (!current_.model) throw std::logic_error("PhysicalSkyPass::draw before use()");
   const atmosphere::AtmosphereParameters& a = current_.model->parameters(0);
@@ -306,7 +308,7 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   GLint viewport[4] = {0, 0, 0, 0};
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   glGetIntegerv(GL_VIEWPORT, viewport);
-  drawSlice(sunSlice_, sunUvwz.y, sunUvwz.w);
+  if (sunlit || reference_) drawSlice(sunSlice_, sunUvwz.y, sunUvwz.w);
   if (moon) drawSlice(moonSlice_, moonUvwz.y, moonUvwz.w);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
@@ -339,17 +341,18 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
                                                GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &depthType);
   // Then the quad around the sun again with the disc (it clips away when the sun is behind the
   // camera).
-  auto drawDisc = [&](const Program& disc) {
-    prepare(disc);
+  auto drawDisc = [&](Part part) {
+    if (!sunlit) return;
+    prepare(variant(moon, part, true, insideExtra));
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
   };
   if (depthType == GL_NONE) {
-    prepare(variant(moon, kBoth, false, extra));
+    prepare(variant(moon, kBoth, false, insideExtra));
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    drawDisc(variant(moon, kBoth, true, extra));
+    drawDisc(kBoth);
     return true;
   }
-  const Program& ground = variant(moon, kGround, false, extra);
+  const Program& ground = variant(moon, kGround, false, insideExtra);
   prepare(ground);
   // The ring a little above the horizon (mu = -sqrt(1 - (Rg/r)^2)): 0.1 deg encloses the
   // horizon's circle whatever the fan's chords cut (2 pi / 256)^2 / 8 = 7.5e-5 rad inside it.
@@ -364,11 +367,11 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   glClear(GL_DEPTH_BUFFER_BIT);
   glDepthFunc(GL_ALWAYS);
   glDrawArrays(GL_TRIANGLES, 0, 3 * kSegments);
-  prepare(variant(moon, kSky, false, extra));
+  prepare(variant(moon, kSky, false, insideExtra));
   glDepthFunc(GL_LESS);  // both at depth 0.5: the sky only where the clear's 1 is left
   glDepthMask(GL_FALSE);
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  drawDisc(variant(moon, kSky, true, extra));  // where the sky is: no depth written
+  drawDisc(kSky);  // where the sky is: no depth written
   glDepthMask(GL_TRUE);
   glDisable(GL_DEPTH_TEST);
   return true;

@@ -50,13 +50,15 @@ class PhysicalSkyPass {
   // then also maps each pixel to the display and writes it at SKYIG_OUTPUT_FOLDED_DISPLAY
   // (passes/physical_sky.frag, SKYIG_FOLD_TONE); the tone block must be bound, and the veil's
   // grid at its unit if the defines read it. `night`, when it has a texture, adds the night's
-  // own light (SKYIG_NIGHT_LAYER). Returns whether it drew what was asked (never from space,
-  // whose program has neither, nor for a reference pass): if not, only the sky was drawn.
+  // own light (SKYIG_NIGHT_LAYER). `sunlit` false leaves out the sun's sky, ground and disc
+  // (SKYIG_SUNLESS), when its twilight changes no display code (sky/shown_layers.h); inside the
+  // atmosphere only. Returns whether it drew what was asked (never from space, whose program has
+  // neither, nor for a reference pass): if not, only the sky was drawn, the sun's light in it.
   bool draw(const glm::dvec3& camera, const glm::dvec3& sunDirection,
             const glm::dvec3& moonDirection = glm::dvec3(0.0, 0.0, 1.0),
             const glm::dvec3& moonlightScale = glm::dvec3(0.0),
             const glm::dvec4& sunRefraction = glm::dvec4(0.0), const std::string& toneDefines = {},
-            const NightLayer& night = {});
+            const NightLayer& night = {}, bool sunlit = true);
 
   const atmosphere::AtmosphereModel* current() const { return current_.model.get(); }
   const atmosphere::AtmosphereModel* pending() const { return pending_ ? pending_->set.model.get() : nullptr; }

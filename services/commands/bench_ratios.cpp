@@ -117,6 +117,10 @@ int runRatiosBench(NodeConfig config, const RatiosOptions& opt) {
       sky::buildSkyState(day.observer, config.sky,
                          sky::SunOverride{day.sunAzimuth * 180.0 / 3.14159265358979, day.sunAltitude * 180.0 / 3.14159265358979});
   sky::mapForDisplays(dayForced, {config.channels.front().display});
+  // The moonless night's sky pass against the reference does the reference's work: the sun's
+  // sky too, which the frame leaves out once night has fallen (sky/shown_layers.h).
+  sky::SkyState moonlessSunlit = moonless;
+  moonlessSunlit.shown.sunlitSky = true;
   sky::ChannelConfig channel = config.channels.front();
   channel.width = opt.width;
   channel.height = opt.height;
@@ -140,7 +144,8 @@ int runRatiosBench(NodeConfig config, const RatiosOptions& opt) {
       {"moonless_night_frame", "night frame (every pass + tone)", &kMoonless, [&] { live.draw(moonless, channel); }, {}},
       {"reference_sky_pass_moonless_night", "reference sky pass", &kMoonless,
        [&] { reference.drawSkyPass(moonless, channel); }, {}},
-      {"sky_pass_moonless_night", "sky pass", &kMoonless, [&] { live.drawSkyPass(moonless, channel); }, {}},
+      {"sky_pass_moonless_night", "sky pass, the sun's sky drawn", &kMoonless,
+       [&] { live.drawSkyPass(moonlessSunlit, channel); }, {}},
   };
   const std::vector<Ratio> ratios = {
       {"sky_pass_over_reference", "sky pass / reference (day)", "sky_pass_day", "reference_sky_pass_day"},

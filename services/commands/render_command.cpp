@@ -113,7 +113,8 @@ int run(const RenderOptions& opt) {
                std::string(sky::toString(state.conditions.model)).c_str(), state.sunAzimuth / kDeg,
                state.sunAltitude / kDeg, state.adaptationLuminance);
   if (state.ephemeris)
-    spdlog::info("sky: moonlit sky {}, the night's own light {} (sky/shown_layers.h)",
+    spdlog::info("sky: the sun's sky {}, moonlit sky {}, the night's own light {} (sky/shown_layers.h)",
+                 state.shown.sunlitSky ? "drawn" : "left out, no display would show it",
                  state.shown.moonlitSky ? "drawn" : "left out, no display would show it",
                  state.shown.nightLight ? "drawn" : "left out, no display would show it");
   for (std::size_t i = 0; i < channels.size(); ++i) {

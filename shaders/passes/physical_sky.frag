@@ -9,6 +9,10 @@
 // only for what it shows by compiling this file several ways (PhysicalSkyPass builds each):
 //   (none)          the sun's sky and ground, over the whole channel;
 //   SKYIG_MOONLIT   the same with the moon's sky and ground, when the moon lights the sky;
+//   SKYIG_SUNLESS   without the sun's sky and ground (and no disc quad), when the sun is so far
+//                   below the horizon that its twilight changes no display code
+//                   (sky/shown_layers.h): the night's pixels pay for the moon's and the night's
+//                   light only;
 //   SKYIG_SUN_DISC  with the disc, drawn again over a small quad around the sun
 //                   (passes/sun_disc.vert) after the variant without it drew the channel: the
 //                   disc covers ~1e-5 of the pixels that would otherwise all evaluate its test
@@ -101,11 +105,15 @@ vec3 insideRec709(vec3 view) {
   float d;
   float u_mu = frameUMu(rmu, ground, d);
   float nu = dot(view, sunDirectionP);
+#ifdef SKYIG_SUNLESS
+  vec3 rgb = vec3(0.0);
+#else
   vec3 rgb = sliceScatteredRec709(sunSliceScattering, sunSliceSingleMie, u_mu, nu);
   if (ground) {
     rgb += packedGroundReflectionRec709(atm, transmittanceXyz, irradianceXyz, solarIrradianceXyz,
                                         groundAlbedo, camera, view, d, sunDirectionP);
   }
+#endif
 #ifdef SKYIG_MOONLIT
   float nu_moon = dot(view, moonDirectionP);
   vec3 moon = sliceScatteredRec709(moonSliceScattering, moonSliceSingleMie, u_mu, nu_moon);

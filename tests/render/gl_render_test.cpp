@@ -665,27 +665,33 @@ std::pair<int, int> codeDifferences(const DisplayImage& a, const DisplayImage& b
 }  // namespace
 
 // Faint layers no display would show are left out of the frame (sky/shown_layers.h): the
-// moonlit sky by day (the moon 25 deg up, the sun 20 deg), both in civil twilight. The frame drawn without them shows the codes of the frame drawn with every layer:
-// none differs by more than one, and under 1% by one (the float sum's last bit under the
-// dither). On a moonlit and on a moonless night the layers are drawn.
+// moonlit sky by day (the moon 25 deg up, the sun 20 deg), both in civil twilight, and the
+// sun's own sky and ground once night has fallen. The frame drawn without them shows the codes
+// of the frame drawn with every layer: none differs by more than one, and under 1% by one (the
+// float sum's last bit under the dither). On a moonlit and on a moonless night the moon's and
+// the night's light are drawn; in twilight and by day the sun's sky is.
 TEST_F(GlRender, LayersLeftOutChangeNoDisplayCode) {
   const ChannelConfig c = channel(10.0, Frustum{40, 40, 30, 30});
   struct Case {
     const char* utc;
     double yaw;
-    bool moonlit, night;
+    bool sunlit, moonlit, night;
   };
   // The moon up by day; the sun 5 deg down in the north-west after a June sunset (the night's
-  // light is first shown at about -8 deg, the moonlit sky at -6.6); a full moon rising; a
-  // moonless December night.
-  for (const Case& k : {Case{"2026-06-23T17:00:00Z", 150.0, false, false},
-                        Case{"2026-06-21T19:45:00Z", 315.0, false, false},
-                        Case{"2026-12-24T20:00:00Z", 60.0, true, true},
-                        Case{"2026-12-09T22:00:00Z", 180.0, false, true}}) {
+  // light is first shown at about -8 deg, the moonlit sky at -6.6); a full moon rising (its sky
+  // outshines the sun's, 45 deg down); a moonless December night (the tables' floor of the
+  // sun's sky, 5e-6 cd/m^2 at most, is within the margin of the darkest cells, the terrain's
+  // 2.5e-5).
+  for (const Case& k : {Case{"2026-06-23T17:00:00Z", 150.0, true, false, false},
+                        Case{"2026-06-21T19:45:00Z", 315.0, true, false, false},
+                        Case{"2026-12-24T20:00:00Z", 60.0, false, true, true},
+                        Case{"2026-12-09T22:00:00Z", 180.0, true, false, true}}) {
     SkyState s = mappedState(k.utc, k.yaw, c);
-    std::printf("%s: sun %.1f deg, adaptation %.3g cd/m^2, moonlit sky %s, night light %s, point sources %s\n", k.utc,
-                s.sunAltitude / kDeg, s.adaptationLuminance, s.shown.moonlitSky ? "drawn" : "left out",
+    std::printf("%s: sun %.1f deg, adaptation %.3g cd/m^2, the sun's sky %s, moonlit sky %s, night light %s, point sources %s\n", k.utc,
+                s.sunAltitude / kDeg, s.adaptationLuminance, s.shown.sunlitSky ? "drawn" : "left out",
+                s.shown.moonlitSky ? "drawn" : "left out",
                 s.shown.nightLight ? "drawn" : "left out", s.shown.pointSources ? "drawn" : "left out");
+    EXPECT_EQ(s.shown.sunlitSky, k.sunlit) << k.utc;
     EXPECT_EQ(s.shown.moonlitSky, k.moonlit) << k.utc;
     EXPECT_EQ(s.shown.nightLight, k.night) << k.utc;
     renderer_->draw(s, c);
@@ -694,7 +700,7 @@ TEST_F(GlRender, LayersLeftOutChangeNoDisplayCode) {
     renderer_->draw(s, c);
     const DisplayImage all = renderer_->readDisplay();
     const auto [moreThanOne, one] = codeDifferences(shown, all);
-    if (k.moonlit && k.night) continue;  // nothing was left out
+    if (k.sunlit && k.moonlit && k.night) continue;  // nothing was left out
     EXPECT_EQ(moreThanOne, 0) << k.utc;
     EXPECT_LT(one, kW * kH * 3 / 100) << k.utc;
   }

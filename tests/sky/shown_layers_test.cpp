@@ -1,12 +1,16 @@
-// Which faint layers a state's displays can show (sky/shown_layers.h): here the point sources,
+// Which faint layers a state's displays can show (sky/shown_layers.h): the point sources,
 // against Schaefer's (1990) threshold of a point source on a background, taken at the darkest
-// cell of the view sphere over kPointSourceMargin.
+// cell of the view sphere over kPointSourceMargin; the sun's own sky after dusk, against the
+// codes the scene's tone curve gives.
 #include "sky/shown_layers.h"
 
 #include "shaders/night/star_physics.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <vector>
 
 using namespace skyig;
@@ -45,4 +49,44 @@ TEST(PointSourcesSeen, SixthMagnitudeOnADarkNight) {
   EXPECT_TRUE(pointSourcesSeen({}, 0.0));
   // No source at all: nothing to draw.
   EXPECT_FALSE(pointSourcesSeen(night, 0.0));
+}
+
+namespace {
+
+// A night sky of `nightCdM2` in every cell with the sun's twilight `sunlitCdM2` added in one, and
+// the shown layers on the default display through the scene's own histogram-adjusted curve.
+ShownLayers nightWithTwilight(float nightCdM2, float sunlitCdM2) {
+  std::vector<ViewCellLight> cells(64);
+  eye::LuminanceHistogram h;
+  for (ViewCellLight& c : cells) c.night = nightCdM2;
+  cells[7].sunlit = sunlitCdM2;
+  for (const ViewCellLight& c : cells) h.add(double(c.sunlit) + double(c.night), 4.0 * 3.14159265358979 / 64.0);
+  const DisplayParams display;
+  const eye::ToneCurve curve = eye::histogramAdjustment(
+      h, {std::max(display.ambientLuminance, 1e-3 * display.maxLuminance), display.ambientLuminance + display.maxLuminance,
+          display.adaptationLuminance});
+  return shownLayers(cells, {display}, {{display, curve}});
+}
+
+}  // namespace
+
+// After dusk the sun's own sky is left out once even ten times its light moves no cell's code by
+// a quarter: a ten-thousandth of the night sky's 2e-4 cd/m^2 is left out, a tenth (the
+// twilight's arch near the end of astronomical twilight) is drawn. The moonlit sky and the
+// night's own light follow the same rule: the night's light is drawn, there is no moon.
+TEST(ShownLayers, TheSunsSkyIsLeftOutWhenItsTwilightIsTooFaintToMoveACode) {
+  const ShownLayers faint = nightWithTwilight(2e-4f, 2e-8f);
+  EXPECT_FALSE(faint.sunlitSky);
+  EXPECT_TRUE(faint.nightLight);
+  EXPECT_FALSE(faint.moonlitSky);
+  EXPECT_TRUE(nightWithTwilight(2e-4f, 2e-5f).sunlitSky);
+  // The threshold itself: the twilight at which ten times it first moves the code by 0.25.
+  float lo = 2e-8f, hi = 2e-5f;
+  for (int i = 0; i < 40; ++i) {
+    const float mid = std::sqrt(lo * hi);
+    (nightWithTwilight(2e-4f, mid).sunlitSky ? hi : lo) = mid;
+  }
+  std::printf("the sun's sky is first drawn at %.3g cd/m^2 in one cell of a 2e-4 cd/m^2 night\n", double(hi));
+  EXPECT_GT(hi, 1e-7f);
+  EXPECT_LT(hi, 2e-5f);
 }

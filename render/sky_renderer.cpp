@@ -288,7 +288,7 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
   // Stars and planets as displayed, against the sky without them; the tone pass adds them to
   // the mapped sky, so it never maps a star as if it were sky (docs/night-sky-stars.md). Not
   // where none can pass the eye's threshold against the darkest of the view (sky/shown_layers.h):
-  // the target is then left clear.
+  // the target is then left clear; else only the sources above that threshold.
   if (state.shown.pointSources || pointSourcesDrawn_) {
     const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearNamedFramebufferfv(pointSources_->framebuffer(), GL_COLOR, 0, none);
@@ -296,14 +296,15 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
   }
   if (state.shown.pointSources) {
     pointSources_->bindForDrawing();
-    stars_->drawDisplayed(state.starField, ndcToWorld, hdr_->texture());
+    stars_->drawDisplayed(state.starField, ndcToWorld, hdr_->texture(), state.shown.pointSourceFloorLux);
     pointSourcesDrawn_ = true;
   }
   glBindTextureUnit(SKYIG_UNIT_HDR_IMAGE, hdr_->texture());
   glBindTextureUnit(SKYIG_UNIT_POINT_SOURCES, pointSources_->texture());
   if (folded)
     tone_->drawOver(toneTarget, std::span(&moonPixels, 1), [&](const GlProgram& quads) {
-      if (state.shown.pointSources) stars_->drawFootprints(state.starField, ndcToWorld, hdr_->texture(), quads);
+      if (state.shown.pointSources)
+        stars_->drawFootprints(state.starField, ndcToWorld, hdr_->texture(), quads, state.shown.pointSourceFloorLux);
     });
   else
     tone_->draw(toneTarget);

@@ -54,11 +54,15 @@ ShownLayers shownLayers(const std::vector<ViewCellLight>& cells, const std::vect
   return shown;
 }
 
-bool pointSourcesSeen(const std::vector<ViewCellLight>& cells, double brightestLux) {
-  if (cells.empty()) return true;
+double faintestPointSourceSeenLux(const std::vector<ViewCellLight>& cells) {
+  if (cells.empty()) return 0.0;
   double darkest = std::numeric_limits<double>::infinity();
   for (const ViewCellLight& c : cells) darkest = std::min(darkest, double(c.sunlit) + double(c.moonlit) + double(c.night));
-  return brightestLux > shader::pointSourceThresholdLux(darkest / kPointSourceMargin);
+  return shader::pointSourceThresholdLux(darkest / kPointSourceMargin);
+}
+
+bool pointSourcesSeen(const std::vector<ViewCellLight>& cells, double brightestLux) {
+  return cells.empty() || brightestLux > faintestPointSourceSeenLux(cells);
 }
 
 }  // namespace skyig::sky

@@ -13,8 +13,10 @@
 // The displayed stars and planets are left out where even the brightest of them cannot pass the
 // eye's point-source threshold against the darkest of the view (pointSourcesSeen): in practice
 // rarely by day, since Venus or Jupiter is usually up and can be seen in daylight, but whenever
-// the sky is too bright for them (the displayed-star pass's per-star test still decides which
-// are drawn when it runs).
+// the sky is too bright for them. When it runs, it draws only the sources above the same
+// threshold (pointSourceFloorLux): by day Venus and Jupiter, not the 4600 stars above the
+// horizon, each of which would take the pass's per-star test (against the sky at its own pixel,
+// which decides which of the rest are drawn).
 // The sun's own sky and ground are left out the same way once night has fallen: with the sun
 // far below the horizon its twilight is fainter than the night's own light (astronomical
 // twilight ends at -18 degrees by that definition), and a moonlit or moonless night then pays
@@ -49,6 +51,9 @@ struct ShownLayers {
   bool nightLight = true;
   bool mesopic = true;  // some of the view may be dim enough for rod vision (else photopic only)
   bool pointSources = true;  // some star or planet may be seen (the displayed-star pass is drawn)
+  // lux: no star or planet at or below this can be seen anywhere in the view
+  // (faintestPointSourceSeenLux); the displayed-star pass draws only those above it.
+  double pointSourceFloorLux = 0.0;
 };
 
 // All true where a display has no tone curve (Tumblin-Rushmeier maps each pixel by itself) or
@@ -61,6 +66,11 @@ ShownLayers shownLayers(const std::vector<ViewCellLight>& cells, const std::vect
 // kPointSourceMargin (Schaefer 1990, night/point_source_visibility.glsl, the displayed-star
 // pass's own test). True without cells.
 bool pointSourcesSeen(const std::vector<ViewCellLight>& cells, double brightestLux);
+
+// The illuminance at the eye (lux) a point source must exceed to pass the eye's threshold
+// somewhere on the view sphere: Schaefer's threshold on the darkest cell's luminance over
+// kPointSourceMargin. 0 without cells (every source may be seen).
+double faintestPointSourceSeenLux(const std::vector<ViewCellLight>& cells);
 
 // The displayed 8-bit code (0-255, unrounded) of a grey world luminance through `curve` on
 // `display` (the tone pass's mapping, shaders/tone/display_curve.glsl, for a grey).

@@ -163,6 +163,7 @@ void mapForDisplays(SkyState& state, const std::vector<DisplayParams>& displays)
     for (const auto* list : {&state.starField->stars, &state.starField->planets})
       for (const night::PointSource& p : *list) brightest = std::max(brightest, p.illuminanceLux);
   state.shown.pointSources = pointSourcesSeen(*state.viewLight, brightest);
+  state.shown.pointSourceFloorLux = faintestPointSourceSeenLux(*state.viewLight);
 }
 
 std::optional<night::NightDiffuseSky> nightDiffuseSky(const SkyState& state) {

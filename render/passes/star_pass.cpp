@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <vector>
 
 namespace skyig::render {
@@ -31,32 +32,49 @@ StarPass::~StarPass() {
   glDeleteVertexArrays(1, &vao_);
 }
 
-std::vector<float> StarPass::instanceData(const skyig::sky::night::StarField& field, skyig::sky::SpectralBand band) {
-  std::vector<float> data;
-  data.reserve((field.stars.size() + field.planets.size()) * 6);
+std::vector<const skyig::sky::night::PointSource*> StarPass::brightestFirst(const skyig::sky::night::StarField& field) {
+  std::vector<const skyig::sky::night::PointSource*> sources;
+  sources.reserve(field.stars.size() + field.planets.size());
   for (const auto* list : {&field.stars, &field.planets})
-    for (const skyig::sky::night::PointSource& p : *list) {
-      glm::dvec3 light = p.rec709Lux;
-      if (band != skyig::sky::SpectralBand::Visible)
-        light = glm::dvec3(p.illuminanceLux * skyig::sky::nvisPerLuxOfBlackbody(p.temperatureK, skyig::sky::nvisClassOf(band)));
-      for (double v : {p.direction.x, p.direction.y, p.direction.z, light.r, light.g, light.b})
-        data.push_back(static_cast<float>(v));
-    }
+    for (const skyig::sky::night::PointSource& p : *list) sources.push_back(&p);
+  std::stable_sort(sources.begin(), sources.end(),
+                   [](const auto* a, const auto* b) { return a->illuminanceLux > b->illuminanceLux; });
+  return sources;
+}
+
+std::vector<float> StarPass::instanceData(const std::vector<const skyig::sky::night::PointSource*>& sources,
+                                          skyig::sky::SpectralBand band) {
+  std::vector<float> data;
+  data.reserve(sources.size() * 6);
+  for (const skyig::sky::night::PointSource* p : sources) {
+    glm::dvec3 light = p->rec709Lux;
+    if (band != skyig::sky::SpectralBand::Visible)
+      light = glm::dvec3(p->illuminanceLux * skyig::sky::nvisPerLuxOfBlackbody(p->temperatureK, skyig::sky::nvisClassOf(band)));
+    for (double v : {p->direction.x, p->direction.y, p->direction.z, light.r, light.g, light.b})
+      data.push_back(static_cast<float>(v));
+  }
   return data;
 }
 
 GLsizei StarPass::prepare(const std::shared_ptr<const skyig::sky::night::StarField>& field, skyig::sky::SpectralBand band,
-                       const GlProgram& program, GLint worldToNdcLocation, const glm::dmat3& ndcToWorld) {
+                          const GlProgram& program, GLint worldToNdcLocation, const glm::dmat3& ndcToWorld,
+                          double floorLux) {
   if (!field) return 0;
   Instances& in = instances_[static_cast<std::size_t>(band)];
   if (field != in.field) {
     // A new store per state: states change at most at the host's rate, and the size varies.
-    const std::vector<float> data = instanceData(*field, band);
+    const std::vector<const skyig::sky::night::PointSource*> sources = brightestFirst(*field);
+    const std::vector<float> data = instanceData(sources, band);
     glNamedBufferData(in.buffer, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
-    in.count = static_cast<GLsizei>(data.size() / 6);
+    in.count = static_cast<GLsizei>(sources.size());
+    in.lux.resize(sources.size());
+    for (std::size_t i = 0; i < sources.size(); ++i) in.lux[i] = sources[i]->illuminanceLux;
     in.field = field;
   }
-  if (in.count == 0) return 0;
+  // The sources above the floor: a prefix of the brightest-first instances.
+  const auto above = std::partition_point(in.lux.begin(), in.lux.end(), [floorLux](double lux) { return lux > floorLux; });
+  const GLsizei count = static_cast<GLsizei>(above - in.lux.begin());
+  if (count == 0) return 0;
   glVertexArrayVertexBuffer(vao_, 0, in.buffer, 0, 6 * sizeof(float));
   program.use();
   const glm::mat3 worldToNdc(glm::inverse(ndcToWorld));
@@ -65,31 +83,34 @@ GLsizei StarPass::prepare(const std::shared_ptr<const skyig::sky::night::StarFie
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
   glBindVertexArray(vao_);
-  return in.count;
+  return count;
 }
 
 void StarPass::draw(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
                     skyig::sky::SpectralBand band) {
-  const GLsizei count = prepare(field, band, program_, worldToNdcLocation_, ndcToWorld);
+  // Every source, however faint: the HDR image holds the scene's light in absolute units.
+  const GLsizei count = prepare(field, band, program_, worldToNdcLocation_, ndcToWorld, -1.0);
   if (count == 0) return;
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
   glDisable(GL_BLEND);
 }
 
-void StarPass::drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field,
-                             const glm::dmat3& ndcToWorld, GLuint background) {
+int StarPass::drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field,
+                            const glm::dmat3& ndcToWorld, GLuint background, double floorLux) {
   const GLsizei count =
-      prepare(field, skyig::sky::SpectralBand::Visible, displayProgram_, displayWorldToNdcLocation_, ndcToWorld);
-  if (count == 0) return;
+      prepare(field, skyig::sky::SpectralBand::Visible, displayProgram_, displayWorldToNdcLocation_, ndcToWorld, floorLux);
+  if (count == 0) return 0;
   glBindTextureUnit(SKYIG_UNIT_STAR_BACKGROUND, background);
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
   glDisable(GL_BLEND);
+  return count;
 }
 
 void StarPass::drawFootprints(const std::shared_ptr<const skyig::sky::night::StarField>& field,
-                              const glm::dmat3& ndcToWorld, GLuint background, const GlProgram& program) {
+                              const glm::dmat3& ndcToWorld, GLuint background, const GlProgram& program,
+                              double floorLux) {
   const GLsizei count = prepare(field, skyig::sky::SpectralBand::Visible, program,
-                                glGetUniformLocation(program.id(), "uWorldToNdc"), ndcToWorld);
+                                glGetUniformLocation(program.id(), "uWorldToNdc"), ndcToWorld, floorLux);
   glDisable(GL_BLEND);  // the program writes what the pixel shows, once or again: nothing adds
   if (count == 0) return;
   glBindTextureUnit(SKYIG_UNIT_STAR_BACKGROUND, background);

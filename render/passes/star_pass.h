@@ -14,6 +14,7 @@
 
 #include <array>
 #include <memory>
+#include <vector>
 
 namespace skyig::render {
 
@@ -32,21 +33,28 @@ class StarPass {
   void draw(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
             skyig::sky::SpectralBand band = skyig::sky::SpectralBand::Visible);
   // Adds the field's sources as displayed into the bound target. The frame and tone blocks must
-  // be bound; `background` is the HDR image of the sky without the sources (cd/m^2).
-  void drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
-                     GLuint background);
+  // be bound; `background` is the HDR image of the sky without the sources (cd/m^2). Only the
+  // sources brighter than `floorLux` (illuminance at the eye) are sent to the GPU: those at or
+  // below it cannot pass the eye's threshold anywhere in the view (ShownLayers::
+  // pointSourceFloorLux), and the pass's own test would leave them out. Returns how many were sent.
+  int drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
+                    GLuint background, double floorLux = 0.0);
   // The quads drawDisplayed() drew with the same arguments, drawn again without blending by
   // `program`: passes/star_display.vert compiled as drawDisplayed() compiles it, with another
   // fragment (the tone pass's, where the sky pass mapped its own pixels: TonePass::drawOver).
   void drawFootprints(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
-                      GLuint background, const GlProgram& program);
+                      GLuint background, const GlProgram& program, double floorLux = 0.0);
 
  private:
-  static std::vector<float> instanceData(const skyig::sky::night::StarField& field, skyig::sky::SpectralBand band);
+  // The field's sources, brightest first (illuminance at the eye), so that those above a floor
+  // are the first instances.
+  static std::vector<const skyig::sky::night::PointSource*> brightestFirst(const skyig::sky::night::StarField& field);
+  static std::vector<float> instanceData(const std::vector<const skyig::sky::night::PointSource*>& sources,
+                                         skyig::sky::SpectralBand band);
   // Uploads a new field for `band`, sets the blending and the program's view; the number of
-  // sources to draw (0: nothing).
+  // sources brighter than `floorLux` to draw (0: nothing).
   GLsizei prepare(const std::shared_ptr<const skyig::sky::night::StarField>& field, skyig::sky::SpectralBand band,
-               const GlProgram& program, GLint worldToNdcLocation, const glm::dmat3& ndcToWorld);
+                  const GlProgram& program, GLint worldToNdcLocation, const glm::dmat3& ndcToWorld, double floorLux);
   GlProgram program_;
   GlProgram displayProgram_;
   GLint worldToNdcLocation_ = -1;
@@ -57,6 +65,7 @@ class StarPass {
   struct Instances {
     GLuint buffer = 0;
     GLsizei count = 0;
+    std::vector<double> lux;  // each instance's illuminance at the eye, brightest first
     std::shared_ptr<const skyig::sky::night::StarField> field;  // held so its address cannot be reused
   };
   std::array<Instances, 3> instances_{};

@@ -786,6 +786,46 @@ TEST_F(GlRender, PointSourcesLeftOutLeaveNoStarsBehind) {
   EXPECT_EQ(moreThanOne + one, 0);
 }
 
+// The displayed-star pass is sent only the sources above the faintest the eye can see anywhere
+// in the view (ShownLayers::pointSourceFloorLux): by day 3 of the 4400 sources above the
+// horizon, on a moonless night 4300 of 4600 (the catalogue's faintest are fainter than any
+// dark sky lets the eye see). Those left out
+// would each have failed the pass's own test against the sky at their pixel, so the displayed
+// stars are the same to the bit as with every source sent.
+TEST_F(GlRender, StarsBelowTheFaintestSeenAreNotSentAndChangeNothing) {
+  // By day, the channel centred on the brightest planet (Venus, 45 deg up); at night 10 deg up.
+  const SkyState probe = mappedState("2026-06-23T17:00:00Z", 0.0, channel());
+  const auto venus = std::max_element(probe.starField->planets.begin(), probe.starField->planets.end(),
+                                      [](const auto& a, const auto& b) { return a.illuminanceLux < b.illuminanceLux; });
+  const double venusYaw = std::atan2(venus->direction.x, venus->direction.y) / kDeg;
+  const double venusPitch = std::asin(venus->direction.z) / kDeg;
+  for (const auto& [utc, yaw] : {std::pair{"2026-06-23T17:00:00Z", venusYaw}, std::pair{"2026-12-09T22:00:00Z", 180.0}}) {
+    const ChannelConfig c = channel(yaw == venusYaw ? venusPitch : 10.0, Frustum{40, 40, 30, 30});
+    SkyState s = mappedState(utc, yaw, c);
+    ASSERT_TRUE(s.shown.pointSources);
+    std::size_t sources = 0, sent = 0;
+    for (const auto* list : {&s.starField->stars, &s.starField->planets})
+      for (const night::PointSource& p : *list) {
+        ++sources;
+        sent += p.illuminanceLux > s.shown.pointSourceFloorLux ? 1 : 0;
+      }
+    std::printf("%s, yaw %.1f: %zu of %zu sources above the floor %.3g lux\n", utc, yaw, sent, sources,
+                s.shown.pointSourceFloorLux);
+    EXPECT_GT(sent, 0u);
+    EXPECT_LT(sent, s.sunAltitude > 0.0 ? 10u : sources);
+    renderer_->draw(s, c);
+    const HdrImage floored = renderer_->readPointSources();
+    const DisplayImage flooredDisplay = renderer_->readDisplay();
+    int lit = 0;
+    for (float v : floored.rgba) lit += v > 0.0f ? 1 : 0;
+    EXPECT_GT(lit, 0) << utc;
+    s.shown.pointSourceFloorLux = 0.0;  // every source sent
+    renderer_->draw(s, c);
+    EXPECT_EQ(floored.rgba, renderer_->readPointSources().rgba) << utc;
+    EXPECT_EQ(flooredDisplay.rgba, renderer_->readDisplay().rgba) << utc;
+  }
+}
+
 // The physical sky pass adds the night's own light from a layer of about the Milky Way map's
 // texel (0.18 deg; NightDiffusePass::drawLayer), read bilinearly, where the night's pass drew
 // it at every pixel: the same light. A moonless winter night at 1280 x 800 over 60 deg (0.047

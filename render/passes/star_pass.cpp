@@ -1,5 +1,6 @@
 #include "render/passes/star_pass.h"
 
+#include "render/passes/star_culling.h"
 #include "shaders/common/bindings.h"
 #include "sky/nvis_weights.h"
 
@@ -16,9 +17,10 @@ StarPass::StarPass()
   worldToNdcLocation_ = glGetUniformLocation(program_.id(), "uWorldToNdc");
   displayWorldToNdcLocation_ = glGetUniformLocation(displayProgram_.id(), "uWorldToNdc");
   glCreateVertexArrays(1, &vao_);
-  for (Instances& i : instances_) glCreateBuffers(1, &i.buffer);
+  for (Upload& u : hdr_) glCreateBuffers(1, &u.buffer);
+  glCreateBuffers(1, &displayed_.buffer);
   glVertexArrayBindingDivisor(vao_, 0, 1);  // one source per instance of the quad
-  // Per source: direction (3 floats), then illuminance (3 floats); see instanceData().
+  // Per source: direction (3 floats), then illuminance (3 floats); see fill().
   const GLuint attributes[][2] = {{SKYIG_ATTRIB_STAR_DIRECTION, 0}, {SKYIG_ATTRIB_STAR_REC709_LUX, 3 * sizeof(float)}};
   for (const auto& [location, offset] : attributes) {
     glEnableVertexArrayAttrib(vao_, location);
@@ -28,54 +30,73 @@ StarPass::StarPass()
 }
 
 StarPass::~StarPass() {
-  for (Instances& i : instances_) glDeleteBuffers(1, &i.buffer);
+  for (Upload& u : hdr_) glDeleteBuffers(1, &u.buffer);
+  glDeleteBuffers(1, &displayed_.buffer);
   glDeleteVertexArrays(1, &vao_);
 }
 
-std::vector<const skyig::sky::night::PointSource*> StarPass::brightestFirst(const skyig::sky::night::StarField& field) {
-  std::vector<const skyig::sky::night::PointSource*> sources;
-  sources.reserve(field.stars.size() + field.planets.size());
+void StarPass::fill(Sources& sources, const skyig::sky::night::StarField& field, skyig::sky::SpectralBand band) {
+  std::vector<const skyig::sky::night::PointSource*> sorted;
+  sorted.reserve(field.stars.size() + field.planets.size());
   for (const auto* list : {&field.stars, &field.planets})
-    for (const skyig::sky::night::PointSource& p : *list) sources.push_back(&p);
-  std::stable_sort(sources.begin(), sources.end(),
+    for (const skyig::sky::night::PointSource& p : *list) sorted.push_back(&p);
+  std::stable_sort(sorted.begin(), sorted.end(),
                    [](const auto* a, const auto* b) { return a->illuminanceLux > b->illuminanceLux; });
-  return sources;
-}
-
-std::vector<float> StarPass::instanceData(const std::vector<const skyig::sky::night::PointSource*>& sources,
-                                          skyig::sky::SpectralBand band) {
-  std::vector<float> data;
-  data.reserve(sources.size() * 6);
-  for (const skyig::sky::night::PointSource* p : sources) {
+  sources.data.clear();
+  sources.lux.clear();
+  for (const skyig::sky::night::PointSource* p : sorted) {
     glm::dvec3 light = p->rec709Lux;
     if (band != skyig::sky::SpectralBand::Visible)
       light = glm::dvec3(p->illuminanceLux * skyig::sky::nvisPerLuxOfBlackbody(p->temperatureK, skyig::sky::nvisClassOf(band)));
     for (double v : {p->direction.x, p->direction.y, p->direction.z, light.r, light.g, light.b})
-      data.push_back(static_cast<float>(v));
+      sources.data.push_back(static_cast<float>(v));
+    sources.lux.push_back(p->illuminanceLux);
   }
-  return data;
 }
 
-GLsizei StarPass::prepare(const std::shared_ptr<const skyig::sky::night::StarField>& field, skyig::sky::SpectralBand band,
-                          const GlProgram& program, GLint worldToNdcLocation, const glm::dmat3& ndcToWorld,
-                          double floorLux) {
+GLsizei StarPass::prepare(Upload& upload, const std::shared_ptr<const skyig::sky::night::StarField>& field,
+                          skyig::sky::SpectralBand band, const GlProgram& program, GLint worldToNdcLocation,
+                          const glm::dmat3& ndcToWorld, double floorLux) {
   if (!field) return 0;
-  Instances& in = instances_[static_cast<std::size_t>(band)];
-  if (field != in.field) {
-    // A new store per state: states change at most at the host's rate, and the size varies.
-    const std::vector<const skyig::sky::night::PointSource*> sources = brightestFirst(*field);
-    const std::vector<float> data = instanceData(sources, band);
-    glNamedBufferData(in.buffer, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
-    in.count = static_cast<GLsizei>(sources.size());
-    in.lux.resize(sources.size());
-    for (std::size_t i = 0; i < sources.size(); ++i) in.lux[i] = sources[i]->illuminanceLux;
-    in.field = field;
+  Sources& sources = sources_[static_cast<std::size_t>(band)];
+  if (field != sources.field) {
+    fill(sources, *field, band);
+    sources.field = field;
+    sources.fill = ++fills_;
   }
-  // The sources above the floor: a prefix of the brightest-first instances.
-  const auto above = std::partition_point(in.lux.begin(), in.lux.end(), [floorLux](double lux) { return lux > floorLux; });
-  const GLsizei count = static_cast<GLsizei>(above - in.lux.begin());
-  if (count == 0) return 0;
-  glVertexArrayVertexBuffer(vao_, 0, in.buffer, 0, 6 * sizeof(float));
+  GLint viewport[4] = {0, 0, 0, 0};
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  if (upload.fill != sources.fill || upload.band != band || upload.ndcToWorld != ndcToWorld ||
+      upload.floorLux != floorLux || upload.width != viewport[2] || upload.height != viewport[3] ||
+      upload.culled != viewCulling_) {
+    // The sources above the floor: a prefix of the brightest-first list; of those, the ones
+    // whose quads can touch the viewport.
+    const std::size_t above = static_cast<std::size_t>(
+        std::partition_point(sources.lux.begin(), sources.lux.end(), [floorLux](double lux) { return lux > floorLux; }) -
+        sources.lux.begin());
+    const glm::dmat3 worldToNdc = glm::inverse(ndcToWorld);
+    const double reachPx = starQuadReachPx(ndcToWorld, std::max(viewport[2], 1), std::max(viewport[3], 1));
+    const double reachX = 2.0 * reachPx / std::max(viewport[2], 1), reachY = 2.0 * reachPx / std::max(viewport[3], 1);
+    inView_.clear();
+    for (std::size_t i = 0; i < above; ++i) {
+      const float* f = &sources.data[6 * i];
+      if (viewCulling_ && !starMayBeInView(worldToNdc, glm::dvec3(f[0], f[1], f[2]), reachX, reachY)) continue;
+      inView_.insert(inView_.end(), f, f + 6);
+    }
+    // A new store each time (GL orphans the old one while a draw may still read it).
+    glNamedBufferData(upload.buffer, static_cast<GLsizeiptr>(inView_.size() * sizeof(float)), inView_.data(),
+                      GL_STREAM_DRAW);
+    upload.count = static_cast<GLsizei>(inView_.size() / 6);
+    upload.fill = sources.fill;
+    upload.band = band;
+    upload.ndcToWorld = ndcToWorld;
+    upload.floorLux = floorLux;
+    upload.width = viewport[2];
+    upload.height = viewport[3];
+    upload.culled = viewCulling_;
+  }
+  if (upload.count == 0) return 0;
+  glVertexArrayVertexBuffer(vao_, 0, upload.buffer, 0, 6 * sizeof(float));
   program.use();
   const glm::mat3 worldToNdc(glm::inverse(ndcToWorld));
   glUniformMatrix3fv(worldToNdcLocation, 1, GL_FALSE, glm::value_ptr(worldToNdc));
@@ -83,13 +104,14 @@ GLsizei StarPass::prepare(const std::shared_ptr<const skyig::sky::night::StarFie
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
   glBindVertexArray(vao_);
-  return count;
+  return upload.count;
 }
 
 void StarPass::draw(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
                     skyig::sky::SpectralBand band) {
   // Every source, however faint: the HDR image holds the scene's light in absolute units.
-  const GLsizei count = prepare(field, band, program_, worldToNdcLocation_, ndcToWorld, -1.0);
+  const GLsizei count =
+      prepare(hdr_[static_cast<std::size_t>(band)], field, band, program_, worldToNdcLocation_, ndcToWorld, -1.0);
   if (count == 0) return;
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
   glDisable(GL_BLEND);
@@ -97,8 +119,8 @@ void StarPass::draw(const std::shared_ptr<const skyig::sky::night::StarField>& f
 
 int StarPass::drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field,
                             const glm::dmat3& ndcToWorld, GLuint background, double floorLux) {
-  const GLsizei count =
-      prepare(field, skyig::sky::SpectralBand::Visible, displayProgram_, displayWorldToNdcLocation_, ndcToWorld, floorLux);
+  const GLsizei count = prepare(displayed_, field, skyig::sky::SpectralBand::Visible, displayProgram_,
+                                displayWorldToNdcLocation_, ndcToWorld, floorLux);
   if (count == 0) return 0;
   glBindTextureUnit(SKYIG_UNIT_STAR_BACKGROUND, background);
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
@@ -109,7 +131,8 @@ int StarPass::drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarF
 void StarPass::drawFootprints(const std::shared_ptr<const skyig::sky::night::StarField>& field,
                               const glm::dmat3& ndcToWorld, GLuint background, const GlProgram& program,
                               double floorLux) {
-  const GLsizei count = prepare(field, skyig::sky::SpectralBand::Visible, program,
+  // The displayed pass's own buffer: the same sources, unless the arguments differ.
+  const GLsizei count = prepare(displayed_, field, skyig::sky::SpectralBand::Visible, program,
                                 glGetUniformLocation(program.id(), "uWorldToNdc"), ndcToWorld, floorLux);
   glDisable(GL_BLEND);  // the program writes what the pixel shows, once or again: nothing adds
   if (count == 0) return;

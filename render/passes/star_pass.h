@@ -13,6 +13,7 @@
 #include <glm/mat3x3.hpp>
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -26,10 +27,10 @@ class StarPass {
   StarPass& operator=(const StarPass&) = delete;
 
   // Adds the field's sources into the bound target. The frame block must be bound and hold
-  // `ndcToWorld`. The field is uploaded when it differs from the last one drawn. In a goggle's
-  // `band`, each source gives its NVIS irradiance (W m^-2) in all three channels instead of its
-  // colour: its illuminance times the NVIS per lux of a blackbody of its temperature
-  // (sky/nvis_weights.h), as the probe weighs it.
+  // `ndcToWorld`. In a goggle's `band`, each source gives its NVIS irradiance (W m^-2) in all
+  // three channels instead of its colour: its illuminance times the NVIS per lux of a blackbody
+  // of its temperature (sky/nvis_weights.h), as the probe weighs it.
+  // Every pass sends only the sources whose quads can touch the bound viewport (star_culling.h).
   void draw(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
             skyig::sky::SpectralBand band = skyig::sky::SpectralBand::Visible);
   // Adds the field's sources as displayed into the bound target. The frame and tone blocks must
@@ -44,31 +45,52 @@ class StarPass {
   // fragment (the tone pass's, where the sky pass mapped its own pixels: TonePass::drawOver).
   void drawFootprints(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
                       GLuint background, const GlProgram& program, double floorLux = 0.0);
+  // Whether the passes leave out the sources outside the view (default); off, every source is
+  // sent, as the tests compare.
+  void setViewCulling(bool on) { viewCulling_ = on; }
 
  private:
-  // The field's sources, brightest first (illuminance at the eye), so that those above a floor
-  // are the first instances.
-  static std::vector<const skyig::sky::night::PointSource*> brightestFirst(const skyig::sky::night::StarField& field);
-  static std::vector<float> instanceData(const std::vector<const skyig::sky::night::PointSource*>& sources,
-                                         skyig::sky::SpectralBand band);
-  // Uploads a new field for `band`, sets the blending and the program's view; the number of
-  // sources brighter than `floorLux` to draw (0: nothing).
-  GLsizei prepare(const std::shared_ptr<const skyig::sky::night::StarField>& field, skyig::sky::SpectralBand band,
-                  const GlProgram& program, GLint worldToNdcLocation, const glm::dmat3& ndcToWorld, double floorLux);
+  // The field's sources for `band`, brightest first (illuminance at the eye), so that those
+  // above a floor are the first instances: 6 floats each (direction, light), and the lux.
+  struct Sources {
+    std::shared_ptr<const skyig::sky::night::StarField> field;
+    std::uint64_t fill = 0;  // which filling of these sources (an upload names the one it holds)
+    std::vector<float> data;
+    std::vector<double> lux;
+  };
+  static void fill(Sources& sources, const skyig::sky::night::StarField& field, skyig::sky::SpectralBand band);
+  // What an instance buffer holds: its sources, so an identical draw reuses it.
+  struct Upload {
+    GLuint buffer = 0;
+    GLsizei count = 0;
+    std::uint64_t fill = 0;  // Sources::fill of the band's sources it holds (0: none)
+    skyig::sky::SpectralBand band = skyig::sky::SpectralBand::Visible;
+    glm::dmat3 ndcToWorld{0.0};
+    double floorLux = 0.0;
+    int width = 0, height = 0;
+    bool culled = true;
+  };
+  // Sends into `upload` the sources of `field` in `band` brighter than `floorLux` whose quads
+  // can touch the bound viewport (unless it holds them already), sets the blending and the
+  // program's view; the number of sources to draw (0: nothing).
+  GLsizei prepare(Upload& upload, const std::shared_ptr<const skyig::sky::night::StarField>& field,
+                  skyig::sky::SpectralBand band, const GlProgram& program, GLint worldToNdcLocation,
+                  const glm::dmat3& ndcToWorld, double floorLux);
+
   GlProgram program_;
   GlProgram displayProgram_;
   GLint worldToNdcLocation_ = -1;
   GLint displayWorldToNdcLocation_ = -1;
   GLuint vao_ = 0;
-  // One instance buffer per band (the eye's, NVIS class A and B): a node with a goggle channel
-  // beside the eye's draws both every frame, and each is uploaded once per field.
-  struct Instances {
-    GLuint buffer = 0;
-    GLsizei count = 0;
-    std::vector<double> lux;  // each instance's illuminance at the eye, brightest first
-    std::shared_ptr<const skyig::sky::night::StarField> field;  // held so its address cannot be reused
-  };
-  std::array<Instances, 3> instances_{};
+  bool viewCulling_ = true;
+  // Per band (the eye's, NVIS class A and B: a node with a goggle channel beside the eye's
+  // draws both every frame), sorted once per field.
+  std::array<Sources, 3> sources_{};
+  // The HDR pass's buffer per band, and the displayed passes' (the eye's band only).
+  std::array<Upload, 3> hdr_{};
+  Upload displayed_;
+  std::vector<float> inView_;  // scratch: the sources sent, reused from frame to frame
+  std::uint64_t fills_ = 0;
 };
 
 }  // namespace skyig::render

@@ -6,6 +6,7 @@
 #include "render/gl/gl_program.h"
 #include "render/gl/render_target.h"
 #include "render/sky_renderer.h"
+#include "render/passes/star_culling.h"
 #include "render/passes/star_pass.h"
 #include "shaders/common/uniforms.h"
 #include "shaders/night/star_physics.h"
@@ -13,7 +14,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
+#include <random>
 #include <vector>
 
 using namespace skyig;
@@ -44,7 +47,8 @@ class StarPassGl : public ::testing::Test {
 
   // Renders `field` alone into a cleared float target.
   static Frame render(const std::shared_ptr<const night::StarField>& field, int width, int height,
-                      const Attitude& attitude, const Frustum& frustum) {
+                      const Attitude& attitude, const Frustum& frustum, bool viewCulling = true) {
+    pass_->setViewCulling(viewCulling);
     Frame f{width, height, ndcToWorld(eyeToEnu(attitude, Attitude{}), frustum), {}};
     FrameBlock block{};
     block.ndcToWorld = glm::mat4(glm::mat3(f.ndcToWorld));
@@ -57,6 +61,7 @@ class StarPassGl : public ::testing::Test {
     const float black[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearNamedFramebufferfv(target.framebuffer(), GL_COLOR, 0, black);
     pass_->draw(field, f.ndcToWorld);
+    pass_->setViewCulling(true);
     f.rgba.resize(static_cast<size_t>(width) * height * 4);
     glGetTextureImage(target.texture(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(f.rgba.size() * sizeof(float)),
                       f.rgba.data());
@@ -186,4 +191,90 @@ TEST_F(StarPassGl, StarFieldIntensityZeroHidesTheStars) {
   const double sky = sum(0.0), full = sum(1.0), half = sum(0.5);
   EXPECT_GT(full - sky, 0.1 * full);  // the sky 30 degrees after sunset is far darker
   EXPECT_NEAR(half - sky, 0.5 * (full - sky), 0.05 * (full - sky));
+}
+
+// The passes send only the sources whose quads can touch the viewport (render/passes/
+// star_culling.h). 3000 sources over the sphere and 400 on a band a few pixels either side of
+// the frame's edges, in a wide, a usual and a narrow channel: the image is the same to the bit
+// as with every source sent.
+TEST_F(StarPassGl, SourcesOutsideTheViewAreNotSentAndChangeNothing) {
+  struct Case {
+    int width, height;
+    Frustum frustum;
+  };
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (const Case& c : {Case{160, 120, {50, 50, 40, 40}}, Case{128, 96, {30, 30, 20, 20}}, Case{96, 80, {1, 1, 0.8, 0.8}}}) {
+    const Attitude attitude{30.0, 20.0, 5.0};
+    const glm::dmat3 m = ndcToWorld(eyeToEnu(attitude, Attitude{}), c.frustum);
+    auto field = std::make_shared<night::StarField>();
+    for (int i = 0; i < 3000; ++i) {
+      night::PointSource s;
+      s.direction = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)));
+      s.rec709Lux = glm::dvec3(1e-6 * (1.0 + u(rng)));
+      s.illuminanceLux = s.rec709Lux.g;
+      field->stars.push_back(s);
+    }
+    for (int i = 0; i < 400; ++i) {  // around the edges, up to 12 pixels out and in
+      const double along = u(rng), across = 1.0 + 12.0 * u(rng) * 2.0 / c.width;
+      const glm::dvec2 ndc = i % 2 ? glm::dvec2(i % 4 == 1 ? across : -across, along) : glm::dvec2(along, i % 4 == 0 ? across : -across);
+      night::PointSource s;
+      s.direction = glm::normalize(m * glm::dvec3(ndc, 1.0));
+      s.rec709Lux = glm::dvec3(1e-6);
+      s.illuminanceLux = 1e-6;
+      field->planets.push_back(s);
+    }
+    const Frame culled = render(field, c.width, c.height, attitude, c.frustum);
+    const Frame all = render(field, c.width, c.height, attitude, c.frustum, false);
+    EXPECT_EQ(culled.rgba, all.rgba) << c.width << "x" << c.height;
+    double lit = 0.0;
+    for (float v : culled.rgba) lit += v > 0.0f ? 1.0 : 0.0;
+    EXPECT_GT(lit, 0.0);
+  }
+}
+
+// The reach the culling allows covers the quad of either pass at any point of the channel:
+// sampled around the frame's edges of a wide, a usual and a 2-degree channel (where the displayed
+// PSF's sigma of 2 arcmin is 32 pixels), every position whose quad, as passes/star.vert and
+// passes/star_display.vert size it, overlaps the viewport is kept; one 3 reaches out is not.
+TEST(StarCulling, KeepsEveryQuadThatCanTouchTheViewport) {
+  struct Case {
+    int width, height;
+    Frustum frustum;
+  };
+  for (const Case& c : {Case{1920, 1200, {50, 50, 40, 40}}, Case{1280, 1024, {30, 30, 24, 24}}, Case{1920, 1200, {1, 1, 0.6, 0.6}}}) {
+    const glm::dmat3 m = ndcToWorld(eyeToEnu(Attitude{200.0, 10.0, 3.0}, Attitude{}), c.frustum);
+    const glm::dmat3 worldToNdc = glm::inverse(m);
+    const double reachPx = starQuadReachPx(m, c.width, c.height);
+    const double reachX = 2.0 * reachPx / c.width, reachY = 2.0 * reachPx / c.height;
+    const double area = 4.0 / (double(c.width) * c.height);
+    int kept = 0, touching = 0;
+    for (int i = 0; i <= 400; ++i)
+      for (int j = -60; j <= 60; ++j) {
+        // A point on the frame's border (i along it), j half-pixels out (+) or in (-), each side.
+        for (int side = 0; side < 4; ++side) {
+          const double t = -1.0 + i / 200.0;
+          const double out = 1.0 + j * 0.5 * 2.0 / (side < 2 ? c.width : c.height);
+          const glm::dvec2 ndc = side == 0 ? glm::dvec2(out, t) : side == 1 ? glm::dvec2(-out, t)
+                               : side == 2 ? glm::dvec2(t, out) : glm::dvec2(t, -out);
+          const glm::dvec2 px = (ndc * 0.5 + 0.5) * glm::dvec2(c.width, c.height);
+          const double sigma = std::max(shader::kDisplayedPsfSigmaRad / std::sqrt(shader::pixelSolidAngle(m, ndc, area)),
+                                        shader::kDisplayedPsfMinSigmaPx);
+          const double half = shader::kStarPsfRadiusSigmas * std::max(sigma, shader::kStarPsfSigmaPx) + 0.5;
+          const bool overlaps = px.x + half > 0.0 && px.x - half < c.width && px.y + half > 0.0 && px.y - half < c.height;
+          const bool mayBe = starMayBeInView(worldToNdc, m * glm::dvec3(ndc, 1.0), reachX, reachY);
+          if (overlaps) {
+            ++touching;
+            ASSERT_TRUE(mayBe) << c.width << "x" << c.height << " at pixel (" << px.x << ", " << px.y << "), quad half " << half;
+          }
+          kept += mayBe ? 1 : 0;
+        }
+      }
+    EXPECT_GT(touching, 0);
+    EXPECT_LT(kept, touching + 4 * 401 * 4);  // at most a couple of half-pixel steps beyond
+    // Three reaches out, and behind the eye: left out.
+    EXPECT_FALSE(starMayBeInView(worldToNdc, m * glm::dvec3(1.0 + 3.0 * reachX, 0.0, 1.0), reachX, reachY));
+    EXPECT_FALSE(starMayBeInView(worldToNdc, -(m * glm::dvec3(0.0, 0.0, 1.0)), reachX, reachY));
+    std::printf("%dx%d over %.0f deg: reach %.1f px\n", c.width, c.height, c.frustum.leftDeg + c.frustum.rightDeg, reachPx);
+  }
 }

@@ -100,14 +100,18 @@ NightLayer NightDiffusePass::drawLayer(const skyig::sky::SkyState& state, int wi
   const int w = (width + scale - 1) / scale, h = (height + scale - 1) / scale;
   if (!layer_ || layer_->width() != w || layer_->height() != h) {
     // Float: the night's light is ~1e-4 cd/m^2, where half floats are denormal.
+    layerTargets_.reset();
     layer_ = std::make_unique<RenderTarget>(w, h, GL_RGBA32F);
     layer_->readBilinear();
+    layerTransmitted_ = std::make_unique<RenderTarget>(w, h, GL_RGBA32F);
+    layerTransmitted_->readBilinear();
+    layerTargets_ = std::make_unique<TwoTargetFramebuffer>(*layer_, *layerTransmitted_);
   }
   if (!layerProgram_) layerProgram_ = std::make_unique<Program>("#define SKYIG_NIGHT_LAYER\n");
-  layer_->bindForDrawing();
+  layerTargets_->bindForDrawing();
   glDisable(GL_BLEND);
   drawWith(*layerProgram_, *sky, glm::dvec3(0.0));
-  return {layer_->texture(), extinction_.id(), state.nightGroundRadiance};
+  return {layer_->texture(), layerTransmitted_->texture(), extinction_.id(), state.nightGroundRadiance};
 }
 
 void NightDiffusePass::drawWith(const Program& v, const skyig::sky::night::NightDiffuseSky& sky,

@@ -34,9 +34,10 @@ class NightDiffusePass {
   // The sky's part of the same light above the atmosphere (no transmittance, no terrain), in the
   // eye's band, into a target of its own a `scale`-th of the channel's width x height (rounded
   // up), for the physical sky pass to read bilinearly and complete per pixel (SKYIG_NIGHT_LAYER):
-  // that target's texture (linear filtering, clamped), the state's transmittance table and its
-  // terrain's radiance; no texture for a state without an ephemeris. Leaves the target bound;
-  // the frame block and a vertex array must be bound.
+  // that target's texture (linear filtering, clamped), a second of the same light dimmed by the
+  // transmittance at each texel, the state's transmittance table and its terrain's radiance; no
+  // texture for a state without an ephemeris. Leaves the targets bound; the frame block and a
+  // vertex array must be bound.
   NightLayer drawLayer(const skyig::sky::SkyState& state, int width, int height, int scale);
   // The scale for a channel whose pixel at its centre spans `pixelRad`: the layer's texel about
   // the Milky Way map's (its finest structure), at least 1, at most 8.
@@ -53,6 +54,8 @@ class NightDiffusePass {
   Program program_;
   std::unique_ptr<Program> layerProgram_;  // SKYIG_NIGHT_LAYER, the first time a layer is drawn
   std::unique_ptr<RenderTarget> layer_;
+  std::unique_ptr<RenderTarget> layerTransmitted_;
+  std::unique_ptr<TwoTargetFramebuffer> layerTargets_;
   GLuint milkyWay_ = 0;
   int milkyWayWidth_ = 0;  // texels around the sky
   GLuint zodiacal_ = 0;

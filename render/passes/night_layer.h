@@ -6,8 +6,18 @@
 
 namespace skyig::render {
 
+// Above this elevation (degrees) the sky pass reads the night's light already dimmed by the
+// transmittance to space at the layer's texels (NightLayer::transmitted); below it, and on the
+// terrain, it applies the transmittance per pixel. Bilinear interpolation of the transmittance
+// t = exp(-tau / sin e) over a texel of h radians errs by h^2 / 8 |(ln t)''| ~ h^2 tau / (4 e^3)
+// (small e): with the layer's texel at most the Milky Way map's 0.18 deg and tau <= 1 (the
+// blue's vertical optical depth in haze of 10 km visibility), 0.2 % at 6 deg, where near the
+// horizon (1 deg) it would be 40 %.
+inline constexpr double kNightLayerBandDeg = 6.0;
+
 struct NightLayer {
   GLuint texture = 0;               // the sky's part above the atmosphere, a few pixels a texel; 0: none
+  GLuint transmitted = 0;           // the same dimmed by the transmittance at each texel (0: none)
   GLuint extinction = 0;            // the transmittance to space (ExtinctionTexture), applied per pixel
   glm::dvec3 groundRadiance{0.0};  // the terrain's, below the horizon (cd/m^2, linear Rec.709)
 };

@@ -142,16 +142,18 @@ void PhysicalSkyPass::setModelUniforms(const Program& program) const {
 
 const PhysicalSkyPass::Program& PhysicalSkyPass::variant(bool moonlit, Part part, bool disc,
                                                          const std::string& extraDefines) {
-  if (extraDefines.empty()) return disc ? *withDisc_[moonlit ? 1 : 0][part] : *inside_[moonlit ? 1 : 0][part];
+  if (extraDefines.empty() && part != kHorizonBand)
+    return disc ? *withDisc_[moonlit ? 1 : 0][part] : *inside_[moonlit ? 1 : 0][part];
   std::string defines = moonlit ? "#define SKYIG_MOONLIT\n" : "";
-  if (part == kSky) defines += "#define SKYIG_SKY\n";
+  if (part == kSky || part == kHorizonBand) defines += "#define SKYIG_SKY\n";
+  if (part == kHorizonBand) defines += "#define SKYIG_HORIZON_BAND\n";
   if (part == kGround) defines += "#define SKYIG_GROUND\n";
   if (disc) defines += "#define SKYIG_SUN_DISC\n";
   defines += extraDefines;
   std::unique_ptr<Program>& p = extended_[defines];
   if (!p) {  // compiled when a frame first needs it: a node uses a few of the many
-    p = std::make_unique<Program>(disc ? "passes/sun_disc.vert"
-                                       : (part == kGround ? "passes/ground_cap.vert" : "passes/fullscreen.vert"),
+    const bool cap = part == kGround || part == kHorizonBand;
+    p = std::make_unique<Program>(disc ? "passes/sun_disc.vert" : (cap ? "passes/ground_cap.vert" : "passes/fullscreen.vert"),
                                   "passes/physical_sky.frag", defines);
     if (current_.model) setModelUniforms(*p);
   }
@@ -367,11 +369,25 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   glClear(GL_DEPTH_BUFFER_BIT);
   glDepthFunc(GL_ALWAYS);
   glDrawArrays(GL_TRIANGLES, 0, 3 * kSegments);
-  prepare(variant(moon, kSky, false, insideExtra));
-  glDepthFunc(GL_LESS);  // both at depth 0.5: the sky only where the clear's 1 is left
+  glDepthFunc(GL_LESS);  // all at depth 0.5: each part only where the clear's 1 is left
+  // With the night's layer: the sky near the horizon with its transmittance per pixel, on the
+  // cap below a ring kNightLayerBandDeg up (its chords' great circles bulge upwards, so it
+  // holds every direction below the ring), then the rest reading the layer dimmed at its texels.
+  const bool band = night.texture != 0 && night.transmitted != 0;
+  if (band) {
+    const Program& nearHorizon = variant(moon, kHorizonBand, false, insideExtra);
+    prepare(nearHorizon);
+    const double e0 = kNightLayerBandDeg * std::numbers::pi / 180.0;
+    glProgramUniform3f(nearHorizon.program.id(), nearHorizon.groundCap, static_cast<float>(std::sin(e0)),
+                       static_cast<float>(std::cos(e0)), static_cast<float>(kSegments));
+    glDrawArrays(GL_TRIANGLES, 0, 3 * kSegments);
+    glBindTextureUnit(SKYIG_UNIT_NIGHT_LAYER, night.transmitted);
+  }
+  prepare(variant(moon, kSky, false, band ? insideExtra + "#define SKYIG_NIGHT_LAYER_TRANSMITTED\n" : insideExtra));
   glDepthMask(GL_FALSE);
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  drawDisc(kSky);  // where the sky is: no depth written
+  if (band) glBindTextureUnit(SKYIG_UNIT_NIGHT_LAYER, night.texture);
+  drawDisc(kSky);  // where the sky is: no depth written; the night's light per pixel
   glDepthMask(GL_TRUE);
   glDisable(GL_DEPTH_TEST);
   return true;

@@ -107,7 +107,9 @@ class PhysicalSkyPass {
   };
   // Which rays a variant of physical_sky.frag draws: both (a target without depth), the sky's
   // (where the ground's wrote no depth), the ground's (first, on the cap below the horizon).
-  enum Part { kBoth = 0, kSky = 1, kGround = 2 };
+  // kHorizonBand: the sky within kNightLayerBandDeg of the horizon when the night's layer is
+  // added (render/passes/night_layer.h), a cap like the ground's; only with extra defines.
+  enum Part { kBoth = 0, kSky = 1, kGround = 2, kHorizonBand = 3 };
   // The program of a variant: the eager ones without extraDefines, else one compiled with them
   // (the night layer, the tone) the first time a frame needs it.
   const Program& variant(bool moonlit, Part part, bool disc, const std::string& extraDefines);

@@ -130,6 +130,9 @@
 // The physical sky pass mapping its own pixels (SKYIG_FOLD_TONE) writes the display values
 // beside the light, into SkyRenderer's framebuffer of both targets.
 #define SKYIG_OUTPUT_FOLDED_DISPLAY 1
+// The night's layer (NightDiffusePass::drawLayer) writes the light above the atmosphere and,
+// beside it, the same dimmed by the transmittance to space at each texel.
+#define SKYIG_OUTPUT_NIGHT_LAYER_TRANSMITTED 1
 // The warp-and-blend pass writes both of WarpBlendPass's targets at once: the 8-bit image sent
 // to the projector and the light it contributes (cd/m^2).
 #define SKYIG_OUTPUT_PROJECTOR_DISPLAY 0

@@ -6,7 +6,10 @@
 // SKYIG_NIGHT_LAYER: the sky's part alone, above the atmosphere (no transmittance), without
 // blending, into the small target of NightDiffusePass::drawLayer, which the physical sky pass
 // reads bilinearly, dims by the transmittance and adds with the terrain's step, both at full
-// resolution (passes/physical_sky.frag): what changes fast at the horizon is per pixel.
+// resolution (passes/physical_sky.frag): what changes fast at the horizon is per pixel. Beside
+// it (SKYIG_OUTPUT_NIGHT_LAYER_TRANSMITTED) the same light dimmed at the texel, which the sky
+// pass reads as it is more than kNightLayerBandDeg above the horizon, where the transmittance
+// is smooth over a texel (render/passes/night_layer.h).
 #include "common/bindings.h"
 #include "night/units.glsl"
 #include "night/milky_way.glsl"
@@ -26,11 +29,14 @@ layout(binding = SKYIG_UNIT_NIGHT_EXTINCTION) uniform sampler1D extinctionRec709
 
 in vec3 vViewRay;
 layout(location = SKYIG_OUTPUT_COLOR) out vec4 outRadiance;
+#ifdef SKYIG_NIGHT_LAYER
+layout(location = SKYIG_OUTPUT_NIGHT_LAYER_TRANSMITTED) out vec4 outTransmitted;
+#endif
 
 void main() {
   vec3 view = normalize(vViewRay);
 #ifdef SKYIG_NIGHT_LAYER
-  const vec3 t = vec3(1.0);  // the sky pass applies it per pixel: it is steep at the horizon
+  const vec3 t = vec3(1.0);  // the sky pass applies it per pixel near the horizon, where it is steep
 #else
   vec3 t = transmittanceToSpace(extinctionRec709, view);
 #endif
@@ -52,6 +58,7 @@ void main() {
   vec3 sky = inBand(t * milkyWay, nightWeights.x) + inBand(t * zodiacal, lightWeights.w) + inBand(t * airglow, lightWeights.z);
 #ifdef SKYIG_NIGHT_LAYER
   outRadiance = vec4(sky, 0.0);
+  outTransmitted = vec4(transmittanceToSpace(extinctionRec709, view) * sky, 0.0);
 #else
   outRadiance = vec4(sky + (view.z < 0.0 ? inBand(nightGroundRadiance, nightWeights.y) : vec3(0.0)), 0.0);
 #endif

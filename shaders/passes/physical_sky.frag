@@ -30,6 +30,12 @@
 //                   pixel), dimmed by the transmittance to space, and the terrain's below the
 //                   horizon, both per pixel, as passes/night_diffuse.frag adds them over the
 //                   whole channel: one full-screen pass instead of two;
+//   SKYIG_NIGHT_LAYER_TRANSMITTED with it, the layer's light already dimmed at its texels, for
+//                   the sky more than kNightLayerBandDeg above the horizon (render/passes/
+//                   night_layer.h), where the transmittance is smooth over a texel: drawn after
+//   SKYIG_HORIZON_BAND the sky below that elevation with the transmittance per pixel, a cap of
+//                   directions like the ground's (passes/ground_cap.vert) writing depth after the
+//                   ground's (the define only names the program: it is SKYIG_SKY's code);
 //   SKYIG_FOLD_TONE with the tone pass's variant defines: the pass also writes what the display
 //                   is sent (tone/tone_display.glsl) at SKYIG_OUTPUT_FOLDED_DISPLAY, when it is
 //                   the frame's last full-screen pass: no second pass reads every pixel back
@@ -142,7 +148,9 @@ void main() {
   // weights' ratios to it (common/band.glsl).
   vec3 view = normalize(vViewRay);
   vec3 radiance = max(inBand(insideRec709(view), lightWeights.x), vec3(0.0));
-#ifdef SKYIG_NIGHT_LAYER
+#if defined(SKYIG_NIGHT_LAYER_TRANSMITTED)
+  radiance += texture(nightLayer, gl_FragCoord.xy * viewport.zw).rgb + (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
+#elif defined(SKYIG_NIGHT_LAYER)
   radiance += transmittanceToSpace(nightExtinction, view) * texture(nightLayer, gl_FragCoord.xy * viewport.zw).rgb +
               (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
 #endif

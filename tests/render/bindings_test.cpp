@@ -143,6 +143,15 @@ std::vector<ProgramCase> programs() {
          return e;
        }(),
        "#define SKYIG_GROUND\n#define SKYIG_NIGHT_LAYER\n"},
+      // The sky above the horizon's band, the layer read dimmed (no table).
+      {{"passes/fullscreen.vert", "passes/physical_sky.frag"},
+       [&] {
+         std::vector<Expect> e = physicalSky(false, false, false);
+         e.push_back(sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER));
+         e.push_back(optional(sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION)));
+         return e;
+       }(),
+       "#define SKYIG_SKY\n#define SKYIG_NIGHT_LAYER\n#define SKYIG_NIGHT_LAYER_TRANSMITTED\n"},
       {{"passes/fullscreen.vert", "reference/physical_sky_reference.frag"}, physicalSky(true, true, true)},
       {{"passes/fullscreen.vert", "passes/physical_sky_space.frag"},
        {frame, band, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE), sampler("scatteringPacked", SKYIG_UNIT_SCATTERING),
@@ -158,10 +167,12 @@ std::vector<ProgramCase> programs() {
       {{"passes/fullscreen.vert", "passes/night_diffuse.frag"},
        {frame, band, sampler("milkyWayS10", SKYIG_UNIT_MILKY_WAY), sampler("zodiacalS10", SKYIG_UNIT_ZODIACAL),
         sampler("extinctionRec709", SKYIG_UNIT_NIGHT_EXTINCTION), radiance}},
-      // Its layer for the physical sky pass (NightDiffusePass::drawLayer): no transmittance.
+      // Its layer for the physical sky pass (NightDiffusePass::drawLayer): the light above the
+      // atmosphere and, beside it, dimmed at the texel.
       {{"passes/fullscreen.vert", "passes/night_diffuse.frag"},
        {frame, band, sampler("milkyWayS10", SKYIG_UNIT_MILKY_WAY), sampler("zodiacalS10", SKYIG_UNIT_ZODIACAL),
-        optional(sampler("extinctionRec709", SKYIG_UNIT_NIGHT_EXTINCTION)), radiance},
+        sampler("extinctionRec709", SKYIG_UNIT_NIGHT_EXTINCTION), radiance,
+        output("outTransmitted", SKYIG_OUTPUT_NIGHT_LAYER_TRANSMITTED)},
        "#define SKYIG_NIGHT_LAYER\n"},
       // GogglePass: the photocathode, its 8 x 8 means, the halo's two passes, the gain, the screen.
       {{"passes/fullscreen.vert", "passes/goggle_input.frag"},

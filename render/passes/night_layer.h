@@ -9,11 +9,12 @@ namespace skyig::render {
 // Above this elevation (degrees) the sky pass reads the night's light already dimmed by the
 // transmittance to space at the layer's texels (NightLayer::transmitted); below it, and on the
 // terrain, it applies the transmittance per pixel. Bilinear interpolation of the transmittance
-// t = exp(-tau / sin e) over a texel of h radians errs by h^2 / 8 |(ln t)''| ~ h^2 tau / (4 e^3)
-// (small e): with the layer's texel at most the Milky Way map's 0.18 deg and tau <= 1 (the
-// blue's vertical optical depth in haze of 10 km visibility), 0.2 % at 6 deg, where near the
-// horizon (1 deg) it would be 40 %.
-inline constexpr double kNightLayerBandDeg = 6.0;
+// t = exp(-tau m(e)), m ~ 1 / sin e, over a texel of h radians errs by h^2 / 8 |t'' / t| =
+// h^2 / 8 |(ln t)'^2 + (ln t)''| ~ h^2 / 8 (tau^2 / e^4 - 2 tau / e^3) for small e. With the
+// layer's texel at most the Milky Way map's 0.18 deg: at 8 deg, 0.25 % for tau = 1 (the blue's
+// vertical optical depth in haze of 10 km visibility) and 0.002 % for a clear sky's 0.3; at 1 deg
+// the interpolated transmittance would be off by a factor of several.
+inline constexpr double kNightLayerBandDeg = 8.0;
 
 struct NightLayer {
   GLuint texture = 0;               // the sky's part above the atmosphere, a few pixels a texel; 0: none

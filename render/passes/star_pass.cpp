@@ -8,6 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace skyig::render {
@@ -40,8 +41,12 @@ void StarPass::fill(Sources& sources, const skyig::sky::night::StarField& field,
   sorted.reserve(field.stars.size() + field.planets.size());
   for (const auto* list : {&field.stars, &field.planets})
     for (const skyig::sky::night::PointSource& p : *list) sorted.push_back(&p);
-  std::stable_sort(sorted.begin(), sorted.end(),
-                   [](const auto* a, const auto* b) { return a->illuminanceLux > b->illuminanceLux; });
+  // A source without a finite illuminance sorts last, below every floor, and is not drawn (a
+  // NaN key would break the ordering and a NaN light every pixel it touched).
+  auto key = [](const skyig::sky::night::PointSource* p) {
+    return std::isfinite(p->illuminanceLux) ? p->illuminanceLux : -1.0;
+  };
+  std::stable_sort(sorted.begin(), sorted.end(), [&key](const auto* a, const auto* b) { return key(a) > key(b); });
   sources.data.clear();
   sources.lux.clear();
   for (const skyig::sky::night::PointSource* p : sorted) {
@@ -50,7 +55,7 @@ void StarPass::fill(Sources& sources, const skyig::sky::night::StarField& field,
       light = glm::dvec3(p->illuminanceLux * skyig::sky::nvisPerLuxOfBlackbody(p->temperatureK, skyig::sky::nvisClassOf(band)));
     for (double v : {p->direction.x, p->direction.y, p->direction.z, light.r, light.g, light.b})
       sources.data.push_back(static_cast<float>(v));
-    sources.lux.push_back(p->illuminanceLux);
+    sources.lux.push_back(key(p));
   }
 }
 

@@ -233,6 +233,20 @@ TEST_F(StarPassGl, SourcesOutsideTheViewAreNotSentAndChangeNothing) {
   }
 }
 
+// A source whose illuminance is not a number (bad input upstream) is left out, not drawn as a
+// NaN over its pixels, and the others are drawn as without it.
+TEST_F(StarPassGl, ASourceWithoutAFiniteIlluminanceIsLeftOut) {
+  auto field = std::make_shared<night::StarField>();
+  field->stars.push_back(source(28.0, 22.0, glm::dvec3(3e-6)));
+  field->stars.push_back(source(34.0, 16.0, glm::dvec3(1e-6)));
+  const Frame clean = render(field, 64, 48, Attitude{30.0, 20.0, 0.0}, Frustum{20, 20, 15, 15});
+  auto bad = std::make_shared<night::StarField>(*field);
+  night::PointSource nan = source(30.0, 20.0, glm::dvec3(std::nan("")));
+  bad->planets.push_back(nan);
+  const Frame withBad = render(bad, 64, 48, Attitude{30.0, 20.0, 0.0}, Frustum{20, 20, 15, 15});
+  EXPECT_EQ(withBad.rgba, clean.rgba);
+}
+
 // The reach the culling allows covers the quad of either pass at any point of the channel:
 // sampled around the frame's edges of a wide, a usual and a 2-degree channel (where the displayed
 // PSF's sigma of 2 arcmin is 32 pixels), every position whose quad, as passes/star.vert and

@@ -60,7 +60,7 @@ std::vector<ProgramCase> programs() {
   const Expect band = block("BandBlock", SKYIG_BINDING_BAND);
   // The physical sky pass's inputs; what a variant does not read is allowed to be inactive (the
   // 3D tables always are inside the atmosphere: it reads this frame's slices of them).
-  auto physicalSky = [&](bool transmittance, bool irradiance, bool moon) {
+  auto physicalSky = [&](bool transmittance, bool irradiance, bool moon, bool sun = true) {
     auto needed = [](bool read, Expect e) { return read ? e : optional(e); };
     // The band block: every variant reads it but the frozen reference, which predates it.
     return std::vector<Expect>{frame, optional(band),
@@ -68,11 +68,16 @@ std::vector<ProgramCase> programs() {
                                optional(sampler("scatteringPacked", SKYIG_UNIT_SCATTERING)),
                                optional(sampler("singleMieRG", SKYIG_UNIT_SINGLE_MIE)),
                                needed(irradiance, sampler("irradianceXyz", SKYIG_UNIT_IRRADIANCE)),
-                               sampler("sunSliceScattering", SKYIG_UNIT_SUN_SLICE_SCATTERING),
-                               sampler("sunSliceSingleMie", SKYIG_UNIT_SUN_SLICE_SINGLE_MIE),
+                               needed(sun, sampler("sunSliceScattering", SKYIG_UNIT_SUN_SLICE_SCATTERING)),
+                               needed(sun, sampler("sunSliceSingleMie", SKYIG_UNIT_SUN_SLICE_SINGLE_MIE)),
                                needed(moon, sampler("moonSliceScattering", SKYIG_UNIT_MOON_SLICE_SCATTERING)),
                                needed(moon, sampler("moonSliceSingleMie", SKYIG_UNIT_MOON_SLICE_SINGLE_MIE)),
                                radiance};
+  };
+  // A variant's inputs: its sky's and what its defines add.
+  auto with = [](std::vector<Expect> e, std::initializer_list<Expect> more) {
+    e.insert(e.end(), more);
+    return e;
   };
   std::vector<ProgramCase> cases = {
       // SkyRenderer: the analytic sky and the tone pass.
@@ -125,33 +130,31 @@ std::vector<ProgramCase> programs() {
       // The sky's variant that maps its own pixels to the display (SkyRenderer::drawChannel):
       // the tone block, the veil's grid, the display values beside the light.
       {{"passes/fullscreen.vert", "passes/physical_sky.frag"},
-       [&] {
-         std::vector<Expect> e = physicalSky(false, false, false);
-         e.push_back(block("ToneBlock", SKYIG_BINDING_TONE));
-         e.push_back(sampler("glareVeilGrid", SKYIG_UNIT_GLARE_VEIL));
-         e.push_back(output("outDisplay", SKYIG_OUTPUT_FOLDED_DISPLAY));
-         return e;
-       }(),
+       with(physicalSky(false, false, false),
+            {block("ToneBlock", SKYIG_BINDING_TONE), sampler("glareVeilGrid", SKYIG_UNIT_GLARE_VEIL),
+             output("outDisplay", SKYIG_OUTPUT_FOLDED_DISPLAY)}),
        "#define SKYIG_SKY\n#define SKYIG_FOLD_TONE\n#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 2\n"
        "#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
-      // With the night's layer added (SkyRenderer::drawChannel at night).
+      // With the night's layer added (SkyRenderer::drawChannel at night): the ground's and the
+      // band's near the horizon with the transmittance per pixel, the sky above reading the layer
+      // already dimmed (no table); the sun's sky left out, the moon's in.
       {{"passes/ground_cap.vert", "passes/physical_sky.frag"},
-       [&] {
-         std::vector<Expect> e = physicalSky(true, true, false);
-         e.push_back(sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER));
-         e.push_back(sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION));
-         return e;
-       }(),
+       with(physicalSky(true, true, false),
+            {sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
+             sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION)}),
        "#define SKYIG_GROUND\n#define SKYIG_NIGHT_LAYER\n"},
-      // The sky above the horizon's band, the layer read dimmed (no table).
+      {{"passes/ground_cap.vert", "passes/physical_sky.frag"},
+       with(physicalSky(false, false, true, false),
+            {sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
+             sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION)}),
+       "#define SKYIG_MOONLIT\n#define SKYIG_SKY\n#define SKYIG_HORIZON_BAND\n#define SKYIG_SUNLESS\n"
+       "#define SKYIG_NIGHT_LAYER\n"},
       {{"passes/fullscreen.vert", "passes/physical_sky.frag"},
-       [&] {
-         std::vector<Expect> e = physicalSky(false, false, false);
-         e.push_back(sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER));
-         e.push_back(optional(sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION)));
-         return e;
-       }(),
-       "#define SKYIG_SKY\n#define SKYIG_NIGHT_LAYER\n#define SKYIG_NIGHT_LAYER_TRANSMITTED\n"},
+       with(physicalSky(false, false, true, false),
+            {sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
+             optional(sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION))}),
+       "#define SKYIG_MOONLIT\n#define SKYIG_SKY\n#define SKYIG_SUNLESS\n#define SKYIG_NIGHT_LAYER\n"
+       "#define SKYIG_NIGHT_LAYER_TRANSMITTED\n"},
       {{"passes/fullscreen.vert", "reference/physical_sky_reference.frag"}, physicalSky(true, true, true)},
       {{"passes/fullscreen.vert", "passes/physical_sky_space.frag"},
        {frame, band, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE), sampler("scatteringPacked", SKYIG_UNIT_SCATTERING),

@@ -166,9 +166,9 @@ void mapForDisplays(SkyState& state, const std::vector<DisplayParams>& displays)
   state.shown.pointSourceFloorLux = faintestPointSourceSeenLux(*state.viewLight);
 }
 
-std::optional<night::NightDiffuseSky> nightDiffuseSky(const SkyState& state) {
+std::optional<night::NightDiffuseSky> nightDiffuseSky(const SkyState& state, bool withMilkyWay) {
   if (!state.ephemeris) return std::nullopt;
-  return night::makeNightDiffuseSky(*state.ephemeris, state.extinction);
+  return night::makeNightDiffuseSky(*state.ephemeris, state.extinction, withMilkyWay);
 }
 
 SkyState buildSkyState(const ObserverState& observer, const SkyConditions& conditions,

@@ -87,11 +87,13 @@ struct SkyState {
 
 // The night's sources of a state, for the probe, the passes and tests: the moon's illuminance on
 // the ground (0 without a moon), the moonlit sky along a view, and the diffuse night light
-// (none without an ephemeris, when the sun was overridden).
+// (none without an ephemeris, when the sun was overridden; without the Milky Way map where
+// `withMilkyWay` is false: the GPU passes read their own texture of it, and the render thread
+// then never takes MilkyWayMap::standard()'s lock).
 double moonIlluminanceLux(const SkyState& state);
 night::MoonRadiance moonlitSkyRadiance(const atmosphere::AtmosphereModel& model, const SkyState& state,
                                        const glm::dvec3& viewEnu);
-std::optional<night::NightDiffuseSky> nightDiffuseSky(const SkyState& state);
+std::optional<night::NightDiffuseSky> nightDiffuseSky(const SkyState& state, bool withMilkyWay = true);
 
 // What consecutive states of one observer share, owned by whoever builds them (the sky worker,
 // services/sky_worker.h): the ephemeris' frame-to-frame interpolation (3 us instead of 28 us an

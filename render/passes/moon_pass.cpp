@@ -75,7 +75,8 @@ glm::ivec4 MoonPass::draw(const skyig::sky::night::MoonDisc& d, const glm::dmat3
   set3(p, "quadRight", right);
   set3(p, "quadUp", quadUp);
   set1(p, "quadHalfSize", halfSize);
-  const glm::mat3 worldToNdc(glm::inverse(ndcToWorldMatrix));
+  const glm::dmat3 toNdc = glm::inverse(ndcToWorldMatrix);
+  const glm::mat3 worldToNdc(toNdc);
   glProgramUniformMatrix3fv(p, glGetUniformLocation(p, "worldToNdc"), 1, GL_FALSE, &worldToNdc[0][0]);
   set3(p, "moonCentre", d.centre);
   set1(p, "moonSinRadius", std::sin(d.angularRadiusRad));
@@ -96,7 +97,6 @@ glm::ivec4 MoonPass::draw(const skyig::sky::night::MoonDisc& d, const glm::dmat3
   glDisable(GL_BLEND);
   // The quad as moon.vert places it, in eye coordinates (z the depth along the view axis),
   // clipped to the half-space in front of the eye as the rasteriser clips it, then projected.
-  const glm::dmat3 toNdc = glm::inverse(ndcToWorldMatrix);
   std::array<glm::dvec3, 4> quad;
   const glm::dvec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
   for (std::size_t i = 0; i < quad.size(); ++i)

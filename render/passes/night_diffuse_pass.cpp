@@ -78,7 +78,8 @@ NightDiffusePass::~NightDiffusePass() {
 }
 
 void NightDiffusePass::draw(const skyig::sky::SkyState& state) {
-  const auto sky = skyig::sky::nightDiffuseSky(state);
+  // The map is this pass's texture: the state's sky without it, no lock taken per frame.
+  const auto sky = skyig::sky::nightDiffuseSky(state, false);
   if (sky) draw(*sky, state.nightGroundRadiance);
 }
 
@@ -95,7 +96,7 @@ int NightDiffusePass::layerScale(double pixelRad) const {
 }
 
 NightLayer NightDiffusePass::drawLayer(const skyig::sky::SkyState& state, int width, int height, int scale) {
-  const auto sky = skyig::sky::nightDiffuseSky(state);
+  const auto sky = skyig::sky::nightDiffuseSky(state, false);
   if (!sky) return {};
   const int w = (width + scale - 1) / scale, h = (height + scale - 1) / scale;
   if (!layer_ || layer_->width() != w || layer_->height() != h) {

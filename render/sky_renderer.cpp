@@ -186,6 +186,13 @@ void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sk
   drawSky(state, channel, {}, {});
 }
 
+void SkyRenderer::drawMappedSkyPass(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                                    const skyig::sky::ChannelConfig& channel) {
+  if (skyig::sky::isGoggle(channel)) throw std::invalid_argument("drawMappedSkyPass: a goggle channel has no eye's tone");
+  ensureTargets(channel.width, channel.height);
+  drawMappedSky(state, attitude, channel, *display_, 1.0f);
+}
+
 void SkyRenderer::draw(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                        const skyig::sky::ChannelConfig& channel) {
   ensureTargets(channel.width, channel.height);
@@ -241,6 +248,47 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
     drawGoggleChannel(state, attitude, channel, toneTarget, ditherLsb);
     return;
   }
+  const MappedSky sky = drawMappedSky(state, attitude, channel, toneTarget, ditherLsb);
+  const glm::dmat3& ndcToWorld = sky.ndcToWorld;
+  const bool nightLight = state.ephemeris && state.shown.nightLight;
+  hdr_->bindForDrawing();
+  glm::ivec4 moonPixels(0);
+  if (state.ephemeris) moonPixels = (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, channel);
+  if (nightLight && !(sky.nightLayer && sky.drewAll))
+    (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
+  if (!stars_) stars_ = std::make_unique<StarPass>();
+  glBindVertexArray(emptyVao_);
+  // Stars and planets as displayed, against the sky without them; the tone pass adds them to
+  // the mapped sky, so it never maps a star as if it were sky (docs/night-sky-stars.md). Not
+  // where none can pass the eye's threshold against the darkest of the view (sky/shown_layers.h):
+  // the target is then left clear; else only the sources above that threshold.
+  if (state.shown.pointSources || pointSourcesDrawn_) {
+    const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearNamedFramebufferfv(pointSources_->framebuffer(), GL_COLOR, 0, none);
+    pointSourcesDrawn_ = false;
+  }
+  if (state.shown.pointSources) {
+    pointSources_->bindForDrawing();
+    stars_->drawDisplayed(state.starField, ndcToWorld, hdr_->texture(), state.shown.pointSourceFloorLux);
+    pointSourcesDrawn_ = true;
+  }
+  glBindTextureUnit(SKYIG_UNIT_HDR_IMAGE, hdr_->texture());
+  glBindTextureUnit(SKYIG_UNIT_POINT_SOURCES, pointSources_->texture());
+  if (sky.folded)
+    tone_->drawOver(toneTarget, std::span(&moonPixels, 1), [&](const GlProgram& quads) {
+      if (state.shown.pointSources)
+        stars_->drawFootprints(state.starField, ndcToWorld, hdr_->texture(), quads, state.shown.pointSourceFloorLux);
+    });
+  else
+    tone_->draw(toneTarget);
+  // Then into the HDR image in absolute units, every value kept for the EXR.
+  hdr_->bindForDrawing();
+  stars_->draw(state.starField, ndcToWorld);
+}
+
+SkyRenderer::MappedSky SkyRenderer::drawMappedSky(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                                                  const skyig::sky::ChannelConfig& channel,
+                                                  const RenderTarget& toneTarget, float ditherLsb) {
   const glm::dmat3 ndcToWorld = skyig::sky::ndcToWorld(skyig::sky::eyeToEnu(attitude, channel.offset), channel.frustum);
   bindChannelBlocks(state, attitude, channel);
   ToneBlock tone = toToneBlock(state, channel);
@@ -277,40 +325,7 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
   else
     hdr_->bindForDrawing();
   const bool drewAll = drawSky(state, channel, fold ? tone_->foldedDefines() : std::string(), night);
-  const bool folded = fold && drewAll;
-  hdr_->bindForDrawing();
-  glm::ivec4 moonPixels(0);
-  if (state.ephemeris) moonPixels = (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, channel);
-  if (nightLight && !(night.texture && drewAll))
-    (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
-  if (!stars_) stars_ = std::make_unique<StarPass>();
-  glBindVertexArray(emptyVao_);
-  // Stars and planets as displayed, against the sky without them; the tone pass adds them to
-  // the mapped sky, so it never maps a star as if it were sky (docs/night-sky-stars.md). Not
-  // where none can pass the eye's threshold against the darkest of the view (sky/shown_layers.h):
-  // the target is then left clear; else only the sources above that threshold.
-  if (state.shown.pointSources || pointSourcesDrawn_) {
-    const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glClearNamedFramebufferfv(pointSources_->framebuffer(), GL_COLOR, 0, none);
-    pointSourcesDrawn_ = false;
-  }
-  if (state.shown.pointSources) {
-    pointSources_->bindForDrawing();
-    stars_->drawDisplayed(state.starField, ndcToWorld, hdr_->texture(), state.shown.pointSourceFloorLux);
-    pointSourcesDrawn_ = true;
-  }
-  glBindTextureUnit(SKYIG_UNIT_HDR_IMAGE, hdr_->texture());
-  glBindTextureUnit(SKYIG_UNIT_POINT_SOURCES, pointSources_->texture());
-  if (folded)
-    tone_->drawOver(toneTarget, std::span(&moonPixels, 1), [&](const GlProgram& quads) {
-      if (state.shown.pointSources)
-        stars_->drawFootprints(state.starField, ndcToWorld, hdr_->texture(), quads, state.shown.pointSourceFloorLux);
-    });
-  else
-    tone_->draw(toneTarget);
-  // Then into the HDR image in absolute units, every value kept for the EXR.
-  hdr_->bindForDrawing();
-  stars_->draw(state.starField, ndcToWorld);
+  return {ndcToWorld, night.texture != 0, drewAll, fold && drewAll};
 }
 
 void SkyRenderer::drawGoggleChannel(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,

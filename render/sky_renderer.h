@@ -70,6 +70,14 @@ class SkyRenderer {
     drawSkyPass(state, state.observer.attitude, channel);
   }
 
+  // Draws what a frame draws up to its sky pass (for benchmarks): its tone prepared (the glare
+  // veil's grid), its night layer, and the sky pass mapping its own pixels to the display.
+  void drawMappedSkyPass(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                         const skyig::sky::ChannelConfig& channel);
+  void drawMappedSkyPass(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
+    drawMappedSkyPass(state, state.observer.attitude, channel);
+  }
+
   // Whether the physical sky pass maps its own pixels to the display where no full-screen pass
   // follows it (on by default; drawChannel in sky_renderer.cpp): off, the tone pass maps every
   // pixel after the others, as it always did; for the tests and the benchmark that compare the two.
@@ -121,6 +129,16 @@ class SkyRenderer {
   // Every pass of the channel, the tone pass into `toneTarget` with a dither of `ditherLsb`.
   void drawChannel(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                    const skyig::sky::ChannelConfig& channel, const RenderTarget& toneTarget, float ditherLsb);
+  // drawChannel's first part: the channel's blocks, the tone prepared, the night's layer and the
+  // sky pass, mapping its own pixels into `toneTarget` where it can (`folded`).
+  struct MappedSky {
+    glm::dmat3 ndcToWorld;
+    bool nightLayer = false;  // the sky pass was given the night's layer
+    bool drewAll = false;     // drawSky's answer
+    bool folded = false;      // the sky pass mapped every pixel to the display
+  };
+  MappedSky drawMappedSky(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
+                          const skyig::sky::ChannelConfig& channel, const RenderTarget& toneTarget, float ditherLsb);
   // The same for a goggle channel: its band, its frustum, its intensifier instead of the eye's tone.
   void drawGoggleChannel(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                          const skyig::sky::ChannelConfig& channel, const RenderTarget& toneTarget, float ditherLsb);

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <functional>
 #include <string>
@@ -136,6 +137,8 @@ int runRatiosBench(NodeConfig config, const RatiosOptions& opt) {
   std::vector<Item> items = {
       {"reference_sky_pass_day", "reference sky pass", &kDay, [&] { reference.drawSkyPass(day, channel); }, {}},
       {"sky_pass_day", "sky pass", &kDay, [&] { live.drawSkyPass(day, channel); }, {}},
+      {"sky_pass_mapped_day", "sky pass mapping its pixels, as in the frame", &kDay,
+       [&] { live.drawMappedSkyPass(day, channel); }, {}},
       {"day_frame", "day frame (every pass + tone)", &kDay, [&] { live.draw(day, channel); }, {}},
       {"day_frame_sun_forced", "day frame, sun forced (no night)", &kDay, [&] { live.draw(dayForced, channel); }, {}},
       {"day_frame_tone_over_every_pixel", "day frame, the tone pass over every pixel", &kDay,
@@ -152,6 +155,7 @@ int runRatiosBench(NodeConfig config, const RatiosOptions& opt) {
       {"sky_pass_over_reference_moonless_night", "sky pass / reference (moonless night)", "sky_pass_moonless_night",
        "reference_sky_pass_moonless_night"},
       {"day_frame_over_sky_pass", "day frame / sky pass", "day_frame", "sky_pass_day"},
+      {"day_frame_over_mapped_sky_pass", "day frame / sky pass mapping its pixels, as in the frame", "day_frame", "sky_pass_mapped_day"},
       {"day_frame_over_sun_forced_day_frame", "day frame / day frame with the sun forced", "day_frame",
        "day_frame_sun_forced"},
       {"day_frame_over_tone_over_every_pixel", "day frame / the same with the tone pass over every pixel", "day_frame",
@@ -240,16 +244,28 @@ int runRatiosBench(NodeConfig config, const RatiosOptions& opt) {
   std::printf("LP_NUM_THREADS %s\n", threads.c_str());
   std::printf("process CPU time per pixel, items interleaved in each round; reference: shaders/%s\n\n",
               render::kReferenceSkyFragment);
-  std::printf("| %-33s | %-15s | %26s |\n", "what", "scene", "ns/pixel min / median / max");
-  std::printf("| %-33s | %-15s | %26s |\n", "---", "---", "---");
+  int whatWidth = 4;  // the column as wide as its longest label
+  for (const Item& item : items) whatWidth = std::max(whatWidth, static_cast<int>(std::strlen(item.what)));
+  std::printf("| %-*s | %-15s | %26s |\n", whatWidth, "what", "scene", "ns/pixel min / median / max");
+  std::printf("| %-*s | %-15s | %26s |\n", whatWidth, "---", "---", "---");
   for (const Item& item : items) {
     const Stats s = stats(item.nsPerPixel);
-    std::printf("| %-33s | %-15s | %8.1f / %6.1f / %6.1f |\n", item.what, item.scene->key, s.min, s.median, s.max);
+    std::printf("| %-*s | %-15s | %8.1f / %6.1f / %6.1f |\n", whatWidth, item.what, item.scene->key, s.min, s.median,
+                s.max);
   }
-  std::printf("\n| %-52s | %22s |\n", "ratio, same round", "min / median / max");
-  std::printf("| %-52s | %22s |\n", "---", "---");
+  // Widths in characters: the "\u2248" of a label is 3 bytes and one character.
+  const auto characters = [](const char* text) {
+    int n = 0;
+    for (const char* c = text; *c; ++c) n += (static_cast<unsigned char>(*c) & 0xC0) != 0x80 ? 1 : 0;
+    return n;
+  };
+  int ratioWidth = 17;
+  for (const Ratio& r : ratios) ratioWidth = std::max(ratioWidth, characters(r.what));
+  std::printf("\n| %-*s | %22s |\n", ratioWidth, "ratio, same round", "min / median / max");
+  std::printf("| %-*s | %22s |\n", ratioWidth, "---", "---");
   for (std::size_t i = 0; i < ratios.size(); ++i)
-    std::printf("| %-*s | %6.2f / %6.2f / %6.2f |\n", ratios[i].factor != 1.0 ? 54 : 52, ratios[i].what,
+    std::printf("| %-*s | %6.2f / %6.2f / %6.2f |\n",
+                ratioWidth + static_cast<int>(std::strlen(ratios[i].what)) - characters(ratios[i].what), ratios[i].what,
                 ratioStats[i].min, ratioStats[i].median, ratioStats[i].max);
   std::printf("\nScenes (the configuration's place, its first channel's frustum):\n");
   for (const Scene* s : {&kDay, &kMoonlit, &kMoonless})

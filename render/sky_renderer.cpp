@@ -156,7 +156,7 @@ void SkyRenderer::bindChannelBlocks(const skyig::sky::SkyState& state, const sky
 }
 
 bool SkyRenderer::drawSky(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel,
-                          const std::string& toneDefines, const NightLayer& night) {
+                          const FoldedTone& tone, const NightLayer& night) {
   glBindVertexArray(emptyVao_);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
@@ -170,12 +170,12 @@ bool SkyRenderer::drawSky(const skyig::sky::SkyState& state, const skyig::sky::C
                            skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection,
                            state.shown.moonlitSky || skyig::sky::isGoggle(channel) ? state.moonlightScale
                                                                                     : glm::dvec3(0.0),
-                           state.sunRefraction, toneDefines, night,
+                           state.sunRefraction, tone, night,
                            state.shown.sunlitSky || skyig::sky::isGoggle(channel));
   }
   skyProgram_.use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  return toneDefines.empty() && night.texture == 0;
+  return tone.defines.empty() && night.texture == 0;
 }
 
 void SkyRenderer::drawSkyPass(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
@@ -324,7 +324,7 @@ SkyRenderer::MappedSky SkyRenderer::drawMappedSky(const skyig::sky::SkyState& st
     (toneTarget.texture() == display_->texture() ? *foldedDisplay_ : *foldedValues_).bindForDrawing();
   else
     hdr_->bindForDrawing();
-  const bool drewAll = drawSky(state, channel, fold ? tone_->foldedDefines() : std::string(), night);
+  const bool drewAll = drawSky(state, channel, fold ? tone_->folded() : FoldedTone{}, night);
   return {ndcToWorld, night.texture != 0, drewAll, fold && drewAll};
 }
 

@@ -121,11 +121,11 @@ class SkyRenderer {
   // The frame, sky and band blocks of a channel, uploaded and bound.
   void bindChannelBlocks(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                          const skyig::sky::ChannelConfig& channel);
-  // The sky pass into the bound framebuffer; with toneDefines (TonePass::foldedDefines) the
+  // The sky pass into the bound framebuffer; with a tone (TonePass::folded) the
   // physical pass maps its pixels to the display too, into the framebuffer's second target, and
   // with a night layer adds the night's light: whether it drew all it was asked.
   bool drawSky(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel,
-               const std::string& toneDefines, const NightLayer& night);
+               const FoldedTone& tone, const NightLayer& night);
   // Every pass of the channel, the tone pass into `toneTarget` with a dither of `ditherLsb`.
   void drawChannel(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                    const skyig::sky::ChannelConfig& channel, const RenderTarget& toneTarget, float ditherLsb);

@@ -261,11 +261,18 @@ void PhysicalSkyPass::setFrameUniforms(const Program& program, const glm::dvec3&
 
 bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirection, const glm::dvec3& moonDirection,
                            const glm::dvec3& moonlightScale, const glm::dvec4& sunRefraction,
-                           const std::string& toneDefines, const NightLayer& night, bool sunlit) {
-  const std::string extra = (night.texture ? std::string("#define SKYIG_NIGHT_LAYER\n") : std::string()) +
-                            (toneDefines.empty() ? std::string() : "#define SKYIG_FOLD_TONE\n" + toneDefines);
+                           const FoldedTone& tone, const NightLayer& night, bool sunlit) {
+  const auto extraWith = [&](const std::string& toneDefines) {
+    return (night.texture ? std::string("#define SKYIG_NIGHT_LAYER\n") : std::string()) +
+           (toneDefines.empty() ? std::string() : "#define SKYIG_FOLD_TONE\n" + toneDefines);
+  };
+  const std::string extra = extraWith(tone.defines);
   // The sun's light left out only inside the atmosphere (the space program keeps it).
-  const std::string insideExtra = sunlit ? extra : "#define SKYIG_SUNLESS\n" + extra;
+  const std::string sunless = sunlit ? "" : "#define SKYIG_SUNLESS\n";
+  const std::string insideExtra = sunless + extra;
+  // The boxes of the exact glare veil mapped with the veil per pixel (render/passes/folded_tone.h).
+  const bool exactBoxes = !tone.defines.empty() && !tone.exactBoxes.empty();
+  const std::string insideExact = exactBoxes ? sunless + extraWith(tone.exactDefines) : std::string();
   stepUpload();
   if (!current_.model) throw std::logic_error("PhysicalSkyPass::draw before use()");
   const atmosphere::AtmosphereParameters& a = current_.model->parameters(0);
@@ -343,52 +350,88 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
                                                GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &depthType);
   // Then the quad around the sun again with the disc (it clips away when the sun is behind the
   // camera).
-  auto drawDisc = [&](Part part) {
+  auto drawDisc = [&](Part part, const std::string& partsExtra) {
     if (!sunlit) return;
-    prepare(variant(moon, part, true, insideExtra));
+    prepare(variant(moon, part, true, partsExtra));
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
   };
   if (depthType == GL_NONE) {
     prepare(variant(moon, kBoth, false, insideExtra));
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    drawDisc(kBoth);
+    drawDisc(kBoth, insideExtra);
+    if (exactBoxes) {  // drawn over
+      glEnable(GL_SCISSOR_TEST);
+      for (const glm::ivec4& b : tone.exactBoxes) {
+        glScissor(b.x, b.y, b.z, b.w);
+        prepare(variant(moon, kBoth, false, insideExact));
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        drawDisc(kBoth, insideExact);
+      }
+      glDisable(GL_SCISSOR_TEST);
+    }
     return true;
   }
-  const Program& ground = variant(moon, kGround, false, insideExtra);
-  prepare(ground);
   // The ring a little above the horizon (mu = -sqrt(1 - (Rg/r)^2)): 0.1 deg encloses the
   // horizon's circle whatever the fan's chords cut (2 pi / 256)^2 / 8 = 7.5e-5 rad inside it.
   constexpr int kSegments = 256;
   const double horizon = std::asin(-std::sqrt(std::max(0.0, 1.0 - (a.bottom_radius / r) * (a.bottom_radius / r))));
   const double ring = horizon + 0.1 * std::numbers::pi / 180.0;
-  glProgramUniform3f(ground.program.id(), ground.groundCap, static_cast<float>(std::sin(ring)),
-                     static_cast<float>(std::cos(ring)), static_cast<float>(kSegments));
+  const bool band = night.texture != 0 && night.transmitted != 0;
+  // The ground, the band and the sky, each where the depth buffer still holds the clear's 1 (all
+  // at depth 0.5: early depth testing skips the pixels an earlier part drew). The sky writes no
+  // depth, so the disc's quad after it draws where the sky is.
+  auto drawParts = [&](const std::string& partsExtra) {
+    const Program& ground = variant(moon, kGround, false, partsExtra);
+    prepare(ground);
+    glProgramUniform3f(ground.program.id(), ground.groundCap, static_cast<float>(std::sin(ring)),
+                       static_cast<float>(std::cos(ring)), static_cast<float>(kSegments));
+    glDepthMask(GL_TRUE);
+    glDrawArrays(GL_TRIANGLES, 0, 3 * kSegments);
+    // With the night's layer: the sky near the horizon with its transmittance per pixel, on the
+    // cap below a ring kNightLayerBandDeg up (its chords' great circles bulge upwards, so it
+    // holds every direction below the ring), then the rest reading the layer dimmed at its texels.
+    if (band) {
+      const Program& nearHorizon = variant(moon, kHorizonBand, false, partsExtra);
+      prepare(nearHorizon);
+      const double e0 = kNightLayerBandDeg * std::numbers::pi / 180.0;
+      glProgramUniform3f(nearHorizon.program.id(), nearHorizon.groundCap, static_cast<float>(std::sin(e0)),
+                         static_cast<float>(std::cos(e0)), static_cast<float>(kSegments));
+      glDrawArrays(GL_TRIANGLES, 0, 3 * kSegments);
+      glBindTextureUnit(SKYIG_UNIT_NIGHT_LAYER, night.transmitted);
+    }
+    prepare(variant(moon, kSky, false, band ? partsExtra + "#define SKYIG_NIGHT_LAYER_TRANSMITTED\n" : partsExtra));
+    glDepthMask(GL_FALSE);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (band) glBindTextureUnit(SKYIG_UNIT_NIGHT_LAYER, night.texture);
+    drawDisc(kSky, partsExtra);  // where the sky is: no depth written; the night's light per pixel
+    glDepthMask(GL_TRUE);
+  };
   glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
   glClearDepth(1.0);
   glClear(GL_DEPTH_BUFFER_BIT);
-  glDepthFunc(GL_ALWAYS);
-  glDrawArrays(GL_TRIANGLES, 0, 3 * kSegments);
-  glDepthFunc(GL_LESS);  // all at depth 0.5: each part only where the clear's 1 is left
-  // With the night's layer: the sky near the horizon with its transmittance per pixel, on the
-  // cap below a ring kNightLayerBandDeg up (its chords' great circles bulge upwards, so it
-  // holds every direction below the ring), then the rest reading the layer dimmed at its texels.
-  const bool band = night.texture != 0 && night.transmitted != 0;
-  if (band) {
-    const Program& nearHorizon = variant(moon, kHorizonBand, false, insideExtra);
-    prepare(nearHorizon);
-    const double e0 = kNightLayerBandDeg * std::numbers::pi / 180.0;
-    glProgramUniform3f(nearHorizon.program.id(), nearHorizon.groundCap, static_cast<float>(std::sin(e0)),
-                       static_cast<float>(std::cos(e0)), static_cast<float>(kSegments));
-    glDrawArrays(GL_TRIANGLES, 0, 3 * kSegments);
-    glBindTextureUnit(SKYIG_UNIT_NIGHT_LAYER, night.transmitted);
+  if (!exactBoxes) {
+    drawParts(insideExtra);
+  } else {
+    // Everywhere but the boxes (held at depth 0, where no part passes), then each box on its own.
+    glEnable(GL_SCISSOR_TEST);
+    glClearDepth(0.0);
+    for (const glm::ivec4& b : tone.exactBoxes) {
+      glScissor(b.x, b.y, b.z, b.w);
+      glClear(GL_DEPTH_BUFFER_BIT);
+    }
+    glClearDepth(1.0);
+    glDisable(GL_SCISSOR_TEST);
+    drawParts(insideExtra);
+    glEnable(GL_SCISSOR_TEST);
+    for (const glm::ivec4& b : tone.exactBoxes) {
+      glScissor(b.x, b.y, b.z, b.w);
+      glClear(GL_DEPTH_BUFFER_BIT);
+      drawParts(insideExact);
+    }
+    glDisable(GL_SCISSOR_TEST);
   }
-  prepare(variant(moon, kSky, false, band ? insideExtra + "#define SKYIG_NIGHT_LAYER_TRANSMITTED\n" : insideExtra));
-  glDepthMask(GL_FALSE);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  if (band) glBindTextureUnit(SKYIG_UNIT_NIGHT_LAYER, night.texture);
-  drawDisc(kSky);  // where the sky is: no depth written; the night's light per pixel
-  glDepthMask(GL_TRUE);
   glDisable(GL_DEPTH_TEST);
   return true;
 }

@@ -8,6 +8,7 @@
 #include "sky/atmosphere/rec709_tables.h"
 #include "render/passes/atmosphere_uniforms.h"
 #include "render/gl/gl_program.h"
+#include "render/passes/folded_tone.h"
 #include "render/passes/night_layer.h"
 #include "sky/atmosphere/physical_camera.h"
 
@@ -46,10 +47,10 @@ class PhysicalSkyPass {
   // directions (airless), all in the local east-north-up frame; a zero moonlightScale skips the
   // moon. sunRefraction is the refraction about the sun's apparent centre (SkyState::
   // sunRefraction; zero: none) the disc is drawn through. The frame block must be bound.
-  // toneDefines, when not empty, are the tone pass's variant (TonePass::foldedDefines): the pass
-  // then also maps each pixel to the display and writes it at SKYIG_OUTPUT_FOLDED_DISPLAY
-  // (passes/physical_sky.frag, SKYIG_FOLD_TONE); the tone block must be bound, and the veil's
-  // grid at its unit if the defines read it. `night`, when it has a texture, adds the night's
+  // tone.defines, when not empty, are the tone pass's variant (TonePass::folded): the pass then
+  // also maps each pixel to the display and writes it at SKYIG_OUTPUT_FOLDED_DISPLAY
+  // (passes/physical_sky.frag, SKYIG_FOLD_TONE), with tone.exactDefines in tone.exactBoxes; the
+  // tone block must be bound, and the veil's grid at its unit if the defines read it. `night`, when it has a texture, adds the night's
   // own light (SKYIG_NIGHT_LAYER). `sunlit` false leaves out the sun's sky, ground and disc
   // (SKYIG_SUNLESS), when its twilight changes no display code (sky/shown_layers.h); inside the
   // atmosphere only. Returns whether it drew what was asked (never from space, whose program has
@@ -57,7 +58,7 @@ class PhysicalSkyPass {
   bool draw(const glm::dvec3& camera, const glm::dvec3& sunDirection,
             const glm::dvec3& moonDirection = glm::dvec3(0.0, 0.0, 1.0),
             const glm::dvec3& moonlightScale = glm::dvec3(0.0),
-            const glm::dvec4& sunRefraction = glm::dvec4(0.0), const std::string& toneDefines = {},
+            const glm::dvec4& sunRefraction = glm::dvec4(0.0), const FoldedTone& tone = {},
             const NightLayer& night = {}, bool sunlit = true);
 
   const atmosphere::AtmosphereModel* current() const { return current_.model.get(); }

@@ -73,6 +73,8 @@ void TonePass::prepare(const Variant& variant, const glm::dmat3& ndcToWorld, int
                        const std::vector<glm::dvec3>& glareSources) {
   variant_ = variant;
   sources_ = static_cast<int>(std::min<std::size_t>(glareSources.size(), 2));
+  width_ = width;
+  height_ = height;
   grid_ = GlareGrid{};
   if (sources_ == 0) return;
   grid_ = glareGrid(ndcToWorld, width, height, glareSources);
@@ -99,7 +101,27 @@ void TonePass::draw(const RenderTarget& target) {
   // per pixel.
   program(variant_, sources_, sources_ > 0).use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  drawNearBoxes(target);
+  drawNearBoxes();
+}
+
+FoldedTone TonePass::folded() const {
+  FoldedTone f{defines(variant_, sources_, sources_ > 0), {}, {}};
+  if (sources_ > 0) {
+    f.exactDefines = defines(variant_, sources_, false);
+    f.exactBoxes = nearBoxPixels();
+  }
+  return f;
+}
+
+const GlProgram& TonePass::starQuadProgram(bool fromGrid) {
+  std::unique_ptr<GlProgram>& quads = starQuadPrograms_[static_cast<std::size_t>(
+      (variant_.tumblinRushmeier ? 12 : 0) + (fromGrid ? 6 : 0) + 2 * sources_ + (variant_.photopic ? 1 : 0))];
+  // The stars' vertex stage exactly as the displayed-star pass compiled it (no defines), so the
+  // quads fall where it drew; the fragment is this frame's variant.
+  if (!quads)
+    quads = std::make_unique<GlProgram>("passes/star_display.vert", "", "passes/tone.frag",
+                                        defines(variant_, sources_, fromGrid));
+  return *quads;
 }
 
 void TonePass::drawOver(const RenderTarget& target, std::span<const glm::ivec4> rectangles,
@@ -114,26 +136,44 @@ void TonePass::drawOver(const RenderTarget& target, std::span<const glm::ivec4> 
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
   glDisable(GL_SCISSOR_TEST);
-  // The stars' vertex stage exactly as the displayed-star pass compiled it (no defines), so the
-  // quads fall where it drew; the fragment is this frame's variant.
-  std::unique_ptr<GlProgram>& quads = starQuadPrograms_[static_cast<std::size_t>(
-      (variant_.tumblinRushmeier ? 6 : 0) + 2 * sources_ + (variant_.photopic ? 1 : 0))];
-  if (!quads)
-    quads = std::make_unique<GlProgram>("passes/star_display.vert", "", "passes/tone.frag",
-                                        defines(variant_, sources_, sources_ > 0));
-  drawQuads(*quads);
-  glBindVertexArray(emptyVao_);
-  drawNearBoxes(target);
+  drawQuads(starQuadProgram(sources_ > 0));
+  if (sources_ == 0) return;
+  // The sky pass mapped the boxes with the veil per pixel (folded()): what was drawn over them
+  // is mapped so again, each pixel's last value the one draw() would give it.
+  glEnable(GL_SCISSOR_TEST);
+  for (const glm::ivec4& box : nearBoxPixels()) {
+    glBindVertexArray(emptyVao_);
+    program(variant_, sources_, false).use();
+    for (const glm::ivec4& r : rectangles) {
+      const glm::ivec2 lo = glm::max(glm::ivec2(r.x, r.y), glm::ivec2(box.x, box.y));
+      const glm::ivec2 hi = glm::min(glm::ivec2(r.x + r.z, r.y + r.w), glm::ivec2(box.x + box.z, box.y + box.w));
+      if (r.z <= 0 || r.w <= 0 || hi.x <= lo.x || hi.y <= lo.y) continue;
+      glScissor(lo.x, lo.y, hi.x - lo.x, hi.y - lo.y);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glScissor(box.x, box.y, box.z, box.w);
+    drawQuads(starQuadProgram(false));
+  }
+  glDisable(GL_SCISSOR_TEST);
 }
 
-void TonePass::drawNearBoxes(const RenderTarget& target) {
-  if (sources_ == 0) return;
-  program(variant_, sources_, false).use();
-  glEnable(GL_SCISSOR_TEST);
+std::vector<glm::ivec4> TonePass::nearBoxPixels() const {
+  std::vector<glm::ivec4> boxes;
+  if (sources_ == 0) return boxes;
   for (const glm::ivec4& b : grid_.nearBoxes) {
     if (b.x >= b.y || b.z >= b.w) continue;
     const int x0 = b.x * kGlareCellPx, y0 = b.z * kGlareCellPx;
-    glScissor(x0, y0, std::min(b.y * kGlareCellPx, target.width()) - x0, std::min(b.w * kGlareCellPx, target.height()) - y0);
+    boxes.emplace_back(x0, y0, std::min(b.y * kGlareCellPx, width_) - x0, std::min(b.w * kGlareCellPx, height_) - y0);
+  }
+  return boxes;
+}
+
+void TonePass::drawNearBoxes() {
+  if (sources_ == 0) return;
+  program(variant_, sources_, false).use();
+  glEnable(GL_SCISSOR_TEST);
+  for (const glm::ivec4& b : nearBoxPixels()) {
+    glScissor(b.x, b.y, b.z, b.w);
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
   glDisable(GL_SCISSOR_TEST);

@@ -9,9 +9,10 @@
 // Beyond, interpolating its 1/theta^2 term over a cell of angle a errs by at most about
 // 1.5 (a / theta)^2 of the veil (its Hessian is 6 b / theta^4), under 0.6%; measured, the
 // display codes differ from the per-pixel veil's by at most 1 (docs/performance.md).
-// The same mapping runs in the physical sky pass (foldedDefines); the pass then maps again only
-// where later passes drew (drawOver).
+// The same mapping runs in the physical sky pass (folded), the boxes' too; the pass then maps
+// again only where later passes drew (drawOver).
 #include "render/gl/gl_program.h"
+#include "render/passes/folded_tone.h"
 #include "render/gl/render_target.h"
 
 #include <glm/mat3x3.hpp>
@@ -62,14 +63,15 @@ class TonePass {
                const std::vector<glm::dvec3>& glareSources);
   // Every pixel of `target`, from the HDR image and the point sources at their units.
   void draw(const RenderTarget& target);
-  // The defines with which the physical sky pass maps its pixels as draw() would everywhere
-  // but in the boxes of the exact veil (PhysicalSkyPass::draw's toneDefines); the veil's grid is
-  // bound at its unit by prepare().
-  std::string foldedDefines() const { return defines(variant_, sources_, sources_ > 0); }
+  // What the physical sky pass needs to map its pixels as draw() would (PhysicalSkyPass::draw's
+  // `tone`): the defines, and those of the veil per pixel with the boxes where they apply; the
+  // veil's grid is bound at its unit by prepare().
+  FoldedTone folded() const;
   // After a folded sky pass: `target` again only where later passes drew. The rectangles (x, y,
   // width, height in pixels; the moon's quad), the quads `drawQuads` draws with the program it
   // is given (the displayed stars': StarPass::drawFootprints, with the program of
-  // passes/star_display.vert and the tone fragment), then the boxes of the exact veil.
+  // passes/star_display.vert and the tone fragment), each with the veil from the grid, then
+  // again with the veil per pixel where they fall in the boxes of the exact veil.
   void drawOver(const RenderTarget& target, std::span<const glm::ivec4> rectangles,
                 const std::function<void(const GlProgram&)>& drawQuads);
 
@@ -77,15 +79,20 @@ class TonePass {
   static std::string defines(const Variant& variant, int glareSources, bool fromGrid);
   // glareSources 0-2; fromGrid: the veil read from the grid's target.
   const GlProgram& program(const Variant& variant, int glareSources, bool fromGrid);
-  void drawNearBoxes(const RenderTarget& target);
+  // The frame's variant over the displayed stars' quads.
+  const GlProgram& starQuadProgram(bool fromGrid);
+  // The boxes of the exact veil in pixels (x, y, width, height) within the channel; empty ones left out.
+  std::vector<glm::ivec4> nearBoxPixels() const;
+  void drawNearBoxes();  // into the bound target
   std::array<std::unique_ptr<GlProgram>, 24> programs_;
-  std::array<std::unique_ptr<GlProgram>, 12> starQuadPrograms_;  // passes/star_display.vert + passes/tone.frag
+  std::array<std::unique_ptr<GlProgram>, 24> starQuadPrograms_;  // passes/star_display.vert + passes/tone.frag
   std::array<std::unique_ptr<GlProgram>, 2> veilPrograms_;  // passes/glare_veil.frag, 1 or 2 sources
   std::unique_ptr<RenderTarget> veil_;                      // the veil at the grid's vertices
   GLuint emptyVao_ = 0;
   // The frame's, from prepare().
   Variant variant_;
   int sources_ = 0;
+  int width_ = 0, height_ = 0;
   GlareGrid grid_;
 };
 

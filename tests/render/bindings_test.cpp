@@ -135,6 +135,13 @@ std::vector<ProgramCase> programs() {
              output("outDisplay", SKYIG_OUTPUT_FOLDED_DISPLAY)}),
        "#define SKYIG_SKY\n#define SKYIG_FOLD_TONE\n#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 2\n"
        "#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
+      // The same in a box of the exact veil, here the disc's (PhysicalSkyPass::draw, FoldedTone):
+      // the veil per pixel, no grid.
+      {{"passes/sun_disc.vert", "passes/physical_sky.frag"},
+       with(physicalSky(true, false, false),
+            {block("ToneBlock", SKYIG_BINDING_TONE), output("outDisplay", SKYIG_OUTPUT_FOLDED_DISPLAY)}),
+       "#define SKYIG_SKY\n#define SKYIG_SUN_DISC\n#define SKYIG_FOLD_TONE\n#define SKYIG_TONE_CURVE\n"
+       "#define SKYIG_GLARE 2\n"},
       // With the night's layer added (SkyRenderer::drawChannel at night): the ground's and the
       // band's near the horizon with the transmittance per pixel, the sky above reading the layer
       // already dimmed (no table); the sun's sky left out, the moon's in.

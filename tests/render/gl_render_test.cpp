@@ -712,8 +712,9 @@ TEST_F(GlRender, LayersLeftOutChangeNoDisplayCode) {
 // again wherever a later pass drew. At noon with the sun in view (its box of the exact veil);
 // the moon up by day, in view (its quad and box); the sun 5 deg down after a June sunset (the
 // night's light left out, a few faint displayed stars); at 12 km; a moonless night (the night's
-// light added by the sky pass, the displayed stars mapped again on their quads), and the same
-// with the night's light left out by hand.
+// light added by the sky pass, the displayed stars mapped again on their quads), the same
+// with the night's light left out by hand, and a full moon with stars in its box (the sky pass
+// maps the box with the veil per pixel, the stars' quads there are mapped again the same way).
 TEST_F(GlRender, SkyPassMappingItsOwnPixelsShowsWhatTheTonePassShows) {
   const ChannelConfig c = channel(10.0, Frustum{40, 40, 30, 30});
   struct Case {
@@ -722,14 +723,16 @@ TEST_F(GlRender, SkyPassMappingItsOwnPixelsShowsWhatTheTonePassShows) {
     double heightM;
     bool stars;  // displayed stars expected in view
     bool leaveOutNightLight = false;  // by hand: the stars of a moonless night over a folded sky
+    double pitch = 0.0;
   };
   for (const Case& k : {Case{"2026-06-21T11:00:00Z", 180.0, 0.0, false}, Case{"2026-06-23T17:00:00Z", 150.0, 0.0, false},
                         Case{"2026-06-21T19:45:00Z", 315.0, 0.0, true}, Case{"2026-06-21T11:00:00Z", 200.0, 12000.0, false},
                         Case{"2026-12-09T22:00:00Z", 180.0, 0.0, true},
-                        Case{"2026-12-09T22:00:00Z", 180.0, 0.0, true, true}}) {
+                        Case{"2026-12-09T22:00:00Z", 180.0, 0.0, true, true},
+                        Case{"2026-01-03T21:00:00Z", 108.0, 0.0, true, false, 20.0}}) {
     ObserverState o;
     o.utc = *ephemeris::parseIso8601Utc(k.utc);
-    o.attitude = {k.yaw, 0.0, 0.0};
+    o.attitude = {k.yaw, k.pitch, 0.0};
     o.heightM = k.heightM;
     SkyConditions conditions = physicalConditions(smallModel());
     conditions.starCatalogue = std::make_shared<const night::StarCatalogue>(night_testing::catalogue(), o.utc);

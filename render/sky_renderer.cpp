@@ -299,9 +299,6 @@ SkyRenderer::MappedSky SkyRenderer::drawMappedSky(const skyig::sky::SkyState& st
   // dim enough (sky/shown_layers.h) and the glare veil of the sources that give light.
   std::vector<glm::dvec3> glareSources;
   for (const skyig::sky::eye::GlareSource& g : litGlareSources(state)) glareSources.push_back(g.direction);
-  if (!tone_) tone_ = std::make_unique<TonePass>();
-  tone_->prepare({channel.display.toneOperator != skyig::sky::ToneOperator::Histogram, !state.shown.mesopic}, ndcToWorld,
-                 channel.width, channel.height, glareSources);
   // The night's own light only where it changes what the displays show (sky/shown_layers.h).
   const bool nightLight = state.ephemeris && state.shown.nightLight;
   // The physical sky pass draws the night's own light too, from a layer at about the Milky Way
@@ -309,7 +306,9 @@ SkyRenderer::MappedSky SkyRenderer::drawMappedSky(const skyig::sky::SkyState& st
   // computes them: one pass over every pixel, where the night pass and the tone pass each read
   // every pixel back (docs/performance.md). The tone pass then runs only where later passes
   // drew. Where the sky pass cannot (the analytic skies, the physical one from space), the
-  // night's pass and the tone pass cover every pixel after it.
+  // night's pass and the tone pass cover every pixel after it. With one glare source (the moon)
+  // the layer holds its veil too, which the sky pass then reads with the night's light instead
+  // of from a grid of its own (render/passes/tone_pass.h).
   const bool physical = state.conditions.model == skyig::sky::SkyModel::Physical;
   NightLayer night;
   if (nightLight && physical) {
@@ -317,8 +316,12 @@ SkyRenderer::MappedSky SkyRenderer::drawMappedSky(const skyig::sky::SkyState& st
     const double pixelRad = (std::tan(channel.frustum.leftDeg * kRadPerDeg) + std::tan(channel.frustum.rightDeg * kRadPerDeg)) /
                             std::max(channel.width, 1);
     glBindVertexArray(emptyVao_);
-    night = nightDiffuse_->drawLayer(state, channel.width, channel.height, nightDiffuse_->layerScale(pixelRad));
+    night = nightDiffuse_->drawLayer(state, channel.width, channel.height, nightDiffuse_->layerScale(pixelRad),
+                                     veilInNightLayer_ && glareSources.size() == 1);
   }
+  if (!tone_) tone_ = std::make_unique<TonePass>();
+  tone_->prepare({channel.display.toneOperator != skyig::sky::ToneOperator::Histogram, !state.shown.mesopic}, ndcToWorld,
+                 channel.width, channel.height, glareSources, night);
   const bool fold = foldTone_ && physical;
   if (fold)
     (toneTarget.texture() == display_->texture() ? *foldedDisplay_ : *foldedValues_).bindForDrawing();

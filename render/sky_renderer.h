@@ -82,6 +82,10 @@ class SkyRenderer {
   // follows it (on by default; drawChannel in sky_renderer.cpp): off, the tone pass maps every
   // pixel after the others, as it always did; for the tests and the benchmark that compare the two.
   void setToneFolding(bool on) { foldTone_ = on; }
+  // Whether, on a night with one glare source, the night's layer holds its veil (on by default;
+  // drawMappedSky in sky_renderer.cpp): off, the veil comes from its own grid, as by day; for the
+  // test that compares the two.
+  void setGlareVeilInNightLayer(bool on) { veilInNightLayer_ = on; }
 
   // Copies the last tone-reproduced frame to the window's back buffer (windowed channels): the
   // projector's image when the last draw was drawProjector.
@@ -165,6 +169,7 @@ class SkyRenderer {
   // pass that maps its own pixels.
   std::unique_ptr<TwoTargetFramebuffer> foldedDisplay_, foldedValues_;
   bool foldTone_ = true;
+  bool veilInNightLayer_ = true;
   std::unique_ptr<WarpBlendPass> warpBlend_;     // the first time a projector is drawn
   // The calibrations drawn so far and their maps on the GPU; holding them keeps their
   // addresses from being reused by another calibration.

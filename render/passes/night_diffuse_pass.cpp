@@ -95,10 +95,13 @@ int NightDiffusePass::layerScale(double pixelRad) const {
   return std::clamp(static_cast<int>(std::floor(texelRad / std::max(pixelRad, 1e-9))), 1, 8);
 }
 
-NightLayer NightDiffusePass::drawLayer(const skyig::sky::SkyState& state, int width, int height, int scale) {
+NightLayer NightDiffusePass::drawLayer(const skyig::sky::SkyState& state, int width, int height, int scale,
+                                       bool veil) {
   const auto sky = skyig::sky::nightDiffuseSky(state, false);
   if (!sky) return {};
-  const int w = (width + scale - 1) / scale, h = (height + scale - 1) / scale;
+  // A texel a vertex of the grid through the pixel corners every `scale` pixels, to the
+  // channel's far edges (shaders/common/pixel_grid.glsl).
+  const int w = (width + scale - 1) / scale + 1, h = (height + scale - 1) / scale + 1;
   if (!layer_ || layer_->width() != w || layer_->height() != h) {
     // Float: the night's light is ~1e-4 cd/m^2, where half floats are denormal.
     layerTargets_.reset();
@@ -108,11 +111,16 @@ NightLayer NightDiffusePass::drawLayer(const skyig::sky::SkyState& state, int wi
     layerTransmitted_->readBilinear();
     layerTargets_ = std::make_unique<TwoTargetFramebuffer>(*layer_, *layerTransmitted_);
   }
-  if (!layerProgram_) layerProgram_ = std::make_unique<Program>("#define SKYIG_NIGHT_LAYER\n");
+  NightLayer layer{layer_->texture(), layerTransmitted_->texture(), extinction_.id(), state.nightGroundRadiance,
+                   scale, veil};
+  std::unique_ptr<Program>& program = layerPrograms_[{scale, veil}];
+  if (!program)
+    program = std::make_unique<Program>("#define SKYIG_NIGHT_LAYER\n" + nightLayerCellDefine(layer) +
+                                        (veil ? "#define SKYIG_GLARE 1\n" : ""));
   layerTargets_->bindForDrawing();
   glDisable(GL_BLEND);
-  drawWith(*layerProgram_, *sky, glm::dvec3(0.0));
-  return {layer_->texture(), layerTransmitted_->texture(), extinction_.id(), state.nightGroundRadiance};
+  drawWith(*program, *sky, glm::dvec3(0.0));
+  return layer;
 }
 
 void NightDiffusePass::drawWith(const Program& v, const skyig::sky::night::NightDiffuseSky& sky,

@@ -9,7 +9,9 @@
 #include "render/passes/night_layer.h"
 #include "sky/night/night_diffuse.h"
 
+#include <map>
 #include <memory>
+#include <utility>
 #include <string>
 
 namespace skyig::sky {
@@ -32,13 +34,14 @@ class NightDiffusePass {
   void draw(const skyig::sky::SkyState& state);
   void draw(const skyig::sky::night::NightDiffuseSky& sky, const glm::dvec3& groundRadiance = glm::dvec3(0.0));
   // The sky's part of the same light above the atmosphere (no transmittance, no terrain), in the
-  // eye's band, into a target of its own a `scale`-th of the channel's width x height (rounded
-  // up), for the physical sky pass to read bilinearly and complete per pixel (SKYIG_NIGHT_LAYER):
-  // that target's texture (linear filtering, clamped), a second of the same light dimmed by the
-  // transmittance at each texel, the state's transmittance table and its terrain's radiance; no
-  // texture for a state without an ephemeris. Leaves the targets bound; the frame block and a
-  // vertex array must be bound.
-  NightLayer drawLayer(const skyig::sky::SkyState& state, int width, int height, int scale);
+  // eye's band, at the vertices of a grid of `scale`-pixel cells over the width x height channel
+  // (render/passes/night_layer.h), for the physical sky pass to read bilinearly and complete per
+  // pixel (SKYIG_NIGHT_LAYER): that target's texture (linear filtering, clamped), a second of the
+  // same light dimmed by the transmittance at each vertex, the state's transmittance table and
+  // its terrain's radiance; no texture for a state without an ephemeris. With `veil`, both
+  // alphas hold the glare veil per lux of the tone block's first glare source, which must then be
+  // bound. Leaves the targets bound; the frame block and a vertex array must be bound.
+  NightLayer drawLayer(const skyig::sky::SkyState& state, int width, int height, int scale, bool veil = false);
   // The scale for a channel whose pixel at its centre spans `pixelRad`: the layer's texel about
   // the Milky Way map's (its finest structure), at least 1, at most 8.
   int layerScale(double pixelRad) const;
@@ -52,7 +55,8 @@ class NightDiffusePass {
   };
   void drawWith(const Program& program, const skyig::sky::night::NightDiffuseSky& sky, const glm::dvec3& groundRadiance);
   Program program_;
-  std::unique_ptr<Program> layerProgram_;  // SKYIG_NIGHT_LAYER, the first time a layer is drawn
+  // SKYIG_NIGHT_LAYER by cell and veil, the first time a layer is drawn with them.
+  std::map<std::pair<int, bool>, std::unique_ptr<Program>> layerPrograms_;
   std::unique_ptr<RenderTarget> layer_;
   std::unique_ptr<RenderTarget> layerTransmitted_;
   std::unique_ptr<TwoTargetFramebuffer> layerTargets_;

@@ -4,6 +4,8 @@
 #include <glad/gl.h>
 #include <glm/vec3.hpp>
 
+#include <string>
+
 namespace skyig::render {
 
 // Above this elevation (degrees) the sky pass reads the night's light already dimmed by the
@@ -16,11 +18,21 @@ namespace skyig::render {
 // the interpolated transmittance would be off by a factor of several.
 inline constexpr double kNightLayerBandDeg = 8.0;
 
+// The layer is a grid of views through the channel's pixel corners every cellPx pixels, one
+// texel a vertex (shaders/common/pixel_grid.glsl, shaders/night/night_layer.glsl), like the glare
+// veil's grid (render/passes/tone_pass.h): read bilinearly at each pixel, up to the channel's edges.
 struct NightLayer {
   GLuint texture = 0;               // the sky's part above the atmosphere, a few pixels a texel; 0: none
   GLuint transmitted = 0;           // the same dimmed by the transmittance at each texel (0: none)
   GLuint extinction = 0;            // the transmittance to space (ExtinctionTexture), applied per pixel
   glm::dvec3 groundRadiance{0.0};  // the terrain's, below the horizon (cd/m^2, linear Rec.709)
+  int cellPx = 0;                   // the grid's cell, pixels
+  bool veil = false;                // alpha holds the veil per lux of the tone block's glare source 0
 };
+
+// The define with which a shader reads the layer: its cell (night/night_layer.glsl).
+inline std::string nightLayerCellDefine(const NightLayer& layer) {
+  return "#define SKYIG_NIGHT_LAYER_CELL_PX " + std::to_string(layer.cellPx) + ".0\n";
+}
 
 }  // namespace skyig::render

@@ -263,7 +263,7 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
                            const glm::dvec3& moonlightScale, const glm::dvec4& sunRefraction,
                            const FoldedTone& tone, const NightLayer& night, bool sunlit) {
   const auto extraWith = [&](const std::string& toneDefines) {
-    return (night.texture ? std::string("#define SKYIG_NIGHT_LAYER\n") : std::string()) +
+    return (night.texture ? "#define SKYIG_NIGHT_LAYER\n" + nightLayerCellDefine(night) : std::string()) +
            (toneDefines.empty() ? std::string() : "#define SKYIG_FOLD_TONE\n" + toneDefines);
   };
   const std::string extra = extraWith(tone.defines);

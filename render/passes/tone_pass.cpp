@@ -10,16 +10,18 @@
 
 namespace skyig::render {
 
-GlareGrid glareGrid(const glm::dmat3& ndcToWorld, int width, int height, const std::vector<glm::dvec3>& sources) {
+GlareGrid glareGrid(const glm::dmat3& ndcToWorld, int width, int height, const std::vector<glm::dvec3>& sources,
+                    int cellPx) {
   GlareGrid g;
-  g.columns = (width + kGlareCellPx - 1) / kGlareCellPx;
-  g.rows = (height + kGlareCellPx - 1) / kGlareCellPx;
+  g.cellPx = std::max(cellPx, 1);
+  g.columns = (width + g.cellPx - 1) / g.cellPx;
+  g.rows = (height + g.cellPx - 1) / g.cellPx;
   const int vx = g.columns + 1, vy = g.rows + 1;
-  // The grid's vertices as unit view directions, as passes/glare_veil.frag places them.
+  // The grid's vertices as unit view directions, as common/pixel_grid.glsl places them.
   std::vector<glm::dvec3> v(static_cast<std::size_t>(vx) * vy);
   for (int j = 0; j < vy; ++j)
     for (int i = 0; i < vx; ++i) {
-      const double px = i * kGlareCellPx, py = j * kGlareCellPx;
+      const double px = i * g.cellPx, py = j * g.cellPx;
       v[static_cast<std::size_t>(j) * vx + i] =
           glm::normalize(ndcToWorld * glm::dvec3(2.0 * px / width - 1.0, 2.0 * py / height - 1.0, 1.0));
     }
@@ -54,33 +56,50 @@ TonePass::TonePass() { glCreateVertexArrays(1, &emptyVao_); }
 
 TonePass::~TonePass() { glDeleteVertexArrays(1, &emptyVao_); }
 
-std::string TonePass::defines(const Variant& variant, int glareSources, bool fromGrid) {
-  std::string d = variant.tumblinRushmeier ? "#define SKYIG_TONE_TUMBLIN_RUSHMEIER\n" : "#define SKYIG_TONE_CURVE\n";
-  if (glareSources > 0) d += "#define SKYIG_GLARE " + std::to_string(glareSources) + "\n";
-  if (fromGrid) d += "#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX " + std::to_string(kGlareCellPx) + ".0\n";
-  if (variant.photopic) d += "#define SKYIG_PHOTOPIC\n";
+std::string TonePass::defines(Veil veil) const {
+  std::string d = variant_.tumblinRushmeier ? "#define SKYIG_TONE_TUMBLIN_RUSHMEIER\n" : "#define SKYIG_TONE_CURVE\n";
+  if (veil != Veil::kNone) d += "#define SKYIG_GLARE " + std::to_string(sources_) + "\n";
+  if (veil == Veil::kGrid)
+    d += "#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX " + std::to_string(kGlareCellPx) + ".0\n";
+  if (veil == Veil::kNightLayer) d += "#define SKYIG_GLARE_FROM_NIGHT_LAYER\n";
+  if (variant_.photopic) d += "#define SKYIG_PHOTOPIC\n";
   return d;
 }
 
-const GlProgram& TonePass::program(const Variant& variant, int glareSources, bool fromGrid) {
-  std::unique_ptr<GlProgram>& p = programs_[static_cast<std::size_t>(
-      (variant.tumblinRushmeier ? 12 : 0) + (fromGrid ? 6 : 0) + 2 * glareSources + (variant.photopic ? 1 : 0))];
-  if (!p) p = std::make_unique<GlProgram>("passes/fullscreen.vert", "passes/tone.frag", defines(variant, glareSources, fromGrid));
+const GlProgram& TonePass::program(Veil veil, bool starQuads) {
+  // The tone pass reads the night's layer with the cell the sky pass's own define gives it.
+  const std::string d = defines(veil) + (veil == Veil::kNightLayer ? nightLayerCellDefine(night_) : std::string());
+  std::unique_ptr<GlProgram>& p = programs_[{d, starQuads}];
+  // Over the stars' quads: their vertex stage exactly as the displayed-star pass compiled it (no
+  // defines), so the quads fall where it drew; the fragment is this frame's variant.
+  if (!p)
+    p = starQuads ? std::make_unique<GlProgram>("passes/star_display.vert", "", "passes/tone.frag", d)
+                  : std::make_unique<GlProgram>("passes/fullscreen.vert", "passes/tone.frag", d);
   return *p;
 }
 
 void TonePass::prepare(const Variant& variant, const glm::dmat3& ndcToWorld, int width, int height,
-                       const std::vector<glm::dvec3>& glareSources) {
+                       const std::vector<glm::dvec3>& glareSources, const NightLayer& night) {
   variant_ = variant;
   sources_ = static_cast<int>(std::min<std::size_t>(glareSources.size(), 2));
   width_ = width;
   height_ = height;
   grid_ = GlareGrid{};
+  night_ = NightLayer{};
+  veil_ = Veil::kNone;
   if (sources_ == 0) return;
+  if (sources_ == 1 && night.texture != 0 && night.veil) {
+    veil_ = Veil::kNightLayer;
+    night_ = night;
+    grid_ = glareGrid(ndcToWorld, width, height, glareSources, night.cellPx);
+    bindVeil();
+    return;
+  }
+  veil_ = Veil::kGrid;
   grid_ = glareGrid(ndcToWorld, width, height, glareSources);
-  if (!veil_ || veil_->width() != grid_.columns + 1 || veil_->height() != grid_.rows + 1) {
-    veil_ = std::make_unique<RenderTarget>(grid_.columns + 1, grid_.rows + 1, GL_RGBA32F);
-    veil_->readBilinear();
+  if (!veilGrid_ || veilGrid_->width() != grid_.columns + 1 || veilGrid_->height() != grid_.rows + 1) {
+    veilGrid_ = std::make_unique<RenderTarget>(grid_.columns + 1, grid_.rows + 1, GL_RGBA32F);
+    veilGrid_->readBilinear();
   }
   std::unique_ptr<GlProgram>& veil = veilPrograms_[static_cast<std::size_t>(sources_ - 1)];
   if (!veil)
@@ -88,47 +107,44 @@ void TonePass::prepare(const Variant& variant, const glm::dmat3& ndcToWorld, int
                                        "#define SKYIG_GLARE " + std::to_string(sources_) + "\n#define SKYIG_GLARE_CELL_PX " +
                                            std::to_string(kGlareCellPx) + ".0\n");
   glBindVertexArray(emptyVao_);
-  veil_->bindForDrawing();
+  veilGrid_->bindForDrawing();
   veil->use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindTextureUnit(SKYIG_UNIT_GLARE_VEIL, veil_->texture());
+  bindVeil();
+}
+
+void TonePass::bindVeil() const {
+  if (veil_ == Veil::kGrid) glBindTextureUnit(SKYIG_UNIT_GLARE_VEIL, veilGrid_->texture());
+  // Either of the layer's two targets: both hold the veil in alpha.
+  if (veil_ == Veil::kNightLayer) glBindTextureUnit(SKYIG_UNIT_NIGHT_LAYER, night_.texture);
 }
 
 void TonePass::draw(const RenderTarget& target) {
   glBindVertexArray(emptyVao_);
   target.bindForDrawing();
+  bindVeil();
   // Every pixel with the veil read from the grid, then those near a source again with the veil
   // per pixel.
-  program(variant_, sources_, sources_ > 0).use();
+  program(veil_, false).use();
   glDrawArrays(GL_TRIANGLES, 0, 3);
   drawNearBoxes();
 }
 
 FoldedTone TonePass::folded() const {
-  FoldedTone f{defines(variant_, sources_, sources_ > 0), {}, {}};
+  FoldedTone f{defines(veil_), {}, {}};
   if (sources_ > 0) {
-    f.exactDefines = defines(variant_, sources_, false);
+    f.exactDefines = defines(Veil::kPerPixel);
     f.exactBoxes = nearBoxPixels();
   }
   return f;
-}
-
-const GlProgram& TonePass::starQuadProgram(bool fromGrid) {
-  std::unique_ptr<GlProgram>& quads = starQuadPrograms_[static_cast<std::size_t>(
-      (variant_.tumblinRushmeier ? 12 : 0) + (fromGrid ? 6 : 0) + 2 * sources_ + (variant_.photopic ? 1 : 0))];
-  // The stars' vertex stage exactly as the displayed-star pass compiled it (no defines), so the
-  // quads fall where it drew; the fragment is this frame's variant.
-  if (!quads)
-    quads = std::make_unique<GlProgram>("passes/star_display.vert", "", "passes/tone.frag",
-                                        defines(variant_, sources_, fromGrid));
-  return *quads;
 }
 
 void TonePass::drawOver(const RenderTarget& target, std::span<const glm::ivec4> rectangles,
                         const std::function<void(const GlProgram&)>& drawQuads) {
   glBindVertexArray(emptyVao_);
   target.bindForDrawing();
-  program(variant_, sources_, sources_ > 0).use();
+  bindVeil();
+  program(veil_, false).use();
   glEnable(GL_SCISSOR_TEST);
   for (const glm::ivec4& r : rectangles) {
     if (r.z <= 0 || r.w <= 0) continue;
@@ -136,14 +152,14 @@ void TonePass::drawOver(const RenderTarget& target, std::span<const glm::ivec4> 
     glDrawArrays(GL_TRIANGLES, 0, 3);
   }
   glDisable(GL_SCISSOR_TEST);
-  drawQuads(starQuadProgram(sources_ > 0));
+  drawQuads(program(veil_, true));
   if (sources_ == 0) return;
   // The sky pass mapped the boxes with the veil per pixel (folded()): what was drawn over them
   // is mapped so again, each pixel's last value the one draw() would give it.
   glEnable(GL_SCISSOR_TEST);
   for (const glm::ivec4& box : nearBoxPixels()) {
     glBindVertexArray(emptyVao_);
-    program(variant_, sources_, false).use();
+    program(Veil::kPerPixel, false).use();
     for (const glm::ivec4& r : rectangles) {
       const glm::ivec2 lo = glm::max(glm::ivec2(r.x, r.y), glm::ivec2(box.x, box.y));
       const glm::ivec2 hi = glm::min(glm::ivec2(r.x + r.z, r.y + r.w), glm::ivec2(box.x + box.z, box.y + box.w));
@@ -152,7 +168,7 @@ void TonePass::drawOver(const RenderTarget& target, std::span<const glm::ivec4> 
       glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     glScissor(box.x, box.y, box.z, box.w);
-    drawQuads(starQuadProgram(false));
+    drawQuads(program(Veil::kPerPixel, true));
   }
   glDisable(GL_SCISSOR_TEST);
 }
@@ -162,15 +178,15 @@ std::vector<glm::ivec4> TonePass::nearBoxPixels() const {
   if (sources_ == 0) return boxes;
   for (const glm::ivec4& b : grid_.nearBoxes) {
     if (b.x >= b.y || b.z >= b.w) continue;
-    const int x0 = b.x * kGlareCellPx, y0 = b.z * kGlareCellPx;
-    boxes.emplace_back(x0, y0, std::min(b.y * kGlareCellPx, width_) - x0, std::min(b.w * kGlareCellPx, height_) - y0);
+    const int x0 = b.x * grid_.cellPx, y0 = b.z * grid_.cellPx;
+    boxes.emplace_back(x0, y0, std::min(b.y * grid_.cellPx, width_) - x0, std::min(b.w * grid_.cellPx, height_) - y0);
   }
   return boxes;
 }
 
 void TonePass::drawNearBoxes() {
   if (sources_ == 0) return;
-  program(variant_, sources_, false).use();
+  program(Veil::kPerPixel, false).use();
   glEnable(GL_SCISSOR_TEST);
   for (const glm::ivec4& b : nearBoxPixels()) {
     glScissor(b.x, b.y, b.z, b.w);

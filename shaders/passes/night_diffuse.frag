@@ -9,7 +9,9 @@
 // resolution (passes/physical_sky.frag): what changes fast at the horizon is per pixel. Beside
 // it (SKYIG_OUTPUT_NIGHT_LAYER_TRANSMITTED) the same light dimmed at the texel, which the sky
 // pass reads as it is more than kNightLayerBandDeg above the horizon, where the transmittance
-// is smooth over a texel (render/passes/night_layer.h).
+// is smooth over a texel (render/passes/night_layer.h). The layer is a grid of views through
+// pixel corners (night/night_layer.glsl); with SKYIG_GLARE 1 its alpha holds the glare veil per
+// lux of the tone block's one glare source, which the sky pass then reads with the light.
 #include "common/bindings.h"
 #include "night/units.glsl"
 #include "night/milky_way.glsl"
@@ -33,8 +35,20 @@ layout(location = SKYIG_OUTPUT_COLOR) out vec4 outRadiance;
 layout(location = SKYIG_OUTPUT_NIGHT_LAYER_TRANSMITTED) out vec4 outTransmitted;
 #endif
 
+#ifdef SKYIG_NIGHT_LAYER
+#include "common/pixel_grid.glsl"
+#ifdef SKYIG_GLARE
+#include "tone/glare_veil.glsl"
+#endif
+#endif
+
 void main() {
+#ifdef SKYIG_NIGHT_LAYER
+  // A texel a vertex of the layer's grid (night/night_layer.glsl).
+  vec3 view = normalize(pixelGridView(gl_FragCoord.xy, SKYIG_NIGHT_LAYER_CELL_PX));
+#else
   vec3 view = normalize(vViewRay);
+#endif
 #ifdef SKYIG_NIGHT_LAYER
   const vec3 t = vec3(1.0);  // the sky pass applies it per pixel near the horizon, where it is steep
 #else
@@ -57,8 +71,13 @@ void main() {
   vec3 airglow = airglowRadiance(airglowZenith, view.z);
   vec3 sky = inBand(t * milkyWay, nightWeights.x) + inBand(t * zodiacal, lightWeights.w) + inBand(t * airglow, lightWeights.z);
 #ifdef SKYIG_NIGHT_LAYER
-  outRadiance = vec4(sky, 0.0);
-  outTransmitted = vec4(transmittanceToSpace(extinctionRec709, view) * sky, 0.0);
+#ifdef SKYIG_GLARE
+  float veil = glareVeilPerLux(view, 0);  // the tone's, where the sky pass reads the layer anyway
+#else
+  const float veil = 0.0;
+#endif
+  outRadiance = vec4(sky, veil);
+  outTransmitted = vec4(transmittanceToSpace(extinctionRec709, view) * sky, veil);
 #else
   outRadiance = vec4(sky + (view.z < 0.0 ? inBand(nightGroundRadiance, nightWeights.y) : vec3(0.0)), 0.0);
 #endif

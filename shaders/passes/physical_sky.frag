@@ -25,11 +25,12 @@
 //                   variant wrote no depth: the sky's pixels never pay for the ground's
 //                   reflection. Neither: both, for a target without depth.
 //   SKYIG_NIGHT_LAYER the night's own light added (the eye's band only): the sky's part above the
-//                   atmosphere read bilinearly from the small target NightDiffusePass::drawLayer
-//                   drew (it varies over the Milky Way map's 0.18 deg texels, coarser than a
-//                   pixel), dimmed by the transmittance to space, and the terrain's below the
-//                   horizon, both per pixel, as passes/night_diffuse.frag adds them over the
-//                   whole channel: one full-screen pass instead of two;
+//                   atmosphere read bilinearly from the small grid NightDiffusePass::drawLayer
+//                   drew (night/night_layer.glsl; it varies over the Milky Way map's 0.18 deg
+//                   texels, coarser than a pixel), dimmed by the transmittance to space, and the
+//                   terrain's below the horizon, both per pixel, as passes/night_diffuse.frag
+//                   adds them over the whole channel: one full-screen pass instead of two; with
+//                   SKYIG_GLARE_FROM_NIGHT_LAYER the same read gives the tone its glare veil;
 //   SKYIG_NIGHT_LAYER_TRANSMITTED with it, the layer's light already dimmed at its texels, for
 //                   the sky more than kNightLayerBandDeg above the horizon (render/passes/
 //                   night_layer.h), where the transmittance is smooth over a texel: drawn after
@@ -54,9 +55,14 @@
 #ifdef SKYIG_NIGHT_LAYER
 #include "common/frame_uniforms.h"
 #include "night/transmittance_to_space.glsl"
-layout(binding = SKYIG_UNIT_NIGHT_LAYER) uniform sampler2D nightLayer;
+#include "night/night_layer.glsl"
 layout(binding = SKYIG_UNIT_NIGHT_LAYER_EXTINCTION) uniform sampler1D nightExtinction;
 uniform vec3 nightGroundRadiance;  // linear Rec.709, cd/m^2: the terrain under the night's light
+// This pixel's read of the layer: its alpha is the glare veil per lux where the layer holds it.
+vec4 nightLayerHere;
+#ifdef SKYIG_GLARE_FROM_NIGHT_LAYER
+float nightLayerVeilPerLux(vec2 fragCoord) { return nightLayerHere.a; }
+#endif
 #endif
 #ifdef SKYIG_FOLD_TONE
 #include "tone/tone_display.glsl"
@@ -148,11 +154,14 @@ void main() {
   // weights' ratios to it (common/band.glsl).
   vec3 view = normalize(vViewRay);
   vec3 radiance = max(inBand(insideRec709(view), lightWeights.x), vec3(0.0));
+#ifdef SKYIG_NIGHT_LAYER
+  nightLayerHere = nightLayerAt(gl_FragCoord.xy);
 #if defined(SKYIG_NIGHT_LAYER_TRANSMITTED)
-  radiance += texture(nightLayer, gl_FragCoord.xy * viewport.zw).rgb + (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
-#elif defined(SKYIG_NIGHT_LAYER)
-  radiance += transmittanceToSpace(nightExtinction, view) * texture(nightLayer, gl_FragCoord.xy * viewport.zw).rgb +
+  radiance += nightLayerHere.rgb + (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
+#else
+  radiance += transmittanceToSpace(nightExtinction, view) * nightLayerHere.rgb +
               (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
+#endif
 #endif
   outRadiance = vec4(radiance, 1.0);
 #ifdef SKYIG_FOLD_TONE

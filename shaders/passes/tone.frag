@@ -11,11 +11,16 @@
 // Variants (SkyRenderer compiles each): SKYIG_TONE_CURVE or SKYIG_TONE_TUMBLIN_RUSHMEIER, the
 // display's operator (tone/display_curve.glsl); SKYIG_GLARE N, the number of glare sources
 // that give light (1 or 2), the veil per pixel, or with SKYIG_GLARE_FROM_GRID too, read
-// bilinearly from its values at a grid's vertices (passes/glare_veil.frag, render/passes/tone_pass.h);
+// bilinearly from its values at a grid's vertices (passes/glare_veil.frag, render/passes/tone_pass.h),
+// or with SKYIG_GLARE_FROM_NIGHT_LAYER (one source) from the night's layer, which holds it;
 // SKYIG_PHOTOPIC when no part of the view is dim enough for rod vision. A uniform branch would
 // cost llvmpipe both sides for every pixel.
 #include "common/uniforms.h"
 #include "tone/tone_display.glsl"
+#ifdef SKYIG_GLARE_FROM_NIGHT_LAYER
+#include "night/night_layer.glsl"
+float nightLayerVeilPerLux(vec2 fragCoord) { return nightLayerAt(fragCoord).a; }
+#endif
 
 layout(binding = SKYIG_UNIT_HDR_IMAGE) uniform sampler2D hdrImage;
 // The displayed stars and planets (passes/star_display.vert): display cd/m^2 to add.

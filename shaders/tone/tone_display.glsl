@@ -17,14 +17,22 @@
 
 #ifdef SKYIG_GLARE_FROM_GRID
 // The veil at the vertices of a grid of SKYIG_GLARE_CELL_PX-pixel cells (passes/glare_veil.frag).
+#include "common/pixel_grid.glsl"
 layout(binding = SKYIG_UNIT_GLARE_VEIL) uniform sampler2D glareVeilGrid;
+#elif defined(SKYIG_GLARE_FROM_NIGHT_LAYER)
+// The veil per lux of the block's one glare source (SKYIG_GLARE 1) at the vertices of the
+// night's layer, its alpha (night/night_layer.glsl), as the including pass reads it: the sky
+// pass from the read that gives it the night's light, the tone pass with a read of its own.
+float nightLayerVeilPerLux(vec2 fragCoord);
 #elif defined(SKYIG_GLARE)
 #include "common/frame_uniforms.h"
 #endif
 
 vec4 toneDisplayValue(vec3 world, vec3 pointSources, vec2 fragCoord) {
 #if defined(SKYIG_GLARE_FROM_GRID)
-  world += texture(glareVeilGrid, (fragCoord / SKYIG_GLARE_CELL_PX + 0.5) / vec2(textureSize(glareVeilGrid, 0))).rgb;
+  world += pixelGridAt(glareVeilGrid, fragCoord, SKYIG_GLARE_CELL_PX).rgb;
+#elif defined(SKYIG_GLARE_FROM_NIGHT_LAYER)
+  world += glareLux[0].rgb * nightLayerVeilPerLux(fragCoord);
 #elif defined(SKYIG_GLARE)
   world += glareVeil(mat3(ndcToWorld) * vec3(fragCoord * viewport.zw * 2.0 - 1.0, 1.0));
 #endif

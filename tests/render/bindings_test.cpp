@@ -97,6 +97,14 @@ std::vector<ProgramCase> programs() {
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), sampler("glareVeilGrid", SKYIG_UNIT_GLARE_VEIL),
         output("outDisplay", SKYIG_OUTPUT_COLOR)},
        "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
+      // The same on a night whose layer holds the veil.
+      {{"passes/star_display.vert", "passes/tone.frag"},
+       {frame, block("ToneBlock", SKYIG_BINDING_TONE), input("aDirection", SKYIG_ATTRIB_STAR_DIRECTION),
+        input("aRec709Lux", SKYIG_ATTRIB_STAR_REC709_LUX), sampler("hdrImage", SKYIG_UNIT_STAR_BACKGROUND),
+        sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
+        output("outDisplay", SKYIG_OUTPUT_COLOR)},
+       "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_NIGHT_LAYER\n"
+       "#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n"},
       {{"passes/fullscreen.vert", "passes/glare_veil.frag"},
        {frame, block("ToneBlock", SKYIG_BINDING_TONE), output("outVeil", SKYIG_OUTPUT_COLOR)},
        "#define SKYIG_GLARE 2\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
@@ -149,19 +157,29 @@ std::vector<ProgramCase> programs() {
        with(physicalSky(true, true, false),
             {sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
              sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION)}),
-       "#define SKYIG_GROUND\n#define SKYIG_NIGHT_LAYER\n"},
+       "#define SKYIG_GROUND\n#define SKYIG_NIGHT_LAYER\n#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n"},
       {{"passes/ground_cap.vert", "passes/physical_sky.frag"},
        with(physicalSky(false, false, true, false),
             {sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
              sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION)}),
        "#define SKYIG_MOONLIT\n#define SKYIG_SKY\n#define SKYIG_HORIZON_BAND\n#define SKYIG_SUNLESS\n"
-       "#define SKYIG_NIGHT_LAYER\n"},
+       "#define SKYIG_NIGHT_LAYER\n#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n"},
       {{"passes/fullscreen.vert", "passes/physical_sky.frag"},
        with(physicalSky(false, false, true, false),
             {sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
              optional(sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION))}),
        "#define SKYIG_MOONLIT\n#define SKYIG_SKY\n#define SKYIG_SUNLESS\n#define SKYIG_NIGHT_LAYER\n"
-       "#define SKYIG_NIGHT_LAYER_TRANSMITTED\n"},
+       "#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n#define SKYIG_NIGHT_LAYER_TRANSMITTED\n"},
+      // The same mapping its pixels with the moon's glare veil read from the layer's alpha: the
+      // tone block, no grid.
+      {{"passes/fullscreen.vert", "passes/physical_sky.frag"},
+       with(physicalSky(false, false, true, false),
+            {sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
+             optional(sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION)),
+             block("ToneBlock", SKYIG_BINDING_TONE), output("outDisplay", SKYIG_OUTPUT_FOLDED_DISPLAY)}),
+       "#define SKYIG_MOONLIT\n#define SKYIG_SKY\n#define SKYIG_SUNLESS\n#define SKYIG_NIGHT_LAYER\n"
+       "#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n#define SKYIG_NIGHT_LAYER_TRANSMITTED\n#define SKYIG_FOLD_TONE\n"
+       "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_NIGHT_LAYER\n"},
       {{"passes/fullscreen.vert", "reference/physical_sky_reference.frag"}, physicalSky(true, true, true)},
       {{"passes/fullscreen.vert", "passes/physical_sky_space.frag"},
        {frame, band, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE), sampler("scatteringPacked", SKYIG_UNIT_SCATTERING),
@@ -183,7 +201,13 @@ std::vector<ProgramCase> programs() {
        {frame, band, sampler("milkyWayS10", SKYIG_UNIT_MILKY_WAY), sampler("zodiacalS10", SKYIG_UNIT_ZODIACAL),
         sampler("extinctionRec709", SKYIG_UNIT_NIGHT_EXTINCTION), radiance,
         output("outTransmitted", SKYIG_OUTPUT_NIGHT_LAYER_TRANSMITTED)},
-       "#define SKYIG_NIGHT_LAYER\n"},
+       "#define SKYIG_NIGHT_LAYER\n#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n"},
+      // With the glare veil of the tone block's one source in its alpha.
+      {{"passes/fullscreen.vert", "passes/night_diffuse.frag"},
+       {frame, band, block("ToneBlock", SKYIG_BINDING_TONE), sampler("milkyWayS10", SKYIG_UNIT_MILKY_WAY),
+        sampler("zodiacalS10", SKYIG_UNIT_ZODIACAL), sampler("extinctionRec709", SKYIG_UNIT_NIGHT_EXTINCTION), radiance,
+        output("outTransmitted", SKYIG_OUTPUT_NIGHT_LAYER_TRANSMITTED)},
+       "#define SKYIG_NIGHT_LAYER\n#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n#define SKYIG_GLARE 1\n"},
       // GogglePass: the photocathode, its 8 x 8 means, the halo's two passes, the gain, the screen.
       {{"passes/fullscreen.vert", "passes/goggle_input.frag"},
        {optional(frame), block("GoggleBlock", SKYIG_BINDING_GOGGLE), sampler("nvisImage", SKYIG_UNIT_GOGGLE_NVIS),
@@ -215,6 +239,14 @@ std::vector<ProgramCase> programs() {
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), sampler("glareVeilGrid", SKYIG_UNIT_GLARE_VEIL),
         output("outDisplay", SKYIG_OUTPUT_COLOR)},
        "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
+      // The same on a night whose layer holds the veil.
+      {{"passes/star_display.vert", "passes/tone.frag"},
+       {frame, block("ToneBlock", SKYIG_BINDING_TONE), input("aDirection", SKYIG_ATTRIB_STAR_DIRECTION),
+        input("aRec709Lux", SKYIG_ATTRIB_STAR_REC709_LUX), sampler("hdrImage", SKYIG_UNIT_STAR_BACKGROUND),
+        sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
+        output("outDisplay", SKYIG_OUTPUT_COLOR)},
+       "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_NIGHT_LAYER\n"
+       "#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n"},
       // AtmosphereGpuPrecompute, in the order it runs them.
       {{"atmosphere/precompute_transmittance.comp"}, {image("transmittance_out", SKYIG_IMAGE_TRANSMITTANCE)}},
       {{"atmosphere/precompute_direct_irradiance.comp"},

@@ -250,11 +250,10 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
   }
   const MappedSky sky = drawMappedSky(state, attitude, channel, toneTarget, ditherLsb);
   const glm::dmat3& ndcToWorld = sky.ndcToWorld;
-  const bool nightLight = state.ephemeris && state.shown.nightLight;
   hdr_->bindForDrawing();
   glm::ivec4 moonPixels(0);
   if (state.ephemeris) moonPixels = (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, channel);
-  if (nightLight && !(sky.nightLayer && sky.drewAll))
+  if (sky.nightLight && !(sky.nightLayer && sky.drewAll))
     (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
   if (!stars_) stars_ = std::make_unique<StarPass>();
   glBindVertexArray(emptyVao_);
@@ -328,7 +327,7 @@ SkyRenderer::MappedSky SkyRenderer::drawMappedSky(const skyig::sky::SkyState& st
   else
     hdr_->bindForDrawing();
   const bool drewAll = drawSky(state, channel, fold ? tone_->folded() : FoldedTone{}, night);
-  return {ndcToWorld, night.texture != 0, drewAll, fold && drewAll};
+  return {ndcToWorld, nightLight, night.texture != 0, drewAll, fold && drewAll};
 }
 
 void SkyRenderer::drawGoggleChannel(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,

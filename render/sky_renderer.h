@@ -137,6 +137,7 @@ class SkyRenderer {
   // sky pass, mapping its own pixels into `toneTarget` where it can (`folded`).
   struct MappedSky {
     glm::dmat3 ndcToWorld;
+    bool nightLight = false;  // the night's own light is drawn (sky/shown_layers.h)
     bool nightLayer = false;  // the sky pass was given the night's layer
     bool drewAll = false;     // drawSky's answer
     bool folded = false;      // the sky pass mapped every pixel to the display

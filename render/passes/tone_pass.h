@@ -29,6 +29,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace skyig::render {
@@ -73,7 +74,7 @@ class TonePass {
   void draw(const RenderTarget& target);
   // What the physical sky pass needs to map its pixels as draw() would (PhysicalSkyPass::draw's
   // `tone`): the defines, and those of the veil per pixel with the boxes where they apply; the
-  // veil's grid is bound at its unit by prepare().
+  // veil's grid, or the night's layer that holds it, is bound at its unit by prepare().
   FoldedTone folded() const;
   // After a folded sky pass: `target` again only where later passes drew. The rectangles (x, y,
   // width, height in pixels; the moon's quad), the quads `drawQuads` draws with the program it

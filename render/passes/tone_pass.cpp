@@ -17,35 +17,37 @@ GlareGrid glareGrid(const glm::dmat3& ndcToWorld, int width, int height, const s
   g.columns = (width + g.cellPx - 1) / g.cellPx;
   g.rows = (height + g.cellPx - 1) / g.cellPx;
   const int vx = g.columns + 1, vy = g.rows + 1;
-  // The grid's vertices as unit view directions, as common/pixel_grid.glsl places them.
-  std::vector<glm::dvec3> v(static_cast<std::size_t>(vx) * vy);
-  for (int j = 0; j < vy; ++j)
-    for (int i = 0; i < vx; ++i) {
-      const double px = i * g.cellPx, py = j * g.cellPx;
-      v[static_cast<std::size_t>(j) * vx + i] =
-          glm::normalize(ndcToWorld * glm::dvec3(2.0 * px / width - 1.0, 2.0 * py / height - 1.0, 1.0));
-    }
-  // The widest cell edge's angle.
-  double minCos = 1.0;
-  for (int j = 0; j < vy; ++j)
-    for (int i = 0; i < vx; ++i) {
-      const glm::dvec3& a = v[static_cast<std::size_t>(j) * vx + i];
-      if (i + 1 < vx) minCos = std::min(minCos, glm::dot(a, v[static_cast<std::size_t>(j) * vx + i + 1]));
-      if (j + 1 < vy) minCos = std::min(minCos, glm::dot(a, v[static_cast<std::size_t>(j + 1) * vx + i]));
-    }
-  g.cellAngleRad = std::acos(std::clamp(minCos, -1.0, 1.0));
+  // The grid's vertex (i, j) as common/pixel_grid.glsl places it, unnormalised: the view through
+  // the pixel corner (i, j) x cellPx is corner + i stepX + j stepY, on the image plane.
+  const glm::dvec3 corner = ndcToWorld * glm::dvec3(-1.0, -1.0, 1.0);
+  const glm::dvec3 stepX = ndcToWorld * glm::dvec3(2.0 * g.cellPx / std::max(width, 1), 0.0, 0.0);
+  const glm::dvec3 stepY = ndcToWorld * glm::dvec3(0.0, 2.0 * g.cellPx / std::max(height, 1), 0.0);
+  // The widest cell edge: a segment of length L on a plane at distance f from the eye subtends at
+  // most 2 atan(L / 2f), the angle of the segment centred on the plane's point nearest the eye
+  // (so this bounds every edge, and equals the widest where that point is in view).
+  const double f = std::abs(glm::dot(glm::normalize(glm::cross(stepX, stepY)), corner));
+  g.cellAngleRad = 2.0 * std::atan(std::max(glm::length(stepX), glm::length(stepY)) / (2.0 * f));
   const double cosNear = std::cos(std::min(kGlareExactCells * g.cellAngleRad, 3.14159265358979));
   for (std::size_t s = 0; s < std::min<std::size_t>(sources.size(), 2); ++s) {
+    const glm::dvec3 source = glm::normalize(sources[s]);
     int x0 = g.columns, x1 = 0, y0 = g.rows, y1 = 0;
-    for (int j = 0; j < vy; ++j)
-      for (int i = 0; i < vx; ++i)
-        if (glm::dot(v[static_cast<std::size_t>(j) * vx + i], sources[s]) > cosNear) {
-          // The cells that share this vertex.
-          x0 = std::min(x0, i - 1);
-          x1 = std::max(x1, i + 1);
-          y0 = std::min(y0, j - 1);
-          y1 = std::max(y1, j + 1);
-        }
+    // A vertex d is near where d . s > cosNear |d|: along a row, d . s and |d|^2 are a line and a
+    // parabola in i, so the test takes a few products, no square root (but past 90 degrees).
+    const double b = glm::dot(stepX, source), c = glm::dot(stepX, stepX);
+    for (int j = 0; j < vy; ++j) {
+      const glm::dvec3 rowStart = corner + static_cast<double>(j) * stepY;
+      const double a = glm::dot(rowStart, source), a2 = glm::dot(rowStart, rowStart), b2 = 2.0 * glm::dot(rowStart, stepX);
+      for (int i = 0; i < vx; ++i) {
+        const double x = i, ds = a + x * b, d2 = a2 + x * (b2 + x * c);
+        const bool near = cosNear > 0.0 ? ds > 0.0 && ds * ds > cosNear * cosNear * d2 : ds > cosNear * std::sqrt(d2);
+        if (!near) continue;
+        // The cells that share this vertex.
+        x0 = std::min(x0, i - 1);
+        x1 = std::max(x1, i + 1);
+        y0 = std::min(y0, j - 1);
+        y1 = std::max(y1, j + 1);
+      }
+    }
     if (x1 > x0 && y1 > y0)
       g.nearBoxes[s] = glm::ivec4(std::max(x0, 0), std::min(x1, g.columns), std::max(y0, 0), std::min(y1, g.rows));
   }

@@ -242,6 +242,33 @@ TEST_F(GlRender, GlareVeilFromTheGridEqualsThePerPixelVeil) {
   EXPECT_LT(std::abs(gridError / (3 * fromGrid)), 0.02);
 }
 
+// GlareGrid::cellAngleRad bounds the angle of every cell edge of the grid (the vertices of
+// common/pixel_grid.glsl, measured one by one), and is the widest within 0.1% where the eye's axis
+// is in view (no edge need be centred on it): a frustum around the axis, and one beside it (10 to
+// 50 deg right), for 8- and 3-pixel cells of about 2 and 0.8 deg.
+TEST(GlareGrid, CellAngleBoundsEveryCellEdge) {
+  const int w = 301, h = 203;
+  for (const Frustum f : {Frustum{35, 25, 20, 28}, Frustum{-10, 50, 20, 28}})
+    for (const int cellPx : {kGlareCellPx, 3}) {
+      const glm::dmat3 m = ndcToWorld(eyeToEnu({30.0, 10.0, 0.0}, {}), f);
+      const GlareGrid g = glareGrid(m, w, h, {}, cellPx);
+      const auto vertex = [&](int i, int j) {
+        return glm::normalize(m * glm::dvec3(2.0 * i * cellPx / w - 1.0, 2.0 * j * cellPx / h - 1.0, 1.0));
+      };
+      double widest = 0.0;
+      for (int j = 0; j <= g.rows; ++j)
+        for (int i = 0; i <= g.columns; ++i)
+          for (const glm::dvec3 next : {vertex(i + 1, j), vertex(i, j + 1)}) {
+            const glm::dvec3 v = vertex(i, j);
+            widest = std::max(widest, std::atan2(glm::length(glm::cross(v, next)), glm::dot(v, next)));
+          }
+      EXPECT_GE(g.cellAngleRad, widest * (1.0 - 1e-12)) << cellPx;
+      if (f.leftDeg > 0.0) {
+        EXPECT_NEAR(g.cellAngleRad, widest, widest * 1e-3) << cellPx;
+      }
+    }
+}
+
 // The box of cells around a source holds every pixel within kGlareExactCells - 1 cells' angle
 // of it, wherever the source is: in view, at the edge, just outside, behind; for the veil's own
 // grid and for a night's layer of 3-pixel cells.

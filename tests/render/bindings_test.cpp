@@ -97,10 +97,10 @@ std::vector<ProgramCase> programs() {
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), sampler("glareVeilGrid", SKYIG_UNIT_GLARE_VEIL),
         output("outDisplay", SKYIG_OUTPUT_COLOR)},
        "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
-      // The same on a night whose layer holds the veil.
-      {{"passes/star_display.vert", "passes/tone.frag"},
-       {frame, block("ToneBlock", SKYIG_BINDING_TONE), input("aDirection", SKYIG_ATTRIB_STAR_DIRECTION),
-        input("aRec709Lux", SKYIG_ATTRIB_STAR_REC709_LUX), sampler("hdrImage", SKYIG_UNIT_STAR_BACKGROUND),
+      // The same on a night whose layer holds the veil (the tone pass over every pixel: the sky
+      // from space).
+      {{"passes/fullscreen.vert", "passes/tone.frag"},
+       {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
         output("outDisplay", SKYIG_OUTPUT_COLOR)},
        "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_NIGHT_LAYER\n"

@@ -1,8 +1,9 @@
 #pragma once
 // The display mapping a physical sky pass does in its own fragment (passes/physical_sky.frag,
 // SKYIG_FOLD_TONE), as the tone pass gives it (TonePass::folded): its variant with the glare
-// veil read from the grid everywhere, and the variant with the veil per pixel in the boxes
-// around the glare sources, where the grid's interpolation would err (render/passes/tone_pass.h).
+// veil read from a grid everywhere (its own, or the night's layer that holds it), and the variant
+// with the veil per pixel in the boxes around the glare sources, where the grid's interpolation
+// would err (render/passes/tone_pass.h).
 // Mapping the boxes in the sky pass maps each of their pixels once, where mapping them with the
 // grid's veil and again in the tone pass mapped them twice.
 #include <glm/vec4.hpp>

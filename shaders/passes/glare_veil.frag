@@ -1,7 +1,7 @@
 // The glare veil (tone/glare_veil.glsl) at the vertices of the tone pass's grid, one texel per
 // vertex: texel (i, j) is the view through the channel's pixel corner (i, j) x
-// SKYIG_GLARE_CELL_PX (common/pixel_grid.glsl, render/passes/tone_pass.h). The tone pass reads it bilinearly away from
-// the sources (passes/tone.frag, SKYIG_GLARE_FROM_GRID).
+// SKYIG_GLARE_CELL_PX (common/pixel_grid.glsl, render/passes/tone_pass.h). The tone pass reads
+// it bilinearly away from the sources (passes/tone.frag, SKYIG_GLARE_FROM_GRID).
 #include "common/uniforms.h"
 #include "common/pixel_grid.glsl"
 #include "tone/glare_veil.glsl"

@@ -8,9 +8,9 @@
 #include "common/tone_uniforms.h"
 #include "tone/glare.glsl"
 
-// `view` of any length: the angle, the atan of |cross| over dot (accurate at the small angles
-// where acos of a float is not), does not depend on it.
-// The veil per lux of the block's glare source i along `view`.
+// The veil per lux of the block's glare source i along `view`, of any length: the angle, the
+// atan of |cross| over dot (accurate at the small angles where acos of a float is not), does not
+// depend on it.
 float glareVeilPerLux(vec3 view, int i) {
   vec3 d = glareDirection[i].xyz;
   float thetaDeg = degrees(atan(length(cross(view, d)), dot(view, d)));

@@ -667,6 +667,27 @@ TEST_F(GlRender, HazyHorizonHasNoDarkLine) {
 
 namespace {
 
+// A 1280 x 800 channel over 60 deg, 10 deg up (0.047 deg a pixel: the night's layer has cells of
+// 3 pixels), and the state of `utc` under the small tables with the observer at `yaw` and
+// `pitch`, mapped for the channel's display.
+struct NightView {
+  ChannelConfig channel;
+  SkyState state;
+};
+NightView nightView(const char* utc, double yaw, double pitch) {
+  ChannelConfig c;
+  c.width = 1280;
+  c.height = 800;
+  c.frustum = Frustum{30, 30, 19.3, 19.3};
+  c.offset.pitchDeg = 10.0;
+  ObserverState o;
+  o.utc = *ephemeris::parseIso8601Utc(utc);
+  o.attitude = {yaw, pitch, 0.0};
+  SkyState s = buildSkyState(o, physicalConditions(smallModel()));
+  mapForDisplays(s, {c.display});
+  return {c, s};
+}
+
 // The state of `utc` (ISO 8601) at the default site under the small physical tables, looking
 // along `yaw`, mapped for `c`'s display as the sky worker maps it.
 SkyState mappedState(const char* utc, double yaw, const ChannelConfig& c) {
@@ -805,14 +826,7 @@ TEST_F(GlRender, SkyPassMappingItsOwnPixelsShowsWhatTheTonePassShows) {
 // of a code over the frame's 3 million values (measured 0.0003). Facing the moon 30 deg up, its
 // veil over the whole frame; a layer without the veil, or read half a cell off, fails.
 TEST_F(GlRender, GlareVeilFromTheNightLayerShowsWhatItsOwnGridShows) {
-  ChannelConfig c = channel(10.0, Frustum{30, 30, 19.3, 19.3});
-  c.width = 1280;
-  c.height = 800;
-  ObserverState o;
-  o.utc = *ephemeris::parseIso8601Utc("2026-01-03T21:00:00Z");
-  o.attitude = {108.0, 20.0, 0.0};
-  SkyState s = buildSkyState(o, physicalConditions(smallModel()));
-  mapForDisplays(s, {c.display});
+  const auto [c, s] = nightView("2026-01-03T21:00:00Z", 108.0, 20.0);
   ASSERT_TRUE(s.shown.nightLight);
   int lit = 0;
   for (const eye::GlareSource& g : s.glare) lit += g.rec709Lux != glm::dvec3(0.0) ? 1 : 0;
@@ -914,14 +928,7 @@ TEST_F(GlRender, StarsBelowTheFaintestSeenAreNotSentAndChangeNothing) {
 // From 8 to 16 deg up (kNightLayerBandDeg and twice it), where the sky pass reads the layer
 // already dimmed at its texels, 99% within 0.2% (measured 0.009%).
 TEST_F(GlRender, NightLayerShowsTheNightsLightOfEveryPixel) {
-  ChannelConfig c = channel(10.0, Frustum{30, 30, 19.3, 19.3});
-  c.width = 1280;
-  c.height = 800;
-  ObserverState o;
-  o.utc = *ephemeris::parseIso8601Utc("2026-12-09T22:00:00Z");
-  o.attitude = {180.0, 0.0, 0.0};
-  SkyState s = buildSkyState(o, physicalConditions(smallModel()));
-  mapForDisplays(s, {c.display});
+  const auto [c, s] = nightView("2026-12-09T22:00:00Z", 180.0, 0.0);
   ASSERT_TRUE(s.shown.nightLight);
   ASSERT_LT(s.moonDirection.z, -0.2);  // no moon
   renderer_->draw(s, c);

@@ -50,7 +50,8 @@ class PhysicalSkyPass {
   // tone.defines, when not empty, are the tone pass's variant (TonePass::folded): the pass then
   // also maps each pixel to the display and writes it at SKYIG_OUTPUT_FOLDED_DISPLAY
   // (passes/physical_sky.frag, SKYIG_FOLD_TONE), with tone.exactDefines in tone.exactBoxes; the
-  // tone block must be bound, and the veil's grid at its unit if the defines read it. `night`, when it has a texture, adds the night's
+  // tone block must be bound, and the veil's grid at its unit if the defines read it (or the
+  // night's layer, which then holds the veil). `night`, when it has a texture, adds the night's
   // own light (SKYIG_NIGHT_LAYER). `sunlit` false leaves out the sun's sky, ground and disc
   // (SKYIG_SUNLESS), when its twilight changes no display code (sky/shown_layers.h); inside the
   // atmosphere only. Returns whether it drew what was asked (never from space, whose program has

@@ -71,6 +71,7 @@ GLsizei StarPass::prepare(Upload& upload, const std::shared_ptr<const skyig::sky
   }
   GLint viewport[4] = {0, 0, 0, 0};
   glGetIntegerv(GL_VIEWPORT, viewport);
+  const glm::dmat3 worldToNdc = glm::inverse(ndcToWorld);
   if (upload.fill != sources.fill || upload.band != band || upload.ndcToWorld != ndcToWorld ||
       upload.floorLux != floorLux || upload.width != viewport[2] || upload.height != viewport[3] ||
       upload.culled != viewCulling_) {
@@ -79,7 +80,6 @@ GLsizei StarPass::prepare(Upload& upload, const std::shared_ptr<const skyig::sky
     const std::size_t above = static_cast<std::size_t>(
         std::partition_point(sources.lux.begin(), sources.lux.end(), [floorLux](double lux) { return lux > floorLux; }) -
         sources.lux.begin());
-    const glm::dmat3 worldToNdc = glm::inverse(ndcToWorld);
     const double reachPx = starQuadReachPx(ndcToWorld, std::max(viewport[2], 1), std::max(viewport[3], 1));
     const double reachX = 2.0 * reachPx / std::max(viewport[2], 1), reachY = 2.0 * reachPx / std::max(viewport[3], 1);
     inView_.clear();
@@ -103,8 +103,8 @@ GLsizei StarPass::prepare(Upload& upload, const std::shared_ptr<const skyig::sky
   if (upload.count == 0) return 0;
   glVertexArrayVertexBuffer(vao_, 0, upload.buffer, 0, 6 * sizeof(float));
   program.use();
-  const glm::mat3 worldToNdc(glm::inverse(ndcToWorld));
-  glUniformMatrix3fv(worldToNdcLocation, 1, GL_FALSE, glm::value_ptr(worldToNdc));
+  const glm::mat3 worldToNdcF(worldToNdc);
+  glUniformMatrix3fv(worldToNdcLocation, 1, GL_FALSE, glm::value_ptr(worldToNdcF));
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFunc(GL_ONE, GL_ONE);
@@ -122,15 +122,14 @@ void StarPass::draw(const std::shared_ptr<const skyig::sky::night::StarField>& f
   glDisable(GL_BLEND);
 }
 
-int StarPass::drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field,
-                            const glm::dmat3& ndcToWorld, GLuint background, double floorLux) {
+void StarPass::drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field,
+                             const glm::dmat3& ndcToWorld, GLuint background, double floorLux) {
   const GLsizei count = prepare(displayed_, field, skyig::sky::SpectralBand::Visible, displayProgram_,
                                 displayWorldToNdcLocation_, ndcToWorld, floorLux);
-  if (count == 0) return 0;
+  if (count == 0) return;
   glBindTextureUnit(SKYIG_UNIT_STAR_BACKGROUND, background);
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
   glDisable(GL_BLEND);
-  return count;
 }
 
 void StarPass::drawFootprints(const std::shared_ptr<const skyig::sky::night::StarField>& field,

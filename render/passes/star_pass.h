@@ -37,9 +37,9 @@ class StarPass {
   // be bound; `background` is the HDR image of the sky without the sources (cd/m^2). Only the
   // sources brighter than `floorLux` (illuminance at the eye) are sent to the GPU: those at or
   // below it cannot pass the eye's threshold anywhere in the view (ShownLayers::
-  // pointSourceFloorLux), and the pass's own test would leave them out. Returns how many were sent.
-  int drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
-                    GLuint background, double floorLux = 0.0);
+  // pointSourceFloorLux), and the pass's own test would leave them out.
+  void drawDisplayed(const std::shared_ptr<const skyig::sky::night::StarField>& field, const glm::dmat3& ndcToWorld,
+                     GLuint background, double floorLux = 0.0);
   // The quads drawDisplayed() drew with the same arguments, drawn again without blending by
   // `program`: passes/star_display.vert compiled as drawDisplayed() compiles it, with another
   // fragment (the tone pass's, where the sky pass mapped its own pixels: TonePass::drawOver).

@@ -1,9 +1,9 @@
-// The public SkyDraw: render::HostFrameRenderer (render/host_frame.h) behind the public types.
+// The public SkyDraw: render::ClientFrameRenderer (render/client/client_frame.h) behind the public types.
 #include "skyig/gl_sky.h"
 
 #include "api/sky_impl.h"
-#include "render/host_aerial_perspective.h"
-#include "render/host_frame.h"
+#include "render/client/client_aerial_perspective.h"
+#include "render/client/client_frame.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -12,7 +12,7 @@
 namespace skyig {
 
 struct SkyDraw::Impl {
-  render::HostFrameRenderer renderer;
+  render::ClientFrameRenderer renderer;
 };
 
 namespace {
@@ -22,10 +22,10 @@ glm::dmat4 matrix(const float* m, const char* name) {
   return glm::dmat4(glm::make_mat4(m));
 }
 
-render::HostFrameOptions options(const Sky& sky, const DrawOptions& o) {
-  render::HostFrameOptions r;
+render::ClientFrameOptions options(const Sky& sky, const DrawOptions& o) {
+  render::ClientFrameOptions r;
   r.depth = o.depth == DepthConvention::ReverseZ ? render::DepthConvention::ReverseZ : render::DepthConvention::Standard;
-  r.output = o.output == Output::LinearLight ? render::HostOutput::LinearLight : render::HostOutput::DisplayReferred;
+  r.output = o.output == Output::LinearLight ? render::ClientOutput::LinearLight : render::ClientOutput::DisplayReferred;
   // The configuration's first channel's display (its tone curve's): the one its worker maps for.
   const auto channels = sky.impl().config.channelsOf(sky.impl().config.nodeName);
   if (!channels.empty()) r.display = channels.front().display;
@@ -52,7 +52,7 @@ void SkyDraw::draw(const Sky& sky, const float* view, const float* projection, c
                    const DrawOptions& o) {
   try {
     impl_->renderer.draw(sky.impl().state, matrix(view, "view"), matrix(projection, "projection"),
-                         render::HostViewport{viewport.x, viewport.y, viewport.width, viewport.height}, options(sky, o));
+                         render::ClientViewport{viewport.x, viewport.y, viewport.width, viewport.height}, options(sky, o));
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {
@@ -74,7 +74,7 @@ unsigned SkyDraw::texture(const Sky& sky, const float* view, const float* projec
 
 std::string SkyDraw::aerialPerspectiveGlsl() {
   try {
-    return render::hostAerialPerspectiveGlsl();
+    return render::clientAerialPerspectiveGlsl();
   } catch (const std::exception& e) {
     throw Error(std::string("skyig::SkyDraw::aerialPerspectiveGlsl: ") + e.what());
   }

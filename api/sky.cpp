@@ -4,9 +4,10 @@
 #include "skyig/sky.h"
 
 #include "api/sky_impl.h"
-#include "services/atmosphere_loader.h"
-#include "services/sky_data.h"
-#include "sky/host_light.h"
+#include "node/config/node_tables.h"
+#include "node/config/sky_data.h"
+#include "sky/client_light.h"
+#include "physics/common/units.h"
 
 #include <cmath>
 #include <cstdio>
@@ -19,7 +20,7 @@ namespace {
 Vec3 toVec3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 glm::dvec3 toGlm(const Vec3& v) { return {v[0], v[1], v[2]}; }
 
-DirectLight toPublic(const sky::HostDirectLight& l) {
+DirectLight toPublic(const sky::ClientDirectLight& l) {
   return {toVec3(l.direction), l.normalLux, l.horizontalLux, toVec3(l.colour)};
 }
 
@@ -76,8 +77,8 @@ Sky::Impl::Impl(const Settings& settings) : config(configOf(settings)) {
 
 Sky::Impl::~Impl() = default;
 
-const sky::HostLight& Sky::Impl::hostLight() const {
-  if (!light) light = sky::hostLight(state, state.conditions.atmosphere.get());
+const sky::ClientLight& Sky::Impl::clientLight() const {
+  if (!light) light = sky::clientLight(state, state.conditions.atmosphere.get());
   return *light;
 }
 
@@ -100,7 +101,7 @@ void Sky::update(const Observer& o, double hostSeconds, const Weather& weather) 
   require(weather.humidityPct >= 0.0 && weather.humidityPct <= 100.0, "weather.humidityPct", weather.humidityPct, "0 to 100");
 
   Impl& m = *impl_;
-  // The host's call as the CIGI receiver would have published it (services/host_snapshot.h),
+  // The host's call as the CIGI receiver would have published it (node/host/host_snapshot.h),
   // stamped on the host's clock: the worker steps the eye on it.
   services::HostSnapshot next = m.host;
   services::HostState& s = next.state;
@@ -119,7 +120,7 @@ void Sky::update(const Observer& o, double hostSeconds, const Weather& weather) 
   // No weather: HostState's defaults, which keep the configuration's atmosphere (as a host that
   // never sent an Atmosphere Control).
   const services::HostState unsaid;
-  s.visibilityM = weather.visibilityKm > 0.0 ? weather.visibilityKm * 1000.0 : unsaid.visibilityM;
+  s.visibilityM = weather.visibilityKm > 0.0 ? metresFromKm(weather.visibilityKm) : unsaid.visibilityM;
   s.humidityPct = weather.visibilityKm > 0.0 ? weather.humidityPct : unsaid.humidityPct;
   next.predictor = services::OwnshipPredictor{};
   next.predictor.addSample(s.ownship, received, {});
@@ -138,7 +139,7 @@ void Sky::update(const Observer& o, double hostSeconds, const Weather& weather) 
 }
 
 Light Sky::light() const {
-  const sky::HostLight& h = impl_->hostLight();
+  const sky::ClientLight& h = impl_->clientLight();
   Light l;
   l.sun = toPublic(h.sun);
   l.moon = toPublic(h.moon);
@@ -154,7 +155,7 @@ AerialPerspective Sky::aerialPerspective(const Vec3& offsetEnuM) const {
   const auto* model = impl_->state.conditions.atmosphere.get();
   if (!model || impl_->state.conditions.model != sky::SkyModel::Physical)
     throw Error("skyig::Sky::aerialPerspective needs the physical sky (Settings::model \"physical\")");
-  const sky::HostAerialPerspective a = sky::hostAerialPerspective(impl_->state, *model, toGlm(offsetEnuM));
+  const sky::ClientAerialPerspective a = sky::clientAerialPerspective(impl_->state, *model, toGlm(offsetEnuM));
   return {toVec3(a.transmittance), toVec3(a.inScattered)};
 }
 

@@ -3,11 +3,11 @@
 // builds its states as the node's does, and the last state with its light.
 #include "skyig/sky.h"
 
-#include "services/host_snapshot.h"
-#include "services/node_config.h"
-#include "services/node_stats.h"
-#include "services/sky_worker.h"
-#include "sky/host_light.h"
+#include "node/host/host_snapshot.h"
+#include "node/config/node_config.h"
+#include "node/host/node_stats.h"
+#include "node/frame/sky_worker.h"
+#include "sky/client_light.h"
 #include "sky/sky_state.h"
 
 #include <memory>
@@ -19,7 +19,7 @@ struct Sky::Impl {
   explicit Impl(const Settings& settings);
   ~Impl();
   // The light of `state`, computed at the first call after an update (a few ms).
-  const sky::HostLight& hostLight() const;
+  const sky::ClientLight& clientLight() const;
 
   services::NodeConfig config;  // the worker keeps a reference: Impl never moves (held by pointer)
   services::NodeStats stats;
@@ -27,7 +27,7 @@ struct Sky::Impl {
   std::unique_ptr<services::SkyWorker> worker;
   services::HostSnapshot host;  // the last update, as a host snapshot
   sky::SkyState state;
-  mutable std::optional<sky::HostLight> light;
+  mutable std::optional<sky::ClientLight> light;
 };
 
 }  // namespace skyig

@@ -3,8 +3,10 @@
 #include "calibration/region_camera.h"
 
 #include "calibration/calibration_error.h"
+#include "physics/common/units.h"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -13,7 +15,7 @@ namespace skyig::calibration {
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using skyig::kDeg;
 
 std::string projectorName(const DomeProjector& p, std::size_t index) {
   return p.name.empty() ? "projector " + std::to_string(index + 1) : "projector '" + p.name + "'";
@@ -149,12 +151,138 @@ double edgeWeight(double xNdc, double yNdc) {
   return ramp(1.0 - std::abs(xNdc)) * ramp(1.0 - std::abs(yNdc));
 }
 
-std::vector<ProjectorCalibration> generateDome(const Dome& dome, DomeSummary* summary,
-                                               const std::function<void(double)>& progress) {
+namespace {
+
+void validate(const Dome& dome) {
   if (dome.projectors.empty()) throw CalibrationError("dome: no projectors");
   if (dome.warpStep < 1) throw CalibrationError("dome: warp step " + std::to_string(dome.warpStep) + " is not a positive pixel count");
   if (!(dome.contrast >= 1.0) || !std::isfinite(dome.contrast))
     throw CalibrationError("dome: contrast " + std::to_string(dome.contrast) + " is not a ratio of at least 1");
+}
+
+// A projector's warp grid: the dome direction (from the eye) of every sample that meets the dome.
+struct WarpGrid {
+  int width = 0, height = 0;
+  std::vector<glm::dvec3> directions;
+  std::vector<bool> hit;
+  std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i); }
+};
+
+WarpGrid traceWarpGrid(const DomeGeometry& geometry, std::size_t p, const DomeProjector& pr, int step) {
+  WarpGrid g{warpGridSamples(pr.width, step), warpGridSamples(pr.height, step), {}, {}};
+  g.directions.resize(static_cast<std::size_t>(g.width) * static_cast<std::size_t>(g.height));
+  g.hit.resize(g.directions.size());
+  for (int j = 0; j < g.height; ++j)
+    for (int i = 0; i < g.width; ++i) {
+      const PixelPoint hit = geometry.trace(p, warpGridPixel(i, g.width, pr.width), warpGridPixel(j, g.height, pr.height));
+      g.hit[g.index(i, j)] = hit.hit;
+      if (hit.hit) g.directions[g.index(i, j)] = geometry.eyeDirection(hit.point);
+    }
+  return g;
+}
+
+// The directions the projector lights: its warp grid's and its image's border pixels'.
+std::vector<glm::dvec3> footprint(const DomeGeometry& geometry, std::size_t p, const DomeProjector& pr, const WarpGrid& grid) {
+  std::vector<glm::dvec3> out;
+  for (std::size_t k = 0; k < grid.directions.size(); ++k)
+    if (grid.hit[k]) out.push_back(grid.directions[k]);
+  for (int i = 0; i < pr.width; ++i)
+    for (double row : {0.0, static_cast<double>(pr.height)})
+      if (auto hit = geometry.trace(p, i + 0.5, row); hit.hit) out.push_back(geometry.eyeDirection(hit.point));
+  for (int j = 0; j < pr.height; ++j)
+    for (double column : {0.0, static_cast<double>(pr.width)})
+      if (auto hit = geometry.trace(p, column, j + 0.5); hit.hit) out.push_back(geometry.eyeDirection(hit.point));
+  return out;
+}
+
+// Where each warp sample's light comes from in the region camera's image; NaN where none does.
+FloatMap warpOf(const RegionCamera& camera, const WarpGrid& grid) {
+  FloatMap warp{grid.width, grid.height, 2, std::vector<float>(grid.directions.size() * 2, std::nanf(""))};
+  for (int j = 0; j < grid.height; ++j)
+    for (int i = 0; i < grid.width; ++i) {
+      const std::size_t k = grid.index(i, j);
+      const auto uv = grid.hit[k] ? uvOfDirection(camera, grid.directions[k]) : std::nullopt;
+      if (uv && uv->x >= 0.0 && uv->x <= 1.0 && uv->y >= 0.0 && uv->y <= 1.0) {
+        warp.at(i, j, 0) = static_cast<float>(uv->x);
+        warp.at(i, j, 1) = static_cast<float>(uv->y);
+      }
+    }
+  return warp;
+}
+
+// One pixel's blend: its projector's edge weight over the sum of every lighting projector's,
+// and how many projectors light its dome point.
+struct PixelBlend {
+  float alpha = 0.0f;
+  int count = 0;
+};
+
+PixelBlend blendAt(const Dome& dome, const DomeGeometry& geometry, std::size_t p, const glm::dvec3& point) {
+  double own = 0.0, sum = 0.0;
+  int count = 0;
+  for (std::size_t q = 0; q < dome.projectors.size(); ++q) {
+    double column = 0.0, row = 0.0;
+    if (!geometry.project(q, point, column, row)) continue;
+    const DomeProjector& pq = dome.projectors[q];
+    const double x = 2.0 * column / pq.width - 1.0, y = 1.0 - 2.0 * row / pq.height;
+    if (std::abs(x) >= 1.0 || std::abs(y) >= 1.0) continue;
+    const double w = edgeWeight(x, y);
+    ++count;
+    sum += w;
+    if (q == p) own = w;
+  }
+  return {sum > 0.0 ? static_cast<float>(own / sum) : 1.0f, count};
+}
+
+// The arc (degrees) between two projectors' camera axes, seen from the eye, on which both light
+// the dome, in 0.05 degree steps; nothing when they share no step.
+std::optional<double> sharedArcDeg(const Dome& dome, const DomeGeometry& geometry, const std::vector<ProjectorCalibration>& out,
+                    std::size_t a, std::size_t c) {
+  const glm::dvec3 da = directionOfUv(out[a].camera, {0.5, 0.5}), dc = directionOfUv(out[c].camera, {0.5, 0.5});
+  const double arc = std::acos(std::clamp(glm::dot(da, dc), -1.0, 1.0));
+  const int steps = std::max(1, static_cast<int>(arc / (0.05 * kDeg)));
+  auto lights = [&](std::size_t q, const glm::dvec3& point) {
+    double column = 0.0, row = 0.0;
+    return geometry.project(q, point, column, row) && column > 0.0 && column < dome.projectors[q].width && row > 0.0 &&
+           row < dome.projectors[q].height;
+  };
+  int shared = 0;
+  for (int s = 0; s <= steps; ++s) {
+    const double t = static_cast<double>(s) / steps;
+    const glm::dvec3 dir = arc > 1e-9 ? glm::normalize(std::sin((1 - t) * arc) * da + std::sin(t * arc) * dc) : da;
+    // The dome point in that direction from the eye.
+    const double bb = glm::dot(dome.eye, dir), cc = glm::dot(dome.eye, dome.eye) - dome.radius * dome.radius;
+    const glm::dvec3 point = dome.eye + (-bb + std::sqrt(bb * bb - cc)) * dir;
+    if (lights(a, point) && lights(c, point)) ++shared;
+  }
+  if (shared == 0) return std::nullopt;
+  return shared * arc / steps / kDeg;
+}
+
+void summarize(const Dome& dome, const DomeGeometry& geometry, const std::vector<ProjectorCalibration>& out,
+               const std::vector<std::vector<std::uint8_t>>& lightCount, int kMax, DomeSummary& summary) {
+  const std::size_t n = out.size();
+  summary.maxOverlap = kMax;
+  summary.minAlpha.assign(n, 1.0);
+  summary.maxAlpha.assign(n, 0.0);
+  for (std::size_t p = 0; p < n; ++p)
+    for (std::size_t k = 0; k < out[p].alpha.values.size(); ++k)
+      if (lightCount[p][k] > 0) {
+        summary.minAlpha[p] = std::min(summary.minAlpha[p], static_cast<double>(out[p].alpha.values[k]));
+        summary.maxAlpha[p] = std::max(summary.maxAlpha[p], static_cast<double>(out[p].alpha.values[k]));
+      }
+  summary.overlaps.clear();
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t c = a + 1; c < n; ++c)
+      if (const std::optional<double> arcDeg = sharedArcDeg(dome, geometry, out, a, c))
+        summary.overlaps.push_back({a, c, *arcDeg});
+}
+
+}  // namespace
+
+std::vector<ProjectorCalibration> generateDome(const Dome& dome, DomeSummary* summary,
+                                               const std::function<void(double)>& progress) {
+  validate(dome);
   const DomeGeometry geometry(dome);
   const std::size_t n = dome.projectors.size();
   std::size_t totalPixels = 0;
@@ -175,66 +303,22 @@ std::vector<ProjectorCalibration> generateDome(const Dome& dome, DomeSummary* su
     cal.source = "generated dome, region " + pr.name;
     cal.width = pr.width;
     cal.height = pr.height;
-    // The warp grid's dome directions, and the image's border pixels: the footprint.
-    const int gw = warpGridSamples(pr.width, dome.warpStep), gh = warpGridSamples(pr.height, dome.warpStep);
-    std::vector<glm::dvec3> grid(static_cast<std::size_t>(gw) * static_cast<std::size_t>(gh));
-    std::vector<bool> gridHit(grid.size());
-    std::vector<glm::dvec3> footprint;
-    for (int j = 0; j < gh; ++j)
-      for (int i = 0; i < gw; ++i) {
-        const PixelPoint hit = geometry.trace(p, warpGridPixel(i, gw, pr.width), warpGridPixel(j, gh, pr.height));
-        const std::size_t k = static_cast<std::size_t>(j) * static_cast<std::size_t>(gw) + static_cast<std::size_t>(i);
-        gridHit[k] = hit.hit;
-        if (hit.hit) {
-          grid[k] = geometry.eyeDirection(hit.point);
-          footprint.push_back(grid[k]);
-        }
-      }
-    for (int i = 0; i < pr.width; ++i)
-      for (double row : {0.0, static_cast<double>(pr.height)})
-        if (auto hit = geometry.trace(p, i + 0.5, row); hit.hit) footprint.push_back(geometry.eyeDirection(hit.point));
-    for (int j = 0; j < pr.height; ++j)
-      for (double column : {0.0, static_cast<double>(pr.width)})
-        if (auto hit = geometry.trace(p, column, j + 0.5); hit.hit) footprint.push_back(geometry.eyeDirection(hit.point));
-    if (footprint.empty()) throw CalibrationError(projectorName(pr, p) + ": none of its pixels meets the dome");
-    const glm::dvec3 projectorRight = glm::normalize(geometry.ndcToBody(p)[0]);
-    cal.camera = coverFootprint(footprint, projectorRight, dome.marginDeg, projectorName(pr, p));
-
-    cal.warp = {gw, gh, 2, std::vector<float>(grid.size() * 2, std::nanf(""))};
-    for (int j = 0; j < gh; ++j)
-      for (int i = 0; i < gw; ++i) {
-        const std::size_t k = static_cast<std::size_t>(j) * static_cast<std::size_t>(gw) + static_cast<std::size_t>(i);
-        const auto uv = gridHit[k] ? uvOfDirection(cal.camera, grid[k]) : std::nullopt;
-        if (uv && uv->x >= 0.0 && uv->x <= 1.0 && uv->y >= 0.0 && uv->y <= 1.0) {
-          cal.warp.at(i, j, 0) = static_cast<float>(uv->x);
-          cal.warp.at(i, j, 1) = static_cast<float>(uv->y);
-        }
-      }
-
-    // Alpha per pixel: this projector's edge weight over the sum of every lighting projector's.
+    const WarpGrid grid = traceWarpGrid(geometry, p, pr, dome.warpStep);
+    const std::vector<glm::dvec3> lit = footprint(geometry, p, pr, grid);
+    if (lit.empty()) throw CalibrationError(projectorName(pr, p) + ": none of its pixels meets the dome");
+    cal.camera = coverFootprint(lit, glm::normalize(geometry.ndcToBody(p)[0]), dome.marginDeg, projectorName(pr, p));
+    cal.warp = warpOf(cal.camera, grid);
     cal.alpha = {pr.width, pr.height, 1, std::vector<float>(static_cast<std::size_t>(pr.width) * static_cast<std::size_t>(pr.height), 0.0f)};
     lightCount[p].assign(cal.alpha.values.size(), 0);
     for (int j = 0; j < pr.height; ++j) {
       for (int i = 0; i < pr.width; ++i) {
         const PixelPoint hit = geometry.trace(p, i + 0.5, j + 0.5);
         if (!hit.hit) continue;
-        double own = 0.0, sum = 0.0;
-        int count = 0;
-        for (std::size_t q = 0; q < n; ++q) {
-          double column = 0.0, row = 0.0;
-          if (!geometry.project(q, hit.point, column, row)) continue;
-          const DomeProjector& pq = dome.projectors[q];
-          const double x = 2.0 * column / pq.width - 1.0, y = 1.0 - 2.0 * row / pq.height;
-          if (std::abs(x) >= 1.0 || std::abs(y) >= 1.0) continue;
-          const double w = edgeWeight(x, y);
-          ++count;
-          sum += w;
-          if (q == p) own = w;
-        }
+        const PixelBlend blend = blendAt(dome, geometry, p, hit.point);
         const std::size_t k = static_cast<std::size_t>(j) * static_cast<std::size_t>(pr.width) + static_cast<std::size_t>(i);
-        cal.alpha.values[k] = sum > 0.0 ? static_cast<float>(own / sum) : 1.0f;
-        lightCount[p][k] = static_cast<std::uint8_t>(std::min(count, 255));
-        kMax = std::max(kMax, count);
+        cal.alpha.values[k] = blend.alpha;
+        lightCount[p][k] = static_cast<std::uint8_t>(std::min(blend.count, 255));
+        kMax = std::max(kMax, blend.count);
       }
       report(static_cast<std::size_t>(pr.width));
     }
@@ -250,43 +334,7 @@ std::vector<ProjectorCalibration> generateDome(const Dome& dome, DomeSummary* su
       if (lightCount[p][k] > 0) cal.beta.values[k] = static_cast<float>(static_cast<double>(cal.alpha.values[k]) * b * (kMax - lightCount[p][k]));
     report(cal.alpha.values.size());
   }
-
-  if (summary) {
-    summary->maxOverlap = kMax;
-    summary->minAlpha.assign(n, 1.0);
-    summary->maxAlpha.assign(n, 0.0);
-    for (std::size_t p = 0; p < n; ++p)
-      for (std::size_t k = 0; k < out[p].alpha.values.size(); ++k)
-        if (lightCount[p][k] > 0) {
-          summary->minAlpha[p] = std::min(summary->minAlpha[p], static_cast<double>(out[p].alpha.values[k]));
-          summary->maxAlpha[p] = std::max(summary->maxAlpha[p], static_cast<double>(out[p].alpha.values[k]));
-        }
-    // Overlap of each pair: the length of the arc between their cameras' axes (from the eye) on
-    // which both light the dome, in 0.05 degree steps.
-    summary->overlaps.clear();
-    for (std::size_t a = 0; a < n; ++a)
-      for (std::size_t c = a + 1; c < n; ++c) {
-        const glm::dvec3 da = directionOfUv(out[a].camera, {0.5, 0.5}), dc = directionOfUv(out[c].camera, {0.5, 0.5});
-        const double arc = std::acos(std::clamp(glm::dot(da, dc), -1.0, 1.0));
-        const int steps = std::max(1, static_cast<int>(arc / (0.05 * kDeg)));
-        int shared = 0;
-        for (int s = 0; s <= steps; ++s) {
-          const double t = static_cast<double>(s) / steps;
-          const glm::dvec3 dir =
-              arc > 1e-9 ? glm::normalize(std::sin((1 - t) * arc) * da + std::sin(t * arc) * dc) : da;
-          // The dome point in that direction from the eye.
-          const double bb = glm::dot(dome.eye, dir), cc = glm::dot(dome.eye, dome.eye) - dome.radius * dome.radius;
-          const glm::dvec3 point = dome.eye + (-bb + std::sqrt(bb * bb - cc)) * dir;
-          auto lights = [&](std::size_t q) {
-            double column = 0.0, row = 0.0;
-            return geometry.project(q, point, column, row) && column > 0.0 && column < dome.projectors[q].width &&
-                   row > 0.0 && row < dome.projectors[q].height;
-          };
-          if (lights(a) && lights(c)) ++shared;
-        }
-        if (shared > 0) summary->overlaps.push_back({a, c, shared * arc / steps / kDeg});
-      }
-  }
+  if (summary) summarize(dome, geometry, out, lightCount, kMax, *summary);
   if (progress) progress(1.0);
   return out;
 }

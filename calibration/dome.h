@@ -100,7 +100,7 @@ std::vector<ProjectorCalibration> generateDome(const Dome& dome, DomeSummary* su
 // The warp grid across `pixels` projector pixels with a sample every `step`-th pixel and on the
 // last: how many samples, and the pixel coordinate (as DomeGeometry::trace) of sample `index`.
 // Samples are evenly spaced from the first pixel's centre to the last's, which is how the warp
-// pass reads a map coarser than the projector (shaders/passes/warp_blend.frag).
+// pass reads a map coarser than the projector (render/passes/projector/warp_blend.frag).
 int warpGridSamples(int pixels, int step);
 double warpGridPixel(int index, int samples, int pixels);
 

@@ -5,8 +5,8 @@
 # executable and the test programs depend on it.
 set(SKYIG_DATA_FILES
   ${PROJECT_SOURCE_DIR}/ephemeris/data/bsc5.csv
-  ${PROJECT_SOURCE_DIR}/sky/data/moon.png
-  ${PROJECT_SOURCE_DIR}/sky/data/milkyway.png)
+  ${PROJECT_SOURCE_DIR}/physics/moon/data/moon.png
+  ${PROJECT_SOURCE_DIR}/physics/night/data/milkyway.png)
 set(SKYIG_STAGED_DATA_DIR ${PROJECT_BINARY_DIR}/share/skyig)
 
 set(staged)

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# CI's sanitizer job: the protocol and services tests (codecs, the node, record/replay, the CLI
+# CI's sanitizer job: the protocol and node tests (codecs, the node, record/replay, the CLI
 # through build-asan/bin/skyig) built with AddressSanitizer and UndefinedBehaviorSanitizer in
 # build-asan/. Builds only those test programs and what they link, then runs their tests; a
 # finding fails its test. Extra arguments go to CMake's configure step.
-# SKYIG_SANITIZE=thread bash deploy/test-sanitize.sh runs the node's tests (the services tests)
+# SKYIG_SANITIZE=thread bash deploy/test-sanitize.sh runs the node tests (node_tests)
 # under ThreadSanitizer in build-tsan/ instead: a developer's command, not CI's, whose 20 minutes
 # it would overrun (docs/design.md, "Build habits").
 set -euo pipefail
@@ -13,10 +13,10 @@ bash deploy/setup.sh
 sanitizers=${SKYIG_SANITIZE:-address,undefined}
 if [ "$sanitizers" = thread ]; then
   dir=build-tsan
-  targets=(services_tests)
+  targets=(node_tests)
 else
   dir=build-asan
-  targets=(protocol_tests services_tests)
+  targets=(protocol_tests node_tests)
 fi
 start=$SECONDS
 # -O1 -g1: half the compile time of -O2 -g with ASan and UBSan (measured on five of the heaviest

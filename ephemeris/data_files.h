@@ -7,7 +7,7 @@
 //      when the library is configured, SKYIG_LIBRARY_TO_DATA), whatever the host's executable;
 //   3. else <directory of the running executable>/../share/skyig: /usr/bin/skyig reads
 //      /usr/share/skyig, and the build tree's build/bin/skyig reads build/share/skyig, where
-//      CMake stages the files (services/CMakeLists.txt). Tests set SKYIG_DATA_DIR.
+//      CMake stages the files (cmake/DataFiles.cmake). Tests set SKYIG_DATA_DIR.
 // It lives in ephemeris/, the lowest library that reads one of the files (the catalogue).
 #include <filesystem>
 #include <stdexcept>

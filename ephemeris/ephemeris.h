@@ -13,7 +13,7 @@
 #include <string>
 
 #include "ephemeris/refraction.h"
-#include "ephemeris/star_catalogue.h"
+#include "ephemeris/bsc5.h"
 #include "ephemeris/time.h"
 #include "ephemeris/time_scales.h"
 #include "ephemeris/vec3.h"

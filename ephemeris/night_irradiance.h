@@ -33,7 +33,7 @@ double lunarPhaseFunction(double phaseAngleRad);
 // (eq. 11) over eq. 9's sunlit irradiance with C_a, both at the mean distances. 2.33 at full
 // moon (eq. 9 with C_a = 0.072 gives 1.33e-3 W/m^2, the magnitude -12.73 gives 3.10e-3 W/m^2,
 // 0.29 lux), 0.56 at first quarter; 0 where eq. 9's phase law is. The disc keeps Lommel-
-// Seeliger's distribution over its surface (shaders/night/moon.glsl), scaled by this factor of
+// Seeliger's distribution over its surface (physics/moon/moon.glsl), scaled by this factor of
 // the phase alone, as Hapke's opposition term would.
 double lunarOppositionFactor(double phaseAngleRad);
 

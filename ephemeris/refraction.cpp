@@ -1,4 +1,5 @@
 #include "ephemeris/refraction.h"
+#include "physics/common/units.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,14 +22,14 @@ double refractionSaemundsson(double altitudeRad, double pressureHpa, double temp
   if (!std::isfinite(altitudeRad))
     throw std::invalid_argument("refraction: altitude " + std::to_string(altitudeRad) + " is not finite");
   const double scale = refractionScale(pressureHpa, temperatureC);
-  constexpr double kDeg = 180.0 / 3.14159265358979323846;
-  const double h = std::max(altitudeRad, kRefractionFloorRad) * kDeg;  // degrees
+  using skyig::kDegPerRad;
+  const double h = std::max(altitudeRad, kRefractionFloorRad) * kDegPerRad;  // degrees
   if (h >= 90.0) return 0.0;
-  const double arcmin = 1.02 / std::tan((h + 10.3 / (h + 5.11)) / kDeg) + 0.0019279;
+  const double arcmin = 1.02 / std::tan((h + 10.3 / (h + 5.11)) / kDegPerRad) + 0.0019279;
   const double fade = altitudeRad >= kRefractionFloorRad
                           ? 1.0
                           : std::max(0.0, (altitudeRad - kRefractionZeroRad) / (kRefractionFloorRad - kRefractionZeroRad));
-  return std::max(arcmin, 0.0) * scale * fade / 60.0 / kDeg;
+  return std::max(arcmin, 0.0) * scale * fade / 60.0 / kDegPerRad;
 }
 
 double refractionAtApparent(double apparentRad, double pressureHpa, double temperatureC) {

@@ -37,7 +37,7 @@ double refractionAtApparent(double apparentRad, double pressureHpa, double tempe
 // a0: the lift there is exactly h0 - a0, as the ephemeris or the caller placed it), for drawing a
 // disc of about `radiusRad` (the sun's, the moon's) refracted and flattened as it is seen:
 // R(h) = refraction + slope (h - h0) + halfCurvature (h - h0)^2, by central differences over the
-// radius (shaders/common/refraction.glsl, unrefractView). Over half a degree the third-order term
+// radius (physics/common/refraction.glsl, unrefractView). Over half a degree the third-order term
 // is below 0.01 arcmin.
 struct RefractionExpansion {
   double centreRad = 0.0;      // h0, apparent

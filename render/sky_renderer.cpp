@@ -1,12 +1,12 @@
 #include "render/sky_renderer.h"
 
 #include "render/texture_readback.h"
-#include "shaders/common/band_uniforms.h"
+#include "render/glsl/band_uniforms.h"
 #include "sky/nvis_weights.h"
-#include "shaders/physics.h"
+#include "physics/physics.h"
 
-#include "shaders/common/bindings.h"
-#include "shaders/common/uniforms.h"
+#include "render/glsl/bindings.h"
+#include "render/glsl/uniforms.h"
 
 #include <algorithm>
 #include <cmath>
@@ -58,9 +58,9 @@ std::vector<skyig::sky::eye::GlareSource> litGlareSources(const skyig::sky::SkyS
 ToneBlock toToneBlock(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
   ToneBlock b{};
   const skyig::sky::DisplayParams& d = channel.display;
-  b.display = glm::vec4(glm::dvec4(d.maxLuminance, d.ambientLuminance, d.gamma, d.adaptationLuminance));
+  b.display = glm::vec4(glm::dvec4(d.maxLuminance, d.ambientLuminance, d.gamma, d.viewerAdaptationLuminance));
   const bool histogram = d.toneOperator == skyig::sky::ToneOperator::Histogram;
-  b.adaptation = glm::vec4(static_cast<float>(state.adaptationLuminance), 1.0f, histogram ? 0.0f : 1.0f, 0.0f);
+  b.adaptation = glm::vec4(static_cast<float>(state.worldAdaptationLuminance), 1.0f, histogram ? 0.0f : 1.0f, 0.0f);
   const std::vector<skyig::sky::eye::GlareSource> lit = litGlareSources(state);
   for (std::size_t i = 0; i < lit.size(); ++i) {
     b.glareDirection[i] = glm::vec4(glm::vec3(lit[i].direction), static_cast<float>(lit[i].angularRadiusRad * 180.0 / 3.14159265358979));
@@ -113,7 +113,7 @@ std::uint32_t goggleSeed(const skyig::sky::SkyState& state, const skyig::sky::Ch
 }  // namespace
 
 SkyRenderer::SkyRenderer()
-    : skyProgram_("passes/fullscreen.vert", "passes/analytic_sky.frag"),
+    : skyProgram_("render/glsl/fullscreen.vert", "render/passes/sky/analytic_sky.frag"),
       frameBlock_(SKYIG_BINDING_FRAME, sizeof(FrameBlock)),
       skyBlock_(SKYIG_BINDING_SKY, sizeof(AnalyticSkyBlock)),
       toneBlock_(SKYIG_BINDING_TONE, sizeof(ToneBlock)),
@@ -307,7 +307,7 @@ SkyRenderer::MappedSky SkyRenderer::drawMappedSky(const skyig::sky::SkyState& st
   // drew. Where the sky pass cannot (the analytic skies, the physical one from space), the
   // night's pass and the tone pass cover every pixel after it. With one glare source (the moon)
   // the layer holds its veil too, which the sky pass then reads with the night's light instead
-  // of from a grid of its own (render/passes/tone_pass.h).
+  // of from a grid of its own (render/passes/tone/tone_pass.h).
   const bool physical = state.conditions.model == skyig::sky::SkyModel::Physical;
   NightLayer night;
   if (nightLight && physical) {

@@ -5,17 +5,17 @@
 #include "sky/channel.h"
 #include "render/gl/gl_program.h"
 #include "render/image.h"
-#include "render/passes/moon_pass.h"
-#include "render/passes/night_diffuse_pass.h"
-#include "render/passes/physical_sky_pass.h"
+#include "render/passes/night/moon_pass.h"
+#include "render/passes/night/night_diffuse_pass.h"
+#include "render/passes/sky/physical_sky_pass.h"
 #include "render/gl/render_target.h"
 #include "sky/sky_state.h"
-#include "render/passes/star_pass.h"
-#include "render/passes/tone_pass.h"
-#include "render/passes/goggle_pass.h"
+#include "render/passes/night/star_pass.h"
+#include "render/passes/tone/tone_pass.h"
+#include "render/passes/goggle/goggle_pass.h"
 
 #include <array>
-#include "render/passes/warp_blend_pass.h"
+#include "render/passes/projector/warp_blend_pass.h"
 
 #include <memory>
 #include <string>
@@ -34,7 +34,7 @@ class SkyRenderer {
   // predicts it per frame; the state was built at the worker's instant and is never patched);
   // the targets stay bound to the renderer until the next call. A goggle channel
   // (sky::isGoggle) is drawn in its band with its own frustum (sky::goggleFrustum) and shown
-  // through its image intensifier (render/passes/goggle_pass.h); its HDR image is then the NVIS
+  // through its image intensifier (render/passes/goggle/goggle_pass.h); its HDR image is then the NVIS
   // radiance, W m^-2 sr^-1 in all three channels.
   void draw(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
             const skyig::sky::ChannelConfig& channel);
@@ -100,7 +100,7 @@ class SkyRenderer {
   // the state's model (uploaded at once the first time, else over the next draws).
   PhysicalSkyPass& physicalPassFor(const skyig::sky::SkyState& state);
   // Draws the physical sky with `pass` from now on (the frozen reference of
-  // render/passes/reference_sky_pass.h, for its benchmark and test) instead of its own.
+  // render/passes/sky/reference_sky_pass.h, for its benchmark and test) instead of its own.
   void usePhysicalSkyPass(std::unique_ptr<PhysicalSkyPass> pass) { physical_ = std::move(pass); }
 
   // The last draw's channel: its HDR image (the region's camera after drawProjector) and its
@@ -108,7 +108,7 @@ class SkyRenderer {
   HdrImage readHdr() const;
   DisplayImage readDisplay() const;
   // The same two images on the GPU, channel-sized (RGBA32F cd/m^2 and RGBA8 display values),
-  // for a pass that composites them into another framebuffer (render/host_frame.h); 0 before
+  // for a pass that composites them into another framebuffer (render/client/client_frame.h); 0 before
   // the first draw.
   GLuint hdrTexture() const { return hdr_ ? hdr_->texture() : 0; }
   GLuint displayTexture() const { return display_ ? display_->texture() : 0; }

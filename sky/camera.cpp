@@ -1,4 +1,5 @@
 #include "sky/camera.h"
+#include "physics/common/units.h"
 
 #include <cmath>
 #include <numbers>
@@ -6,7 +7,7 @@
 namespace skyig::sky {
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
+using skyig::kDeg;
 }
 
 glm::dmat3 bodyToEnu(const Attitude& a) {

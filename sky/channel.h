@@ -24,7 +24,7 @@ struct DisplayParams {
   // L_a(d), cd/m^2: the viewer adapts to what the screen shows on average, about a tenth of its
   // peak for projected sky scenes; with L_a(d) = L_dmax / 2 the Tumblin-Rushmeier operator puts
   // the mean daylight sky above L_dmax (docs/tone-reproduction.md).
-  double adaptationLuminance = 10.0;
+  double viewerAdaptationLuminance = 10.0;
   bool operator==(const DisplayParams&) const = default;
 };
 
@@ -45,7 +45,7 @@ enum class Phosphor { P43, P45 };
 
 // A night-vision goggle (image intensifier) in front of a channel: what the host switches on
 // with CIGI Sensor Control, and the configuration's [channel.goggle]
-// (render/passes/goggle_pass.h, docs/nvis.md). The channel is a goggle while its `band` is not
+// (render/passes/goggle/goggle_pass.h, docs/nvis.md). The channel is a goggle while its `band` is not
 // Visible; the goggle's class is then its band.
 struct GoggleParams {
   SpectralBand nvisClass = SpectralBand::NvisClassA;  // the band when the goggle is switched on

@@ -1,12 +1,13 @@
 #include "sky/night_probe.h"
 
-#include "sky/night/moon_disc.h"
-#include "sky/night/moon_light.h"
-#include "sky/night/night_diffuse.h"
-#include "sky/night/star_luminance.h"
-#include "sky/nvis/night_spectra.h"
-#include "sky/nvis/nvis_sky.h"
+#include "physics/moon/moon_disc.h"
+#include "physics/moon/moon_light.h"
+#include "physics/night/night_diffuse.h"
+#include "physics/stars/star_luminance.h"
+#include "physics/goggle/night_spectra.h"
+#include "physics/goggle/nvis_sky.h"
 #include "sky/sky_state.h"
+#include "physics/common/units.h"
 
 #include <cmath>
 #include <memory>
@@ -102,9 +103,9 @@ std::vector<NamedProbeLight> nightProbeLights(const atmosphere::AtmosphereModel&
 
 NightProbeResult nightProbe(const atmosphere::AtmosphereModel& model, const SkyState& state,
                             atmosphere::ProbeRequest request) {
-  constexpr double kDeg = 180.0 / std::numbers::pi;
-  request.sunZenithDeg = 90.0 - state.sunAltitude * kDeg;
-  request.sunAzimuthDeg = state.sunAzimuth * kDeg;
+  using skyig::kDegPerRad;
+  request.sunZenithDeg = 90.0 - state.sunAltitude * kDegPerRad;
+  request.sunAzimuthDeg = state.sunAzimuth * kDegPerRad;
   NightProbeResult out;
   out.day = atmosphere::probe(model, request);
   const std::vector<ProbeComponent> components = nightProbeComponents(model, state);

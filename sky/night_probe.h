@@ -6,13 +6,13 @@
 //   moonlit_sky     the same sky lit by the moon (Jensen et al. 2001)
 //   moon            the moon's disc after extinction; present when the moon is known
 //   stars_planets   the mean luminance of the stars and planets within 0.5 degrees of the view
-//                   (sky/night/star_luminance.h), after extinction
+//                   (physics/stars/star_luminance.h), after extinction
 //   milky_way       the Milky Way and the unresolved stars, after extinction
 //   zodiacal_light  after extinction
 //   airglow         after extinction
 // and the total: all of them, plus the day probe's sun disc and ground where the view has them.
 // With irradiance, the moon's disc (after extinction) and the moonlit sky on a horizontal
-// surface, beside the sun's and the sky's. Plain values: services/commands/probe_json.h prints
+// surface, beside the sun's and the sky's. Plain values: commands/probe_json.h prints
 // them as JSON, the names as its keys.
 // Every light also carries its class A and class B NVIS radiance (sky/nvis, docs/nvis.md),
 // weighted through the same spectral extinction as its luminance, and the irradiance adds the
@@ -25,9 +25,9 @@
 #include <glm/vec3.hpp>
 
 #include "ephemeris/time.h"
-#include "sky/atmosphere/model.h"
-#include "sky/atmosphere/probe.h"
-#include "sky/nvis/nvis_sky.h"
+#include "physics/atmosphere/model.h"
+#include "physics/atmosphere/probe.h"
+#include "physics/goggle/nvis_sky.h"
 
 namespace skyig::sky {
 struct SkyState;

@@ -1,6 +1,6 @@
 #include "sky/nvis_weights.h"
 
-#include "sky/nvis/nvis_sky.h"
+#include "physics/goggle/nvis_sky.h"
 
 #include <glm/geometric.hpp>
 

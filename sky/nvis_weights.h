@@ -1,10 +1,10 @@
 #pragma once
 // What turns a goggle channel's passes from the eye's band into the goggles': for each light the
 // sky passes draw, its NVIS radiance per cd/m^2 of its luminance, from the same spectra and
-// transmittance the probe uses (sky/night_probe.h, sky/nvis/), so a goggle channel's image and
+// transmittance the probe uses (sky/night_probe.h, physics/goggle/), so a goggle channel's image and
 // `skyig probe`'s NVIS figures are one model. The passes keep computing each light's linear
 // Rec.709 radiance and, in a goggle's band, write its luminance times its weight into all three
-// channels (shaders/common/band.glsl): the sky's colour already carries everything the passes
+// channels (render/glsl/band.glsl): the sky's colour already carries everything the passes
 // know of the light's path; the weight adds what the eye's band cannot see, the light beyond
 // 700 nm.
 //
@@ -14,8 +14,8 @@
 // transmittance's colour changes little above 10 deg elevation; towards the horizon the
 // weight of the centre is kept (docs/nvis.md gives the error).
 #include "sky/channel.h"
-#include "sky/nvis/night_spectra.h"
-#include "sky/nvis/nvis_response.h"
+#include "physics/goggle/night_spectra.h"
+#include "physics/goggle/nvis_response.h"
 #include "sky/sky_state.h"
 
 #include <glm/vec3.hpp>
@@ -40,7 +40,7 @@ NvisWeights nvisWeights(SpectralBand band, const SkyState& state, const glm::dve
 // The NVIS irradiance per lux of a blackbody of `temperatureK` above the atmosphere (the stars'
 // weight: each star's own, from the temperature it keeps), interpolated in a table of
 // log-spaced temperatures from 1500 K to 50000 K (clamped beyond) that is within 0.1% of the
-// integral (tests/sky/nvis).
+// integral (tests/physics/goggle).
 double nvisPerLuxOfBlackbody(double temperatureK, nvis::NvisClass nvisClass);
 
 // The class of a goggle's band (band must not be Visible).

@@ -1,6 +1,6 @@
 #pragma once
 // The observer: where the ownship is, how it is oriented, when, and the air it looks through.
-// One type for the host's ownship (services/host_state.h) and the sky's observer, with one
+// One type for the host's ownship (node/host/host_state.h) and the sky's observer, with one
 // default place.
 #include "ephemeris/refraction.h"
 #include "ephemeris/time.h"

@@ -1,7 +1,7 @@
 #include "sky/shown_layers.h"
 
-#include "shaders/night/star_physics.h"
-#include "shaders/physics.h"
+#include "physics/stars/star_physics.h"
+#include "physics/physics.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,7 +1,7 @@
 #pragma once
 // Which of a state's faint layers can change what its displays show, decided once per state on
 // the worker from the view sphere's light by source (sky/view_sphere.h) and the displays' tone
-// curves (sky/eye/tone_curve.h): the moonlit sky in daylight, or the night's own light
+// curves (physics/eye/tone_curve.h): the moonlit sky in daylight, or the night's own light
 // (airglow, zodiacal light, the Milky Way, their light on the terrain) at dusk, adds far less
 // than the eye can see and changes no display code. The renderer then neither compiles the
 // moonlit sky into its sky pass nor draws the diffuse night pass: every pixel pays only for
@@ -24,7 +24,7 @@
 // twilight's arch is brightest at the horizon below the sun, a few degrees under the centre of
 // the lowest cells.
 #include "sky/channel.h"
-#include "sky/eye/tone_curve.h"
+#include "physics/eye/tone_curve.h"
 #include "sky/view_sphere.h"
 
 #include <utility>
@@ -63,7 +63,7 @@ ShownLayers shownLayers(const std::vector<ViewCellLight>& cells, const std::vect
 
 // Whether the brightest point source of the field (its illuminance at the eye, lux) can pass
 // the eye's threshold anywhere on the view sphere: against the darkest cell's luminance over
-// kPointSourceMargin (Schaefer 1990, night/point_source_visibility.glsl, the displayed-star
+// kPointSourceMargin (Schaefer 1990, physics/eye/point_source_visibility.glsl, the displayed-star
 // pass's own test). True without cells.
 bool pointSourcesSeen(const std::vector<ViewCellLight>& cells, double brightestLux);
 
@@ -73,7 +73,7 @@ bool pointSourcesSeen(const std::vector<ViewCellLight>& cells, double brightestL
 double faintestPointSourceSeenLux(const std::vector<ViewCellLight>& cells);
 
 // The displayed 8-bit code (0-255, unrounded) of a grey world luminance through `curve` on
-// `display` (the tone pass's mapping, shaders/tone/display_curve.glsl, for a grey).
+// `display` (the tone pass's mapping, render/glsl/display_curve.glsl, for a grey).
 double displayedCode(double worldCdM2, const eye::ToneCurve& curve, const DisplayParams& display);
 
 }  // namespace skyig::sky

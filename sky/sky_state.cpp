@@ -3,13 +3,14 @@
 #include "sky/view_sphere.h"
 
 #include "ephemeris/ephemeris.h"
-#include "sky/atmosphere/model.h"
-#include "sky/common/hemisphere_grid.h"
-#include "sky/night/moon_disc.h"
-#include "sky/night/moon_light.h"
-#include "sky/night/night_diffuse.h"
-#include "sky/atmosphere/physical_camera.h"
-#include "physics.h"  // SUN_ANGULAR_RADIUS
+#include "physics/atmosphere/model.h"
+#include "physics/common/hemisphere_grid.h"
+#include "physics/moon/moon_disc.h"
+#include "physics/moon/moon_light.h"
+#include "physics/night/night_diffuse.h"
+#include "physics/atmosphere/physical_camera.h"
+#include "physics/physics.h"  // SUN_ANGULAR_RADIUS
+#include "physics/common/units.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,7 +22,7 @@ namespace skyig::sky {
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using skyig::kDeg;
 
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument(what);
@@ -144,7 +145,7 @@ eye::ToneCurve toneCurveFor(const SkyState& state, const DisplayParams& display)
   // projector in a lit room does better).
   const double black = std::max(display.ambientLuminance, 1e-3 * display.maxLuminance);
   return eye::histogramAdjustment(state.histogram,
-                                  {black, display.ambientLuminance + display.maxLuminance, display.adaptationLuminance},
+                                  {black, display.ambientLuminance + display.maxLuminance, display.viewerAdaptationLuminance},
                                   state.adaptationGain);
 }
 
@@ -221,7 +222,7 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
   // moonlit, with the night's own light (sky/view_sphere.h); its log-mean is the scene's level.
   const ViewSphere sphere = viewSphere(s);
   s.histogram = sphere.histogram;
-  s.sceneLuminance = s.adaptationLuminance = sphere.meanLuminance;
+  s.sceneLuminance = s.worldAdaptationLuminance = sphere.meanLuminance;
   s.viewLight = sphere.cells;
   return s;
 }

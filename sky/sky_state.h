@@ -5,20 +5,20 @@
 #include "ephemeris/ephemeris.h"
 #include "ephemeris/ephemeris_cache.h"
 #include "ephemeris/time.h"
-#include "sky/analytic/analytic_sky.h"
-#include "sky/atmosphere/extinction_profile.h"
+#include "physics/analytic/analytic_sky.h"
+#include "physics/atmosphere/extinction_profile.h"
 #include "sky/camera.h"
 #include "sky/channel.h"
-#include "sky/eye/glare.h"
-#include "sky/eye/tone_curve.h"
+#include "physics/eye/glare.h"
+#include "physics/eye/tone_curve.h"
 #include "sky/observer.h"
 #include "sky/shown_layers.h"
-#include "sky/atmosphere/model.h"
-#include "sky/night/moon_disc.h"
-#include "sky/night/moon_light.h"
-#include "sky/night/night_diffuse.h"
-#include "sky/night/star_field.h"
-#include "sky/common/sky_conditions.h"
+#include "physics/atmosphere/model.h"
+#include "physics/moon/moon_disc.h"
+#include "physics/moon/moon_light.h"
+#include "physics/night/night_diffuse.h"
+#include "physics/stars/star_field.h"
+#include "physics/common/sky_conditions.h"
 
 #include <memory>
 #include <optional>
@@ -41,17 +41,17 @@ struct SkyState {
   double sunApparentAltitude = 0.0;  // radians, refracted: where the disc is seen
   // The refraction about the disc's apparent centre (apparent altitude, R, dR/dh, d2R/dh2 / 2;
   // radians; ephemeris::refractionExpansion) the sun's disc is drawn through, refracted and
-  // flattened (shaders/common/refraction.glsl), as the moon's is.
+  // flattened (physics/common/refraction.glsl), as the moon's is.
   glm::dvec4 sunRefraction{0.0};
   std::optional<ephemeris::SkyEphemeris> ephemeris;  // absent when the sun was overridden
   AnalyticSkyState sky;
   // What the pilot can see over the whole view sphere (sky, terrain, sun and moon), and the eye:
   // the scene's own level (its solid-angle mean luminance without the discs), the level the eye is adapted to now (the
-  // same unless the sky worker follows adaptation in time, sky/eye/adaptation.h) and the
+  // same unless the sky worker follows adaptation in time, physics/eye/adaptation.h) and the
   // display gain of the mismatch (1 when adapted).
   eye::LuminanceHistogram histogram;
   double sceneLuminance = 1.0;       // cd/m^2
-  double adaptationLuminance = 1.0;  // the eye's world adaptation, cd/m^2
+  double worldAdaptationLuminance = 1.0;  // the eye's adaptation to the world, cd/m^2
   double adaptationGain = 1.0;
   // The display mapping for each display the state will be shown on, computed with the state
   // (toneCurveFor); a display without one is mapped on demand.
@@ -81,7 +81,7 @@ struct SkyState {
   // albedo E / pi. ~5e-5 cd/m^2 on a moonless night at a dark site; without it a moonless
   // terrain would be black and the eye adapted to a sky over a void. Zero without an ephemeris.
   glm::dvec3 nightGroundRadiance{0.0};
-  // The sun and the moon as glare sources for the display (sky/eye/glare.h).
+  // The sun and the moon as glare sources for the display (physics/eye/glare.h).
   eye::GlareSources glare{};
 };
 
@@ -96,7 +96,7 @@ night::MoonRadiance moonlitSkyRadiance(const atmosphere::AtmosphereModel& model,
 std::optional<night::NightDiffuseSky> nightDiffuseSky(const SkyState& state, bool withMilkyWay = true);
 
 // What consecutive states of one observer share, owned by whoever builds them (the sky worker,
-// services/sky_worker.h): the ephemeris' frame-to-frame interpolation (3 us instead of 28 us an
+// node/frame/sky_worker.h): the ephemeris' frame-to-frame interpolation (3 us instead of 28 us an
 // update) and the extinction profile (tens of milliseconds), which states reuse while the
 // observer stays within max(25 m, 2%) of its height and the medium is unchanged. Not shared
 // between threads.

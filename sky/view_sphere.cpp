@@ -1,8 +1,8 @@
 #include "sky/view_sphere.h"
 
-#include "sky/atmosphere/physical_camera.h"
+#include "physics/atmosphere/physical_camera.h"
 #include "sky/sky_state.h"
-#include "shaders/physics.h"
+#include "physics/physics.h"
 
 #include <cmath>
 #include <numbers>

@@ -3,8 +3,8 @@
 // view sphere: the sky above the horizon (sunlit, moonlit and the night's own light), the
 // terrain below it (the ground model's luminance with its aerial perspective), and the sun's and
 // moon's discs with their solid angles. The eye adapts to it and the display mapping is computed
-// from it (sky/eye/tone_curve.h) once per state, for every channel alike.
-#include "sky/eye/tone_curve.h"
+// from it (physics/eye/tone_curve.h) once per state, for every channel alike.
+#include "physics/eye/tone_curve.h"
 
 #include <glm/vec3.hpp>
 
@@ -21,7 +21,7 @@ struct SkyState;
 // nadir up (Archimedes' hat-box theorem: equal steps in height cut equal areas) times `sectors`
 // in azimuth from north through east. Calls f(view, solidAngle) at each cell's centre (an ENU
 // unit vector, x east, y north, z up), band by band. The view sphere and the host's light
-// (sky/host_light.h) integrate over it.
+// (sky/client_light.h) integrate over it.
 template <class F>
 void forEachEqualAreaCell(int bands, int sectors, F&& f) {
   const double solidAngle = 4.0 * std::numbers::pi / (bands * sectors);

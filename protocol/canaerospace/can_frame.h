@@ -1,7 +1,7 @@
 #pragma once
 // A classic CAN 2.0 frame laid out like Linux's `struct can_frame` (linux/can.h): a 32-bit
 // identifier carrying the EFF/RTR/ERR flags in its top bits, the payload length, and 8 data
-// bytes at offset 8. services/ can copy between the two with a static_assert on the size;
+// bytes at offset 8. node/transport can copy between the two with a static_assert on the size;
 // protocol/ needs no Linux header.
 #include <array>
 #include <cstdint>

@@ -23,7 +23,7 @@ enum Field : std::uint32_t {
   kDate = 1u << 7,
 };
 
-// The host's state as CANaerospace carries it (services/host_state.h's HostState, what the node
+// The host's state as CANaerospace carries it (node/host/host_state.h's HostState, what the node
 // renders from, is built from it and from CIGI).
 struct CanAerospaceState {
   double latitudeDeg = 0.0;

@@ -219,7 +219,7 @@ enum class SensorPolarity : std::uint8_t { whiteHot = 0, blackHot = 1 };
 // Sensor Control (id 17, 24 bytes): a sensor (in skyig the night-vision goggle) of a view.
 // Gain, level, AC coupling and noise are fractions, 0..1. skyig has one sensor per view, the
 // goggle: it accepts any Sensor ID and uses Sensor On/Off, Automatic Gain and Gain
-// (services/cigi_state.cpp); the other fields are decoded and encoded but not used.
+// (node/host/cigi_state.cpp); the other fields are decoded and encoded but not used.
 struct SensorControl {
   std::uint16_t viewId = 0;
   std::uint8_t sensorId = 0;

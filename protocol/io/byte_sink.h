@@ -4,7 +4,7 @@
 // a crash of skyig loses nothing written), and when a write fails part way - a full disk -
 // it cuts the file back to the end of the last complete record, so the file stays readable,
 // and reports the error. Surviving power loss needs the data on the disk as well: a sink
-// whose sync() calls fdatasync (services/, POSIX) does that; the writers call sync() at the
+// whose sync() calls fdatasync (node/, POSIX) does that; the writers call sync() at the
 // interval their options give (docs/protocol.md, "Flush policy").
 #include <cstdint>
 #include <cstdio>

@@ -41,7 +41,7 @@ class GlProgram {
   GLuint id_ = 0;
 };
 
-// A uniform buffer holding one std140 block (shaders/common/uniforms.h).
+// A uniform buffer holding one std140 block (render/glsl/uniforms.h).
 class UniformBuffer {
  public:
   UniformBuffer(GLuint binding, GLsizeiptr size);

@@ -1,6 +1,6 @@
 #include "render/gl/gl_state_guard.h"
 
-#include "shaders/common/bindings.h"
+#include "render/glsl/bindings.h"
 
 namespace skyig::render {
 

@@ -1,9 +1,9 @@
 #pragma once
 // Saves the GL state that skyig's draws change when it draws inside a host's context (the
-// host's image generator owns the context: render/host_frame.h) and puts it back when it goes
+// host's image generator owns the context: render/client/client_frame.h) and puts it back when it goes
 // out of scope, so the host's next draw finds what it left.
 //
-// What it saves and restores (the list docs/host-frame.md gives):
+// What it saves and restores (the list docs/client-frame.md gives):
 //   bindings   GL_DRAW_FRAMEBUFFER, GL_READ_FRAMEBUFFER, the current program, the vertex array,
 //              GL_ARRAY_BUFFER, GL_UNIFORM_BUFFER (generic) and the indexed uniform-buffer
 //              bindings SKYIG_BINDING_FRAME to SKYIG_BINDING_PROJECTOR (name, offset, size),

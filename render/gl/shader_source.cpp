@@ -58,7 +58,7 @@ AssembledShader assembleShader(std::string_view path, std::string_view defines) 
   out.text = "#version 450 core\n";
   out.text += defines;
   std::vector<std::string> stack;
-  expand("common/glsl_prelude.glsl", out, stack);
+  expand("physics/common/glsl_prelude.glsl", out, stack);
   expand(path, out, stack);
   return out;
 }

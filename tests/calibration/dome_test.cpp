@@ -5,6 +5,7 @@
 #include "calibration/region_camera.h"
 
 #include "calibration/calibration_error.h"
+#include "physics/common/units.h"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +23,7 @@ using skyig::calibration::DomeSummary;
 using skyig::calibration::FloatMap;
 using skyig::calibration::ProjectorCalibration;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using skyig::kDeg;
 
 // The generated default helicopter dome at full resolution with the MPCDI-sized warp grid
 // (every 8th pixel), made once for every test of the suite.
@@ -95,7 +96,7 @@ void forEachDomePoint(const Generated& g, double inset, F&& visit) {
     }
 }
 
-// The geometry test: for every dome point lit by two projectors, each projector's pixel
+// The dome's geometry test: for every dome point lit by two projectors, each projector's pixel
 // there (pinhole), its warp (u, v) and its region camera give one sky direction, within the
 // angle one projector pixel spans at that point as seen from the eye.
 TEST(DomeGenerator, OverlappingProjectorsShowOneDirection) {

@@ -4,6 +4,7 @@
 // directions, within one projector pixel.
 #include "calibration/load.h"
 #include "calibration/region_camera.h"
+#include "physics/common/units.h"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +18,7 @@ using namespace skyig::calibration;
 
 const std::string kData = std::string(SKYIG_SOURCE_DIR) + "/tests/data/calibration/";
 constexpr int kGridW = 9, kGridH = 6;
-constexpr double kDeg = std::numbers::pi / 180.0;
+using skyig::kDeg;
 
 // make_fixtures.py's warp and blend.
 glm::dvec2 fixtureUv(double s, double t) {

@@ -1,5 +1,5 @@
 // `skyig ephemeris` through CLI11, without the executable: JSON fields, values, bad flags.
-#include "services/commands/ephemeris_command.h"
+#include "commands/ephemeris_command.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The Bright Star Catalogue loader: the shipped file and corrupt ones.
-#include "ephemeris/star_catalogue.h"
+#include "ephemeris/bsc5.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,12 @@
 #!/usr/bin/env python3
 """The tree shows its libraries: every #include between the source folders follows the layout
-table of docs/design.md ("Layout"), and no two folders include each other, directly or through
-others. Exits 1 naming the file, line and include that breaks it.
+table of docs/design.md ("Layout"), no two folders include each other directly or through
+others, and the layers keep their purity: no GL in the physics, the sky state, the protocol, the
+ephemeris or the calibration; no socket outside the node's transport and the commands; none
+reached by the public API's headers. Exits 1 naming the file, line and include that breaks it.
+
+An include is resolved as the compilers resolve it: from the source root (C++ and GLSL alike),
+from the public headers (api/include), then beside the including file.
 
 Usage: check_layout.py SOURCE_DIR
 """
@@ -9,52 +14,144 @@ import os
 import re
 import sys
 
-# folder -> the folders its files may include (besides its own). Deeper folders are listed
-# separately: sky/night may not include sky/ (the SkyState that is built from it).
+# folder -> the folders its files may include (besides its own). A folder is the deepest one
+# listed here that holds the file.
+PHYSICS_COMMON = {"physics/common"}
 ALLOWED = {
     "protocol": set(),
     "ephemeris": set(),
-    "shaders": set(),
-    "calibration": {"sky"},
-    "sky/common": set(),
-    "sky/atmosphere": {"shaders"},
-    "sky/analytic": {"sky/common", "shaders"},
-    "sky/eye": {"shaders"},
-    "sky/night": {"sky/atmosphere", "sky/common", "ephemeris", "shaders"},
-    "sky/nvis": {"sky/night", "sky/atmosphere", "sky/common", "ephemeris", "shaders"},
-    "sky": {"sky/atmosphere", "sky/common", "sky/analytic", "sky/eye", "sky/night", "sky/nvis", "ephemeris", "shaders"},
-    "render/gl": {"shaders"},
-    "render/passes": {"calibration", "render/gl", "sky", "sky/atmosphere", "sky/eye", "sky/night", "sky/common", "ephemeris", "shaders"},
-    "render": {"calibration", "render/gl", "render/passes", "sky", "sky/atmosphere", "sky/eye", "sky/night", "sky/analytic", "sky/common",
-               "ephemeris", "shaders"},
-    # The public library: the node's services (its sky worker, configuration, data loading) and
-    # the renderer behind the headers of api/include/skyig.
-    "api": {"services", "render", "render/gl", "render/passes", "sky", "sky/atmosphere", "sky/common", "sky/analytic",
-            "sky/eye", "sky/night", "ephemeris", "shaders", "calibration", "protocol"},
+    "physics/common": set(),
+    "physics/spectrum": set(),
+    "physics/display": PHYSICS_COMMON,
+    "physics/analytic": PHYSICS_COMMON,
+    "physics/atmosphere": PHYSICS_COMMON | {"physics/spectrum"},
+    "physics/eye": PHYSICS_COMMON | {"physics/display"},
+    "physics/night": PHYSICS_COMMON | {"physics/atmosphere", "physics/spectrum", "ephemeris"},
+    "physics/moon": PHYSICS_COMMON | {"physics/night", "physics/atmosphere", "physics/spectrum", "ephemeris"},
+    "physics/stars": PHYSICS_COMMON | {"physics/night", "physics/eye", "physics/atmosphere", "physics/spectrum",
+                                       "ephemeris"},
+    "physics/goggle": PHYSICS_COMMON | {"physics/night", "physics/moon", "physics/stars", "physics/atmosphere",
+                                        "physics/spectrum", "ephemeris"},
+    "physics": {"physics/common", "physics/analytic", "physics/eye", "physics/display"},
+    "sky": {"physics", "physics/common", "physics/spectrum", "physics/display", "physics/analytic",
+            "physics/atmosphere", "physics/eye", "physics/night", "physics/moon", "physics/stars", "physics/goggle",
+            "ephemeris"},
+    "calibration": {"sky", "physics/common"},
 }
-# services/ is the node: it may include every library but the public one (api/), which is built
-# on it; the commands (services/commands) may include everything, and nothing includes them.
-TOP = ["protocol", "ephemeris", "calibration", "shaders", "sky", "render", "services", "api"]
-EVERYTHING_BUT = {"services": {"api", "services/commands"}, "services/commands": set()}
+# Each group below may include everything listed above it (and in ALLOWED), in this order, and
+# its own earlier members; nothing above may include it.
+LOWER = set(ALLOWED)
+ORDERED = [
+    ("render/glsl", set()),
+    ("render/gl", {"render/glsl"}),
+    ("render/passes/common", {"render/gl", "render/glsl"}),
+    ("render/passes/precompute", {"render/gl", "render/glsl", "render/passes/common"}),
+    ("render/passes/tone", {"render/gl", "render/glsl", "render/passes/common"}),
+    ("render/passes/night", {"render/gl", "render/glsl", "render/passes/common", "render/passes/tone"}),
+    ("render/passes/sky", {"render/gl", "render/glsl", "render/passes/common", "render/passes/tone",
+                           "render/passes/night"}),
+    ("render/passes/goggle", {"render/gl", "render/glsl", "render/passes/common"}),
+    ("render/passes/projector", {"render/gl", "render/glsl", "render/passes/common"}),
+    ("render", {"render/gl", "render/glsl", "render/passes/common", "render/passes/precompute", "render/passes/tone",
+                "render/passes/sky", "render/passes/night", "render/passes/goggle", "render/passes/projector"}),
+    ("render/client", {"render", "render/gl", "render/glsl", "render/passes/common", "render/passes/sky",
+                       "render/passes/tone"}),
+    ("tables", {"render/passes/precompute", "render/gl"}),
+    ("node/common", set()),
+    ("node/host", {"node/common"}),
+    ("node/transport", {"node/common", "node/host"}),
+    ("node/config", {"node/common", "node/host", "node/transport", "tables", "render", "render/gl",
+                     "render/passes/projector"}),
+    ("node/frame", {"node/common", "node/host", "node/config", "tables", "render", "render/gl", "render/client",
+                    "render/passes/goggle", "render/passes/projector", "render/passes/tone", "render/passes/sky"}),
+    ("node/record", {"node/common", "node/host", "node/transport", "node/config", "node/frame", "tables", "render",
+                     "render/gl"}),
+    ("node", {"node/common", "node/host", "node/transport", "node/config", "node/frame", "node/record", "tables",
+              "render", "render/gl"}),
+]
+# The public library may include every library but the commands; the commands everything.
+TOP_ANY = {"api": {"commands"}, "commands": set()}
+GL = re.compile(r'^\s*#\s*include\s+[<"](glad/|GL/|EGL/|GLFW/|render/)')
+SOCKET = re.compile(r'^\s*#\s*include\s+<(sys/socket\.h|netinet/|arpa/inet\.h|netdb\.h|linux/can|net/if\.h)')
+NO_GL = ("protocol", "ephemeris", "physics", "sky", "calibration", "tables/settings.h")
+# The host's state and the frames are pure (node/host/sender.h stands for the kernel's address).
+SOCKETS_ALLOWED = ("node/transport", "node/common", "node/config", "node/record", "node/node.", "commands", "tests")
+SOURCES = (".h", ".cpp", ".glsl", ".frag", ".vert", ".comp")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
+# One definition of the units, with no dependency of its own: every folder may include it.
+UNITS = "physics/common/units.h"
+TOP = ["protocol", "ephemeris", "physics", "sky", "calibration", "render", "tables", "node", "api", "commands"]
+
+for name, below in ORDERED:
+    ALLOWED[name] = LOWER | below
+KNOWN = set(ALLOWED) | set(TOP_ANY)
 
 
 def folder_of(path):
     """The layout folder of a file path relative to the source root (deepest listed folder)."""
     parts = path.split("/")
-    for depth in (2, 1):
+    for depth in range(len(parts) - 1, 0, -1):
         f = "/".join(parts[:depth])
-        if len(parts) > depth and (f in ALLOWED or f in EVERYTHING_BUT):
+        if f in KNOWN:
             return f
     return None
 
 
 def resolve(root, including_file, name):
-    for base in (root, os.path.join(root, "shaders"), os.path.dirname(including_file)):
+    for base in (root, os.path.join(root, "api", "include"), os.path.dirname(including_file)):
         p = os.path.normpath(os.path.join(base, name))
         if os.path.isfile(p):
             return os.path.relpath(p, root)
     return None
+
+
+def check_file(root, path, rel, src, edges, errors):
+    with open(path, encoding="utf-8") as fh:
+        lines = fh.readlines()
+    for n, line in enumerate(lines, 1):
+        if GL.match(line) and rel.startswith(NO_GL) and not line.strip().endswith('"'):
+            errors.append(f"{rel}:{n}: {line.strip()}: no GL below the renderer")
+        if GL.match(line) and rel.startswith(NO_GL) and '"render/' in line:
+            errors.append(f"{rel}:{n}: {line.strip()}: no GL below the renderer")
+        if SOCKET.match(line) and not rel.startswith(SOCKETS_ALLOWED):
+            errors.append(f"{rel}:{n}: {line.strip()}: socket headers only in the node\'s transport, config, record and common parts and the commands")
+        m = INCLUDE.match(line)
+        if not m:
+            continue
+        target = resolve(root, path, m.group(1))
+        dst = folder_of(target) if target else None
+        if dst is None or dst == src or target == UNITS:
+            continue
+        edges.setdefault(src, set()).add(dst)
+        if src in TOP_ANY:
+            if dst in TOP_ANY[src]:
+                errors.append(f"{rel}:{n}: includes {m.group(1)}: {src}/ may not depend on {dst}/")
+        elif dst in TOP_ANY:
+            errors.append(f"{rel}:{n}: includes {m.group(1)}: only the commands may include {dst}/")
+        elif dst not in ALLOWED.get(src, set()):
+            errors.append(f"{rel}:{n}: includes {m.group(1)}: {src}/ may not depend on {dst}/")
+
+
+def api_reaches_sockets(root):
+    """The public library's files and what they include, transitively: none may name a socket header."""
+    errors, seen = [], set()
+    todo = [os.path.relpath(os.path.join(d, f), root) for d, _, fs in os.walk(os.path.join(root, "api"))
+            for f in fs if f.endswith(SOURCES)]
+    while todo:
+        rel = todo.pop()
+        if rel in seen:
+            continue
+        seen.add(rel)
+        with open(os.path.join(root, rel), encoding="utf-8") as fh:
+            for n, line in enumerate(fh, 1):
+                if SOCKET.match(line):
+                    errors.append(f"{rel}:{n}: {line.strip()}: the public API reaches a socket header")
+                m = INCLUDE.match(line)
+                if m:
+                    t = resolve(root, os.path.join(root, rel), m.group(1))
+                    if t:
+                        todo.append(t)
+    return errors
 
 
 def main(root):
@@ -62,28 +159,18 @@ def main(root):
     for top in TOP:
         for dirpath, _, files in os.walk(os.path.join(root, top)):
             for f in files:
-                if not f.endswith((".h", ".cpp", ".glsl", ".frag", ".vert", ".comp")):
+                if not f.endswith(SOURCES):
                     continue
                 path = os.path.join(dirpath, f)
                 rel = os.path.relpath(path, root)
                 src = folder_of(rel)
-                with open(path, encoding="utf-8") as fh:
-                    for n, line in enumerate(fh, 1):
-                        m = INCLUDE.match(line)
-                        if not m:
-                            continue
-                        target = resolve(root, path, m.group(1))
-                        dst = folder_of(target) if target else None
-                        if dst is None or dst == src:
-                            continue
-                        edges.setdefault(src, set()).add(dst)
-                        if src in EVERYTHING_BUT:
-                            if dst in EVERYTHING_BUT[src]:
-                                errors.append(f"{rel}:{n}: includes {m.group(1)}: {src}/ may not depend on {dst}/")
-                        elif dst == "services/commands" or (dst == "services" and "services" not in ALLOWED[src]):
-                            errors.append(f"{rel}:{n}: includes {m.group(1)}: only the public library and the commands may include {dst}/")
-                        elif dst not in ALLOWED[src]:
-                            errors.append(f"{rel}:{n}: includes {m.group(1)}: {src}/ may not depend on {dst}/")
+                if src is None:
+                    errors.append(f"{rel}: in no folder of the layout table")
+                    continue
+                check_file(root, path, rel, src, edges, errors)
+    if os.path.isdir(os.path.join(root, "api", "include")):
+        errors += api_reaches_sockets(root)
+
     # A loop between folders (also one the table would allow by mistake).
     def visit(node, stack):
         for nxt in sorted(edges.get(node, ())):
@@ -99,7 +186,7 @@ def main(root):
         return 1
     print("layout: %d folders, %d dependencies, no loop" % (len(edges), sum(len(v) for v in edges.values())))
     for src in sorted(edges):
-        print("  %-15s -> %s" % (src, ", ".join(sorted(edges[src]))))
+        print("  %-24s -> %s" % (src, ", ".join(sorted(edges[src]))))
     return 0
 
 

@@ -6,6 +6,7 @@
 
 #include "examples/terrain_host/terrain_host.h"
 #include "tests/library/library_test_support.h"
+#include "physics/common/units.h"
 
 #include <glad/gl.h>
 #include <gtest/gtest.h>
@@ -21,7 +22,7 @@
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using skyig::kDeg;
 
 using skyig::testing::smallPhysicalSky;
 

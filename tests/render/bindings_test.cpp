@@ -1,12 +1,12 @@
 // The numbers that tie a pass's C++ to its GLSL (uniform-block bindings, texture and image units,
-// attribute and output locations) are named once, in shaders/common/bindings.h. These tests
+// attribute and output locations) are named once, in render/glsl/bindings.h. These tests
 // check that both sides use those names and agree: every program the renderer links reports,
 // for each of its samplers, images, blocks, inputs and outputs, the number the header gives
 // the C++ that binds it; and neither the shaders nor the renderer's C++ binds by a bare number.
 #include "render/gl/embedded_shaders.h"
 #include "render/gl/gl_context.h"
 #include "render/gl/gl_program.h"
-#include "shaders/common/bindings.h"
+#include "render/glsl/bindings.h"
 
 #include <gtest/gtest.h>
 
@@ -81,63 +81,63 @@ std::vector<ProgramCase> programs() {
   };
   std::vector<ProgramCase> cases = {
       // SkyRenderer: the analytic sky and the tone pass.
-      {{"passes/fullscreen.vert", "passes/analytic_sky.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/sky/analytic_sky.frag"},
        {frame, block("AnalyticSkyBlock", SKYIG_BINDING_SKY), band, radiance}},
-      {{"passes/fullscreen.vert", "passes/tone.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/tone/tone.frag"},
        {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), output("outDisplay", SKYIG_OUTPUT_COLOR)},
        "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 2\n#define SKYIG_PHOTOPIC\n"},
-      {{"passes/fullscreen.vert", "passes/tone.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/tone/tone.frag"},
        {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), output("outDisplay", SKYIG_OUTPUT_COLOR)},
        "#define SKYIG_TONE_TUMBLIN_RUSHMEIER\n"},
       // TonePass: the veil read from its grid, and the grid's veil.
-      {{"passes/fullscreen.vert", "passes/tone.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/tone/tone.frag"},
        {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), sampler("glareVeilGrid", SKYIG_UNIT_GLARE_VEIL),
         output("outDisplay", SKYIG_OUTPUT_COLOR)},
        "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
       // The same on a night whose layer holds the veil (the tone pass over every pixel: the sky
       // from space).
-      {{"passes/fullscreen.vert", "passes/tone.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/tone/tone.frag"},
        {optional(frame), block("ToneBlock", SKYIG_BINDING_TONE), sampler("hdrImage", SKYIG_UNIT_HDR_IMAGE),
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
         output("outDisplay", SKYIG_OUTPUT_COLOR)},
        "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_NIGHT_LAYER\n"
        "#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n"},
-      {{"passes/fullscreen.vert", "passes/glare_veil.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/tone/glare_veil.frag"},
        {frame, block("ToneBlock", SKYIG_BINDING_TONE), output("outVeil", SKYIG_OUTPUT_COLOR)},
        "#define SKYIG_GLARE 2\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
       // PhysicalSkyPass: inside the atmosphere, from space, and this frame's slices.
       // The warp-and-blend pass of a projector (WarpBlendPass): two outputs at once.
-      {{"passes/fullscreen.vert", "passes/warp_blend.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/projector/warp_blend.frag"},
        {optional(frame), block("ProjectorBlock", SKYIG_BINDING_PROJECTOR),
         sampler("channelDisplay", SKYIG_UNIT_CHANNEL_DISPLAY), sampler("channelHdr", SKYIG_UNIT_CHANNEL_HDR),
         sampler("warpMap", SKYIG_UNIT_PROJECTOR_WARP), sampler("alphaMap", SKYIG_UNIT_PROJECTOR_ALPHA),
         sampler("betaMap", SKYIG_UNIT_PROJECTOR_BETA), output("outDisplay", SKYIG_OUTPUT_PROJECTOR_DISPLAY),
         output("outLight", SKYIG_OUTPUT_PROJECTOR_LIGHT)}},
-      // The composite into a host's framebuffer (HostFrameRenderer).
-      {{"passes/host_frame.vert", "passes/host_frame.frag"},
+      // The composite into a host's framebuffer (ClientFrameRenderer).
+      {{"render/client/client_frame.vert", "render/client/client_frame.frag"},
        {sampler("hostSource", SKYIG_UNIT_HOST_SOURCE), output("outColor", SKYIG_OUTPUT_COLOR)}},
-      // Its variants (passes/physical_sky.frag) and the frozen reference of the pass
-      // (render/passes/reference_sky_pass.h), through the same inputs: the transmittance is
+      // Its variants (render/passes/sky/physical_sky.frag) and the frozen reference of the pass
+      // (render/passes/sky/reference_sky_pass.h), through the same inputs: the transmittance is
       // read by the ground's reflection and the disc, the irradiance by the ground's, the
       // moon's slices by the moonlit variants.
-      {{"passes/fullscreen.vert", "passes/physical_sky.frag"}, physicalSky(true, true, false)},
-      {{"passes/fullscreen.vert", "passes/physical_sky.frag"}, physicalSky(true, true, true), "#define SKYIG_MOONLIT\n"},
-      {{"passes/fullscreen.vert", "passes/physical_sky.frag"}, physicalSky(false, false, false), "#define SKYIG_SKY\n"},
-      {{"passes/ground_cap.vert", "passes/physical_sky.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/sky/physical_sky.frag"}, physicalSky(true, true, false)},
+      {{"render/glsl/fullscreen.vert", "render/passes/sky/physical_sky.frag"}, physicalSky(true, true, true), "#define SKYIG_MOONLIT\n"},
+      {{"render/glsl/fullscreen.vert", "render/passes/sky/physical_sky.frag"}, physicalSky(false, false, false), "#define SKYIG_SKY\n"},
+      {{"render/passes/sky/ground_cap.vert", "render/passes/sky/physical_sky.frag"},
        physicalSky(true, true, true),
        "#define SKYIG_MOONLIT\n#define SKYIG_GROUND\n"},
-      {{"passes/sun_disc.vert", "passes/physical_sky.frag"},
+      {{"render/passes/sky/sun_disc.vert", "render/passes/sky/physical_sky.frag"},
        physicalSky(true, true, true),
        "#define SKYIG_MOONLIT\n#define SKYIG_SUN_DISC\n"},
-      {{"passes/sun_disc.vert", "passes/physical_sky.frag"},
+      {{"render/passes/sky/sun_disc.vert", "render/passes/sky/physical_sky.frag"},
        physicalSky(true, false, false),
        "#define SKYIG_SKY\n#define SKYIG_SUN_DISC\n"},
       // The sky's variant that maps its own pixels to the display (SkyRenderer::drawChannel):
       // the tone block, the veil's grid, the display values beside the light.
-      {{"passes/fullscreen.vert", "passes/physical_sky.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/sky/physical_sky.frag"},
        with(physicalSky(false, false, false),
             {block("ToneBlock", SKYIG_BINDING_TONE), sampler("glareVeilGrid", SKYIG_UNIT_GLARE_VEIL),
              output("outDisplay", SKYIG_OUTPUT_FOLDED_DISPLAY)}),
@@ -145,7 +145,7 @@ std::vector<ProgramCase> programs() {
        "#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
       // The same in a box of the exact veil, here the disc's (PhysicalSkyPass::draw, FoldedTone):
       // the veil per pixel, no grid.
-      {{"passes/sun_disc.vert", "passes/physical_sky.frag"},
+      {{"render/passes/sky/sun_disc.vert", "render/passes/sky/physical_sky.frag"},
        with(physicalSky(true, false, false),
             {block("ToneBlock", SKYIG_BINDING_TONE), output("outDisplay", SKYIG_OUTPUT_FOLDED_DISPLAY)}),
        "#define SKYIG_SKY\n#define SKYIG_SUN_DISC\n#define SKYIG_FOLD_TONE\n#define SKYIG_TONE_CURVE\n"
@@ -153,18 +153,18 @@ std::vector<ProgramCase> programs() {
       // With the night's layer added (SkyRenderer::drawChannel at night): the ground's and the
       // band's near the horizon with the transmittance per pixel, the sky above reading the layer
       // already dimmed (no table); the sun's sky left out, the moon's in.
-      {{"passes/ground_cap.vert", "passes/physical_sky.frag"},
+      {{"render/passes/sky/ground_cap.vert", "render/passes/sky/physical_sky.frag"},
        with(physicalSky(true, true, false),
             {sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
              sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION)}),
        "#define SKYIG_GROUND\n#define SKYIG_NIGHT_LAYER\n#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n"},
-      {{"passes/ground_cap.vert", "passes/physical_sky.frag"},
+      {{"render/passes/sky/ground_cap.vert", "render/passes/sky/physical_sky.frag"},
        with(physicalSky(false, false, true, false),
             {sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
              sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION)}),
        "#define SKYIG_MOONLIT\n#define SKYIG_SKY\n#define SKYIG_HORIZON_BAND\n#define SKYIG_SUNLESS\n"
        "#define SKYIG_NIGHT_LAYER\n#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n"},
-      {{"passes/fullscreen.vert", "passes/physical_sky.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/sky/physical_sky.frag"},
        with(physicalSky(false, false, true, false),
             {sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
              optional(sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION))}),
@@ -172,7 +172,7 @@ std::vector<ProgramCase> programs() {
        "#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n#define SKYIG_NIGHT_LAYER_TRANSMITTED\n"},
       // The same mapping its pixels with the moon's glare veil read from the layer's alpha: the
       // tone block, no grid.
-      {{"passes/fullscreen.vert", "passes/physical_sky.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/sky/physical_sky.frag"},
        with(physicalSky(false, false, true, false),
             {sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
              optional(sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION)),
@@ -180,67 +180,67 @@ std::vector<ProgramCase> programs() {
        "#define SKYIG_MOONLIT\n#define SKYIG_SKY\n#define SKYIG_SUNLESS\n#define SKYIG_NIGHT_LAYER\n"
        "#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n#define SKYIG_NIGHT_LAYER_TRANSMITTED\n#define SKYIG_FOLD_TONE\n"
        "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_NIGHT_LAYER\n"},
-      {{"passes/fullscreen.vert", "reference/physical_sky_reference.frag"}, physicalSky(true, true, true)},
-      {{"passes/fullscreen.vert", "passes/physical_sky_space.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/sky/physical_sky_reference.frag"}, physicalSky(true, true, true)},
+      {{"render/glsl/fullscreen.vert", "render/passes/sky/physical_sky_space.frag"},
        {frame, band, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE), sampler("scatteringPacked", SKYIG_UNIT_SCATTERING),
         sampler("singleMieRG", SKYIG_UNIT_SINGLE_MIE), sampler("irradianceXyz", SKYIG_UNIT_IRRADIANCE), radiance}},
-      {{"passes/fullscreen.vert", "passes/physical_sky_slice.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/sky/physical_sky_slice.frag"},
        {optional(frame), sampler("scatteringPacked", SKYIG_UNIT_SCATTERING),
         sampler("singleMieRG", SKYIG_UNIT_SINGLE_MIE), output("outScattering", SKYIG_OUTPUT_SLICE_SCATTERING),
         output("outSingleMie", SKYIG_OUTPUT_SLICE_SINGLE_MIE)}},
       // MoonPass, NightDiffusePass, StarPass.
-      {{"passes/moon.vert", "passes/moon.frag"},
+      {{"render/passes/night/moon.vert", "render/passes/night/moon.frag"},
        {frame, band, sampler("moonAlbedo", SKYIG_UNIT_MOON_ALBEDO),
         sampler("extinctionTable", SKYIG_UNIT_MOON_EXTINCTION), radiance}},
-      {{"passes/fullscreen.vert", "passes/night_diffuse.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/night/night_diffuse.frag"},
        {frame, band, sampler("milkyWayS10", SKYIG_UNIT_MILKY_WAY), sampler("zodiacalS10", SKYIG_UNIT_ZODIACAL),
         sampler("extinctionRec709", SKYIG_UNIT_NIGHT_EXTINCTION), radiance}},
       // Its layer for the physical sky pass (NightDiffusePass::drawLayer): the light above the
       // atmosphere and, beside it, dimmed at the texel.
-      {{"passes/fullscreen.vert", "passes/night_diffuse.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/night/night_diffuse.frag"},
        {frame, band, sampler("milkyWayS10", SKYIG_UNIT_MILKY_WAY), sampler("zodiacalS10", SKYIG_UNIT_ZODIACAL),
         sampler("extinctionRec709", SKYIG_UNIT_NIGHT_EXTINCTION), radiance,
         output("outTransmitted", SKYIG_OUTPUT_NIGHT_LAYER_TRANSMITTED)},
        "#define SKYIG_NIGHT_LAYER\n#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n"},
       // With the glare veil of the tone block's one source in its alpha.
-      {{"passes/fullscreen.vert", "passes/night_diffuse.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/night/night_diffuse.frag"},
        {frame, band, block("ToneBlock", SKYIG_BINDING_TONE), sampler("milkyWayS10", SKYIG_UNIT_MILKY_WAY),
         sampler("zodiacalS10", SKYIG_UNIT_ZODIACAL), sampler("extinctionRec709", SKYIG_UNIT_NIGHT_EXTINCTION), radiance,
         output("outTransmitted", SKYIG_OUTPUT_NIGHT_LAYER_TRANSMITTED)},
        "#define SKYIG_NIGHT_LAYER\n#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n#define SKYIG_GLARE 1\n"},
       // GogglePass: the photocathode, its 8 x 8 means, the halo's two passes, the gain, the screen.
-      {{"passes/fullscreen.vert", "passes/goggle_input.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/goggle/goggle_input.frag"},
        {optional(frame), block("GoggleBlock", SKYIG_BINDING_GOGGLE), sampler("nvisImage", SKYIG_UNIT_GOGGLE_NVIS),
         output("outCathode", SKYIG_OUTPUT_COLOR)}},
-      {{"passes/fullscreen.vert", "passes/goggle_coarse.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/goggle/goggle_coarse.frag"},
        {optional(frame), block("GoggleBlock", SKYIG_BINDING_GOGGLE), sampler("cathodeImage", SKYIG_UNIT_GOGGLE_CATHODE),
         output("outMean", SKYIG_OUTPUT_COLOR)}},
-      {{"passes/fullscreen.vert", "passes/goggle_halo.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/goggle/goggle_halo.frag"},
        {optional(frame), block("GoggleBlock", SKYIG_BINDING_GOGGLE), sampler("coarseImage", SKYIG_UNIT_GOGGLE_COARSE),
         output("outHalo", SKYIG_OUTPUT_COLOR)}},
-      {{"passes/fullscreen.vert", "passes/goggle_abc.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/goggle/goggle_abc.frag"},
        {optional(frame), block("GoggleBlock", SKYIG_BINDING_GOGGLE), sampler("coarseImage", SKYIG_UNIT_GOGGLE_COARSE),
         output("outGain", SKYIG_OUTPUT_COLOR)}},
-      {{"passes/fullscreen.vert", "passes/goggle.frag"},
+      {{"render/glsl/fullscreen.vert", "render/passes/goggle/goggle.frag"},
        {optional(frame), block("GoggleBlock", SKYIG_BINDING_GOGGLE), block("ToneBlock", SKYIG_BINDING_TONE),
         sampler("cathodeImage", SKYIG_UNIT_GOGGLE_CATHODE), sampler("haloLogImage", SKYIG_UNIT_GOGGLE_HALO),
         sampler("gainImage", SKYIG_UNIT_GOGGLE_GAIN), output("outDisplay", SKYIG_OUTPUT_COLOR)}},
-      {{"passes/star.vert", "passes/star.frag"},
+      {{"render/passes/night/star.vert", "render/passes/night/star.frag"},
        {frame, input("aDirection", SKYIG_ATTRIB_STAR_DIRECTION), input("aRec709Lux", SKYIG_ATTRIB_STAR_REC709_LUX),
         radiance}},
-      {{"passes/star_display.vert", "passes/star.frag"},
+      {{"render/passes/night/star_display.vert", "render/passes/night/star.frag"},
        {frame, block("ToneBlock", SKYIG_BINDING_TONE), input("aDirection", SKYIG_ATTRIB_STAR_DIRECTION),
         input("aRec709Lux", SKYIG_ATTRIB_STAR_REC709_LUX), sampler("hdrImage", SKYIG_UNIT_STAR_BACKGROUND), radiance}},
       // The tone pass over the displayed stars' quads after a sky pass that mapped its pixels
       // (TonePass::drawOver).
-      {{"passes/star_display.vert", "passes/tone.frag"},
+      {{"render/passes/night/star_display.vert", "render/passes/tone/tone.frag"},
        {frame, block("ToneBlock", SKYIG_BINDING_TONE), input("aDirection", SKYIG_ATTRIB_STAR_DIRECTION),
         input("aRec709Lux", SKYIG_ATTRIB_STAR_REC709_LUX), sampler("hdrImage", SKYIG_UNIT_STAR_BACKGROUND),
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), sampler("glareVeilGrid", SKYIG_UNIT_GLARE_VEIL),
         output("outDisplay", SKYIG_OUTPUT_COLOR)},
        "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_GRID\n#define SKYIG_GLARE_CELL_PX 8.0\n"},
       // The same on a night whose layer holds the veil.
-      {{"passes/star_display.vert", "passes/tone.frag"},
+      {{"render/passes/night/star_display.vert", "render/passes/tone/tone.frag"},
        {frame, block("ToneBlock", SKYIG_BINDING_TONE), input("aDirection", SKYIG_ATTRIB_STAR_DIRECTION),
         input("aRec709Lux", SKYIG_ATTRIB_STAR_REC709_LUX), sampler("hdrImage", SKYIG_UNIT_STAR_BACKGROUND),
         sampler("pointSourceImage", SKYIG_UNIT_POINT_SOURCES), sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
@@ -248,48 +248,48 @@ std::vector<ProgramCase> programs() {
        "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_NIGHT_LAYER\n"
        "#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n"},
       // AtmosphereGpuPrecompute, in the order it runs them.
-      {{"atmosphere/precompute_transmittance.comp"}, {image("transmittance_out", SKYIG_IMAGE_TRANSMITTANCE)}},
-      {{"atmosphere/precompute_direct_irradiance.comp"},
+      {{"render/passes/precompute/precompute_transmittance.comp"}, {image("transmittance_out", SKYIG_IMAGE_TRANSMITTANCE)}},
+      {{"render/passes/precompute/precompute_direct_irradiance.comp"},
        {sampler("transmittance_texture", SKYIG_UNIT_TRANSMITTANCE),
         image("delta_irradiance_out", SKYIG_IMAGE_DELTA_IRRADIANCE), image("irradiance_out", SKYIG_IMAGE_IRRADIANCE)}},
-      {{"atmosphere/precompute_ray_transmittance.comp"},
+      {{"render/passes/precompute/precompute_ray_transmittance.comp"},
        {sampler("transmittance_texture", SKYIG_UNIT_TRANSMITTANCE),
         image("ray_transmittance_out", SKYIG_IMAGE_RAY_TRANSMITTANCE),
         image("ray_geometry_out", SKYIG_IMAGE_RAY_GEOMETRY)}},
-      {{"atmosphere/precompute_single_scattering.comp"},
+      {{"render/passes/precompute/precompute_single_scattering.comp"},
        {sampler("transmittance_texture", SKYIG_UNIT_TRANSMITTANCE),
         sampler("ray_transmittance", SKYIG_UNIT_RAY_TRANSMITTANCE), sampler("ray_geometry", SKYIG_UNIT_RAY_GEOMETRY),
         image("delta_rayleigh_out", SKYIG_IMAGE_DELTA_RAYLEIGH), image("delta_mie_out", SKYIG_IMAGE_DELTA_MIE),
         image("scattering_out", SKYIG_IMAGE_SCATTERING), image("single_mie_out", SKYIG_IMAGE_SINGLE_MIE)}},
-      {{"atmosphere/precompute_nu_slices.comp"},
+      {{"render/passes/precompute/precompute_nu_slices.comp"},
        {sampler("single_rayleigh_texture", SKYIG_UNIT_DELTA_RAYLEIGH),
         sampler("single_mie_texture", SKYIG_UNIT_DELTA_MIE), sampler("multiple_texture", SKYIG_UNIT_DELTA_MULTIPLE),
         image("slices_a_out", SKYIG_IMAGE_NU_SLICES_A), image("slices_b_out", SKYIG_IMAGE_NU_SLICES_B)}},
-      {{"atmosphere/precompute_scattering_density_order2.comp"},
+      {{"render/passes/precompute/precompute_scattering_density_order2.comp"},
        {sampler("transmittance_texture", SKYIG_UNIT_TRANSMITTANCE),
         sampler("ground_irradiance_texture", SKYIG_UNIT_GROUND_IRRADIANCE), sampler("slices_a", SKYIG_UNIT_NU_SLICES_A),
         sampler("slices_b", SKYIG_UNIT_NU_SLICES_B), image("density_out", SKYIG_IMAGE_DELTA_DENSITY)}},
-      {{"atmosphere/precompute_scattering_density.comp"},
+      {{"render/passes/precompute/precompute_scattering_density.comp"},
        {sampler("transmittance_texture", SKYIG_UNIT_TRANSMITTANCE),
         sampler("ground_irradiance_texture", SKYIG_UNIT_GROUND_IRRADIANCE), sampler("slices_a", SKYIG_UNIT_NU_SLICES_A),
         image("density_out", SKYIG_IMAGE_DELTA_DENSITY)}},
-      {{"atmosphere/precompute_indirect_irradiance.comp"},
+      {{"render/passes/precompute/precompute_indirect_irradiance.comp"},
        {sampler("single_rayleigh_texture", SKYIG_UNIT_DELTA_RAYLEIGH),
         sampler("single_mie_texture", SKYIG_UNIT_DELTA_MIE), sampler("multiple_texture", SKYIG_UNIT_DELTA_MULTIPLE),
         image("delta_irradiance_out", SKYIG_IMAGE_DELTA_IRRADIANCE),
         image("irradiance_accumulated", SKYIG_IMAGE_IRRADIANCE)}},
-      {{"atmosphere/precompute_multiple_scattering.comp"},
+      {{"render/passes/precompute/precompute_multiple_scattering.comp"},
        {sampler("scattering_density_texture", SKYIG_UNIT_DELTA_DENSITY),
         sampler("ray_transmittance", SKYIG_UNIT_RAY_TRANSMITTANCE), sampler("ray_geometry", SKYIG_UNIT_RAY_GEOMETRY),
         image("delta_multiple_out", SKYIG_IMAGE_DELTA_MULTIPLE),
         image("scattering_accumulated", SKYIG_IMAGE_SCATTERING)}},
-      // The panorama check of tests/sky/atmosphere/gpu_precompute_test.cpp.
-      {{"atmosphere/sky_view.comp"},
+      // The panorama check of tests/physics/atmosphere/gpu_precompute_test.cpp.
+      {{"render/passes/precompute/sky_view.comp"},
        {sampler("transmittance_texture", SKYIG_UNIT_TRANSMITTANCE),
         sampler("scattering_texture", SKYIG_UNIT_SCATTERING), sampler("single_mie_texture", SKYIG_UNIT_SINGLE_MIE),
         sampler("irradiance_texture", SKYIG_UNIT_IRRADIANCE), image("radiance_out", SKYIG_IMAGE_SKY_VIEW)}},
   };
-  // A std140 block may stay active wherever common/uniforms.h declares it, read or not (Mesa
+  // A std140 block may stay active wherever render/glsl/uniforms.h declares it, read or not (Mesa
   // keeps them all): the blocks a program does not list above are optional in it.
   for (ProgramCase& c : cases) {
     if (c.files.size() == 1) continue;
@@ -404,7 +404,7 @@ bool isPassFile(std::string_view path) {
 
 // Links every program of the renderer and the GPU precompute and compares what GL reports for
 // each sampler, image, uniform/storage block, vertex input and fragment output with the
-// shaders/common/bindings.h name that the C++ binds it by. A GLSL declaration with another
+// render/glsl/bindings.h name that the C++ binds it by. A GLSL declaration with another
 // number, or a new resource without a name, fails here.
 TEST(Bindings, EveryPassUsesTheSharedUnits) {
   const auto gl = makeContext();
@@ -435,11 +435,11 @@ TEST(Bindings, EveryPassUsesTheSharedUnits) {
         if (x.kind == r.kind && x.name == r.name) e = &x;
       if (!e) {
         ADD_FAILURE() << r.kind << " " << r.name << " (at " << r.value
-                      << ") is not in this test: bind it by a shaders/common/bindings.h name and list it here";
+                      << ") is not in this test: bind it by a render/glsl/bindings.h name and list it here";
         continue;
       }
       EXPECT_EQ(r.value, e->value) << r.kind << " " << r.name << ": the GLSL says " << r.value
-                                   << ", shaders/common/bindings.h (what the C++ binds) " << e->value;
+                                   << ", render/glsl/bindings.h (what the C++ binds) " << e->value;
       // Two resources of one kind on one number would read the same texture or buffer.
       const auto [it, fresh] = taken[r.kind].emplace(r.value, r.name);
       EXPECT_TRUE(fresh) << r.kind << "s " << it->second << " and " << r.name << " share " << r.value;
@@ -473,7 +473,7 @@ TEST(Bindings, NoShaderSourceHasABareBindingNumber) {
     std::string line;
     for (int n = 1; std::getline(in, line); ++n)
       EXPECT_FALSE(std::regex_search(line, bare))
-          << s.path << ":" << n << ": a bare number; name it in shaders/common/bindings.h\n  " << line;
+          << s.path << ":" << n << ": a bare number; name it in render/glsl/bindings.h\n  " << line;
   }
   EXPECT_GT(files, 20);
 }
@@ -497,7 +497,7 @@ TEST(Bindings, NoRendererSourceBindsByNumber) {
     std::string line;
     for (int n = 1; std::getline(in, line); ++n)
       EXPECT_FALSE(std::regex_search(line, bare))
-          << entry.path().string() << ":" << n << ": a bare number; use its shaders/common/bindings.h name\n  "
+          << entry.path().string() << ":" << n << ": a bare number; use its render/glsl/bindings.h name\n  "
           << line;
   }
   EXPECT_GT(files, 10);

@@ -1,20 +1,21 @@
 // Headless renders on the real GL path (llvmpipe where there is no GPU), checked for physics
 // and against the same shader code evaluated in double precision on the CPU.
-#include "sky/analytic/analytic_sky.h"
-#include "sky/atmosphere/conditions.h"
-#include "sky/atmosphere/rec709_tables.h"
-#include "sky/atmosphere/table_cache.h"
-#include "render/passes/physical_sky_pass.h"
+#include "physics/analytic/analytic_sky.h"
+#include "physics/atmosphere/conditions.h"
+#include "physics/atmosphere/rec709_tables.h"
+#include "tables/table_cache.h"
+#include "render/passes/sky/physical_sky_pass.h"
 #include "render/gl/gl_context.h"
 #include "render/image_io.h"
 #include "render/sky_renderer.h"
 #include "render/texture_readback.h"
-#include "render/passes/night_diffuse_pass.h"
-#include "render/passes/tone_pass.h"
-#include "shaders/physics.h"
+#include "render/passes/night/night_diffuse_pass.h"
+#include "render/passes/tone/tone_pass.h"
+#include "physics/physics.h"
 #include "ephemeris/refraction.h"
 
-#include "tests/sky/night/star_test_support.h"
+#include "tests/physics/night/star_test_support.h"
+#include "physics/common/units.h"
 
 #include <gtest/gtest.h>
 #include <png.h>
@@ -37,7 +38,7 @@ namespace atmosphere = skyig::atmosphere;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using skyig::kDeg;
 constexpr int kW = 160, kH = 120;
 
 class GlRender : public ::testing::Test {
@@ -72,10 +73,10 @@ class GlRender : public ::testing::Test {
 
   // The display values (0-1) the tone pass gives the analytic sky along `r`, from the CPU's
   // evaluation of the same shader code: the sky's radiance, the glare veil of every source per
-  // pixel (tone/glare.glsl), the display's operator.
+  // pixel (physics/eye/glare.glsl), the display's operator.
   static glm::dvec3 cpuDisplayValues(const SkyState& s, const ChannelConfig& c, const glm::dvec3& r) {
     const shader::DisplayModel d{c.display.maxLuminance, c.display.ambientLuminance, c.display.gamma,
-                                 c.display.adaptationLuminance};
+                                 c.display.viewerAdaptationLuminance};
     glm::dvec3 world = analyticSkyRadiance(s.sky.params, r);
     for (const eye::GlareSource& g : s.glare) {
       const glm::dvec3 v = glm::normalize(r);
@@ -83,7 +84,7 @@ class GlRender : public ::testing::Test {
       world += g.rec709Lux * shader::veilingLuminancePerLux(theta, g.angularRadiusRad * 180.0 / std::numbers::pi,
                                                            eye::kGlareObserverAgeYears, eye::kGlareOcularPigmentation);
     }
-    if (c.display.toneOperator == ToneOperator::TumblinRushmeier) return shader::toneReproduce(world, s.adaptationLuminance, d);
+    if (c.display.toneOperator == ToneOperator::TumblinRushmeier) return shader::toneReproduce(world, s.worldAdaptationLuminance, d);
     const eye::ToneCurve curve = toneCurveFor(s, c.display);
     const glm::dvec3 xyY = shader::mesopicxyY(shader::rec709ToXyz(glm::max(world, glm::dvec3(0.0))));
     return shader::displayValues(shader::toneReproduceLinearWithCurve(xyY, std::log10(curve.displayLuminance(xyY.z)), d), d);
@@ -203,7 +204,7 @@ TEST_F(GlRender, DisplayFrameEqualsCpuToneReproduction) {
   }
 }
 
-// Where the tone pass reads the glare veil from its grid (render/passes/tone_pass.h: away from
+// Where the tone pass reads the glare veil from its grid (render/passes/tone/tone_pass.h: away from
 // the sun) and where it evaluates it per pixel (the box of cells around the sun), the display
 // codes equal the CPU's with the veil per pixel, as above. 640x400 over 60 x 40 deg, the sun
 // in view: about two thirds of the frame are outside the sun's box.
@@ -243,7 +244,7 @@ TEST_F(GlRender, GlareVeilFromTheGridEqualsThePerPixelVeil) {
 }
 
 // GlareGrid::cellAngleRad bounds the angle of every cell edge of the grid (the vertices of
-// common/pixel_grid.glsl, measured one by one), and is the widest within 0.1% where the eye's axis
+// render/glsl/pixel_grid.glsl, measured one by one), and is the widest within 0.1% where the eye's axis
 // is in view (no edge need be centred on it): a frustum around the axis, and one beside it (10 to
 // 50 deg right), for 8- and 3-pixel cells of about 2 and 0.8 deg.
 TEST(GlareGrid, CellAngleBoundsEveryCellEdge) {
@@ -440,7 +441,7 @@ TEST_F(GlRender, PhysicalSkyMatchesTheCpuModel) {
   EXPECT_LT(worstSpectralGround, 0.03);
   EXPECT_GT(compared, 400);
   EXPECT_GT(ground, 50);
-  EXPECT_GT(s.adaptationLuminance, 100.0);  // a sunlit sky, from the model
+  EXPECT_GT(s.worldAdaptationLuminance, 100.0);  // a sunlit sky, from the model
 }
 
 // Looking along the horizon (the tables' discontinuity between ground and sky rays), with the
@@ -739,7 +740,7 @@ TEST_F(GlRender, LayersLeftOutChangeNoDisplayCode) {
                         Case{"2026-12-09T22:00:00Z", 180.0, true, false, true}}) {
     SkyState s = mappedState(k.utc, k.yaw, c);
     std::printf("%s: sun %.1f deg, adaptation %.3g cd/m^2, the sun's sky %s, moonlit sky %s, night light %s, point sources %s\n", k.utc,
-                s.sunAltitude / kDeg, s.adaptationLuminance, s.shown.sunlitSky ? "drawn" : "left out",
+                s.sunAltitude / kDeg, s.worldAdaptationLuminance, s.shown.sunlitSky ? "drawn" : "left out",
                 s.shown.moonlitSky ? "drawn" : "left out",
                 s.shown.nightLight ? "drawn" : "left out", s.shown.pointSources ? "drawn" : "left out");
     EXPECT_EQ(s.shown.sunlitSky, k.sunlit) << k.utc;
@@ -821,7 +822,7 @@ TEST_F(GlRender, SkyPassMappingItsOwnPixelsShowsWhatTheTonePassShows) {
 // On a night with one glare source, the full moon, the night's layer holds its veil at the
 // vertices of its grid (3-pixel cells at 1280 x 800 over 60 deg; NightDiffusePass::drawLayer) and
 // the sky pass reads it with the night's light: the display codes are those of the same frame
-// with the veil from its own grid of 8-pixel cells (render/passes/tone_pass.h, checked against
+// with the veil from its own grid of 8-pixel cells (render/passes/tone/tone_pass.h, checked against
 // the per-pixel veil above) to within one code and without bias: the mean difference under 0.01
 // of a code over the frame's 3 million values (measured 0.0003). Facing the moon 30 deg up, its
 // veil over the whole frame; a layer without the veil, or read half a cell off, fails.

@@ -1,17 +1,18 @@
 // The goggle channel on the GL path (llvmpipe where there is no GPU): the image intensifier
-// (render/passes/goggle_pass.h) fed scenes of known NVIS radiance, and whole goggle channels of
+// (render/passes/goggle/goggle_pass.h) fed scenes of known NVIS radiance, and whole goggle channels of
 // the sky drawn by SkyRenderer against the probe's NVIS radiance.
 #include "render/gl/gl_context.h"
 #include "render/gl/render_target.h"
-#include "render/passes/goggle_pass.h"
+#include "render/passes/goggle/goggle_pass.h"
 #include "render/sky_renderer.h"
-#include "shaders/common/uniforms.h"
-#include "shaders/goggle/goggle_physics.h"
+#include "render/glsl/uniforms.h"
+#include "physics/goggle/goggle_physics.h"
 #include "sky/night_probe.h"
-#include "sky/nvis/night_spectra.h"
+#include "physics/goggle/night_spectra.h"
 #include "sky/nvis_weights.h"
 #include "sky/sky_state.h"
-#include "tests/sky/atmosphere/shared_models.h"
+#include "tests/physics/atmosphere/shared_models.h"
+#include "physics/common/units.h"
 
 #include <gtest/gtest.h>
 
@@ -29,7 +30,7 @@ using namespace skyig::sky;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using skyig::kDeg;
 constexpr int kW = 480, kH = 400;  // the tube's field: a circle of 200 pixels' radius, 0.104 deg a pixel
 
 // The natural illuminance of the ground at night (RCA Electro-Optics Handbook, 1974, the table

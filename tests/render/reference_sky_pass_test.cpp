@@ -1,11 +1,11 @@
-// The frozen reference of the sky pass (render/passes/reference_sky_pass.h) draws the image the
+// The frozen reference of the sky pass (render/passes/sky/reference_sky_pass.h) draws the image the
 // live pass draws, through the same inputs: while that holds, `skyig bench --ratios` compares
 // the same work, and a change of the live pass that alters the image shows here.
 #include "render/gl/gl_context.h"
-#include "render/passes/reference_sky_pass.h"
+#include "render/passes/sky/reference_sky_pass.h"
 #include "render/sky_renderer.h"
-#include "shaders/physics.h"
-#include "sky/atmosphere/table_cache.h"
+#include "physics/physics.h"
+#include "tables/table_cache.h"
 #include "ephemeris/time.h"
 
 #include <gtest/gtest.h>

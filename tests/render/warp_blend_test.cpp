@@ -1,4 +1,4 @@
-// The warp-and-blend pass of projector channels (render/passes/warp_blend_pass.h) on the real
+// The warp-and-blend pass of projector channels (render/passes/projector/warp_blend_pass.h) on the real
 // GL path, with synthetic calibrations: two projectors side by side on a flat strip of screen,
 // whose overlap has a smooth alpha ramp summing to 1 and the black-level lift
 // beta = alpha b (k_max - k) of a dome generator. The projector's light is modelled as a real
@@ -6,10 +6,10 @@
 #include "calibration/load.h"
 #include "render/gl/gl_context.h"
 #include "render/image_io.h"
-#include "render/passes/warp_blend_pass.h"
+#include "render/passes/projector/warp_blend_pass.h"
 #include "render/sky_renderer.h"
 #include "render/texture_readback.h"
-#include "shaders/physics.h"
+#include "physics/physics.h"
 #include "sky/sky_state.h"
 
 #include <gtest/gtest.h>

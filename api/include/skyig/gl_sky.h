@@ -1,5 +1,5 @@
 #pragma once
-// Drawing the sky with the host's OpenGL (4.5 core) context (docs/library.md, docs/host-frame.md).
+// Drawing the sky with the host's OpenGL (4.5 core) context (docs/library.md, docs/client-frame.md).
 //
 // Conventions. The camera is the host's: a GL view matrix from the observer's east-north-up
 // frame (x east, y north, z up, metres) to eye space (x right, y up, -z forward), and a GL
@@ -7,7 +7,7 @@
 // floats in column-major order (glm::value_ptr, glGetFloatv). Only the view's rotation counts:
 // the sky is at infinity. Orthographic, skewed or mirrored cameras are refused (skyig::Error).
 //
-// GL state: every piece a call changes is saved and restored (docs/host-frame.md lists it), so
+// GL state: every piece a call changes is saved and restored (docs/client-frame.md lists it), so
 // the host's bindings, enables, viewport, depth and blend state are as they were.
 #include "skyig/sky.h"
 

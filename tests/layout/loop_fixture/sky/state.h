@@ -1,2 +1,2 @@
 #pragma once
-#include "sky/night/moon.h"
+#include "physics/moon/moon.h"

@@ -1,0 +1,74 @@
+#include "commands/common_options.h"
+
+#include "ephemeris/time.h"
+
+#include <cstdio>
+
+namespace skyig::services {
+
+void SkyOptions::add(CLI::App& c) {
+  c.add_option("--config", configPath, "Node configuration (TOML); the embedded defaults without it")
+      ->check(CLI::ExistingFile);
+  c.add_option("--lat", lat, "Latitude, degrees north (WGS84)")->check(CLI::Range(-90.0, 90.0));
+  c.add_option("--lon", lon, "Longitude, degrees east")->check(CLI::Range(-180.0, 360.0));
+  c.add_option("--alt", alt, "Height above the WGS84 ellipsoid, metres")->check(CLI::Range(-400.0, 1e6));
+  c.add_option("--yaw", yaw, "Ownship true heading, degrees clockwise from north")->check(CLI::Range(-360.0, 360.0));
+  c.add_option("--pitch", pitch, "Ownship pitch, degrees, nose up positive")->check(CLI::Range(-90.0, 90.0));
+  c.add_option("--roll", roll, "Ownship roll, degrees, right wing down positive")->check(CLI::Range(-180.0, 180.0));
+  c.add_option("--utc", utc, "UTC date and time, e.g. 2026-06-21T19:30:00Z");
+  c.add_option("--sky-model", skyModel, "Sky model: preetham | cie | physical")
+      ->check(CLI::IsMember({"preetham", "cie", "physical"}));
+  c.add_option("--cie-type", cieType, "CIE standard general sky type, 1 (overcast) .. 15")->check(CLI::Range(1, 15));
+  c.add_option("--turbidity", turbidity, "Atmospheric turbidity (Preetham), 1.7 .. 10")->check(CLI::Range(1.7, 10.0));
+  c.add_option("--ground-albedo", groundAlbedo, "Ground albedo, 0 .. 1")->check(CLI::Range(0.0, 1.0));
+  c.add_option("--visibility", visibilityKm, "Physical sky: visibility, km (Koschmieder; haze), 0.05 .. 280")
+      ->check(CLI::Range(0.05, 280.0));
+  c.add_option("--sun-azimuth", sunAzimuth, "Override the sun's azimuth, degrees from north through east")
+      ->check(CLI::Range(-360.0, 360.0));
+  c.add_option("--sun-elevation", sunElevation, "Override the sun's true (airless) elevation, degrees; its disc is seen lifted by refraction")->check(CLI::Range(-90.0, 90.0));
+}
+
+NodeConfig SkyOptions::resolve() const {
+  NodeConfig config = configPath.empty() ? NodeConfig{} : loadNodeConfig(configPath);
+  sky::ObserverState& o = config.observer;
+  if (lat) o.latitudeDeg = *lat;
+  if (lon) o.longitudeDeg = *lon;
+  if (alt) o.heightM = *alt;
+  if (yaw) o.attitude.yawDeg = *yaw;
+  if (pitch) o.attitude.pitchDeg = *pitch;
+  if (roll) o.attitude.rollDeg = *roll;
+  if (utc) {
+    const auto t = ephemeris::parseIso8601Utc(*utc);
+    if (!t) throw ConfigError("--utc: expected a UTC time like 2026-06-21T19:30:00Z, got \"" + *utc + "\"");
+    o.utc = *t;
+  }
+  if (skyModel) sky::parseSkyModel(*skyModel, config.sky.model);
+  if (cieType) {
+    config.sky.cieType = *cieType;
+    if (!skyModel) config.sky.model = sky::SkyModel::Cie;  // a CIE type implies the CIE model
+  }
+  if (turbidity) config.sky.turbidity = *turbidity;
+  if (groundAlbedo) config.sky.groundAlbedo = *groundAlbedo;
+  if (visibilityKm) config.atmosphere.visibilityKm = *visibilityKm;
+  return config;
+}
+
+std::optional<sky::SunOverride> SkyOptions::sunOverride() const {
+  if (!sunAzimuth && !sunElevation) return std::nullopt;
+  if (!sunAzimuth || !sunElevation)
+    throw ConfigError("--sun-azimuth and --sun-elevation: give both or neither");
+  return sky::SunOverride{*sunAzimuth, *sunElevation};
+}
+
+void parseSize(const std::string& text, int& width, int& height) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
+      w < sky::kMinChannelSide || h < sky::kMinChannelSide || w > sky::kMaxChannelSide || h > sky::kMaxChannelSide)
+    throw ConfigError("--size: expected WIDTHxHEIGHT with each in " + std::to_string(sky::kMinChannelSide) + ".." +
+                      std::to_string(sky::kMaxChannelSide) + ", got \"" + text + "\"");
+  width = w;
+  height = h;
+}
+
+}  // namespace skyig::services

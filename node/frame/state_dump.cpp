@@ -1,0 +1,107 @@
+#include "node/frame/state_dump.h"
+
+#include "tables/parameter_hash.h"
+
+#include "render/output_file.h"
+#include "physics/common/units.h"
+
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <stdexcept>
+
+namespace skyig::services {
+
+namespace {
+
+using skyig::kDeg;
+
+nlohmann::json hostJson(const HostState& h) {
+  nlohmann::json j = {{"visibility_m", h.visibilityM}, {"humidity_pct", h.humidityPct}, {"pressure_hpa", h.pressureHpa},
+                      {"temperature_c", h.temperatureC}, {"star_field_intensity", h.starFieldIntensity}};
+  if (h.ownshipValid)
+    j.update({{"lat", h.ownship.latitudeDeg}, {"lon", h.ownship.longitudeDeg}, {"alt", h.ownship.heightM},
+              {"yaw", h.ownship.attitude.yawDeg}, {"pitch", h.ownship.attitude.pitchDeg}, {"roll", h.ownship.attitude.rollDeg}});
+  if (h.timeValid) j["utc"] = ephemeris::formatIso8601Utc(h.utc);
+  return j;
+}
+
+}  // namespace
+
+StateDump::StateDump(const std::string& path) : path_(path) {
+  const int fd = render::openOutputStream(path);  // in place: "-" is stdout, a FIFO stays one
+  file_ = ::fdopen(fd, "w");
+  if (!file_) {
+    ::close(fd);
+    throw std::runtime_error("cannot write the state dump " + path + ": " + std::strerror(errno));
+  }
+}
+
+StateDump::~StateDump() {
+  if (file_) std::fclose(file_);
+}
+
+void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const sky::SkyState& used,
+                      const FramePose& pose) {
+  const auto& o = used.observer;
+  nlohmann::json views = nlohmann::json::array();
+  for (const sky::ChannelConfig& c : pose.channels)
+    views.push_back({{"channel", c.name},
+                     {"yaw", c.offset.yawDeg}, {"pitch", c.offset.pitchDeg}, {"roll", c.offset.rollDeg},
+                     {"left", c.frustum.leftDeg}, {"right", c.frustum.rightDeg},
+                     {"down", c.frustum.downDeg}, {"up", c.frustum.upDeg}});
+  nlohmann::json line = {
+      {"ig_frame", igFrame},
+      {"host_frame", host ? nlohmann::json(host->state.hostFrame) : nlohmann::json(nullptr)},
+      {"host", host ? hostJson(host->state) : nlohmann::json(nullptr)},
+      {"used",
+       {{"lat", o.latitudeDeg}, {"lon", o.longitudeDeg}, {"alt", o.heightM}, {"yaw", pose.attitude.yawDeg},
+        {"pitch", pose.attitude.pitchDeg}, {"roll", pose.attitude.rollDeg}, {"utc", ephemeris::formatIso8601Utc(o.utc)},
+        {"pressure_hpa", o.pressureHpa}, {"temperature_c", o.temperatureC},
+        {"star_field_intensity", used.conditions.starFieldIntensity},
+        {"atmosphere", used.conditions.atmosphere
+                           ? nlohmann::json(atmosphere::hexHash(atmosphere::parameterHash(used.conditions.atmosphere->config())))
+                           : nlohmann::json(nullptr)},
+        {"adaptation_cd_m2", used.worldAdaptationLuminance}, {"scene_cd_m2", used.sceneLuminance},
+        {"adaptation_gain", used.adaptationGain},
+        {"views", views}}},
+      {"sun", {{"azimuth_deg", used.sunAzimuth / kDeg}, {"altitude_deg", used.sunAltitude / kDeg},
+               {"altitude_refracted_deg", used.sunApparentAltitude / kDeg}}},
+  };
+  // Tables blended from two visibility steps while the exact ones are built (the hash above is
+  // the exact tables' they stand in for).
+  if (used.conditions.atmosphere && used.conditions.atmosphere->blendOrigin()) {
+    const auto& b = *used.conditions.atmosphere->blendOrigin();
+    line["used"]["atmosphere_blend"] = {{"clearer_km", b.clearerKm}, {"hazier_km", b.hazierKm}, {"weight", b.weight}};
+  }
+  if (used.ephemeris) {
+    const auto& m = used.ephemeris->moon;
+    line["moon"] = {{"azimuth_deg", m.azimuthRad / kDeg}, {"altitude_deg", m.altitudeRad / kDeg},
+                    {"altitude_refracted_deg", m.altitudeRefractedRad / kDeg}};
+  }
+  const std::string text = line.dump() + "\n";
+  // One line per frame, flushed: a crash loses at most the frame being written.
+  std::fwrite(text.data(), 1, text.size(), file_);
+  std::fflush(file_);
+}
+
+void writeStatsFile(const std::string& path, const NodeStats& stats) {
+  try {
+    render::writeOutputFile(path, stats.toJson().dump(2) + "\n");
+  } catch (const std::exception& e) {
+    // Statistics are best effort: never stop the node for them; say so at most every 10 s.
+    static std::atomic<std::int64_t> lastWarning{0};
+    const std::int64_t now = std::chrono::duration_cast<std::chrono::seconds>(Clock::now().time_since_epoch()).count();
+    if (now - lastWarning.exchange(now) >= 10) spdlog::warn("statistics not written: {}", e.what());
+  }
+}
+
+}  // namespace skyig::services

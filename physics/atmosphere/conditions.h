@@ -1,0 +1,46 @@
+#pragma once
+// Run-time conditions that change the medium: meteorological visibility, relative humidity
+// and ground albedo. Applying them yields a new Medium (and so a new parameter hash and a new
+// set of tables).
+#include <optional>
+
+#include "physics/atmosphere/medium.h"
+
+namespace skyig::atmosphere {
+
+struct Conditions {
+  // Meteorological visibility at the ground, km. Unset: the medium's own aerosol density.
+  std::optional<double> visibilityKm;
+  // Relative humidity in [0, 0.99]; unset: the medium's aerosols as given.
+  std::optional<double> relativeHumidity;
+  // Lambertian ground albedo in [0, 1]; unset: the medium's.
+  std::optional<double> groundAlbedo;
+};
+
+// Koschmieder's relation (Koschmieder 1924; WMO No. 8): an object is just visible at the
+// distance where its contrast falls to 2%, V = ln(50) / beta_ext = 3.912 / beta_ext, with
+// beta_ext the total extinction at 550 nm at the ground.
+inline constexpr double kKoschmiederConstant = 3.912;
+
+// Aerosol extinction at 550 nm at the ground (m^-1) giving the visibility with the medium's
+// molecules; throws std::invalid_argument if the visibility is not positive or exceeds what
+// clean air alone allows (about 288 km).
+double mieExtinctionForVisibility(const Medium& medium, double visibilityKm);
+
+// Visibility (km) of a medium by the same relation.
+double visibilityOf(const Medium& medium);
+
+// Hygroscopic growth of the aerosol extinction with relative humidity, relative to the dry
+// state the medium describes at kReferenceHumidity (Kasten 1969, Hanel 1976:
+// f = ((1 - RH) / (1 - RH_ref))^-gamma, gamma = 0.25 for continental aerosol).
+inline constexpr double kReferenceHumidity = 0.5;
+inline constexpr double kHanelGamma = 0.25;
+double humidityGrowthFactor(double relativeHumidity);
+
+// The medium under the conditions; visibility, when given, fixes the aerosol extinction
+// (it is measured on the humid aerosol, so humidity then changes nothing); otherwise
+// humidity scales the medium's aerosol extinction. Throws std::invalid_argument naming a bad
+// value.
+Medium applyConditions(const Medium& base, const Conditions& conditions);
+
+}  // namespace skyig::atmosphere

@@ -1,0 +1,38 @@
+#pragma once
+// What the sky depends on besides the sun: the model and the state of the air and ground.
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace skyig::atmosphere {
+class AtmosphereModel;
+}
+namespace skyig::sky::night {
+class StarCatalogue;
+}
+
+namespace skyig::sky {
+
+enum class SkyModel { Preetham, Cie, Physical };
+
+std::string_view toString(SkyModel model);
+// "preetham", "cie" or "physical"; false for anything else.
+bool parseSkyModel(std::string_view text, SkyModel& model);
+
+struct SkyConditions {
+  SkyModel model = SkyModel::Preetham;
+  int cieType = 12;             // 1..15, for SkyModel::Cie
+  double turbidity = 2.5;       // Preetham's T, [1.7, 10]
+  double groundAlbedo = 0.2;    // Lambertian, [0, 1]
+  double sunDistanceAu = 1.0;   // scales the solar illuminance by 1/d^2
+  // SkyModel::Physical: the precomputed atmosphere (Bruneton & Neyret 2008), loaded by the
+  // caller (node/config/node_tables.h) and shared, immutable, by every state.
+  std::shared_ptr<const atmosphere::AtmosphereModel> atmosphere;
+  // The bright stars (physics/stars/star_catalogue.h), loaded once by the caller; without it
+  // only the planets are drawn.
+  std::shared_ptr<const night::StarCatalogue> starCatalogue;
+  // CIGI Celestial Sphere Control: star field intensity / 100, 0 when the field is disabled.
+  double starFieldIntensity = 1.0;
+};
+
+}  // namespace skyig::sky

@@ -1,0 +1,170 @@
+// Sky pass of the physical atmosphere (Bruneton & Neyret 2008, section 5 without light
+// shafts) from the tables folded into linear Rec.709 (physics/atmosphere/rendering_rec709.glsl): the
+// sky scattered into the view ray, the limb-darkened sun disc and, where the ray meets the
+// ground, the Lambertian ground attenuated by the air in between; one lookup set per pixel
+// whatever the number of wavelengths. A second light, the moon (Jensen et al. 2001: the same
+// tables lit from its direction times its irradiance relative to the sun's), adds its sky and
+// ground.
+// Variants, not branches: llvmpipe runs both sides of a branch for every pixel, so a frame pays
+// only for what it shows by compiling this file several ways (PhysicalSkyPass builds each):
+//   (none)          the sun's sky and ground, over the whole channel;
+//   SKYIG_MOONLIT   the same with the moon's sky and ground, when the moon lights the sky;
+//   SKYIG_SUNLESS   without the sun's sky and ground (and no disc quad), when the sun is so far
+//                   below the horizon that its twilight changes no display code
+//                   (sky/shown_layers.h): the night's pixels pay for the moon's and the night's
+//                   light only;
+//   SKYIG_SUN_DISC  with the disc, drawn again over a small quad around the sun
+//                   (render/passes/sky/sun_disc.vert) after the variant without it drew the channel: the
+//                   disc covers ~1e-5 of the pixels that would otherwise all evaluate its test
+//                   (the quad's pixels are drawn twice, the sky and the disc summed before the
+//                   clamp as everywhere, so an out-of-gamut red disc keeps the sky's blue);
+//   SKYIG_GROUND    the rays that meet the ground only, drawn first on the cap of directions
+//                   below the horizon (render/passes/sky/ground_cap.vert; a pixel whose ray misses the
+//                   ground is discarded, so the cap's polygon need not be exact) writing depth;
+//   SKYIG_SKY       the rays that miss it, drawn after over the whole channel where the ground
+//                   variant wrote no depth: the sky's pixels never pay for the ground's
+//                   reflection. Neither: both, for a target without depth.
+//   SKYIG_NIGHT_LAYER the night's own light added (the eye's band only): the sky's part above the
+//                   atmosphere read bilinearly from the small grid NightDiffusePass::drawLayer
+//                   drew (render/passes/common/night_layer.glsl; it varies over the Milky Way map's 0.18 deg
+//                   texels, coarser than a pixel), dimmed by the transmittance to space, and the
+//                   terrain's below the horizon, both per pixel, as render/passes/night/night_diffuse.frag
+//                   adds them over the whole channel: one full-screen pass instead of two; with
+//                   SKYIG_GLARE_FROM_NIGHT_LAYER the same read gives the tone its glare veil;
+//   SKYIG_NIGHT_LAYER_TRANSMITTED with it, the layer's light already dimmed at its texels, for
+//                   the sky more than kNightLayerBandDeg above the horizon (render/passes/
+//                   night_layer.h), where the transmittance is smooth over a texel: drawn after
+//   SKYIG_HORIZON_BAND the sky below that elevation with the transmittance per pixel, a cap of
+//                   directions like the ground's (render/passes/sky/ground_cap.vert) writing depth after the
+//                   ground's (the define only names the program: it is SKYIG_SKY's code);
+//   SKYIG_FOLD_TONE with the tone pass's variant defines: the pass also writes what the display
+//                   is sent (render/passes/tone/tone_display.glsl) at SKYIG_OUTPUT_FOLDED_DISPLAY, when it is
+//                   the frame's last full-screen pass: no second pass reads every pixel back
+//                   (SkyRenderer::drawChannel; the tone pass then runs only where later passes
+//                   drew: the moon's quad, the displayed stars, the boxes of the exact veil).
+// With the camera inside the atmosphere (every IG frame), r, u_r and u_mu_s are the same for
+// every pixel and come from the CPU (PhysicalSkyPass::draw): the scattering tables are read
+// from this frame's 2D slices (physical_sky_slice.frag); only u_mu and u_nu are per pixel.
+// From space physical_sky_space.frag runs instead (a second program: a branch between the two
+// costs llvmpipe the untaken side too).
+// (No render/glsl/uniforms.h here: its analytic-sky block's member names would clash with the
+// atmosphere's functions; the frame block, which the vertex stage and the night layer read, is
+// in render/glsl/frame_uniforms.h, the tone block in render/glsl/tone_uniforms.h.)
+#include "render/passes/sky/physical_sky_uniforms.glsl"
+#include "render/glsl/band.glsl"
+#ifdef SKYIG_NIGHT_LAYER
+#include "render/glsl/frame_uniforms.h"
+#include "physics/night/transmittance_to_space.glsl"
+#include "render/passes/common/night_layer.glsl"
+layout(binding = SKYIG_UNIT_NIGHT_LAYER_EXTINCTION) uniform sampler1D nightExtinction;
+uniform vec3 nightGroundRadiance;  // linear Rec.709, cd/m^2: the terrain under the night's light
+// This pixel's read of the layer: its alpha is the glare veil per lux where the layer holds it.
+vec4 nightLayerHere;
+#ifdef SKYIG_GLARE_FROM_NIGHT_LAYER
+float nightLayerVeilPerLux(vec2 fragCoord) { return nightLayerHere.a; }
+#endif
+#endif
+#ifdef SKYIG_FOLD_TONE
+#include "render/passes/tone/tone_display.glsl"
+layout(location = SKYIG_OUTPUT_FOLDED_DISPLAY) out vec4 outDisplay;
+#endif
+
+// This frame's 2D slices of the scattering tables (physical_sky_slice.frag) for the sun and
+// the moon: x = nu texel, y = u_mu.
+layout(binding = SKYIG_UNIT_SUN_SLICE_SCATTERING) uniform sampler2D sunSliceScattering;
+layout(binding = SKYIG_UNIT_SUN_SLICE_SINGLE_MIE) uniform sampler2D sunSliceSingleMie;
+layout(binding = SKYIG_UNIT_MOON_SLICE_SCATTERING) uniform sampler2D moonSliceScattering;
+layout(binding = SKYIG_UNIT_MOON_SLICE_SINGLE_MIE) uniform sampler2D moonSliceSingleMie;
+
+// packedScatteredRec709 from a slice: GL's bilinear filter does the blend in nu by hand of
+// lookupScatteringUvwz (the same weights: texel centres at (i + 0.5) / nu_size).
+vec3 sliceScatteredRec709(sampler2D scattering, sampler2D singleMie, float u_mu, float nu) {
+  float x = ((nu + 1.0) * 0.5 * (atm.scattering_nu_size - 1.0) + 0.5) / atm.scattering_nu_size;
+  vec4 s = texture(scattering, vec2(x, u_mu));
+  vec4 m = texture(singleMie, vec2(x, u_mu));
+  return (s.xyz * rayleighPhaseFunction(nu) + vec3(m.x, m.y, s.w) * miePhaseFunction(atm.mie_phase_g, nu)) *
+         (1.0 / REC709_TABLE_SCALE);
+}
+
+
+// u_mu of scatteringUvwzFromRMuMuSNu for this frame's radius; d: distance to the ground.
+float frameUMu(float rmu, bool ground, out float d) {
+  float r = frameRadii.x;
+  float rho = frameRadii.y;
+  float H = frameRadii.z;
+  float discriminant = rmu * rmu - rho * rho;
+  if (ground) {
+    d = -rmu - sqrt(max(discriminant, 0.0));
+    float d_min = r - atm.bottom_radius;
+    return 0.5 - 0.5 * textureCoordFromUnitRange((d - d_min) / (rho - d_min), atm.scattering_mu_size / 2.0);
+  }
+  d = -rmu + sqrt(max(discriminant + H * H, 0.0));
+  float d_min = atm.top_radius - r;
+  return 0.5 + 0.5 * textureCoordFromUnitRange((d - d_min) / (rho + H - d_min), atm.scattering_mu_size / 2.0);
+}
+
+vec3 insideRec709(vec3 view) {
+  float r = frameRadii.x;
+  float rmu = dot(camera, view);
+#if defined(SKYIG_SKY)
+  const bool ground = false;
+#else
+  bool ground = rayIntersectsGround(atm, r, rmu / r);
+#if defined(SKYIG_GROUND)
+  if (!ground) discard;
+#endif
+#endif
+  float d;
+  float u_mu = frameUMu(rmu, ground, d);
+  float nu = dot(view, sunDirectionP);
+#ifdef SKYIG_SUNLESS
+  vec3 rgb = vec3(0.0);
+#else
+  vec3 rgb = sliceScatteredRec709(sunSliceScattering, sunSliceSingleMie, u_mu, nu);
+  if (ground) {
+    rgb += packedGroundReflectionRec709(atm, transmittanceXyz, irradianceXyz, solarIrradianceXyz,
+                                        groundAlbedo, camera, view, d, sunDirectionP);
+  }
+#endif
+#ifdef SKYIG_MOONLIT
+  float nu_moon = dot(view, moonDirectionP);
+  vec3 moon = sliceScatteredRec709(moonSliceScattering, moonSliceSingleMie, u_mu, nu_moon);
+  if (ground) {
+    moon += packedGroundReflectionRec709(atm, transmittanceXyz, irradianceXyz, solarIrradianceXyz,
+                                         groundAlbedo, camera, view, d, moonDirectionP);
+  }
+  rgb += bandRatio(band.z) * moonlightScale * moon;
+#endif
+#ifdef SKYIG_SUN_DISC
+  // The disc as seen: refracted and flattened (physics/common/refraction.glsl), where the airless
+  // direction this pixel sees falls on the airless sun, within the cone (frameAngles.z) the
+  // refracted disc can fall in.
+  if (!ground && nu >= frameAngles.z) {
+    vec3 airless = unrefractView(view, sunRefraction);
+    rgb += bandRatio(band.y) * xyzToRec709Linear(packedRefractedSunDiscXyz(atm, transmittanceXyz, solarIrradianceXyz,
+                                                       limbDarkeningXyz, camera, view, airless,
+                                                       sunDirectionP));
+  }
+#endif
+  return rgb;
+}
+
+void main() {
+  // In a goggle's band the sum is weighted as sunlit sky, its other parts scaled above by their
+  // weights' ratios to it (render/glsl/band.glsl).
+  vec3 view = normalize(vViewRay);
+  vec3 radiance = max(inBand(insideRec709(view), lightWeights.x), vec3(0.0));
+#ifdef SKYIG_NIGHT_LAYER
+  nightLayerHere = nightLayerAt(gl_FragCoord.xy);
+#if defined(SKYIG_NIGHT_LAYER_TRANSMITTED)
+  radiance += nightLayerHere.rgb + (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
+#else
+  radiance += transmittanceToSpace(nightExtinction, view) * nightLayerHere.rgb +
+              (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
+#endif
+#endif
+  outRadiance = vec4(radiance, 1.0);
+#ifdef SKYIG_FOLD_TONE
+  outDisplay = toneDisplayValue(radiance, vec3(0.0), gl_FragCoord.xy);  // no point source drawn yet
+#endif
+}

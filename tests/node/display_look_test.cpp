@@ -1,0 +1,241 @@
+// What the display shows, measured on `skyig render`'s own PNG and EXR (the histogram operator,
+// the default): the cues a pilot needs survive the mapping. Figures: docs/tone-reproduction.md.
+#include "render/image_io.h"
+#include "physics/physics.h"
+
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kDisplayMax = 100.0, kDisplayAmbient = 0.1, kGamma = 2.2;  // DisplayParams' defaults
+
+struct Frame {
+  int width = 0, height = 0;
+  std::vector<unsigned char> png;  // RGB
+  skyig::render::HdrImage exr;
+
+  glm::dvec3 code(int x, int y) const {
+    const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3;
+    return {png[i], png[i + 1], png[i + 2]};
+  }
+  // Eq. 18 inverted: the display's linear Rec.709 light for a pixel's codes.
+  glm::dvec3 displayed(int x, int y) const {
+    const glm::dvec3 n = code(x, y) / 255.0;
+    return kDisplayAmbient + kDisplayMax * glm::pow(n, glm::dvec3(kGamma));
+  }
+  glm::dvec3 world(int x, int y) const {
+    const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 4;
+    return {exr.rgba[i], exr.rgba[i + 1], exr.rgba[i + 2]};
+  }
+};
+
+double luminance(const glm::dvec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
+
+// Hue as the angle of the chromaticity around D65's white (x 0.3127, y 0.3290), degrees: a
+// colour desaturated towards white along its hue keeps it.
+double hueDeg(const glm::dvec3& rec709) {
+  const glm::dvec3 xyz = skyig::shader::rec709ToXyz(rec709);
+  const double s = xyz.x + xyz.y + xyz.z;
+  return std::atan2(xyz.y / s - 0.3290, xyz.x / s - 0.3127) * 180.0 / std::numbers::pi;
+}
+
+class DisplayLook : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("skyig_display_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "-" +
+            std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    if (!HasFailure()) fs::remove_all(dir_);
+  }
+
+  // A 160x120 channel looking level, 10 deg below and 35 deg above the boresight, on the small
+  // physical-sky tables with the eye adapted at once; `channels` replaces the channel.
+  fs::path config(const std::string& channels = "") const {
+    const fs::path path = dir_ / "c.toml";
+    std::ofstream(path) << "[sky]\natmosphere_tables = \"small\"\n[eye]\nadaptation = \"instant\"\n"
+                        << (channels.empty() ? "[[channel]]\nname = \"c\"\nwidth = 160\nheight = 120\nleft = 30\n"
+                                               "right = 30\ndown = 10\nup = 35\n"
+                                             : channels);
+    return path;
+  }
+
+  int run(const std::string& args) const {
+    const std::string command = "XDG_CACHE_HOME=" + std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache " +
+                                std::string(SKYIG_EXECUTABLE) + " render " + args + " >" + (dir_ / "out.txt").string() +
+                                " 2>&1";
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+  // What the last run printed (stdout and stderr), for a failure's message.
+  std::string said() const {
+    std::stringstream words;
+    words << std::ifstream(dir_ / "out.txt").rdbuf();
+    return words.str();
+  }
+
+  Frame read(const std::string& stem) const {
+    Frame f;
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    const std::string png = (dir_ / (stem + ".png")).string();
+    EXPECT_TRUE(png_image_begin_read_from_file(&image, png.c_str())) << png;
+    image.format = PNG_FORMAT_RGB;
+    f.width = static_cast<int>(image.width);
+    f.height = static_cast<int>(image.height);
+    f.png.resize(PNG_IMAGE_SIZE(image));
+    EXPECT_TRUE(png_image_finish_read(&image, nullptr, f.png.data(), 0, nullptr));
+    f.exr = skyig::render::readExr((dir_ / (stem + ".exr")).string()).image;
+    return f;
+  }
+
+  Frame render(const std::string& scene) {
+    const int code = run("--config " + config().string() + " " + scene + " --png " + (dir_ / "f.png").string() +
+                         " --exr " + (dir_ / "f.exr").string());
+    EXPECT_EQ(code, 0) << scene << "; skyig said:\n" << said();
+    return read("f");
+  }
+
+  // The row (from the top) where the horizon crosses a level channel of `down`/`up` degrees
+  // pitched by `pitchDeg`.
+  static double horizonRow(double pitchDeg, double downDeg, double upDeg, int height) {
+    const double t = std::tan(-pitchDeg * std::numbers::pi / 180.0), top = std::tan(upDeg * std::numbers::pi / 180.0),
+                 bottom = std::tan(downDeg * std::numbers::pi / 180.0);
+    return (top - t) / (top + bottom) * height;
+  }
+
+  fs::path dir_;
+};
+
+}  // namespace
+
+// Under a full moon, looking along the moonlit horizon (the moon 90 deg to the left), the sky
+// just above the horizon and the terrain just below must differ on the display by more than the
+// eye's threshold at the display's luminance (Weber contrast against the threshold-versus-
+// intensity function of Ward Larson et al. 1997, eq. 7): the horizon is the night's first cue.
+TEST_F(DisplayLook, FullMoonHorizonStaysVisible) {
+  const Frame f = render("--utc 2026-12-25T17:40:00Z --yaw 150 --pitch 2");
+  const double row = horizonRow(2.0, 10.0, 35.0, f.height);
+  double sky = 0.0, ground = 0.0, skyWorld = 0.0, groundWorld = 0.0;
+  for (int x = 0; x < f.width; ++x) {
+    sky += luminance(f.displayed(x, static_cast<int>(row) - 4));
+    ground += luminance(f.displayed(x, static_cast<int>(row) + 4));
+    skyWorld += luminance(f.world(x, static_cast<int>(row) - 4));
+    groundWorld += luminance(f.world(x, static_cast<int>(row) + 4));
+  }
+  sky /= f.width;
+  ground /= f.width;
+  ASSERT_GT(skyWorld, groundWorld) << "the moonlit sky is brighter than the terrain in the world";
+  const double weber = (sky - ground) / ground;
+  const double threshold = skyig::shader::thresholdLuminance(ground) / ground;
+  std::cout << "full moon: display sky " << sky << " cd/m^2, terrain " << ground << " cd/m^2, Weber contrast " << weber
+            << ", threshold " << threshold << " (world " << skyWorld / f.width << " / " << groundWorld / f.width << ")\n";
+  EXPECT_GT(weber, 3.0 * threshold);
+}
+
+// At noon looking away from the sun, the pale band along the horizon keeps its hue on the
+// display within a few degrees of the EXR's (no channel clips alone: no cyan fringe).
+TEST_F(DisplayLook, NoonHorizonKeepsItsHue) {
+  const Frame f = render("--utc 2026-06-21T11:00:00Z --yaw 0");
+  const double row = horizonRow(5.0, 10.0, 35.0, f.height);  // the default pitch is 5 deg
+  int checked = 0;
+  for (int dy = 2; dy <= 10; dy += 2) {
+    const int y = static_cast<int>(row) - dy;
+    glm::dvec3 world(0.0), shown(0.0);
+    for (int x = 0; x < f.width; ++x) {
+      world += f.world(x, y);
+      shown += f.displayed(x, y) - kDisplayAmbient;
+    }
+    const double dHue = std::remainder(hueDeg(shown) - hueDeg(world), 360.0);
+    EXPECT_LT(std::abs(dHue), 4.0) << "row " << y << ": world hue " << hueDeg(world) << ", shown " << hueDeg(shown);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 5);
+}
+
+// At 12 km looking 2 deg down, the sunlit terrain and haze below the horizon are not clipped:
+// no value of the terrain reaches the display's white.
+TEST_F(DisplayLook, TerrainFromTwelveKilometresIsNotClipped) {
+  const Frame f = render("--utc 2026-06-21T11:00:00Z --yaw 0 --alt 12000 --pitch -2");
+  // From 12 km the horizon is 3.5 deg below level; the terrain is everything below that.
+  const int first = static_cast<int>(horizonRow(-2.0 + 3.6, 10.0, 35.0, f.height)) + 2;
+  ASSERT_LT(first, f.height - 5);
+  int clipped = 0, values = 0;
+  for (int y = first; y < f.height; ++y)
+    for (int x = 0; x < f.width; ++x)
+      for (int k = 0; k < 3; ++k, ++values) clipped += f.code(x, y)[k] >= 255.0;
+  EXPECT_EQ(clipped, 0) << "of " << values << " terrain values";
+}
+
+// No Inf or NaN, and no negative light (beyond the gamut's edge), in any EXR or display frame across day, twilight,
+// night, haze and space.
+TEST_F(DisplayLook, EveryFrameIsFiniteFromDayToSpace) {
+  const char* scenes[] = {
+      "--utc 2026-06-21T11:00:00Z --yaw 180 --pitch 40",       // the sun in view
+      "--sun-azimuth 300 --sun-elevation 0.2 --yaw 300",       // the setting sun
+      "--sun-azimuth 300 --sun-elevation 5 --yaw 300 --visibility 2",  // haze, the sun's aureole
+      "--sun-azimuth 300 --sun-elevation -9 --yaw 300",
+      "--utc 2026-12-09T22:00:00Z --yaw 180 --pitch 30",       // a moonless night
+      "--utc 2026-12-25T17:40:00Z --yaw 60 --pitch 2",         // the full moon rising
+      "--utc 2026-06-21T11:00:00Z --yaw 180 --alt 90000",      // the edge of space
+  };
+  for (const char* scene : scenes) {
+    const Frame f = render(scene);
+    std::size_t bad = 0;
+    std::string first;
+    for (std::size_t i = 0; i < f.exr.rgba.size(); ++i) {
+      // A saturated red just outside the Rec.709 gamut may have a blue a hair below zero; more
+      // than 1% of the pixel's brightest channel below zero is wrong light.
+      const float v = f.exr.rgba[i];
+      const std::size_t p = i / 4 * 4;
+      const float top = std::max({f.exr.rgba[p], f.exr.rgba[p + 1], f.exr.rgba[p + 2]});
+      if (std::isfinite(v) && v >= -0.01f * top) continue;
+      if (bad++ == 0)
+        first = "pixel (" + std::to_string(i / 4 % f.width) + ", " + std::to_string(i / 4 / f.width) + ") channel " +
+                std::to_string(i % 4) + " = " + std::to_string(v);
+    }
+    EXPECT_EQ(bad, 0u) << scene << ": first " << first;
+    EXPECT_EQ(f.png.size(), static_cast<std::size_t>(f.width) * f.height * 3) << scene;
+  }
+}
+
+// Two channels sharing an edge map alike (one curve per state, not per channel's pixels): at
+// their common edge, in the twilight glow that crosses it, they differ by at most 2 codes on
+// average.
+TEST_F(DisplayLook, ChannelsSharingAnEdgeMatchThere) {
+  const std::string channels =
+      "[[channel]]\nname = \"a\"\nwidth = 160\nheight = 120\nleft = 30\nright = 30\ndown = 10\nup = 35\n"
+      "[[channel]]\nname = \"b\"\nyaw = 60.0\nwidth = 160\nheight = 120\nleft = 30\nright = 30\ndown = 10\nup = 35\n";
+  ASSERT_EQ(run("--config " + config(channels).string() +
+                " --sun-azimuth 30 --sun-elevation -4 --yaw 0 --all-channels --png " + (dir_ / "e.png").string() +
+                " --exr " + (dir_ / "e.exr").string()),
+            0) << said();
+  const Frame a = read("e_a"), b = read("e_b");
+  double sum = 0.0;
+  for (int y = 0; y < a.height; ++y)
+    for (int k = 0; k < 3; ++k) sum += std::abs(a.code(a.width - 1, y)[k] - b.code(0, y)[k]);
+  const double mean = sum / (3.0 * a.height);
+  std::cout << "shared edge: mean difference " << mean << " codes\n";
+  EXPECT_LE(mean, 2.0);
+}

@@ -1,0 +1,226 @@
+// The node's pure parts: the sim clock, applying CIGI to the host state,
+// scripted paths.
+#include "protocol/cigi/date.h"
+#include "protocol/cigi/decoder.h"
+#include "protocol/cigi/encoder.h"
+#include "node/host/cigi_state.h"
+#include "node/host/host_path.h"
+#include "node/config/node_config.h"
+#include "node/host/ownship_predictor.h"
+#include "node/host/sim_clock.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace skyig::services;
+namespace cigi = skyig::protocol::cigi;
+using namespace std::chrono_literals;
+
+namespace {
+double secondsOf(const std::optional<skyig::ephemeris::UtcTime>& t) { return t ? t->secondsOfDay : -1.0; }
+}  // namespace
+
+// Hour and minute only: the clock starts at the stated minute, runs smoothly, never leaves
+// the stated minute, and a rollover pins it to the host's clock.
+TEST(SimClock, MinuteOnlyTimeRunsSmoothlyAndLocksAtTheRollover) {
+  SimClock c;
+  // The host's true time is 19:00:42.0 at continuous time 100 s; it says 19:00.
+  const double trueOffset = 19 * 3600.0 + 42.0 - 100.0;
+  for (double t = 100.0; t < 200.0; t += 1.0 / 30.0) {
+    const double truth = t + trueOffset;
+    c.observe({2026, 6, 21, std::floor(truth / 60.0) * 60.0}, t);
+    const double shown = secondsOf(c.at(t));
+    // Always inside the minute the host stated (the sun never runs ahead or behind).
+    EXPECT_GE(shown, std::floor(truth / 60.0) * 60.0 - 1e-6);
+    EXPECT_LT(shown, std::floor(truth / 60.0) * 60.0 + 60.0);
+  }
+  // After the 19:01 rollover (at t = 118 s) the clock agrees with the host to one host frame.
+  EXPECT_NEAR(secondsOf(c.at(150.0)), 150.0 + trueOffset, 1.0 / 30.0 + 1e-6);
+  // Between observations it keeps running: 0.5 s later it shows 0.5 s more.
+  EXPECT_NEAR(secondsOf(c.at(150.5)) - secondsOf(c.at(150.0)), 0.5, 1e-6);
+}
+
+TEST(SimClock, NewScenarioTimeRestartsTheClock) {
+  SimClock c;
+  c.observe({2026, 6, 21, 19 * 3600.0}, 10.0);
+  c.observe({2026, 12, 24, 6 * 3600.0 + 30 * 60.0}, 11.0);
+  const auto t = c.at(11.5);
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->month, 12);
+  EXPECT_EQ(t->day, 24);
+  EXPECT_NEAR(t->secondsOfDay, 6 * 3600.0 + 30 * 60.0 + 0.5, 1e-3);
+}
+
+TEST(SimClock, CrossesMidnight) {
+  SimClock c;
+  c.observe({2026, 12, 31, 23 * 3600.0 + 59 * 60.0}, 0.0);
+  c.observe({2026, 12, 31, 23 * 3600.0 + 59 * 60.0}, 30.0);
+  const auto t = c.at(90.0);
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->year, 2027);
+  EXPECT_EQ(t->month, 1);
+  EXPECT_EQ(t->day, 1);
+  EXPECT_NEAR(t->secondsOfDay, 30.0, 1e-3);
+}
+
+namespace {
+cigi::DecodedMessage messageOf(std::uint32_t frame, const cigi::EntityControl& e) {
+  cigi::DecodedMessage m;
+  cigi::IgControl ig;
+  ig.hostFrameNumber = frame;
+  m.packets = {ig, e};
+  return m;
+}
+}  // namespace
+
+TEST(CigiState, OwnshipIsEntityZeroAndBadValuesKeepTheLastGood) {
+  CigiStateTracker t;
+  cigi::EntityControl e;
+  e.latitudeDeg = 47.0;
+  e.longitudeDeg = 11.0;
+  e.yawDeg = 90.0f;
+  t.apply(messageOf(1, e), Clock::now());
+  EXPECT_EQ(t.state().ownship.latitudeDeg, 47.0);
+  cigi::EntityControl other = e;
+  other.entityId = 3;
+  other.latitudeDeg = 10.0;
+  t.apply(messageOf(2, other), Clock::now());
+  EXPECT_EQ(t.state().ownship.latitudeDeg, 47.0);  // another entity is not the ownship
+  cigi::EntityControl bad = e;
+  bad.latitudeDeg = std::nan("");
+  EXPECT_EQ(t.apply(messageOf(3, bad), Clock::now()), 1);
+  bad.latitudeDeg = 91.0;
+  EXPECT_EQ(t.apply(messageOf(4, bad), Clock::now()), 1);
+  EXPECT_EQ(t.state().ownship.latitudeDeg, 47.0);
+  EXPECT_EQ(t.state().ownship.attitude.yawDeg, 90.0);
+}
+
+// Two nodes fed one stream count the host's time to the same bit, whatever their own clocks
+// read (machines booted hours apart: arrival instants of different binary magnitude) and
+// however the network delays each datagram: the host's time of a message is its timestamp's
+// ticks since the stream's first, never a running sum on top of a local instant.
+TEST(CigiState, TwoNodesCountTheHostsTimeToTheBit) {
+  CigiStateTracker a, b;
+  const Clock::time_point bootA{std::chrono::seconds(37)}, bootB{std::chrono::seconds(400000)};
+  for (std::uint32_t k = 0; k < 300; ++k) {
+    cigi::DecodedMessage m;
+    cigi::IgControl ig;
+    ig.hostFrameNumber = k;
+    ig.timestamp = k * 3333 + (k % 3 == 0 ? 1 : 0);  // 30 Hz, a jittering host clock
+    ig.timestampValid = true;
+    cigi::CelestialSphereControl cs;
+    cs.date = *cigi::composeDate({2026, 6, 21});
+    cs.hour = 19;
+    cs.minute = static_cast<std::uint8_t>(30 + k / 1800);
+    m.packets = {ig, cs};
+    const auto delay = std::chrono::microseconds(k * 33333 + (k * 7919) % 2000);  // network jitter
+    a.apply(m, bootA + delay);
+    b.apply(m, bootB + delay + std::chrono::microseconds(k % 5 * 100));
+    ASSERT_TRUE(a.messageHostTime().has_value() == b.messageHostTime().has_value()) << k;
+    if (a.messageHostTime()) {
+      EXPECT_EQ(a.messageHostTime()->seconds, b.messageHostTime()->seconds) << k;
+    }
+    EXPECT_EQ(a.clock().continuousAt(a.state().received), b.clock().continuousAt(b.state().received)) << k;
+    EXPECT_EQ(a.state().utc.secondsOfDay, b.state().utc.secondsOfDay) << k;
+  }
+}
+
+TEST(CigiState, CelestialDateAndViewsApply) {
+  CigiStateTracker t;
+  cigi::DecodedMessage m;
+  cigi::IgControl ig;
+  ig.hostFrameNumber = 5;
+  ig.timestamp = 100000;  // 1 s
+  ig.timestampValid = true;
+  cigi::CelestialSphereControl cs;
+  cs.date = *cigi::composeDate({2026, 6, 21});
+  cs.hour = 19;
+  cs.minute = 30;
+  cigi::ViewDefinition vd;
+  vd.viewId = 1;
+  vd.leftEnable = vd.rightEnable = true;
+  vd.leftDeg = -20.0f;
+  vd.rightDeg = 35.0f;
+  cigi::ViewControl vc;
+  vc.viewId = 1;
+  vc.yawEnable = true;
+  vc.yawDeg = -60.0f;
+  m.packets = {ig, cs, vd, vc};
+  const auto now = Clock::now();
+  EXPECT_EQ(t.apply(m, now), 0);
+  ASSERT_TRUE(t.state().timeValid);
+  EXPECT_EQ(t.state().utc.day, 21);
+  EXPECT_NEAR(t.state().utc.secondsOfDay, 19 * 3600.0 + 30 * 60.0, 1e-3);
+  EXPECT_NEAR(secondsOf(t.clock().utcAt(now + 2s)), 19 * 3600.0 + 30 * 60.0 + 2.0, 1e-3);
+  ASSERT_EQ(t.state().views.size(), 1u);
+  ASSERT_NE(t.state().views.find(1), nullptr);
+  EXPECT_EQ(*t.state().views.find(1)->leftDeg, 20.0);
+  EXPECT_EQ(*t.state().views.find(1)->rightDeg, 35.0);
+  EXPECT_EQ(*t.state().views.find(1)->yawDeg, -60.0);
+  EXPECT_FALSE(t.state().views.find(1)->upDeg.has_value());
+  cs.date = 2302026;  // 30 February
+  m.packets = {ig, cs};
+  EXPECT_EQ(t.apply(m, now), 1);
+}
+
+TEST(HostPath, InterpolatesHeadingTheShortWayAndNamesBadLines) {
+  const HostPath p = HostPath::parse("time,lat,lon,alt,yaw,pitch,roll\n0,47,11,600,350,0,0\n10,47.1,11,700,10,0,0\n", "p.csv");
+  EXPECT_NEAR(p.at(5.0).attitude.yawDeg, 0.0, 1e-9);
+  EXPECT_NEAR(p.at(5.0).heightM, 650.0, 1e-9);
+  EXPECT_NEAR(p.ratesAt(5.0).yawRate, 2.0, 1e-6);
+  EXPECT_NEAR(p.ratesAt(5.0).x, 0.1 * 3.14159265 / 180.0 * 6371008.8 / 10.0, 0.01);
+  try {
+    HostPath::parse("0,47,11,600,350,0,0\n5,47,11,600\n", "p.csv");
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()), "p.csv:2: expected 7 numbers: time_s, latitude, longitude, altitude_m, yaw, pitch, roll");
+  }
+  EXPECT_THROW(HostPath::parse("0,47,11,600,350,0,0\n0,47,11,600,350,0,0\n", "p.csv"), ConfigError);
+}
+
+// A CIGI 4.0 host states the seconds (a float the 3.3 Celestial Sphere Control lacks): the
+// clock starts at the stated instant, not at the start of the minute, runs on the host's IG
+// Control timestamps (at their 4.0 offset), and the node will answer in 4.0. The same
+// statement in 3.3 gives the minute only.
+TEST(CigiState, Cigi4SecondsAndTimestampSetTheClockAndTheReplyVersion) {
+  cigi::IgControl ig;
+  ig.hostFrameNumber = 7;
+  ig.timestamp = 100000;  // 1 s
+  ig.timestampValid = true;
+  cigi::CelestialSphereControl cs;
+  cs.date = *cigi::composeDate({2026, 6, 21});
+  cs.hour = 19;
+  cs.minute = 30;
+  cs.seconds = 42.25f;
+  auto through = [](bool v4, const std::vector<cigi::Packet>& packets) {  // the bytes as sent, decoded
+    std::vector<std::uint8_t> bytes;
+    EXPECT_EQ(v4 ? cigi::encodeMessage4(packets, skyig::protocol::ByteOrder::little, bytes)
+                 : cigi::encodeMessage(packets, skyig::protocol::ByteOrder::little, bytes),
+              "");
+    return cigi::decodeMessage(bytes);
+  };
+  const auto now = Clock::now();
+  CigiStateTracker t4;
+  EXPECT_EQ(t4.apply(through(true, {ig, cs}), now), 0);
+  EXPECT_EQ(t4.state().cigiMajorVersion, 4);
+  EXPECT_NEAR(t4.state().utc.secondsOfDay, 19 * 3600.0 + 30 * 60.0 + 42.25, 1e-3);
+  // Half a second later by the host's timestamp, the host states 42.75 s: the clock agrees.
+  ig.hostFrameNumber = 8;
+  ig.timestamp = 150000;
+  cs.seconds = 42.75f;
+  EXPECT_EQ(t4.apply(through(true, {ig, cs}), now + 500ms), 0);
+  EXPECT_NEAR(secondsOf(t4.clock().utcAt(now + 500ms)), 19 * 3600.0 + 30 * 60.0 + 42.75, 1e-3);
+  EXPECT_NEAR(secondsOf(t4.clock().utcAt(now + 1500ms)), 19 * 3600.0 + 30 * 60.0 + 43.75, 1e-3);
+  // Seconds outside [0, 60) are rejected and the clock kept.
+  ig.hostFrameNumber = 9;
+  cs.seconds = 60.0f;
+  EXPECT_EQ(t4.apply(through(true, {ig, cs}), now + 500ms), 1);
+
+  CigiStateTracker t3;
+  ig.hostFrameNumber = 7;
+  cs.seconds = 42.25f;  // not on the wire in 3.3
+  EXPECT_EQ(t3.apply(through(false, {ig, cs}), now), 0);
+  EXPECT_EQ(t3.state().cigiMajorVersion, 3);
+  EXPECT_NEAR(t3.state().utc.secondsOfDay, 19 * 3600.0 + 30 * 60.0, 1e-3);
+}

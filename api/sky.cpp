@@ -24,6 +24,9 @@ DirectLight toPublic(const sky::ClientDirectLight& l) {
   return {toVec3(l.direction), l.normalLux, l.horizontalLux, toVec3(l.colour)};
 }
 
+// The thinnest air a host may ask for: 10 m of visibility, denser than any fog a crew flies in.
+constexpr double kMinVisibilityKm = 0.01;
+
 // A value the host passed that the sky cannot use: the name and the value in the message.
 void require(bool ok, const char* name, double value, const char* expected) {
   if (ok) return;
@@ -56,9 +59,14 @@ services::NodeConfig configOf(const Settings& settings) {
 const char* version() { return SKYIG_VERSION; }
 
 Vec3 irradianceFromSh(const Light& light, const Vec3& normal) {
+  const glm::dvec3 n = toGlm(normal);
+  const double length = glm::length(n);
+  if (!std::isfinite(length) || !(length > 0.0))
+    throw Error("skyig::irradianceFromSh: normal (" + std::to_string(normal[0]) + ", " + std::to_string(normal[1]) + ", " +
+                std::to_string(normal[2]) + "): expected a finite, non-zero vector");
   sky::ShCoefficients sh;
   for (std::size_t i = 0; i < sh.size(); ++i) sh[i] = toGlm(light.skySh[i]);
-  return toVec3(sky::shIrradiance(sh, glm::normalize(toGlm(normal))));
+  return toVec3(sky::shIrradiance(sh, n / length));
 }
 
 Sky::Impl::Impl(const Settings& settings) : config(configOf(settings)) {
@@ -83,6 +91,11 @@ const sky::ClientLight& Sky::Impl::clientLight() const {
 }
 
 Sky::Sky(const Settings& settings) : impl_(std::make_unique<Impl>(settings)) {}
+
+const Sky::Impl& Sky::impl() const {
+  if (!impl_) throw Error("skyig::Sky: used after it was moved from (assign it another Sky first)");
+  return *impl_;
+}
 Sky::~Sky() = default;
 Sky::Sky(Sky&&) noexcept = default;
 Sky& Sky::operator=(Sky&&) noexcept = default;
@@ -91,15 +104,17 @@ void Sky::update(const Observer& o, double hostSeconds, const Weather& weather) 
   require(std::abs(hostSeconds) < 1.0e9, "hostSeconds", hostSeconds, "a finite time within 30 years of the clock's origin");
   require(std::abs(o.latitudeDeg) <= 90.0, "latitudeDeg", o.latitudeDeg, "-90 to 90");
   require(std::abs(o.longitudeDeg) <= 360.0, "longitudeDeg", o.longitudeDeg, "-360 to 360");
-  require(o.heightM > -1000.0 && o.heightM < 1.0e6, "heightM", o.heightM, "-1 km to 1000 km");
+  require(o.heightM > -500.0 && o.heightM < 1.0e6, "heightM", o.heightM, "above -500 m and below 1000 km");
   require(o.utc.month >= 1 && o.utc.month <= 12, "utc.month", o.utc.month, "1 to 12");
   require(o.utc.day >= 1 && o.utc.day <= 31, "utc.day", o.utc.day, "1 to 31");
   require(o.utc.secondsOfDay >= 0.0 && o.utc.secondsOfDay < 86401.0, "utc.secondsOfDay", o.utc.secondsOfDay, "0 to 86400");
   require(o.pressureHpa > 0.0 && o.pressureHpa < 2000.0, "pressureHpa", o.pressureHpa, "0 to 2000 hPa");
   require(o.temperatureC > -100.0 && o.temperatureC < 100.0, "temperatureC", o.temperatureC, "-100 to 100 C");
-  require(std::isfinite(weather.visibilityKm), "weather.visibilityKm", weather.visibilityKm, "a finite value");
+  require(weather.visibilityKm == 0.0 || (weather.visibilityKm >= kMinVisibilityKm && std::isfinite(weather.visibilityKm)),
+          "weather.visibilityKm", weather.visibilityKm, "0 (the configuration's) or a finite 0.01 km (10 m) and more");
   require(weather.humidityPct >= 0.0 && weather.humidityPct <= 100.0, "weather.humidityPct", weather.humidityPct, "0 to 100");
 
+  (void)impl();  // throws for a moved-from Sky
   Impl& m = *impl_;
   // The host's call as the CIGI receiver would have published it (node/host/host_snapshot.h),
   // stamped on the host's clock: the worker steps the eye on it.
@@ -139,7 +154,7 @@ void Sky::update(const Observer& o, double hostSeconds, const Weather& weather) 
 }
 
 Light Sky::light() const {
-  const sky::ClientLight& h = impl_->clientLight();
+  const sky::ClientLight& h = impl().clientLight();
   Light l;
   l.sun = toPublic(h.sun);
   l.moon = toPublic(h.moon);
@@ -152,10 +167,15 @@ Light Sky::light() const {
 }
 
 AerialPerspective Sky::aerialPerspective(const Vec3& offsetEnuM) const {
-  const auto* model = impl_->state.conditions.atmosphere.get();
-  if (!model || impl_->state.conditions.model != sky::SkyModel::Physical)
+  const Impl& m = impl();
+  const auto* model = m.state.conditions.atmosphere.get();
+  if (!model || m.state.conditions.model != sky::SkyModel::Physical)
     throw Error("skyig::Sky::aerialPerspective needs the physical sky (Settings::model \"physical\")");
-  const sky::ClientAerialPerspective a = sky::clientAerialPerspective(impl_->state, *model, toGlm(offsetEnuM));
+  for (const double x : offsetEnuM)
+    if (!std::isfinite(x))
+      throw Error("skyig::Sky::aerialPerspective: offset (" + std::to_string(offsetEnuM[0]) + ", " +
+                  std::to_string(offsetEnuM[1]) + ", " + std::to_string(offsetEnuM[2]) + ") m: expected finite metres");
+  const sky::ClientAerialPerspective a = sky::clientAerialPerspective(m.state, *model, toGlm(offsetEnuM));
   return {toVec3(a.transmittance), toVec3(a.inScattered)};
 }
 

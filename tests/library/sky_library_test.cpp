@@ -96,6 +96,44 @@ TEST(SkyLibrary, BadObserverIsRefusedAndTheLastFrameKept) {
   EXPECT_EQ(sky.light().sun.horizontalLux, before);
 }
 
+// The calls a host can get wrong are refused with skyig::Error, naming the value: a Sky used
+// after it was moved from, a non-finite aerial-perspective offset, a visibility below 10 m or
+// negative, a zero normal, a height outside the range the sky state takes (the same range in
+// the message the state's own check would give).
+TEST(SkyLibrary, MisusedCallsThrowErrorsNotCrashes) {
+  skyig::Sky sky(smallPhysicalSky());
+  sky.update(at(11, 0), 0.0);
+  for (const double x : {std::nan(""), HUGE_VAL})
+    EXPECT_THROW(sky.aerialPerspective({x, 1000.0, 0.0}), skyig::Error);
+  EXPECT_GT(sky.aerialPerspective({0.0, 1000.0, 0.0}).transmittance[1], 0.5);  // 1 km of clear air
+  for (const double km : {-1.0, 1e-9, 0.005, HUGE_VAL}) {
+    skyig::Weather w;
+    w.visibilityKm = km;
+    EXPECT_THROW(sky.update(at(11, 0), 1.0, w), skyig::Error) << km;
+  }
+  skyig::Observer deep = at(11, 0);
+  deep.heightM = -700.0;
+  try {
+    sky.update(deep, 1.0);
+    FAIL() << "a height of -700 m was accepted";
+  } catch (const skyig::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("above -500 m"), std::string::npos) << e.what();
+  }
+  const skyig::Light light = sky.light();
+  EXPECT_THROW(skyig::irradianceFromSh(light, {0.0, 0.0, 0.0}), skyig::Error);
+  EXPECT_THROW(skyig::irradianceFromSh(light, {std::nan(""), 0.0, 1.0}), skyig::Error);
+  // Any length: the normal is normalised.
+  const skyig::Vec3 up = skyig::irradianceFromSh(light, {0.0, 0.0, 1.0});
+  const skyig::Vec3 longUp = skyig::irradianceFromSh(light, {0.0, 0.0, 5.0});
+  EXPECT_NEAR(longUp[1], up[1], 1e-9 * up[1]);
+
+  skyig::Sky moved(std::move(sky));
+  EXPECT_GT(moved.light().sun.horizontalLux, 10000.0);
+  EXPECT_THROW((void)sky.light(), skyig::Error);  // NOLINT(bugprone-use-after-move): the test
+  EXPECT_THROW(sky.update(at(11, 0), 2.0), skyig::Error);
+  EXPECT_THROW((void)sky.aerialPerspective({0.0, 1000.0, 0.0}), skyig::Error);
+}
+
 // The pilot's eye adapts on the host's clock: nine minutes of dusk in a tenth of a second of
 // host time leave the eye far above the darker scene's level (the level an eye adapted at once
 // has); ten minutes of host time later it has come down to it.

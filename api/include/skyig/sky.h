@@ -72,7 +72,7 @@ struct Observer {
 
 // The weather the physical sky is built for; a visibility of 0: the configuration's atmosphere.
 struct Weather {
-  double visibilityKm = 0.0;  // meteorological visibility (Koschmieder)
+  double visibilityKm = 0.0;  // meteorological visibility (Koschmieder): 0, or 0.01 km (10 m) and more
   double humidityPct = 0.0;   // relative humidity: the aerosol's growth
 };
 
@@ -103,7 +103,8 @@ struct Light {
   double adaptationGain = 1.0;
 };
 
-// Irradiance (Rec.709 lux) on a surface of unit normal `normal` from `light.skySh`.
+// Irradiance (Rec.709 lux) on a surface of normal `normal` (normalised here; a zero or
+// non-finite normal throws Error) from `light.skySh`.
 SKYIG_API Vec3 irradianceFromSh(const Light& light, const Vec3& normal);
 
 // Between the observer and a point: a surface of radiance L seen there is L * transmittance +
@@ -138,11 +139,12 @@ class SKYIG_API Sky {
   // The light of the last update (before any: the defaults' observer).
   Light light() const;
   // Aerial perspective to a point `offsetEnuM` metres from the observer. Physical sky only:
-  // throws Error under an analytic one.
+  // throws Error under an analytic one, and for a non-finite offset.
   AerialPerspective aerialPerspective(const Vec3& offsetEnuM) const;
 
   struct Impl;
-  const Impl& impl() const { return *impl_; }
+  // Throws Error for a Sky that was moved from (as every member does).
+  const Impl& impl() const;
 
  private:
   std::unique_ptr<Impl> impl_;

@@ -9,6 +9,7 @@
 #include <tinyxml2.h>
 
 #include <cmath>
+#include <strings.h>
 #include <cstdlib>
 #include <limits>
 
@@ -49,8 +50,17 @@ double number(const Where& w, const XMLElement* parent, const char* name, bool r
   return v;
 }
 
+// An attribute by its name in any letter case: the standard writes xResolution, VESA's reference
+// library (the MPCDI SDK) writes and reads Xresolution, and other tools write xresolution.
+const char* attributeAnyCase(const XMLElement* e, const char* name) {
+  if (const char* exact = e->Attribute(name)) return exact;
+  for (const tinyxml2::XMLAttribute* a = e->FirstAttribute(); a; a = a->Next())
+    if (strcasecmp(a->Name(), name) == 0) return a->Value();
+  return nullptr;
+}
+
 int resolution(const Where& w, const XMLElement* e, const char* name) {
-  const char* text = e->Attribute(name);
+  const char* text = attributeAnyCase(e, name);
   if (!text) fail(w, e, std::string(name) + " missing");
   char* end = nullptr;
   const long v = std::strtol(text, &end, 10);
@@ -167,6 +177,13 @@ MpcdiDescription parseMpcdiXml(const std::vector<std::uint8_t>& xml, const std::
       region->distortion = fileRef(ws, s, "distortionMap");
       if (const XMLElement* a = s->FirstChildElement("alphaMap")) {
         region->alphaGammaEmbedded = number(ws.in(a), a, "gammaEmbedded", false, 1.0);
+        if (region->alphaGammaEmbedded == 0.0) {
+          // The MPCDI SDK writes 0 for a member never set, and its own reader ignores the value.
+          const XMLElement* g = a->FirstChildElement("gammaEmbedded");
+          d.warnings.push_back(ws.in(a).file + ":" + std::to_string(g->GetLineNum()) + ": region \"" + region->id +
+                               "\": <gammaEmbedded> 0 read as not given (no gamma in the alpha map)");
+          region->alphaGammaEmbedded = 1.0;
+        }
         if (region->alphaGammaEmbedded < 0.1 || region->alphaGammaEmbedded > 10.0)
           fail(ws.in(a), a->FirstChildElement("gammaEmbedded"),
                "<gammaEmbedded> " + std::to_string(region->alphaGammaEmbedded) + " is not a gamma from 0.1 to 10");
@@ -190,6 +207,8 @@ ProjectorCalibration readMpcdiRegion(const MpcdiArchive& archive, const MpcdiDes
   if (region->warp.path.empty()) throw CalibrationError(at + "no <fileset> with a <geometryWarpFile> for it");
   ProjectorCalibration p;
   p.source = archive.path() + " region " + id;
+  for (const std::string& w : d.warnings)
+    if (w.find("region \"" + id + "\"") != std::string::npos) p.warnings.push_back(w);
   p.region = id;
   p.width = region->xResolution;
   p.height = region->yResolution;

@@ -66,6 +66,8 @@ struct MpcdiRegion {
 struct MpcdiDescription {
   std::string profile;  // "2d", "3d", "a3" or "sl"
   std::vector<MpcdiRegion> regions;
+  // What was read but looks wrong, "FILE:LINE: ...": said, not refused.
+  std::vector<std::string> warnings;
   const MpcdiRegion* find(const std::string& id) const;
   std::string regionIds() const;  // "r1, r2, r3", for messages
 };

@@ -46,6 +46,8 @@ struct FloatMap {
 
 struct ProjectorCalibration {
   std::string source;  // the file (and region) it was read from, for messages
+  // What the reader accepted but says, "FILE:LINE: ...", for the node's log.
+  std::vector<std::string> warnings;
   std::string region;  // the MPCDI region id (or the mesh's file name)
   int width = 0;       // the projector's pixels
   int height = 0;

@@ -3,6 +3,8 @@
 #include "calibration/load.h"
 #include "render/sky_renderer.h"
 
+#include <spdlog/spdlog.h>
+
 #include <string>
 
 namespace skyig::services {
@@ -23,6 +25,7 @@ ProjectorChannel loadProjectorChannel(const sky::ChannelConfig& channel, const P
   } catch (const calibration::CalibrationError& e) {
     throw ConfigError(std::string(e.what()) + " (channel " + channel.name + "'s projector)");
   }
+  for (const std::string& w : projector->warnings) spdlog::warn("{} (channel {}'s projector)", w, channel.name);
   out.channel = render::SkyRenderer::projectorChannel(channel, *projector);  // the camera the renderer draws
   if (!settings.sizeGiven) {
     if (projector->width < sky::kMinChannelSide || projector->width > sky::kMaxChannelSide ||

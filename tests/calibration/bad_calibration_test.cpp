@@ -4,6 +4,8 @@
 #include "calibration/pfm.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <zip.h>
 
 #include <filesystem>
@@ -57,6 +59,29 @@ class BadCalibration : public testing::Test {
   fs::path dir_;
   std::string xml_;
 };
+
+// VESA's reference library (the MPCDI SDK) writes the resolutions as Xresolution and
+// Yresolution, and 0 for a gammaEmbedded it never set (its reader ignores it): read as the
+// standard's xResolution, and as no gamma with a warning naming the line.
+TEST_F(BadCalibration, TheReferenceLibrarysSpellingsAreRead) {
+  std::string text = xml_;
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"xResolution", "Xresolution"},
+                                 {"yResolution", "Yresolution"},
+                                 {"<gammaEmbedded>2.2</gammaEmbedded>", "<gammaEmbedded>0</gammaEmbedded>"}})
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+      text.replace(at, from.size(), to);
+  std::ofstream(dir_ / "mpcdi.xml") << text;
+  const ProjectorCalibration p = loadProjector(mpcdiSource(dir_.string(), "p1", WarpValues::Offset));
+  EXPECT_EQ(p.width, 64);
+  EXPECT_EQ(p.height, 40);
+  ASSERT_EQ(p.warnings.size(), 1u);
+  EXPECT_NE(p.warnings[0].find("mpcdi.xml:13: region \"p1\": <gammaEmbedded> 0 read as not given"), std::string::npos)
+      << p.warnings[0];
+  // Read without the gamma: the stored alpha itself, where the file's 2.2 was taken out.
+  const ProjectorCalibration withGamma = loadProjector(mpcdiSource((kData / "warp_offset").string(), "p1", WarpValues::Offset));
+  EXPECT_TRUE(withGamma.warnings.empty());
+  EXPECT_NEAR(p.alpha.at(12, 3), std::pow(withGamma.alpha.at(12, 3), 1.0 / 2.2), 1e-4);
+}
 
 TEST_F(BadCalibration, AMissingRegionListsTheRegionsThereAre) {
   const std::string e = error("p9");

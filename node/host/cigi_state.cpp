@@ -62,7 +62,7 @@ double HostClock::continuousAt(Clock::time_point t) const {
 
 namespace {
 using Applied = CigiStateTracker::Applied;
-constexpr Applied kChanged{true, 0}, kRejected{false, 1}, kIgnored{};
+constexpr Applied kChanged{true, 0, true}, kRejected{false, 1, true}, kIgnored{false, 0, true};
 }  // namespace
 
 CigiStateTracker::Applied CigiStateTracker::on(const cigi::IgControl& p, const cigi::DecodedMessage&,
@@ -212,7 +212,7 @@ CigiStateTracker::Applied CigiStateTracker::on(const cigi::SensorControl& p, con
   if (!v) return kIgnored;
   v->sensorOn = p.sensorOn;
   v->automaticGain = p.automaticGain;
-  Applied a{true, 0};
+  Applied a{true, 0, false};  // a bad gain is dropped alone
   if (!std::isfinite(p.gain) || p.gain < 0.0f || p.gain > 1.0f) ++a.rejected;
   else if (p.gain > 0.0f) v->gain = p.gain;
   return a;
@@ -225,8 +225,9 @@ ViewOverride* CigiStateTracker::view(std::uint16_t viewId) {
 }
 
 int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_point arrival) {
+  const CigiStateTracker before = *this;  // a refused message leaves no trace
   int rejected = 0;
-  bool changed = false;
+  bool changed = false, refused = false;
   messageHostTime_.reset();
   if (!message.packets.empty() && std::holds_alternative<cigi::IgControl>(message.packets.front()))
     state_.cigiMajorVersion = message.majorVersion;  // the node answers in the host's version
@@ -236,6 +237,11 @@ int CigiStateTracker::apply(const cigi::DecodedMessage& message, Clock::time_poi
     const Applied a = std::visit([&](const auto& p) { return on(p, message, arrival); }, packet);
     changed = changed || a.changed;
     rejected += a.rejected;
+    refused = refused || (a.rejected > 0 && a.refusesFrame);
+  }
+  if (refused) {
+    *this = before;
+    return rejected;
   }
   if (changed) {
     ++state_.updates;

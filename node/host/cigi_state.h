@@ -34,9 +34,11 @@ inline constexpr double kMaxTimestampStepS = 3600.0;
 
 class CigiStateTracker {
  public:
-  // Applies every well-formed packet of a message received at `arrival`. Invalid values
-  // (NaN, out-of-range angles, impossible dates) are skipped and counted; the rest of the
-  // state is kept. Returns the number of rejected values. Which messages are applied, in
+  // Applies every well-formed packet of a message received at `arrival`. A message is one host
+  // frame: one with an invalid value (NaN, an out-of-range angle, an impossible date) is
+  // refused whole, its frame number, timestamp and every other packet with it, and the state
+  // and clock stay as they were; a goggle's bad gain alone is dropped while its switch applies
+  // (CIGI's Sensor Control carries both). Returns the number of rejected values. Which messages are applied, in
   // which order, is the receiver's call (node/host/host_session.h): the tracker takes each
   // IG Control timestamp as the next step of the current session's clock.
   int apply(const protocol::cigi::DecodedMessage& message, Clock::time_point arrival);
@@ -64,6 +66,7 @@ class CigiStateTracker {
   struct Applied {
     bool changed = false;
     int rejected = 0;
+    bool refusesFrame = true;  // a rejected value refuses the whole message
   };
 
  private:

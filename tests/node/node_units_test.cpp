@@ -164,6 +164,50 @@ TEST(CigiState, CelestialDateAndViewsApply) {
   EXPECT_EQ(t.apply(m, now), 1);
 }
 
+// A message is one host frame: an Entity Control with a NaN latitude (or a roll of 400 deg)
+// refuses the whole message, so neither the pose, the frame number Start of Frame acknowledges,
+// nor the host's clock moves; the next good message continues from the last good one.
+TEST(CigiState, AMessageWithABadValueIsRefusedWhole) {
+  CigiStateTracker t;
+  auto message = [](std::uint32_t frame, std::uint32_t ticks, double latitude, double rollDeg) {
+    cigi::IgControl ig;
+    ig.hostFrameNumber = frame;
+    ig.timestamp = ticks;
+    ig.timestampValid = true;
+    cigi::EntityControl e;
+    e.latitudeDeg = latitude;
+    e.longitudeDeg = 11.0;
+    e.altitudeM = 600.0;
+    e.rollDeg = static_cast<float>(rollDeg);
+    cigi::CelestialSphereControl cs;
+    cs.date = *cigi::composeDate({2026, 6, 21});
+    cs.hour = 19;
+    cs.minute = 30;
+    cigi::DecodedMessage m;
+    m.packets = {ig, e, cs};
+    return m;
+  };
+  const auto t0 = Clock::now();
+  ASSERT_EQ(t.apply(message(5, 100000, 47.0, 0.0), t0), 0);
+  const HostState good = t.state();
+  const double clockAtGood = t.clock().continuousAt(t0 + 1s);
+  const double baseAtGood = t.clock().timestampBaseS;
+  for (const auto& [latitude, roll] : {std::pair{std::nan(""), 0.0}, std::pair{47.5, 400.0}}) {
+    EXPECT_EQ(t.apply(message(6, 103300, latitude, roll), t0 + 33ms), 1);
+    EXPECT_EQ(t.state().hostFrame, 5u);
+    EXPECT_EQ(t.state().ownship.latitudeDeg, 47.0);
+    EXPECT_EQ(t.state().updates, good.updates);
+    EXPECT_EQ(t.state().received, good.received);
+    EXPECT_EQ(t.clock().continuousAt(t0 + 1s), clockAtGood);
+  }
+  // The next good frame: its timestamp steps from frame 5's (no jump counted), its pose applies.
+  ASSERT_EQ(t.apply(message(7, 106600, 47.1, 10.0), t0 + 66ms), 0);
+  EXPECT_EQ(t.state().hostFrame, 7u);
+  EXPECT_EQ(t.state().ownship.latitudeDeg, 47.1);
+  EXPECT_EQ(t.timestampJumps(), 0u);
+  EXPECT_NEAR(t.clock().timestampBaseS - baseAtGood, 0.066, 1e-9);
+}
+
 TEST(HostPath, InterpolatesHeadingTheShortWayAndNamesBadLines) {
   const HostPath p = HostPath::parse("time,lat,lon,alt,yaw,pitch,roll\n0,47,11,600,350,0,0\n10,47.1,11,700,10,0,0\n", "p.csv");
   EXPECT_NEAR(p.at(5.0).attitude.yawDeg, 0.0, 1e-9);

@@ -42,7 +42,12 @@ int run(const PrecomputeCli& cli) {
                 steps.directory.string().c_str());
   std::printf("%llu steps built, %llu failed\n", static_cast<unsigned long long>(updater.stepBuilds()),
               static_cast<unsigned long long>(updater.stepFailures()));
-  return updater.stepFailures() > 0 ? 3 : 0;
+  // Its output is the cache: tables that could not be written there are an output that failed.
+  if (updater.cacheWriteFailures() > 0)
+    std::fprintf(stderr, "skyig precompute: %llu table file(s) could not be written to %s (full or read-only?)\n",
+                 static_cast<unsigned long long>(updater.cacheWriteFailures()),
+                 cacheDirectory(config.atmosphere).string().c_str());
+  return updater.stepFailures() > 0 || updater.cacheWriteFailures() > 0 ? 3 : 0;
 }
 
 }  // namespace

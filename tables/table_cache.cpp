@@ -107,12 +107,18 @@ void writeTableCache(const std::filesystem::path& path, const ModelConfig& confi
   // Unique temporary name per thread and process, then an atomic rename.
   const auto tmp = path.string() + ".tmp" + std::to_string(::getpid()) + "-" +
                    std::to_string(std::hash<std::thread::id>{}(std::this_thread::get_id()));
+  bool written = false;
   {
     std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
     if (!f) throw std::runtime_error("atmosphere cache: cannot write " + tmp);
     f.write(reinterpret_cast<const char*>(header.data()), static_cast<std::streamsize>(header.size()));
     f.write(reinterpret_cast<const char*>(payload.data()), static_cast<std::streamsize>(payload.size()));
-    if (!f) throw std::runtime_error("atmosphere cache: write failed for " + tmp);
+    f.flush();
+    written = static_cast<bool>(f);
+  }
+  if (!written) {  // a full disk: the partial file would keep it full for every later start
+    std::filesystem::remove(tmp, ec);
+    throw std::runtime_error("atmosphere cache: write failed for " + tmp + " (disk full?)");
   }
   std::filesystem::rename(tmp, path, ec);
   if (ec) {
@@ -246,14 +252,19 @@ AtmosphereModel loadOrPrecompute(const ModelConfig& config,
     if (auto tables = readTableCache(path, config, &reason)) {
       std::error_code ec;  // the last use, for least-recently-used eviction (best effort)
       std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), ec);
-      if (result) *result = {CacheOutcome::kLoaded, "", path};
+      if (result) *result = {CacheOutcome::kLoaded, "", path, ""};
       return AtmosphereModel(config, std::move(*tables));
     }
     const bool existed = std::filesystem::exists(path);
     std::vector<GroupTables> tables = builder(config, control);  // validates the config (or throws)
     roundTablesToFloat(tables);
-    writeTableCache(path, config, tables);
-    if (result) *result = {existed ? CacheOutcome::kRebuilt : CacheOutcome::kComputed, reason, path};
+    std::string writeError;
+    try {
+      writeTableCache(path, config, tables);
+    } catch (const std::runtime_error& e) {
+      writeError = e.what();  // computed all the same: used, not kept
+    }
+    if (result) *result = {existed ? CacheOutcome::kRebuilt : CacheOutcome::kComputed, reason, path, writeError};
     model.emplace(config, std::move(tables));
   }  // unlocked before evicting: the lock files of evicted tables go too
   if (maxCacheBytes > 0) evictLeastRecentlyUsed(directory, maxCacheBytes, path);

@@ -55,6 +55,9 @@ struct CacheResult {
   CacheOutcome outcome;
   std::string reason;  // why the cache was not used (kComputed, kRebuilt)
   std::filesystem::path path;
+  // Why tables computed here could not be kept (a full or read-only cache): they are used all
+  // the same, and no temporary file is left. Empty when they were cached or loaded.
+  std::string writeError = {};
 };
 
 // Computes the tables of every group of a config. The CPU reference is the default; the GPU

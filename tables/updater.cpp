@@ -15,14 +15,21 @@ AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial, std::filesystem
 
 AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial,
                                      std::filesystem::path cacheDirectory, TableBuilder builder,
-                                     UpdaterLimits limits, const std::atomic<bool>* stop, VisibilitySteps steps)
+                                     UpdaterLimits limits, const std::atomic<bool>* stop, VisibilitySteps steps,
+                                     std::shared_ptr<const AtmosphereModel> loaded)
     : cacheDirectory_(std::move(cacheDirectory)),
       builder_(builder ? std::move(builder) : TableBuilder(precomputeTablesOnCpu)),
       limits_(limits),
       stopFlag_(stop),
-      current_(std::make_shared<const AtmosphereModel>(loadOrPrecompute(
-          initial, cacheDirectory_, nullptr, builder_, limits.maxCacheBytes, {CancelToken(stopFlag_), {}}))),
       stepsDirectory_(std::move(steps.directory)) {
+  if (loaded && parameterHash(loaded->config()) == parameterHash(initial)) {
+    current_ = std::move(loaded);
+  } else {
+    CacheResult cache{CacheOutcome::kLoaded, "", {}, ""};
+    current_ = std::make_shared<const AtmosphereModel>(
+        loadOrPrecompute(initial, cacheDirectory_, &cache, builder_, limits.maxCacheBytes, {CancelToken(stopFlag_), {}}));
+    noteCacheWrite(cache);
+  }
   if (!steps.km.empty()) {
     // The initial model is a step, kept in memory; the others are cached in their own folder.
     steps_.push_back(initial);
@@ -246,7 +253,7 @@ void AtmosphereUpdater::run() {
     lock.unlock();  // compute without holding the lock: current() stays instant
     std::shared_ptr<const AtmosphereModel> model;
     std::string error;
-    CacheResult cache{CacheOutcome::kLoaded, "", {}};
+    CacheResult cache{CacheOutcome::kLoaded, "", {}, ""};
     try {
       model = std::make_shared<const AtmosphereModel>(
           loadOrPrecompute(config, directory, &cache, builder_, &directory == &cacheDirectory_ ? limits_.maxCacheBytes : 0,
@@ -256,6 +263,7 @@ void AtmosphereUpdater::run() {
     } catch (const std::exception& e) {
       error = e.what();
     }
+    noteCacheWrite(cache);
     lock.lock();
     if (model && cache.outcome != CacheOutcome::kLoaded) {
       lastBuild_ = lastAnyBuild_ = std::chrono::steady_clock::now();
@@ -283,10 +291,12 @@ void AtmosphereUpdater::buildStep(std::unique_lock<std::mutex>& lock) {
   lock.unlock();
   bool built = false, failed = false;
   try {
-    CacheResult cache{CacheOutcome::kLoaded, "", {}};
+    CacheResult cache{CacheOutcome::kLoaded, "", {}, ""};
     // Nothing kept in memory: a blend reads the steps it needs.
     (void)loadOrPrecompute(steps_[i], stepsDirectory_, &cache, builder_, 0, {CancelToken(&yield_, stopFlag_), {}});
-    built = cache.outcome != CacheOutcome::kLoaded;
+    noteCacheWrite(cache);
+    built = cache.outcome != CacheOutcome::kLoaded && cache.writeError.empty();
+    failed = !cache.writeError.empty();  // a step is only worth its cached file
   } catch (const Cancelled&) {
     // a request came, or stopping: built again when idle
   } catch (const std::exception& e) {
@@ -304,5 +314,14 @@ void AtmosphereUpdater::buildStep(std::unique_lock<std::mutex>& lock) {
   if (built || failed || !yield_) stepsToBuild_.erase(std::find(stepsToBuild_.begin(), stepsToBuild_.end(), i));
   if (stepsToBuild_.empty()) idle_.notify_all();
 }
+
+void AtmosphereUpdater::noteCacheWrite(const CacheResult& cache) {
+  if (cache.writeError.empty()) return;
+  if (cacheWriteFailures_.fetch_add(1) == 0)
+    std::fprintf(stderr, "physical sky: tables computed but not cached, running on them (%s); later failures are "
+                         "counted, not said\n", cache.writeError.c_str());
+}
+
+std::uint64_t AtmosphereUpdater::cacheWriteFailures() const { return cacheWriteFailures_.load(); }
 
 }  // namespace skyig::atmosphere

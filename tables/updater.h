@@ -63,11 +63,13 @@ class AtmosphereUpdater {
   // passes the GPU one, tables/loader.h), on the calling thread for the initial
   // model and on the updater's own thread afterwards. `stop`, when given, is the owner's stop
   // flag (a signalled command): once set, the initial precompute, a running one and waitIdle()
-  // all end at once (the first by throwing Cancelled).
+  // all end at once (the first by throwing Cancelled). `loaded`, when it is the initial
+  // config's model already in memory (the node's start-up load), is used as it is: with a cache
+  // that cannot be written it would otherwise be computed a second time.
   AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cacheDirectory);
   AtmosphereUpdater(const ModelConfig& initial, std::filesystem::path cacheDirectory,
                     TableBuilder builder, UpdaterLimits limits = {}, const std::atomic<bool>* stop = nullptr,
-                    VisibilitySteps steps = {});
+                    VisibilitySteps steps = {}, std::shared_ptr<const AtmosphereModel> loaded = nullptr);
   // Cancels a running precompute (it stops within one of its slices) and joins the thread.
   ~AtmosphereUpdater();
   AtmosphereUpdater(const AtmosphereUpdater&) = delete;
@@ -95,6 +97,9 @@ class AtmosphereUpdater {
   std::uint64_t stepFailures() const;
   // Why the last failed request failed; empty if none failed since the last success.
   std::string lastError() const;
+  // Tables computed but not cached (a full or read-only cache): the node runs on them; the
+  // first such failure is said on stderr, every one counted.
+  std::uint64_t cacheWriteFailures() const;
   // Blocks until no request is pending or running (replay, tests, shutdown), or the stop flag
   // is set; a request held back by the rate limit is pending.
   void waitIdle();
@@ -153,6 +158,9 @@ class AtmosphereUpdater {
   std::chrono::steady_clock::time_point lastAnyBuild_ = std::chrono::steady_clock::now();
   std::uint64_t stepBuilds_ = 0;
   std::uint64_t stepFailures_ = 0;
+  std::atomic<std::uint64_t> cacheWriteFailures_{0};
+  // Counts a cache write that failed, and says the first.
+  void noteCacheWrite(const CacheResult& cache);
   std::thread worker_;
   std::thread blender_;
 };

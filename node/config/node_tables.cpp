@@ -23,10 +23,11 @@ std::shared_ptr<const atmosphere::AtmosphereModel> loadNodeAtmosphere(const Node
                                    atmosphereTableBuilder(), config.atmosphere.cacheMaxBytes,
                                    {atmosphere::CancelToken(stop), {}}));
   if (cache.outcome != atmosphere::CacheOutcome::kLoaded)
-    std::fprintf(stderr, "physical sky: precomputed the %s tables in %.1f s (%s); cached in %s\n",
+    std::fprintf(stderr, "physical sky: precomputed the %s tables in %.1f s (%s); %s %s\n",
                  config.atmosphere.tables.c_str(),
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), cache.reason.c_str(),
-                 cache.path.string().c_str());
+                 cache.writeError.empty() ? "cached in" : "not cached, running on them:",
+                 cache.writeError.empty() ? cache.path.string().c_str() : cache.writeError.c_str());
   if (result) *result = cache;
   return loaded;
 }
@@ -45,8 +46,10 @@ std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeC
   // for each visibility's exact tables anyway.
   atmosphere::VisibilitySteps steps;
   if (rateLimited) steps = visibilitySteps(config);
+  // The configuration's tables, when the start-up load put them in memory: not loaded again.
   return std::make_unique<atmosphere::AtmosphereUpdater>(nodeModelConfig(config, {}), cacheDirectory(config.atmosphere),
-                                                         atmosphereTableBuilder(), limits, stop, std::move(steps));
+                                                         atmosphereTableBuilder(), limits, stop, std::move(steps),
+                                                         config.sky.atmosphere);
 }
 
 void loadAtmosphereIfNeeded(NodeConfig& config, const std::atomic<bool>* stop) {

@@ -540,6 +540,43 @@ TEST_F(Cli, PrecomputeBuildsTheMissingVisibilitySteps) {
   EXPECT_NE(bad.err.find("atmosphere_visibility_steps"), std::string::npos) << bad.err;
 }
 
+// A table cache that cannot be written, a full disk (a 16 KiB tmpfs) or a read-only one,
+// mounted in a private mount namespace of the command alone (so nothing outside the test
+// sees it): `serve` and `render` run on the tables they computed and say so once, no
+// temporary file is left behind, and `precompute`, whose output is the cache, exits 3.
+TEST_F(Cli, AFullOrReadOnlyCacheIsRunOnNotFatal) {
+  if (::geteuid() != 0 || std::system("unshare --mount true 2>/dev/null") != 0)
+    GTEST_SKIP() << "a private mount namespace needs root (CI runs as root)";
+  for (const std::string options : {"size=16k", "ro"}) {
+    const fs::path cache = dir_ / ("cache-" + options.substr(0, 4));
+    fs::create_directories(cache);
+    const fs::path cfg = write("node.toml", "[sky]\natmosphere_tables = \"small\"\natmosphere_cache = \"" +
+                                                cache.string() + "\"\natmosphere_visibility_steps = []\n");
+    // The command in the namespace, then what the cache holds, before the namespace goes.
+    auto inNamespace = [&](const std::string& args) {
+      const fs::path script = write("run.sh", "mount -t tmpfs -o " + options + " skyig-test " + cache.string() + "\n" +
+                                                  SKYIG_EXECUTABLE + " " + args + " >" + (dir_ / "out.txt").string() +
+                                                  " 2>" + (dir_ / "err.txt").string() + "\necho $? >" +
+                                                  (dir_ / "rc.txt").string() + "\nls -a " + cache.string() + " >" +
+                                                  (dir_ / "ls.txt").string() + "\n");
+      EXPECT_EQ(std::system(("unshare --mount --propagation private sh " + script.string()).c_str()), 0);
+      return std::make_pair(std::stoi(slurp(dir_ / "rc.txt")), slurp(dir_ / "err.txt"));
+    };
+    const auto [serveRc, serveErr] =
+        inNamespace("serve --config " + cfg.string() + " --headless --frames 3 --listen 127.0.0.1:0");
+    EXPECT_EQ(serveRc, 0) << options << ": " << serveErr;
+    EXPECT_NE(serveErr.find("not cached, running on them"), std::string::npos) << serveErr;
+    EXPECT_EQ(serveErr.find("precomputed the small tables", serveErr.find("precomputed the small tables") + 1),
+              std::string::npos)
+        << "computed twice: " << serveErr;
+    EXPECT_EQ(slurp(dir_ / "ls.txt").find(".tmp"), std::string::npos) << slurp(dir_ / "ls.txt");
+    const auto [precomputeRc, precomputeErr] = inNamespace("precompute --config " + cfg.string());
+    EXPECT_EQ(precomputeRc, 3) << options << ": " << precomputeErr;
+    EXPECT_NE(precomputeErr.find("could not be written"), std::string::npos) << precomputeErr;
+    EXPECT_EQ(slurp(dir_ / "ls.txt").find(".tmp"), std::string::npos) << slurp(dir_ / "ls.txt");
+  }
+}
+
 // A configuration is read with a bound: /dev/zero (which never ends) is refused at once.
 TEST_F(Cli, EndlessConfigurationIsRefusedWithABound) {
   const auto start = std::chrono::steady_clock::now();

@@ -27,12 +27,20 @@ DirectLight toPublic(const sky::ClientDirectLight& l) {
 // The thinnest air a host may ask for: 10 m of visibility, denser than any fog a crew flies in.
 constexpr double kMinVisibilityKm = 0.01;
 
+// A number for a message (snprintf, not std::to_string(double), whose libstdc++ template would
+// be exported from the library beside its API).
+std::string number(double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.10g", value);
+  return text;
+}
+
+std::string vectorText(const Vec3& v) { return "(" + number(v[0]) + ", " + number(v[1]) + ", " + number(v[2]) + ")"; }
+
 // A value the host passed that the sky cannot use: the name and the value in the message.
 void require(bool ok, const char* name, double value, const char* expected) {
   if (ok) return;
-  char text[64];
-  std::snprintf(text, sizeof text, "%.10g", value);
-  throw Error(std::string("skyig::Sky::update: ") + name + " = " + text + ": expected " + expected);
+  throw Error(std::string("skyig::Sky::update: ") + name + " = " + number(value) + ": expected " + expected);
 }
 
 services::NodeConfig configOf(const Settings& settings) {
@@ -62,8 +70,7 @@ Vec3 irradianceFromSh(const Light& light, const Vec3& normal) {
   const glm::dvec3 n = toGlm(normal);
   const double length = glm::length(n);
   if (!std::isfinite(length) || !(length > 0.0))
-    throw Error("skyig::irradianceFromSh: normal (" + std::to_string(normal[0]) + ", " + std::to_string(normal[1]) + ", " +
-                std::to_string(normal[2]) + "): expected a finite, non-zero vector");
+    throw Error("skyig::irradianceFromSh: normal " + vectorText(normal) + ": expected a finite, non-zero vector");
   sky::ShCoefficients sh;
   for (std::size_t i = 0; i < sh.size(); ++i) sh[i] = toGlm(light.skySh[i]);
   return toVec3(sky::shIrradiance(sh, n / length));
@@ -173,8 +180,7 @@ AerialPerspective Sky::aerialPerspective(const Vec3& offsetEnuM) const {
     throw Error("skyig::Sky::aerialPerspective needs the physical sky (Settings::model \"physical\")");
   for (const double x : offsetEnuM)
     if (!std::isfinite(x))
-      throw Error("skyig::Sky::aerialPerspective: offset (" + std::to_string(offsetEnuM[0]) + ", " +
-                  std::to_string(offsetEnuM[1]) + ", " + std::to_string(offsetEnuM[2]) + ") m: expected finite metres");
+      throw Error("skyig::Sky::aerialPerspective: offset " + vectorText(offsetEnuM) + " m: expected finite metres");
   const sky::ClientAerialPerspective a = sky::clientAerialPerspective(m.state, *model, toGlm(offsetEnuM));
   return {toVec3(a.transmittance), toVec3(a.inScattered)};
 }

@@ -57,7 +57,8 @@ MpcdiArchive::MpcdiArchive(const std::string& path) : path_(path) {
     if (!fs::is_regular_file(p / xmlName_, ec)) throw CalibrationError(path + ": the folder holds no mpcdi.xml");
     return;
   }
-  if (!fs::is_regular_file(p, ec)) throw CalibrationError(path + ": no such MPCDI file");
+  if (!fs::is_regular_file(p, ec))
+    throw CalibrationError(path + ": no such MPCDI file (a dome's is made by `skyig dome --out " + path + "`)");
   if (startsWithZipMagic(p)) {
     zip_ = true;
     const auto z = openZip(path);

@@ -83,6 +83,13 @@ TEST_F(BadCalibration, TheReferenceLibrarysSpellingsAreRead) {
   EXPECT_NEAR(p.alpha.at(12, 3), std::pow(withGamma.alpha.at(12, 3), 1.0 / 2.2), 1e-4);
 }
 
+// A configuration naming a calibration that is not there yet (config/dome5-projectors.toml
+// before `skyig dome`) says how to make one.
+TEST_F(BadCalibration, AMissingFileSaysHowToMakeADome) {
+  const std::string e = error("p1", (dir_ / "dome5.mpcdi").string());
+  EXPECT_NE(e.find("dome5.mpcdi: no such MPCDI file (a dome's is made by `skyig dome --out "), std::string::npos) << e;
+}
+
 TEST_F(BadCalibration, AMissingRegionListsTheRegionsThereAre) {
   const std::string e = error("p9");
   EXPECT_NE(e.find("mpcdi.xml"), std::string::npos) << e;

@@ -75,6 +75,11 @@ int run(const RenderOptions& opt) {
   for (const auto& p : projected) channels.push_back(p.channel);
   if (!opt.size.empty())
     for (auto& c : channels) parseSize(opt.size, c.width, c.height);
+  // With --projector the outputs are the projector's pixels, whatever --size says: say what it
+  // does change (the channel's image the projector's warp reads) instead of ignoring it quietly.
+  if (opt.projector && !opt.size.empty())
+    std::fprintf(stderr, "render: --size %s sets the channel image each projector's warp reads; the outputs keep the "
+                         "projector's resolution from its calibration\n", opt.size.c_str());
   for (auto& c : channels) {  // the goggle switched on, as the host's Sensor Control does
     if (!opt.goggle.empty()) {
       c.goggle.nvisClass = opt.goggle == "A" ? sky::SpectralBand::NvisClassA : sky::SpectralBand::NvisClassB;
@@ -146,7 +151,9 @@ void registerRenderCommand(CLI::App& app, int& exitCode) {
   opt->sky.add(*c);
   c->add_option("--channel", opt->channel, "Channel to render (default: the first)");
   c->add_flag("--all-channels", opt->allChannels, "Render every channel, one file each (NAME_CHANNEL.ext)");
-  c->add_option("--size", opt->size, "Override the channel resolution, WIDTHxHEIGHT");
+  c->add_option("--size", opt->size,
+                "Override the channel resolution, WIDTHxHEIGHT (with --projector: the image the warp reads; the "
+                "outputs keep the projector's resolution)");
   c->add_option("--exr", opt->exrPath, "OpenEXR output: float RGBA, linear Rec.709, values in cd/m^2");
   c->add_option("--png", opt->pngPath, "PNG output: 8-bit, tone reproduced for the channel's display");
   c->add_flag("--projector", opt->projector,

@@ -661,6 +661,13 @@ TEST_F(Cli, RenderProjectorWritesWhatTheProjectorIsSent) {
   ASSERT_EQ(plain.exitCode, 0) << plain.err;
   EXPECT_EQ(skyig::render::readExr((dir_ / "c.exr").string()).image.width, 64);
   EXPECT_EQ(skyig::render::readExr((dir_ / "c.exr").string()).attributes.count("skyig:projector"), 0u);
+  // --size with --projector: the outputs stay the projector's, and the command says so.
+  const Result sized = run("render --config " + cfg.string() + " --sky-model preetham --projector --size 32x20 --exr " +
+                           (dir_ / "s.exr").string());
+  ASSERT_EQ(sized.exitCode, 0) << sized.err;
+  EXPECT_EQ(skyig::render::readExr((dir_ / "s.exr").string()).image.width, 64);
+  EXPECT_NE(sized.err.find("--size 32x20 sets the channel image each projector's warp reads"), std::string::npos)
+      << sized.err;
 }
 
 // The example configuration of a projector dome works as its comment says: `skyig dome` writes

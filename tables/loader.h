@@ -1,7 +1,8 @@
 #pragma once
-// Loads the physical atmosphere's tables when the configuration asks for the physical sky:
-// from the disk cache when a file matches every parameter, else precomputed (and cached) on
-// the GPU when an OpenGL 4.5 context can be made, on the CPU otherwise.
+// Where the physical atmosphere's tables come from: the disk cache's directory, the model a
+// configuration's settings describe, and the builder that precomputes what the cache lacks, on
+// the GPU when an OpenGL 4.5 context can be made, on the CPU otherwise. What a node loads with
+// them is node/config/node_tables.h.
 #include "physics/atmosphere/conditions.h"
 #include "physics/atmosphere/model.h"
 #include "tables/table_cache.h"
@@ -16,9 +17,9 @@
 namespace skyig::services {
 
 // Where tables missing from the cache are computed. kAuto: the GPU precompute in a headless
-// EGL context of its own (render/passes/precompute/atmosphere_gpu_precompute.h), falling back to the CPU one
-// when no context can be made or the GPU path fails; kGpu: the GPU or an error; kCpu: the
-// CPU reference (minutes for the default tables).
+// EGL context of its own (render/passes/precompute/atmosphere_gpu_precompute.h), falling back
+// to the CPU one when no context can be made or the GPU path fails; kGpu: the GPU or an error;
+// kCpu: the CPU reference (minutes for the default tables).
 enum class PrecomputeDevice { kAuto, kGpu, kCpu };
 
 // "auto", "gpu" or "cpu"; throws std::invalid_argument naming anything else.

@@ -333,8 +333,9 @@ void PhysicalSkyPass::prepare(const Program& program, const Frame& f) const {
 }
 
 // The quad around the sun again with the disc (it clips away when the sun is behind the camera).
-void PhysicalSkyPass::drawDisc(const Frame& f, SkyVariant v) {
+void PhysicalSkyPass::drawDisc(const Frame& f, const SkyVariant& base) {
   if (!f.sunlit) return;
+  SkyVariant v = base;
   v.sunDisc = true;
   prepare(program(v), f);
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
@@ -399,8 +400,11 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   base.nightLayerCellPx = base.nightLayer ? night.cellPx : 0;
   base.tone = tone.defines;
   const bool exactBoxes = !tone.defines.empty() && !tone.exactBoxes.empty();
-  SkyVariant exact = base;
-  exact.tone = tone.exactDefines;
+  const auto exactVariant = [&] {  // built only when there are boxes: no string copied per frame otherwise
+    SkyVariant v = base;
+    v.tone = tone.exactDefines;
+    return v;
+  };
   stepUpload();
   if (!current_.model) throw std::logic_error("PhysicalSkyPass::draw before use()");
   bindTables(night);
@@ -427,6 +431,7 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   if (depthType == GL_NONE) {
     drawWithoutDepth(f, base);
     if (exactBoxes) {  // drawn over
+      const SkyVariant exact = exactVariant();
       glEnable(GL_SCISSOR_TEST);
       for (const glm::ivec4& b : tone.exactBoxes) {
         glScissor(b.x, b.y, b.z, b.w);
@@ -454,6 +459,7 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
     glClearDepth(1.0);
     glDisable(GL_SCISSOR_TEST);
     drawParts(f, base);
+    const SkyVariant exact = exactVariant();
     glEnable(GL_SCISSOR_TEST);
     for (const glm::ivec4& b : tone.exactBoxes) {
       glScissor(b.x, b.y, b.z, b.w);

@@ -144,7 +144,7 @@ class PhysicalSkyPass {
   // target and viewport come back after. Returns the caller's target.
   GLint drawSlices(const Frame& f);
   void prepare(const Program& program, const Frame& f) const;
-  void drawDisc(const Frame& f, SkyVariant v);
+  void drawDisc(const Frame& f, const SkyVariant& base);
   // Into a target without depth: both parts at once, then the disc.
   void drawWithoutDepth(const Frame& f, const SkyVariant& base);
   // Into a target with depth: the ground, the band near the horizon, the sky, the disc.

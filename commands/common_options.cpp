@@ -1,6 +1,7 @@
 #include "commands/common_options.h"
 
 #include "ephemeris/time.h"
+#include "physics/atmosphere/conditions.h"
 
 #include <cstdio>
 
@@ -21,8 +22,14 @@ void SkyOptions::add(CLI::App& c) {
   c.add_option("--cie-type", cieType, "CIE standard general sky type, 1 (overcast) .. 15")->check(CLI::Range(1, 15));
   c.add_option("--turbidity", turbidity, "Atmospheric turbidity (Preetham), 1.7 .. 10")->check(CLI::Range(1.7, 10.0));
   c.add_option("--ground-albedo", groundAlbedo, "Ground albedo, 0 .. 1")->check(CLI::Range(0.0, 1.0));
-  c.add_option("--visibility", visibilityKm, "Physical sky: visibility, km (Koschmieder; haze), 0.05 .. 280")
-      ->check(CLI::Range(0.05, 280.0));
+  c.add_option("--visibility", visibilityKm,
+               "Physical sky: visibility, km (Koschmieder; haze), 0.05 .. 1000 (past about 288: clean air)")
+      ->check(CLI::Range(atmosphere::kSmallestVisibilityKm, atmosphere::kLargestVisibilityKm));
+  c.add_option("--fog-visibility", fogVisibilityKm, "Physical sky: a ground fog of this visibility inside, km (0: none)")
+      ->check(CLI::Range(0.0, atmosphere::kLargestVisibilityKm));
+  c.add_option("--fog-top", fogTopM, "The ground fog's top above the ground, metres (default 200)")->check(CLI::Range(0.0, 20000.0));
+  c.add_option("--fog-bottom", fogBottomM, "The ground fog's bottom above the ground, metres (default 0)")
+      ->check(CLI::Range(0.0, 20000.0));
   c.add_option("--sun-azimuth", sunAzimuth, "Override the sun's azimuth, degrees from north through east")
       ->check(CLI::Range(-360.0, 360.0));
   c.add_option("--sun-elevation", sunElevation, "Override the sun's true (airless) elevation, degrees; its disc is seen lifted by refraction")->check(CLI::Range(-90.0, 90.0));
@@ -50,6 +57,16 @@ NodeConfig SkyOptions::resolve() const {
   if (turbidity) config.sky.turbidity = *turbidity;
   if (groundAlbedo) config.sky.groundAlbedo = *groundAlbedo;
   if (visibilityKm) config.atmosphere.visibilityKm = *visibilityKm;
+  if (fogVisibilityKm || fogTopM || fogBottomM) {
+    sky::FogSpec& f = config.sky.fog;
+    if (fogVisibilityKm) f.visibilityKm = *fogVisibilityKm;
+    if (fogBottomM) f.bottomM = *fogBottomM;
+    if (fogTopM) f.topM = *fogTopM;
+    else if (f.topM <= f.bottomM) f.topM = f.bottomM + 200.0;
+    if (f.visibilityKm > 0.0 && !(f.topM > f.bottomM))
+      throw ConfigError("--fog-top " + std::to_string(f.topM) + " m: expected a top above the fog's bottom (" +
+                        std::to_string(f.bottomM) + " m)");
+  }
   return config;
 }
 

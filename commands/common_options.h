@@ -13,6 +13,7 @@ namespace skyig::services {
 struct SkyOptions {
   std::string configPath;
   std::optional<double> lat, lon, alt, yaw, pitch, roll, turbidity, groundAlbedo, visibilityKm;
+  std::optional<double> fogVisibilityKm, fogBottomM, fogTopM;  // a ground fog ([weather])
   std::optional<double> sunAzimuth, sunElevation;
   std::optional<std::string> utc, skyModel;
   std::optional<int> cieType;

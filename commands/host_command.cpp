@@ -4,6 +4,7 @@
 #include "protocol/cigi/decoder.h"
 #include "protocol/cigi/encoder.h"
 #include "node/host/host_path.h"
+#include "node/host/host_weather.h"
 #include "node/config/node_config.h"
 #include "node/transport/udp_socket.h"
 
@@ -30,6 +31,9 @@ struct HostOptions {
   double speed = 1.0;
   double durationS = 0.0;
   double visibilityM = 40000.0;
+  double fogVisibilityM = 0.0;  // a ground fog (Weather Control layer 0); 0: none
+  double fogTopM = 200.0;
+  std::string weatherFile;      // a weather script (node/host/host_weather.h) instead of the three above
   int dropEvery = 0;
   bool swapPairs = false;
   bool loop = false;
@@ -56,7 +60,7 @@ ephemeris::UtcTime advance(const ephemeris::UtcTime& t, double seconds) {
 }
 
 std::vector<std::uint8_t> message(std::uint32_t frame, double pathTime, const HostPath& path, const ephemeris::UtcTime& utc,
-                                  double simElapsed, const HostOptions& o) {
+                                  double simElapsed, const WeatherStep& weather, const HostOptions& o) {
   cigi::IgControl ig;
   ig.hostFrameNumber = frame;
   ig.timestamp = static_cast<std::uint32_t>(std::llround(simElapsed * 1e5));  // the sim clock, 10 us ticks
@@ -84,7 +88,17 @@ std::vector<std::uint8_t> message(std::uint32_t frame, double pathTime, const Ho
   cs.minute = static_cast<std::uint8_t>(std::fmod(utc.secondsOfDay, 3600.0) / 60.0);
   cs.seconds = static_cast<float>(std::fmod(utc.secondsOfDay, 60.0));  // sent by CIGI 4.0 only
   cigi::AtmosphereControl a;
-  a.visibilityRangeM = static_cast<float>(o.visibilityM);
+  a.visibilityRangeM = static_cast<float>(weather.visibilityM);
+  a.globalHumidityPct = static_cast<std::uint8_t>(std::lround(weather.humidityPct));
+  // The ground fog, every frame (a node that joins late sees it): layer 0, global scope.
+  cigi::WeatherControl fog;
+  fog.layerId = 0;
+  fog.scope = cigi::WeatherScope::global;
+  fog.weatherEnable = weather.fogVisibilityM > 0.0;
+  fog.visibilityRangeM = static_cast<float>(weather.fogVisibilityM);
+  fog.baseElevationM = 0.0f;
+  fog.thicknessM = static_cast<float>(weather.fogTopM);
+  fog.humidityPct = 100;
   const auto order = o.littleEndian ? protocol::ByteOrder::little : protocol::ByteOrder::big;
   std::vector<std::uint8_t> bytes;
   std::string error;
@@ -93,7 +107,7 @@ std::vector<std::uint8_t> message(std::uint32_t frame, double pathTime, const Ho
     const cigi::Packet packets[] = {ig, e, cs, a};
     error = cigi::encodeMessage4(packets, order, bytes);
   } else {
-    const cigi::Packet packets[] = {ig, e, rc, cs, a};
+    const cigi::Packet packets[] = {ig, e, rc, cs, a, fog};
     error = cigi::encodeMessage(packets, order, bytes);
   }
   if (!error.empty()) throw std::runtime_error("encoding host message: " + error);
@@ -163,6 +177,11 @@ struct StartOfFrameLog {
 
 int run(const HostOptions& o) {
   const HostPath path = HostPath::load(o.pathFile);
+  const HostWeather weather = o.weatherFile.empty()
+                                  ? HostWeather::constant({0.0, o.visibilityM, 0.0, o.fogVisibilityM, o.fogTopM})
+                                  : HostWeather::load(o.weatherFile);
+  if (o.cigiVersion == 4 && (!o.weatherFile.empty() || o.fogVisibilityM > 0.0))
+    throw ConfigError("--weather/--fog-visibility: skyig's CIGI 4.0 subset has no Weather Control; use --cigi 3");
   const auto start = ephemeris::parseIso8601Utc(o.startUtc);
   if (!start) throw ConfigError("--start-utc: expected a UTC time like 2026-06-21T19:00:00Z, got \"" + o.startUtc + "\"");
   Endpoint to, local;
@@ -198,7 +217,8 @@ int run(const HostOptions& o) {
     // Path time from the frame number, not the wall clock: the flight is reproducible.
     const double t = k / o.rateHz;
     const double pathTime = o.loop ? std::fmod(t, path.durationS()) : t;
-    const std::vector<std::uint8_t> bytes = message(k, pathTime, path, advance(*start, t * o.speed), t * o.speed, o);
+    const std::vector<std::uint8_t> bytes =
+        message(k, pathTime, path, advance(*start, t * o.speed), t * o.speed, weather.at(t), o);
     if (o.dropEvery > 0 && (k + 1) % static_cast<std::uint32_t>(o.dropEvery) == 0) {
       ++dropped;
       continue;
@@ -252,6 +272,13 @@ void registerHostCommand(CLI::App& app, int& exitCode) {
   c->add_option("--speed", o->speed, "Time-lapse: sim seconds of the clock per second flown (1)")->check(CLI::Range(0.0, 1e5));
   c->add_option("--duration", o->durationS, "Seconds to fly (default: the path's length)")->check(CLI::Range(0.0, 1e7));
   c->add_option("--visibility", o->visibilityM, "Atmosphere Control visibility, m (40000)")->check(CLI::Range(0.0, 1e6));
+  c->add_option("--fog-visibility", o->fogVisibilityM, "Weather Control layer 0 (ground fog): visibility inside, m (0: none)")
+      ->check(CLI::Range(0.0, 1e6));
+  c->add_option("--fog-top", o->fogTopM, "The ground fog's thickness above the ground, m (200)")->check(CLI::Range(1.0, 20000.0));
+  c->add_option("--weather", o->weatherFile,
+                "Weather script CSV: time_s, visibility_m, humidity_pct, fog_visibility_m, fog_top_m, each held until the "
+                "next (e.g. config/fog_lifting.csv); replaces --visibility and --fog-*")
+      ->check(CLI::ExistingFile);
   c->add_option("--drop-every", o->dropEvery, "Drop every Nth datagram (loss test)")->check(CLI::Range(0, 1000000));
   c->add_flag("--swap-pairs", o->swapPairs, "Send datagrams in swapped pairs (reordering test)");
   c->add_flag("--loop", o->loop, "Fly the path round and round for --duration");

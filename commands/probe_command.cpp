@@ -2,6 +2,7 @@
 
 #include "ephemeris/ephemeris.h"
 #include "commands/probe_json.h"
+#include "physics/atmosphere/conditions.h"
 #include "physics/atmosphere/probe.h"
 #include "sky/night_probe.h"
 #include "sky/sky_state.h"
@@ -144,7 +145,7 @@ void registerProbeCommand(CLI::App& app, int& exitCode) {
   c->add_option("--utc", cli->utc, "UTC date and time");
   c->add_option("--view", cli->views, "A view direction ZENITH,AZIMUTH in degrees (repeatable; default: the zenith)");
   c->add_option("--views", cli->viewsFile, "A file of view directions, one ZENITH,AZIMUTH a line")->check(CLI::ExistingFile);
-  c->add_option("--visibility", cli->visibilityKm, "Visibility, km (Koschmieder; default: the configuration's, else the clear medium's)")->check(CLI::Range(0.05, 280.0));
+  c->add_option("--visibility", cli->visibilityKm, "Visibility, km (Koschmieder; default: the configuration's, else the clear medium's)")->check(CLI::Range(atmosphere::kSmallestVisibilityKm, atmosphere::kLargestVisibilityKm));
   c->add_option("--humidity", cli->humidityPct, "Relative humidity, percent")->check(CLI::Range(0.0, 99.0));
   c->add_option("--ground-albedo", cli->groundAlbedo, "Ground albedo, 0..1 (default: the configuration's sky.ground_albedo, 0.2 without one)")->check(CLI::Range(0.0, 1.0));
   c->add_flag("--irradiance", cli->irradiance, "Add the direct-sun and sky illuminance on a horizontal surface");

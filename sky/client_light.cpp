@@ -44,6 +44,16 @@ std::array<double, 9> shBasis(const glm::dvec3& d) {
           0.546274 * (x * x - y * y)};
 }
 
+// A ray's length past any ground or layer: "to the top of the atmosphere and beyond".
+constexpr double kBeyondTheGround = 1e9;
+
+// The fog layers' transmittance along a ray of cosine mu from h metres above the ground, d long.
+double fogTransmittanceAlong(const FogState& fog, double h, double mu, double d) {
+  double t = 1.0;
+  for (const weather::FogLayer& f : fog.sunlit) t *= shader::fogTransmittance(f, h, mu, d);
+  return t;
+}
+
 ClientDirectLight physicalSun(const SkyState& s, const atmosphere::AtmosphereModel& model, const glm::dvec3& camera) {
   ClientDirectLight out;
   out.direction = enuDirection(s.sunAzimuth, s.sunAltitude);
@@ -53,6 +63,11 @@ ClientDirectLight physicalSun(const SkyState& s, const atmosphere::AtmosphereMod
   const atmosphere::Spectrum normal = model.sunIrradiance(camera, out.direction, out.direction);
   out.normalLux = model.converter().luminance(normal);
   out.colour = colourOf(model.converter().toRec709(normal));
+  // Through the fog layers on the way to the sun (grey: the colour stays).
+  const double t = fogTransmittanceAlong(s.fog, glm::length(camera) - model.parameters(0).bottom_radius,
+                                         out.direction.z, kBeyondTheGround);
+  out.horizontalLux *= t;
+  out.normalLux *= t;
   return out;
 }
 
@@ -85,17 +100,20 @@ glm::dvec3 clientSkyRadiance(const SkyState& s, const atmosphere::AtmosphereMode
   const glm::dvec3 camera = atmosphere::physicalCamera(*model, s.observer.heightM);
   const glm::dvec3 sun = enuDirection(s.sunAzimuth, s.sunAltitude);
   // The ground where the ray meets it (as the view sphere and the probe find it), else the sky.
+  const double r = glm::length(camera), rmu = glm::dot(camera, view);
+  const double bottom = model->parameters(0).bottom_radius;
+  const double discriminant = rmu * rmu - r * r + bottom * bottom;
+  const bool ground = rmu < 0.0 && discriminant >= 0.0;
+  const double d = ground ? -rmu - std::sqrt(discriminant) : kBeyondTheGround;
   auto radiance = [&](const glm::dvec3& light) {
-    const double r = glm::length(camera), rmu = glm::dot(camera, view);
-    const double bottom = model->parameters(0).bottom_radius;
-    const double discriminant = rmu * rmu - r * r + bottom * bottom;
-    if (rmu < 0.0 && discriminant >= 0.0)
-      return model->converter().toRec709(model->groundRadiance(camera, camera + view * (-rmu - std::sqrt(discriminant)), light));
+    if (ground) return model->converter().toRec709(model->groundRadiance(camera, camera + view * d, light));
     return model->converter().toRec709(model->skyRadiance(camera, view, light));
   };
   glm::dvec3 out = radiance(sun);
   // The moonlit sky (Jensen et al. 2001): the same sky lit from the moon, scaled per channel.
   if (luminance(s.moonlightScale) > 0.0) out += radiance(s.moonDirection) * s.moonlightScale;
+  // Then the fog in front, as the sky pass composes it (physics/weather/fog_layer.glsl).
+  for (const weather::FogLayer& f : drawnFogLayers(s.fog)) out = shader::throughFog(f, out, r - bottom, view.z, d);
   return out;
 }
 
@@ -159,6 +177,14 @@ ClientAerialPerspective clientAerialPerspective(const SkyState& s, const atmosph
   for (std::size_t i = 0; i < solar.size(); ++i) through[i] = solar[i] * t.at(i);
   const glm::dvec3 before = model.converter().toRec709(solar), after = model.converter().toRec709(through);
   for (int c = 0; c < 3; ++c) out.transmittance[c] = before[c] > 0.0 ? std::clamp(after[c] / before[c], 0.0, 1.0) : 1.0;
+  // The fog layers on the segment, as the sky pass composes them: what lies behind them (the
+  // surface, the air's light) dimmed, their own light added.
+  const double h = glm::length(camera) - model.parameters(0).bottom_radius;
+  const double d = glm::length(offsetEnu), mu = d > 0.0 ? offsetEnu.z / d : 1.0;
+  for (const weather::FogLayer& f : drawnFogLayers(s.fog)) {
+    out.inScattered = shader::throughFog(f, out.inScattered, h, mu, d);
+    out.transmittance *= shader::fogTransmittance(f, h, mu, d);
+  }
   return out;
 }
 

@@ -217,6 +217,9 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
   }
   if (s.conditions.model != SkyModel::Physical)
     s.sky = makeAnalyticSky(s.conditions, s.sunAzimuth, s.sunAltitude, s.sunApparentAltitude);
+  else
+    s.fog = makeFogState(*s.conditions.atmosphere, s.conditions.haze, s.conditions.fog,
+                         enuDirection(s.sunAzimuth, s.sunAltitude), s.moonDirection, s.moonlightScale);
   s.glare = glareSources(s);
   // The eye adapts to what it sees over the whole view sphere: sky and terrain, sunlit and
   // moonlit, with the night's own light (sky/view_sphere.h); its log-mean is the scene's level.

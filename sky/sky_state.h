@@ -9,6 +9,7 @@
 #include "physics/atmosphere/extinction_profile.h"
 #include "sky/camera.h"
 #include "sky/channel.h"
+#include "sky/fog_state.h"
 #include "physics/eye/glare.h"
 #include "physics/eye/tone_curve.h"
 #include "sky/observer.h"
@@ -83,6 +84,9 @@ struct SkyState {
   glm::dvec3 nightGroundRadiance{0.0};
   // The sun and the moon as glare sources for the display (physics/eye/glare.h).
   eye::GlareSources glare{};
+  // Fog and mist over the clear air (physical sky only): the haze below the tables' visibility
+  // and the ground fog of conditions.haze and conditions.fog, lit by this state's sun and moon.
+  FogState fog;
 };
 
 // The night's sources of a state, for the probe, the passes and tests: the moon's illuminance on

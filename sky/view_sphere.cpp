@@ -4,6 +4,7 @@
 #include "sky/sky_state.h"
 #include "physics/physics.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -15,18 +16,28 @@ namespace {
 constexpr int kMu = 16, kPhi = 32;  // cells over the whole sphere, equal solid angle each
 constexpr double kPi = std::numbers::pi;
 
-// Luminance the physical model gives along `view` for a light of the sun's brightness in
-// direction `light`: the sky, or the ground with its aerial perspective.
-double physicalLuminance(const atmosphere::AtmosphereModel& model, const glm::dvec3& camera, const glm::dvec3& view,
-                         const glm::dvec3& light) {
+// Distance along `view` to the ground, or kFar when the view misses it.
+constexpr double kFar = 1e9;
+double groundDistance(const atmosphere::AtmosphereModel& model, const glm::dvec3& camera, const glm::dvec3& view) {
   const double r = glm::length(camera), rmu = glm::dot(camera, view);
   const double bottom = model.parameters(0).bottom_radius;
   const double discriminant = rmu * rmu - r * r + bottom * bottom;
-  if (rmu < 0.0 && discriminant >= 0.0) {
-    const glm::dvec3 ground = camera + view * (-rmu - std::sqrt(discriminant));
-    return model.converter().luminance(model.groundRadiance(camera, ground, light));
-  }
+  return rmu < 0.0 && discriminant >= 0.0 ? -rmu - std::sqrt(discriminant) : kFar;
+}
+
+// Luminance the physical model gives along `view` for a light of the sun's brightness in
+// direction `light`: the sky, or the ground (d metres on) with its aerial perspective.
+double physicalLuminance(const atmosphere::AtmosphereModel& model, const glm::dvec3& camera, const glm::dvec3& view,
+                         const glm::dvec3& light, double d) {
+  if (d < kFar) return model.converter().luminance(model.groundRadiance(camera, camera + view * d, light));
   return model.converter().luminance(model.skyRadiance(camera, view, light));
+}
+
+// The fog layers lit by the moon alone (its share of each top's irradiance).
+std::array<weather::FogLayer, 2> moonlitFog(const FogState& fog) {
+  std::array<weather::FogLayer, 2> out = fog.sunlit;
+  for (std::size_t i = 0; i < 2; ++i) out[i].top_irradiance = fog.moonIrradiance[i];
+  return out;
 }
 
 }  // namespace
@@ -46,16 +57,29 @@ ViewSphere viewSphere(const SkyState& s) {
   if (s.ephemeris) night = night::makeNightDiffuseSky(*s.ephemeris, s.extinction, false);
   auto cells = std::make_shared<std::vector<ViewCellLight>>();
   cells->reserve(kMu * kPhi);
+  const std::array<weather::FogLayer, 2> moonFog = moonlitFog(s.fog);
+  const std::array<weather::FogLayer, 2> blackFog = [&] {  // the night's own light: only dimmed
+    std::array<weather::FogLayer, 2> f = s.fog.sunlit;
+    for (weather::FogLayer& l : f) l.top_irradiance = glm::dvec3(0.0);
+    return f;
+  }();
   forEachEqualAreaCell(kMu, kPhi, [&](const glm::dvec3& view, double cell) {
     double sunlit = 0.0, moonlit = 0.0, own = 0.0;
+    const double d = model ? groundDistance(*model, camera, view) : kFar;
     if (model) {
-      sunlit = physicalLuminance(*model, camera, view, sun);
-      if (moonScale > 0.0) moonlit = moonScale * physicalLuminance(*model, camera, view, s.moonDirection);
+      sunlit = physicalLuminance(*model, camera, view, sun, d);
+      if (moonScale > 0.0) moonlit = moonScale * physicalLuminance(*model, camera, view, s.moonDirection, d);
     } else {
       sunlit = shader::rec709Luminance(analyticSkyLightOnly(s.sky.params, view));
     }
     if (night && view.z > 0.0) own = shader::rec709Luminance(night::nightDiffuseRadianceWithoutMap(*night, view));
     if (view.z < 0.0) own = shader::rec709Luminance(s.nightGroundRadiance);
+    if (s.fog.any()) {  // the sky pass's composite (physics/weather/fog_layer.glsl), per light
+      const double height = glm::length(camera) - model->parameters(0).bottom_radius;
+      sunlit = throughFogLayers(s.fog.sunlit, sunlit, height, view.z, d);
+      moonlit = throughFogLayers(moonFog, moonlit, height, view.z, d);
+      own = throughFogLayers(blackFog, own, height, view.z, d);
+    }
     const double l = sunlit + moonlit + own;
     cells->push_back({static_cast<float>(sunlit), static_cast<float>(moonlit), static_cast<float>(own)});
     h.add(l, cell);

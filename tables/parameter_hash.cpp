@@ -46,6 +46,7 @@ std::uint64_t parameterHash(const ModelConfig& c) {
     h.i64(v);
   }
   h.i64(c.options.scatteringOrders);  // the thread count does not change the tables
+  h.i64(c.options.ordersTail ? 1 : 0);
   return h.value();
 }
 

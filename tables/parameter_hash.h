@@ -12,7 +12,9 @@ namespace skyig::atmosphere {
 // Bump when the GLSL physics or the precomputation changes the tables it produces.
 // 2: transmittanceAlongRay splits a dipping ray at its lowest point (the sky's horizon texel in
 //    haze was computed from a ratio of two underflowing transmittances).
-inline constexpr std::uint32_t kPhysicsRevision = 2;
+// 3: the transmittance table holds the optical depth (no underflow in fog), and the orders
+//    after the last are summed as a geometric series (PrecomputeOptions::ordersTail).
+inline constexpr std::uint32_t kPhysicsRevision = 3;
 
 class Fnv1a64 {
  public:

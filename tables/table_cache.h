@@ -15,8 +15,9 @@
 //       60     4  scalar type: 1 = float32
 //       64     8  payload size in bytes
 //       72     8  FNV-1a 64 checksum of the payload
-//       80     -  payload: for each group, the transmittance, irradiance, scattering and
-//                 single Mie tables in that order, texels x fastest, each RGBA float32
+//       80     -  payload: for each group, the transmittance (as the optical depth tau to the
+//                 top; version 1 held exp(-tau)), irradiance, scattering and single Mie
+//                 tables in that order, texels x fastest, each RGBA float32
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -29,7 +30,7 @@
 
 namespace skyig::atmosphere {
 
-inline constexpr std::uint32_t kCacheFormatVersion = 1;
+inline constexpr std::uint32_t kCacheFormatVersion = 2;
 inline constexpr std::size_t kCacheHeaderBytes = 80;
 
 std::filesystem::path cacheFilePath(const std::filesystem::path& directory,

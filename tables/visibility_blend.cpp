@@ -12,17 +12,19 @@
 
 namespace skyig::atmosphere {
 
-std::vector<double> defaultVisibilityStepsKm() { return {1.0, 2.0, 5.0, 10.0, 20.0, 50.0}; }
+// From the tables' lowest visibility up (below it the rest is a fog layer, physics/weather).
+std::vector<double> defaultVisibilityStepsKm() { return {10.0, 20.0, 50.0, 150.0}; }
 
 ModelConfig configAtVisibility(const ModelConfig& base, double km) {
   ModelConfig c = base;
-  c.medium.mieExtinctionPerM = mieExtinctionForVisibility(base.medium, km);
+  c.medium = withAerosolExtinction(base.medium, mieExtinctionForVisibility(base.medium, km));
   return c;
 }
 
 bool differOnlyInAerosols(const ModelConfig& a, const ModelConfig& b) {
   ModelConfig same = b;
   same.medium.mieExtinctionPerM = a.medium.mieExtinctionPerM;
+  same.medium.mieSingleScatteringAlbedo = a.medium.mieSingleScatteringAlbedo;  // follows it (conditions.h)
   return parameterHash(same) == parameterHash(a);
 }
 
@@ -110,8 +112,15 @@ struct Blender {
   }
 };
 
-template <typename Texture, typename Get>
-Texture blendTexture(const std::vector<const AtmosphereModel*>& steps, std::size_t group, Get get, const Blender& blender) {
+// The optical-depth table (transmittance.glsl): tau = tau_gas + x L is linear in the aerosol
+// extinction x, so the two steps around the target blend it exactly.
+struct DepthBlender {
+  double w;
+  glm::dvec4 operator()(const glm::dvec4* a) const { return (1.0 - w) * a[0] + w * a[1]; }
+};
+
+template <typename Texture, typename Get, typename Blend>
+Texture blendTexture(const std::vector<const AtmosphereModel*>& steps, std::size_t group, Get get, const Blend& blender) {
   Texture out = get(steps[0]->tables(group));
   for (const AtmosphereModel* s : steps)
     if (get(s->tables(group)).texels.size() != out.texels.size())
@@ -151,7 +160,7 @@ AtmosphereModel blendModels(const AtmosphereModel& lower, const AtmosphereModel&
   for (std::size_t g = 0; g < tables.size(); ++g) {
     using S2 = shader::cpu_texture::sampler2D;
     using S3 = shader::cpu_texture::sampler3D;
-    tables[g].transmittance = blendTexture<S2>(steps, g, [](const GroupTables& t) -> const S2& { return t.transmittance; }, blender);
+    tables[g].transmittance = blendTexture<S2>(steps, g, [](const GroupTables& t) -> const S2& { return t.transmittance; }, DepthBlender{w});
     tables[g].irradiance = blendTexture<S2>(steps, g, [](const GroupTables& t) -> const S2& { return t.irradiance; }, blender);
     tables[g].scattering = blendTexture<S3>(steps, g, [](const GroupTables& t) -> const S3& { return t.scattering; }, blender);
     tables[g].singleMie = blendTexture<S3>(steps, g, [](const GroupTables& t) -> const S3& { return t.singleMie; }, blender);

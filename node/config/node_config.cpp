@@ -2,6 +2,7 @@
 
 #include "ephemeris/time.h"
 #include "node/transport/udp_socket.h"
+#include "physics/atmosphere/conditions.h"
 
 #include <toml++/toml.h>
 
@@ -103,6 +104,17 @@ const toml::table* subTable(TableReader& parent, const std::string& key) {
   return n->as_table();
 }
 
+// [weather]: a ground fog (physics/weather/fog_layer.h) until the host sends its own (CIGI
+// Weather Control layer 0): fog_visibility_km (0: none), fog_bottom_m, fog_top_m above the ground.
+void readWeather(TableReader& r, skyig::sky::FogSpec& fog) {
+  fog.visibilityKm = r.number("fog_visibility_km", fog.visibilityKm, 0.0, 1000.0);
+  fog.bottomM = r.number("fog_bottom_m", fog.bottomM, 0.0, 20000.0);
+  fog.topM = r.number("fog_top_m", fog.topM, 0.0, 20000.0);
+  if (fog.visibilityKm > 0.0 && !(fog.topM > fog.bottomM))
+    r.fail(r.find("fog_top_m"), "fog_top_m", "expected a top above fog_bottom_m (" + std::to_string(fog.bottomM) + " m)");
+  r.rejectUnknownKeys();
+}
+
 constexpr const char* kModels = "\"preetham\", \"cie\" or \"physical\"";
 
 void readSky(TableReader& r, skyig::sky::SkyConditions& sky, AtmosphereSettings& atmosphere, std::string& starCatalogue) {
@@ -125,8 +137,8 @@ void readSky(TableReader& r, skyig::sky::SkyConditions& sky, AtmosphereSettings&
     atmosphere.visibilityStepsKm.clear();
     for (const toml::node& item : *list) {
       const std::optional<double> km = item.value<double>();
-      if (!km || !(*km >= 0.05 && *km <= 280.0))
-        r.fail(&item, "atmosphere_visibility_steps", "expected visibilities in km within [0.05, 280]");
+      if (!km || !(*km >= atmosphere::kSmallestVisibilityKm && *km <= atmosphere::kLargestVisibilityKm))
+        r.fail(&item, "atmosphere_visibility_steps", "expected visibilities in km within [0.05, 1000]");
       atmosphere.visibilityStepsKm.push_back(*km);
     }
   }
@@ -143,7 +155,7 @@ void readAtmosphere(TableReader& r, AtmosphereSettings& a) {
   m.rayleighScatteringAt1umPerM = r.number("rayleigh_scattering_1um", m.rayleighScatteringAt1umPerM, 0.0, 1e-3);
   m.rayleighScaleHeightM = r.number("rayleigh_scale_height", m.rayleighScaleHeightM, 100.0, 100000.0);
   m.mieExtinctionPerM = r.number("mie_extinction", m.mieExtinctionPerM, 0.0, 1e-2);
-  if (r.find("visibility_km")) a.visibilityKm = r.number("visibility_km", 50.0, 0.05, 280.0);
+  if (r.find("visibility_km")) a.visibilityKm = r.number("visibility_km", 50.0, atmosphere::kSmallestVisibilityKm, atmosphere::kLargestVisibilityKm);
   m.mieSingleScatteringAlbedo = r.number("mie_single_scattering_albedo", m.mieSingleScatteringAlbedo, 0.0, 1.0);
   m.mieAngstromExponent = r.number("mie_angstrom_exponent", m.mieAngstromExponent, -1.0, 4.0);
   m.mieScaleHeightM = r.number("mie_scale_height", m.mieScaleHeightM, 10.0, 100000.0);
@@ -386,6 +398,10 @@ NodeConfig parseNodeConfig(const std::string& text, const std::string& sourceNam
   if (const toml::table* t = subTable(r, "atmosphere")) {
     TableReader a(*t, "atmosphere.", sourceName);
     readAtmosphere(a, config.atmosphere);
+  }
+  if (const toml::table* t = subTable(r, "weather")) {
+    TableReader w(*t, "weather.", sourceName);
+    readWeather(w, config.sky.fog);
   }
   if (const toml::table* t = subTable(r, "observer")) {
     TableReader o(*t, "observer.", sourceName);

@@ -1,5 +1,7 @@
 #include "node/config/node_tables.h"
 
+#include "physics/weather/fog_layer.h"
+
 #include <chrono>
 #include <cstdio>
 
@@ -9,6 +11,8 @@ atmosphere::ModelConfig nodeModelConfig(const NodeConfig& config, const atmosphe
   atmosphere::Conditions c = conditions;
   if (!c.groundAlbedo) c.groundAlbedo = config.sky.groundAlbedo;
   if (!c.visibilityKm) c.visibilityKm = config.atmosphere.visibilityKm;
+  // Below the tables' visibility the rest is a fog layer (physics/weather/fog_layer.h).
+  if (c.visibilityKm) c.visibilityKm = weather::tablesVisibilityKm(*c.visibilityKm);
   return modelConfig(config.atmosphere, c);
 }
 
@@ -55,6 +59,11 @@ std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeC
 void loadAtmosphereIfNeeded(NodeConfig& config, const std::atomic<bool>* stop) {
   if (config.sky.model != sky::SkyModel::Physical || config.sky.atmosphere) return;
   config.sky.atmosphere = loadNodeAtmosphere(config, {}, nullptr, stop);
+  config.sky.haze = nodeHaze(config, config.atmosphere.visibilityKm.value_or(0.0));
+}
+
+sky::FogSpec nodeHaze(const NodeConfig& config, double visibilityKm) {
+  return weather::hazeBelowTables(visibilityKm, config.atmosphere.medium.mieScaleHeightM);
 }
 
 }  // namespace skyig::services

@@ -35,6 +35,11 @@ std::shared_ptr<const atmosphere::AtmosphereModel> loadNodeAtmosphere(const Node
 // to precompute; `stop` as loadNodeAtmosphere.
 void loadAtmosphereIfNeeded(NodeConfig& config, const std::atomic<bool>* stop = nullptr);
 
+// What a visibility below the tables' leaves to the haze layer over the configured medium
+// (physics/weather/fog_layer.h; nodeModelConfig builds the tables at the rest): the node's
+// visibility from the configuration (loadAtmosphereIfNeeded) or from the host (SkyWorker).
+sky::FogSpec nodeHaze(const NodeConfig& config, double visibilityKm);
+
 // The visibility steps of the node (sky.atmosphere_visibility_steps), cached in the folder
 // "visibility-steps" of the cache directory, which the cache's size bound does not reach.
 atmosphere::VisibilitySteps visibilitySteps(const NodeConfig& config);

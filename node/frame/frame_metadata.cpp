@@ -3,6 +3,7 @@
 #include "node/common/version.h"
 #include "sky/camera.h"
 #include "physics/goggle/nvis_response.h"
+#include "physics/atmosphere/conditions.h"
 #include "physics/common/units.h"
 
 #include <algorithm>
@@ -76,6 +77,18 @@ render::ImageAttributes frameAttributes(const sky::SkyState& s, const sky::Attit
       {"skyig:adaptation_cd_m2", s.worldAdaptationLuminance},
       {"skyig:units", std::string("linear Rec.709, Y in cd/m^2")},
   };
+  // The weather drawn: the tables' visibility, and the fog layers over them (0: none).
+  if (s.conditions.atmosphere) {
+    a["skyig:visibility_tables_km"] = atmosphere::visibilityOf(s.conditions.atmosphere->config().medium);
+    const sky::FogSpec layers[2] = {s.conditions.haze, s.conditions.fog};
+    const char* names[2] = {"haze", "fog"};
+    for (int i = 0; i < 2; ++i) {
+      const std::string p = std::string("skyig:") + names[i];
+      a[p + "_visibility_km"] = layers[i].visibilityKm;
+      a[p + "_bottom_m"] = layers[i].bottomM;
+      a[p + "_top_m"] = layers[i].topM;
+    }
+  }
   if (sky::isGoggle(c)) {
     // A goggle's image is its NVIS radiance (render/sky_renderer.h), drawn with the goggle's
     // frustum (sky::goggleFrustum).

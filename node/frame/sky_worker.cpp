@@ -1,5 +1,6 @@
 #include "node/frame/sky_worker.h"
 #include "physics/common/units.h"
+#include "node/config/node_tables.h"
 
 #include <spdlog/spdlog.h>
 
@@ -12,7 +13,9 @@ SkyWorker::SkyWorker(const NodeConfig& config, atmosphere::AtmosphereUpdater* up
       stats_(stats),
       updater_(updater),
       hostAtmosphere_(updater ? updater->current()->config().medium : atmosphere::Medium{}, config.sky.groundAlbedo),
-      conditions_(config.sky) {
+      conditions_(config.sky),
+      visibilityKm_(config.atmosphere.visibilityKm.value_or(0.0)),
+      lastHostVisibilityM_(HostState{}.visibilityM) {
   if (updater_ && !conditions_.atmosphere) conditions_.atmosphere = updater_->current();
   for (const sky::ChannelConfig& c : config.channelsOf(config.nodeName)) displays_.push_back(c.display);
 }
@@ -21,7 +24,12 @@ bool SkyWorker::followAtmosphere(const HostSnapshot* host, Clock::time_point now
   if (!updater_) return false;
   if (host) {
     try {
-      if (const auto c = hostAtmosphere_.observe(host->state.visibilityM, host->state.humidityPct, now)) {
+      const auto c = hostAtmosphere_.observe(host->state.visibilityM, host->state.humidityPct, now);
+      if (host->state.visibilityM != lastHostVisibilityM_) {  // valid: observe() did not throw
+        lastHostVisibilityM_ = host->state.visibilityM;
+        visibilityKm_ = kmFromMetres(host->state.visibilityM);
+      }
+      if (c) {
         // Replay waits for the exact tables: no blend for it.
         const atmosphere::RequestAnswer a = updater_->request(nodeModelConfig(config_, *c), /*blend=*/!wait);
         spdlog::info("physical sky: visibility {:.3g} km, humidity {:.0f} %: new tables requested{}{}",
@@ -64,6 +72,10 @@ sky::SkyState SkyWorker::scene(const HostSnapshot* host, Clock::time_point t) {
   sky::SkyConditions c = conditions_;
   // CIGI Celestial Sphere Control: the host dims or hides the star field.
   if (host) c.starFieldIntensity = host->state.starFieldIntensity;
+  // The air below the tables' visibility, and the host's ground fog (CIGI Weather Control layer
+  // 0) over the configuration's.
+  if (c.atmosphere) c.haze = nodeHaze(config_, visibilityKm_);
+  if (host && host->state.groundFog) c.fog = *host->state.groundFog;
   return sky::buildSkyState(observerAt(host, t), c, std::nullopt, &caches_);
 }
 

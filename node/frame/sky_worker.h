@@ -85,6 +85,11 @@ class SkyWorker {
   atmosphere::AtmosphereUpdater* updater_;
   HostAtmosphere hostAtmosphere_;
   sky::SkyConditions conditions_;  // the configured sky with the newest atmosphere
+  // The visibility the air shows (km; 0: the tables' own): the configuration's until the host
+  // sends another; below the tables' it is the haze layer (physics/weather/fog_layer.h), which
+  // follows the host at once while the tables take their time.
+  double visibilityKm_ = 0.0;
+  double lastHostVisibilityM_;
   std::uint64_t generation_ = 0;   // the updater's initial model is the configuration's
   sky::SkyStateCaches caches_;
   std::vector<sky::DisplayParams> displays_;  // of the node's channels: their tone curves

@@ -24,6 +24,10 @@ namespace {
 
 using skyig::kDeg;
 
+nlohmann::json fogJson(const sky::FogSpec& f) {
+  return {{"visibility_km", f.visibilityKm}, {"bottom_m", f.bottomM}, {"top_m", f.topM}};
+}
+
 nlohmann::json hostJson(const HostState& h) {
   nlohmann::json j = {{"visibility_m", h.visibilityM}, {"humidity_pct", h.humidityPct}, {"pressure_hpa", h.pressureHpa},
                       {"temperature_c", h.temperatureC}, {"star_field_intensity", h.starFieldIntensity}};
@@ -31,6 +35,7 @@ nlohmann::json hostJson(const HostState& h) {
     j.update({{"lat", h.ownship.latitudeDeg}, {"lon", h.ownship.longitudeDeg}, {"alt", h.ownship.heightM},
               {"yaw", h.ownship.attitude.yawDeg}, {"pitch", h.ownship.attitude.pitchDeg}, {"roll", h.ownship.attitude.rollDeg}});
   if (h.timeValid) j["utc"] = ephemeris::formatIso8601Utc(h.utc);
+  if (h.groundFog) j["ground_fog"] = fogJson(*h.groundFog);
   return j;
 }
 
@@ -70,6 +75,7 @@ void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const sky
         {"atmosphere", used.conditions.atmosphere
                            ? nlohmann::json(atmosphere::hexHash(atmosphere::parameterHash(used.conditions.atmosphere->config())))
                            : nlohmann::json(nullptr)},
+        {"haze", fogJson(used.conditions.haze)}, {"fog", fogJson(used.conditions.fog)},
         {"adaptation_cd_m2", used.worldAdaptationLuminance}, {"scene_cd_m2", used.sceneLuminance},
         {"adaptation_gain", used.adaptationGain},
         {"views", views}}},

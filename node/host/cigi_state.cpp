@@ -2,6 +2,7 @@
 
 #include "protocol/cigi/date.h"
 
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 #include <variant>
@@ -163,8 +164,24 @@ CigiStateTracker::Applied CigiStateTracker::on(const cigi::AtmosphereControl& p,
 
 CigiStateTracker::Applied CigiStateTracker::on(const cigi::WeatherControl& p, const cigi::DecodedMessage&,
                                                 Clock::time_point) {
-  // Global weather's visibility and humidity (skyig renders no cloud layers).
-  if (!p.weatherEnable || p.scope != cigi::WeatherScope::global) return kIgnored;
+  if (p.scope != cigi::WeatherScope::global) return kIgnored;  // regions and entities: not yet
+  if (p.layerId == 0) {  // ground fog: from its base elevation (MSL, the model's ground) up
+    if (!p.weatherEnable) {
+      state_.groundFog = sky::FogSpec{};
+      return kChanged;
+    }
+    if (!std::isfinite(p.baseElevationM) || !std::isfinite(p.thicknessM) || !(p.thicknessM > 0.0f) ||
+        !std::isfinite(p.visibilityRangeM) || !(p.visibilityRangeM > 0.0f))
+      return kRejected;
+    const double base = std::max(0.0, static_cast<double>(p.baseElevationM));
+    const double top = static_cast<double>(p.baseElevationM) + static_cast<double>(p.thicknessM);
+    state_.groundFog = sky::FogSpec{base, std::max(base, top), static_cast<double>(p.visibilityRangeM) / 1000.0};
+    if (!(state_.groundFog->topM > state_.groundFog->bottomM)) state_.groundFog = sky::FogSpec{};  // wholly below the ground
+    return kChanged;
+  }
+  // Other global layers: their visibility and humidity as the global weather's (skyig renders
+  // no cloud or precipitation layers yet).
+  if (!p.weatherEnable) return kIgnored;
   if (!std::isfinite(p.visibilityRangeM) || p.visibilityRangeM < 0.0f || p.humidityPct > 100) return kRejected;
   state_.visibilityM = p.visibilityRangeM;
   state_.humidityPct = p.humidityPct;

@@ -3,6 +3,7 @@
 // receiver thread to the worker and render threads (latest value wins).
 #include "ephemeris/refraction.h"
 #include "ephemeris/time.h"
+#include "physics/common/sky_conditions.h"
 #include "sky/observer.h"
 
 #include <array>
@@ -84,6 +85,9 @@ struct HostState {
   Clock::time_point utcTime{};        // the local instant utc refers to
   double visibilityM = 50000.0;
   double humidityPct = 0.0;
+  // CIGI Weather Control, layer 0 (ground fog), global: unset until the host sends one; a layer
+  // the host disabled has a visibility of 0.
+  std::optional<sky::FogSpec> groundFog;
   double temperatureC = ephemeris::kStandardTemperatureC;  // CIGI Atmosphere Control: refraction
   double pressureHpa = ephemeris::kStandardPressureHpa;
   // CIGI Celestial Sphere Control: star field intensity / 100, 0 while the field is disabled.

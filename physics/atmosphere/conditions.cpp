@@ -17,14 +17,15 @@ namespace {
 
 }  // namespace
 
+double cleanAirVisibilityKm(const Medium& medium) {
+  return kKoschmiederConstant / coefficientsAt(medium, 550.0).rayleighScattering / 1000.0;
+}
+
 double mieExtinctionForVisibility(const Medium& medium, double visibilityKm) {
   const double rayleigh = coefficientsAt(medium, 550.0).rayleighScattering;
-  const double limitKm = kKoschmiederConstant / rayleigh / 1000.0;
-  if (!(visibilityKm > 0.0) || !(visibilityKm < limitKm)) {
-    std::ostringstream expected;
-    expected << "in (0, " << limitKm << ") km, the clean-air limit";
-    bad("visibility_km", visibilityKm, expected.str().c_str());
-  }
+  if (!(visibilityKm > 0.0) || !std::isfinite(visibilityKm)) bad("visibility_km", visibilityKm, "a finite number > 0");
+  // A host's "unlimited" (hundreds of km) is the clearest air there is: no aerosols.
+  if (visibilityKm >= cleanAirVisibilityKm(medium)) return 0.0;
   const double total = kKoschmiederConstant / (visibilityKm * 1000.0);
   // The Angstrom law of coefficientsAt is referred to 550 nm, so this is the 550 nm value.
   return total - rayleigh;
@@ -40,6 +41,14 @@ double humidityGrowthFactor(double rh) {
   return std::pow((1.0 - rh) / (1.0 - kReferenceHumidity), -kHanelGamma);
 }
 
+Medium withAerosolExtinction(const Medium& base, double mieExtinctionPerM) {
+  Medium m = base;
+  m.mieExtinctionPerM = mieExtinctionPerM;
+  const double absorption = base.mieExtinctionPerM * (1.0 - base.mieSingleScatteringAlbedo);
+  if (mieExtinctionPerM > base.mieExtinctionPerM) m.mieSingleScatteringAlbedo = 1.0 - absorption / mieExtinctionPerM;
+  return m;
+}
+
 Medium applyConditions(const Medium& base, const Conditions& c) {
   Medium m = base;
   if (c.groundAlbedo) {
@@ -50,9 +59,9 @@ Medium applyConditions(const Medium& base, const Conditions& c) {
   }
   if (c.visibilityKm) {
     if (c.relativeHumidity) humidityGrowthFactor(*c.relativeHumidity);  // still validated
-    m.mieExtinctionPerM = mieExtinctionForVisibility(base, *c.visibilityKm);
+    m = withAerosolExtinction(m, mieExtinctionForVisibility(base, *c.visibilityKm));
   } else if (c.relativeHumidity) {
-    m.mieExtinctionPerM = base.mieExtinctionPerM * humidityGrowthFactor(*c.relativeHumidity);
+    m = withAerosolExtinction(m, base.mieExtinctionPerM * humidityGrowthFactor(*c.relativeHumidity));
   }
   validate(m);
   return m;

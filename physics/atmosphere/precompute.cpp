@@ -1,5 +1,7 @@
 #include "physics/atmosphere/precompute.h"
 
+#include "physics/atmosphere/orders_tail.h"
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -120,11 +122,11 @@ GroupTables precomputeGroup(const AtmosphereParameters& atm, const PrecomputeOpt
   const CancelToken& cancel = control.cancel;
   GroupTables out;
 
-  // 1. Transmittance to the top of the atmosphere.
+  // 1. Optical depth to the top of the atmosphere (the transmittance table).
   control.begin("transmittance");
   out.transmittance = make2D(atm.transmittance_width, atm.transmittance_height);
   fill2D(out.transmittance, threads, cancel,
-         [&](const glm::dvec2& frag) { return shader::computeTransmittanceTexel(atm, frag); });
+         [&](const glm::dvec2& frag) { return shader::computeOpticalDepthTexel(atm, frag); });
   const sampler2D& transmittance = out.transmittance;
 
   // 2. Direct irradiance (order 0 on the ground): feeds order 2; not part of the sky table.
@@ -151,6 +153,7 @@ GroupTables precomputeGroup(const AtmosphereParameters& atm, const PrecomputeOpt
   // 4. Orders 2..N, each from the previous one.
   sampler3D deltaMultiple = makeScattering(atm);
   sampler3D deltaDensity = makeScattering(atm);
+  sampler3D before;  // the order before the last, for the tail
   for (int order = 2; order <= options.scatteringOrders; ++order) {
     const std::string orderText = ", order " + std::to_string(order) + "/" + std::to_string(options.scatteringOrders);
     control.begin("scattering density" + orderText);
@@ -168,6 +171,8 @@ GroupTables precomputeGroup(const AtmosphereParameters& atm, const PrecomputeOpt
       out.irradiance.texels[i] += deltaIrradiance.texels[i];
     }
     control.begin("multiple scattering" + orderText);
+    const bool tail = options.ordersTail && order == options.scatteringOrders && order >= 3;
+    if (tail) before = deltaMultiple;
     for3D(deltaMultiple, threads, cancel, [&](int x, int y, int z, const glm::dvec3& frag) {
       double nu = 0.0;
       const glm::dvec4 radiance =
@@ -175,6 +180,7 @@ GroupTables precomputeGroup(const AtmosphereParameters& atm, const PrecomputeOpt
       deltaMultiple.at(x, y, z) = radiance;
       out.scattering.at(x, y, z) += radiance / shader::rayleighPhaseFunction(nu);
     });
+    if (tail) addOrdersTail(atm, before, deltaMultiple, deltaIrradiance, out);
   }
   return out;
 }

@@ -17,6 +17,9 @@ using shader::atmosphere_types::AtmosphereParameters;
 
 struct PrecomputeOptions {
   int scatteringOrders = 4;  // 1 = single scattering only
+  // The orders after the last as a geometric series of its ratio to the one before
+  // (orders_tail.h); from 3 orders on.
+  bool ordersTail = true;
   int threads = 0;            // 0: one per hardware thread
 };
 

@@ -2,6 +2,8 @@
 
 #include <glm/gtc/packing.hpp>
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -48,7 +50,14 @@ constexpr double kTableScale = 0.0625;  // REC709_TABLE_SCALE in rendering_rec70
 
 double wavelengthValue(const glm::dvec4& v, std::size_t i) { return v[static_cast<glm::length_t>(i % 4)]; }
 
-std::uint16_t half(double v) { return static_cast<std::uint16_t>(glm::packHalf1x16(static_cast<float>(v))); }
+// Saturating: a value past the largest half float (65504) is held there, not turned into an
+// infinity that the phase functions and blends then make NaN. Clear skies never reach it (the
+// largest texel is about half of it); in haze of 2 km and less a few texels of the multiple
+// scattering's forward peak (divided by the Rayleigh phase, as C* stores it) do: 4 of 16384 at
+// 2 km, 226 at 0.5 km (docs/atmosphere.md).
+std::uint16_t half(double v) {
+  return static_cast<std::uint16_t>(glm::packHalf1x16(static_cast<float>(std::clamp(v, -65504.0, 65504.0))));
+}
 
 double fromHalf(std::uint16_t h) { return static_cast<double>(glm::unpackHalf1x16(h)); }
 
@@ -81,11 +90,18 @@ PackedRec709Tables Rec709Packer::packSmallTables() const {
   out.groundAlbedo = model_.parameters(0).ground_albedo.x;
   out.transmittanceXyz = model_.tables(0).transmittance;
   out.irradianceXyz = model_.tables(0).irradiance;
+  // The table holds optical depths (transmittance.glsl): per channel the depth whose exponential
+  // is the sun-weighted mean of the wavelengths' transmittances, by log-sum-exp, so a 1000-deep
+  // horizon in fog keeps its digits where exp(-tau) underflows.
   for (std::size_t k = 0; k < out.transmittanceXyz.texels.size(); ++k) {
+    double tauMin = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i) tauMin = std::min(tauMin, wavelengthValue(model_.tables(i / 4).transmittance.texels[k], i));
     glm::dvec3 t(0.0);
-    for (std::size_t i = 0; i < n; ++i) t += xyzSun_[i] * wavelengthValue(model_.tables(i / 4).transmittance.texels[k], i);
-    // Float, as uploaded.
-    out.transmittanceXyz.texels[k] = glm::dvec4(glm::dvec3(glm::vec3(t / sunXyz)), 1.0);
+    for (std::size_t i = 0; i < n; ++i)
+      t += xyzSun_[i] * std::exp(tauMin - wavelengthValue(model_.tables(i / 4).transmittance.texels[k], i));
+    const glm::dvec3 tau = tauMin - glm::log(glm::max(t / sunXyz, glm::dvec3(std::numeric_limits<double>::min())));
+    // Float, as uploaded; alpha is a depth of zero (a transmittance of one).
+    out.transmittanceXyz.texels[k] = glm::dvec4(glm::dvec3(glm::vec3(tau)), 0.0);
   }
   for (std::size_t k = 0; k < out.irradianceXyz.texels.size(); ++k) {
     glm::dvec3 e(0.0);

@@ -34,8 +34,8 @@ glm::dvec3 moonlitSkyRec709(const AtmosphereModel& model, const glm::dvec3& came
 // tables"), with the scattering pair rounded to half floats as on the GPU.
 //   scattering:    C*.rgb, C_M.b in w   (Rec.709 x REC709_TABLE_SCALE, RGBA16F on the GPU)
 //   singleMieRg:   C_M.rg in x, y       (RG16F)
-//   transmittanceXyz, irradianceXyz: sun-weighted XYZ transmittance (w = 1), sky irradiance
-//   in XYZ (RGBA32F: the transmittance spans more than half floats hold)
+//   transmittanceXyz, irradianceXyz: the optical depth of the sun-weighted XYZ transmittance
+//   (w = 0), sky irradiance in XYZ (RGBA32F: a foggy horizon's depth needs float's digits)
 struct PackedRec709Tables {
   shader::cpu_texture::sampler2D transmittanceXyz;
   shader::cpu_texture::sampler2D irradianceXyz;

@@ -29,8 +29,9 @@ vec3 skyRec709(IN(AtmosphereParameters) atm, IN(sampler3D) scattering_rec709,
 
 // ---- The renderer's packed tables (physics/atmosphere/rec709_tables.h, PackedRec709Tables) ----
 // scattering_packed: C*.rgb and C_M.b (alpha); single_mie_rg: C_M.rg; both in Rec.709 times
-// REC709_TABLE_SCALE (half floats). transmittance_xyz: the sun-weighted CIE XYZ transmittance
-// T_c = sum_i w_c(i) E_sun(i) T(i) / sum_i w_c(i) E_sun(i) (w >= 0, so 0 <= T_c <= 1; w = 1);
+// REC709_TABLE_SCALE (half floats). transmittance_xyz: the optical depth tau_c = -ln T_c of the
+// sun-weighted CIE XYZ transmittance T_c = sum_i w_c(i) E_sun(i) T(i) / sum_i w_c(i) E_sun(i)
+// (w >= 0, so 0 <= T_c <= 1; alpha: a depth of 0), read like the spectral table;
 // irradiance_xyz: the sky irradiance table in XYZ (lux; exact, it is linear).
 // Light that crosses the air (aerial perspective, ground, sun disc) is attenuated per XYZ
 // channel: exact for the sun disc and the direct sunlight (the spectrum the weights assume),

@@ -1,6 +1,10 @@
 // Transmittance T(r, mu) from a point to the top of the atmosphere, its 2D table and the
-// derived transmittances (Bruneton & Neyret 2008, section 4 "Precomputation": T is stored in a
-// 2D table and T(x, y) = T(x, v) / T(y, v) for any y on the ray from x along v).
+// derived transmittances (Bruneton & Neyret 2008, section 4 "Precomputation": T(x, y) =
+// T(x, v) / T(y, v) for any y on the ray from x along v). The table holds the optical depth
+// tau(r, mu), not T = exp(-tau) as Bruneton's does: along the horizon of a 0.5 km fog tau is
+// about 860, and exp(-860) is below even double precision (float fails past tau = 87-103, a
+// 3-5 km haze). The ratio of two transmittances is then exp(-(tau(x) - tau(y))): no underflow,
+// no 0 / 0.
 #ifndef SKYIG_ATMOSPHERE_TRANSMITTANCE_GLSL
 #define SKYIG_ATMOSPHERE_TRANSMITTANCE_GLSL
 #include "physics/atmosphere/geometry.glsl"
@@ -55,50 +59,80 @@ void rMuFromTransmittanceUv(IN(AtmosphereParameters) atm, IN(vec2) uv, OUT(Float
   mu = atmClampCosine(mu);
 }
 
-// Value of the texel whose centre is frag_coord (in texels), the precomputation's kernel.
-vec4 computeTransmittanceTexel(IN(AtmosphereParameters) atm, IN(vec2) frag_coord) {
+// Value of the texel whose centre is frag_coord (in texels), the precomputation's kernel: the
+// optical depth to the top of the atmosphere, per wavelength.
+vec4 computeOpticalDepthTexel(IN(AtmosphereParameters) atm, IN(vec2) frag_coord) {
   Float r;
   Float mu;
   rMuFromTransmittanceUv(
       atm, vec2(frag_coord.x / atm.transmittance_width, frag_coord.y / atm.transmittance_height),
       r, mu);
-  return exp(-opticalDepthToTopAtmosphereBoundary(atm, r, mu));
+  return opticalDepthToTopAtmosphereBoundary(atm, r, mu);
+}
+
+// Bilinear interpolation with the weights in full precision. A GPU's texture unit filters with
+// 8 fractional bits of weight (NVIDIA's CUDA guide, "Linear Filtering": 1/256 steps), which an
+// optical depth does not survive: between two texels of depths 28 and 30 it is off by up to
+// 0.004, 0.4% of the light through them. The CPU's texture() is exact already.
+vec4 textureBilinearExact(IN(sampler2D) t, IN(vec2) uv) {
+#ifdef SKYIG_GLSL_AS_CPP
+  return texture(t, uv);
+#else
+  ivec2 size = textureSize(t, 0);
+  vec2 p = uv * vec2(size) - vec2(0.5);
+  vec2 base = floor(p);
+  vec2 f = p - base;
+  ivec2 i0 = clamp(ivec2(base), ivec2(0), size - ivec2(1));
+  ivec2 i1 = clamp(ivec2(base) + ivec2(1), ivec2(0), size - ivec2(1));
+  return mix(mix(texelFetch(t, i0, 0), texelFetch(t, ivec2(i1.x, i0.y), 0), f.x),
+             mix(texelFetch(t, ivec2(i0.x, i1.y), 0), texelFetch(t, i1, 0), f.x), f.y);
+#endif
+}
+
+// The table's optical depth to the top of the atmosphere (linear interpolation of tau, which
+// is linear in the aerosol extinction: blends of visibility steps stay exact).
+vec4 tabulatedOpticalDepth(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_texture,
+                           Float r, Float mu) {
+  return textureBilinearExact(transmittance_texture, transmittanceUvFromRMu(atm, r, mu));
 }
 
 vec4 transmittanceToTopAtmosphereBoundary(IN(AtmosphereParameters) atm,
                                           IN(sampler2D) transmittance_texture, Float r,
                                           Float mu) {
-  return texture(transmittance_texture, transmittanceUvFromRMu(atm, r, mu));
+  return exp(-tabulatedOpticalDepth(atm, transmittance_texture, r, mu));
 }
 
-// Transmittance between (r, mu) and the point at distance d along the ray, as a ratio of two
-// lookups of the transmittance to the top (Bruneton 2017, GetTransmittance). A ray that hits the
-// ground is looked up reversed (-mu), so neither factor of the ratio crosses the ground. A ray
-// that dips (mu < 0) and rises again without meeting it is split at its lowest point: up to
-// there the segment is looked up reversed from each end, two upward rays through thin air;
-// beyond, it is the segment to the lowest point times the one from there (horizontal) on. The
-// plain ratio T(r, mu) / T(r_d, mu_d) would divide two transmittances that both hold the densest
-// air at the lowest point: grazing the ground in a 10 km haze that is exp(-90), below single
-// precision, and the sky's last texel above the horizon came out up to half as bright as its
-// neighbours (a dark line 0.5 deg high just above the horizon).
+// exp(-(tau_far - tau_near)) of a segment whose optical depths to the top are tau_near (its end
+// nearer the top) and tau_far; never above one (the two lookups interpolate independently).
+vec4 transmittanceOfDifference(IN(vec4) tau_far, IN(vec4) tau_near) {
+  return exp(-max(tau_far - tau_near, vec4(0.0)));
+}
+
+// Transmittance between (r, mu) and the point at distance d along the ray, from the difference
+// of two lookups of the optical depth to the top (Bruneton 2017, GetTransmittance, which divides
+// the two transmittances). A ray that hits the ground is looked up reversed (-mu), so neither
+// lookup crosses the ground. A ray that dips (mu < 0) and rises again without meeting it is
+// split at its lowest point: up to there the segment is looked up reversed from each end, two
+// upward rays through thin air; beyond, it is the segment to the lowest point plus the one from
+// there (horizontal) on. The plain difference tau(r_d, mu_d) - tau(r, mu) would subtract two
+// depths that both hold the densest air at the lowest point and lose its digits to rounding.
 vec4 transmittanceAlongRay(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_texture,
                            Float r, Float mu, Float d, bool ray_r_mu_intersects_ground) {
   Float r_d = radiusAtDistance(atm, r, mu, d);
   Float mu_d = atmClampCosine((r * mu + d) / r_d);
   if (ray_r_mu_intersects_ground || (mu < 0.0 && mu_d <= 0.0)) {
-    return min(transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r_d, -mu_d) /
-                   transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r, -mu),
-               vec4(1.0));
+    return transmittanceOfDifference(
+        tabulatedOpticalDepth(atm, transmittance_texture, r_d, -mu_d),
+        tabulatedOpticalDepth(atm, transmittance_texture, r, -mu));
   }
   if (mu < 0.0) {
     Float r_low = atmClampRadius(atm, r * sqrt(max(1.0 - mu * mu, 0.0)));
-    vec4 low = transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r_low, 0.0);
-    return min(low / transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r, -mu), vec4(1.0)) *
-           min(low / transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r_d, mu_d), vec4(1.0));
+    vec4 low = tabulatedOpticalDepth(atm, transmittance_texture, r_low, 0.0);
+    return transmittanceOfDifference(low, tabulatedOpticalDepth(atm, transmittance_texture, r, -mu)) *
+           transmittanceOfDifference(low, tabulatedOpticalDepth(atm, transmittance_texture, r_d, mu_d));
   }
-  return min(transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r, mu) /
-                 transmittanceToTopAtmosphereBoundary(atm, transmittance_texture, r_d, mu_d),
-             vec4(1.0));
+  return transmittanceOfDifference(tabulatedOpticalDepth(atm, transmittance_texture, r, mu),
+                                   tabulatedOpticalDepth(atm, transmittance_texture, r_d, mu_d));
 }
 
 // Transmittance of sunlight to radius r, times the visible fraction of the sun disc above the

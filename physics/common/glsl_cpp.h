@@ -8,6 +8,10 @@
 
 #include <cmath>
 
+// For the rare line that differs between the two compilers (a GPU's hardware against the CPU's
+// double precision); each use says why.
+#define SKYIG_GLSL_AS_CPP 1
+
 namespace skyig::shader::glsl_types {
 using Float = double;
 using vec2 = glm::dvec2;

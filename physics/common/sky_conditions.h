@@ -15,6 +15,15 @@ namespace skyig::sky {
 
 enum class SkyModel { Preetham, Cie, Physical };
 
+// A layer of fog or mist (physics/weather/fog_layer.h): from bottomM to topM above the ground,
+// visibilityKm inside it; a visibility of 0 is no layer.
+struct FogSpec {
+  double bottomM = 0.0;
+  double topM = 0.0;
+  double visibilityKm = 0.0;
+  bool operator==(const FogSpec&) const = default;
+};
+
 std::string_view toString(SkyModel model);
 // "preetham", "cie" or "physical"; false for anything else.
 bool parseSkyModel(std::string_view text, SkyModel& model);
@@ -33,6 +42,10 @@ struct SkyConditions {
   std::shared_ptr<const night::StarCatalogue> starCatalogue;
   // CIGI Celestial Sphere Control: star field intensity / 100, 0 when the field is disabled.
   double starFieldIntensity = 1.0;
+  // SkyModel::Physical: the air below the tables' visibility (physics/weather/fog_layer.h,
+  // hazeBelowTables), and a ground fog (CIGI Weather Control layer 0, [weather], render --fog-*).
+  FogSpec haze;
+  FogSpec fog;
 };
 
 }  // namespace skyig::sky

@@ -41,7 +41,8 @@ double LuminanceHistogram::logMean() const {
 }
 
 double ToneCurve::displayLuminance(double worldCdM2) const {
-  const double x = shader::toneCurvePosition(worldCdM2, glm::dvec2(minLog10, maxLog10), double(kPoints));
+  // A NaN luminance is shown black, not cast to an index (the cast of NaN is undefined).
+  const double x = std::isnan(worldCdM2) ? 0.0 : shader::toneCurvePosition(worldCdM2, glm::dvec2(minLog10, maxLog10), double(kPoints));
   const int i = std::min(static_cast<int>(x), kPoints - 2);
   return shader::toneCurveLuminance(double(displayLog10[static_cast<std::size_t>(i)]),
                                     double(displayLog10[static_cast<std::size_t>(i + 1)]), x - i);

@@ -32,10 +32,11 @@ ALLOWED = {
                                        "ephemeris"},
     "physics/goggle": PHYSICS_COMMON | {"physics/night", "physics/moon", "physics/stars", "physics/atmosphere",
                                         "physics/spectrum", "ephemeris"},
+    "physics/weather": PHYSICS_COMMON,
     "physics": {"physics/common", "physics/analytic", "physics/eye", "physics/display"},
     "sky": {"physics", "physics/common", "physics/spectrum", "physics/display", "physics/analytic",
             "physics/atmosphere", "physics/eye", "physics/night", "physics/moon", "physics/stars", "physics/goggle",
-            "ephemeris"},
+            "physics/weather", "ephemeris"},
     "calibration": {"sky", "physics/common"},
 }
 # Each group below may include everything listed above it (and in ALLOWED), in this order, and

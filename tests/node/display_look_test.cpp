@@ -239,3 +239,39 @@ TEST_F(DisplayLook, ChannelsSharingAnEdgeMatchThere) {
   std::cout << "shared edge: mean difference " << mean << " codes\n";
   EXPECT_LE(mean, 2.0);
 }
+
+// A 200 m ground fog of 400 m visibility (render --fog-*), the sun 30 deg up behind the pilot's
+// left shoulder (Innsbruck, 2026-06-21T09:00Z, looking west): inside it at 30 m the frame is
+// grey-white (no channel 30% from the others: the droplets are grey, and sunlight of about 5500 K
+// is that much redder than the D65 white of linear Rec.709), brighter up than down; from 500 m
+// above, blue sky over a sunlit white sea; climbing through the top, 10 cm in a frame (6 m/s at
+// 60 Hz), the frame's mean light changes by under 2%.
+TEST_F(DisplayLook, InsideAboveAndThroughAGroundFog) {
+  const std::string scene = "--utc 2026-06-21T09:00:00Z --yaw 270 --fog-visibility 0.4 --fog-top 200 ";
+  auto mean = [](const Frame& f, int y0, int y1) {
+    glm::dvec3 m(0.0);
+    for (int y = y0; y < y1; ++y)
+      for (int x = 0; x < f.width; ++x) m += f.world(x, y);
+    return m / double((y1 - y0) * f.width);
+  };
+  const Frame inside = render(scene + "--alt 30 --pitch 0");
+  const glm::dvec3 up = mean(inside, 0, inside.height / 4), down = mean(inside, 3 * inside.height / 4, inside.height);
+  for (const glm::dvec3& c : {up, down}) {
+    const double lo = std::min({c.r, c.g, c.b}), hi = std::max({c.r, c.g, c.b});
+    EXPECT_LT(hi / lo, 1.3) << "inside the fog: " << c.r << ", " << c.g << ", " << c.b;
+  }
+  EXPECT_GT(luminance(up), luminance(down));
+  const Frame above = render(scene + "--alt 500 --pitch 0");
+  const double row = horizonRow(0.0, 10.0, 35.0, above.height);
+  const glm::dvec3 sky = mean(above, 0, above.height / 4);
+  const glm::dvec3 sea = mean(above, static_cast<int>(row) + 4, above.height);
+  EXPECT_GT(sky.b, 1.3 * sky.r) << "the sky above the fog is blue";
+  EXPECT_LT(std::max({sea.r, sea.g, sea.b}) / std::min({sea.r, sea.g, sea.b}), 1.3) << "the sea is white";
+  EXPECT_GT(luminance(sea), 5000.0) << "a sunlit white sea";
+  const double below = luminance(mean(render(scene + "--alt 199.95 --pitch 0"), 0, 120));
+  const double over = luminance(mean(render(scene + "--alt 200.05 --pitch 0"), 0, 120));
+  std::printf("fog 200 m of 400 m: inside up %.0f down %.0f cd/m^2; from 500 m sky (%.0f, %.0f, %.0f) sea %.0f; "
+              "climbing through the top %.0f -> %.0f cd/m^2\n",
+              luminance(up), luminance(down), sky.r, sky.g, sky.b, luminance(sea), below, over);
+  EXPECT_NEAR(over / below, 1.0, 0.02);
+}

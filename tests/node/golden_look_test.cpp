@@ -1,6 +1,7 @@
 // Golden images of the look: the scenes a change of the sky, the eye or the display mapping
 // touches (noon, sunset, the sun 4, 9 and 15 deg down, a full moon rising, a moonless winter
-// night, 12 km looking 2 deg down, and two of them through night-vision goggles), rendered by `skyig render` at 96x60 and compared with the
+// night, 12 km looking 2 deg down, haze and fog, and two of them through night-vision goggles),
+// rendered by `skyig render` at 96x60 and compared with the
 // PNGs in tests/data/golden/ so that a reviewer sees a change of look as a failing test and a
 // changed PNG.
 //
@@ -45,6 +46,11 @@ const Scene kScenes[] = {
     {"full_moon_rising", "--utc 2026-12-25T17:40:00Z --yaw 60 --pitch 2"},
     {"moonless_winter_night", "--utc 2026-12-09T22:00:00Z --yaw 180 --pitch 30"},
     {"noon_12km_2deg_down", "--utc 2026-06-21T11:00:00Z --yaw 180 --alt 12000 --pitch -2"},
+    // Low visibility (physics/weather): a 1 km haze from 600 m, and a 200 m ground fog of 400 m
+    // visibility from inside it at 30 m and from 500 m above it.
+    {"haze_1km", "--utc 2026-06-21T14:00:00Z --yaw 270 --alt 600 --pitch 3 --visibility 1"},
+    {"fog_inside", "--utc 2026-06-21T09:00:00Z --yaw 270 --alt 30 --fog-visibility 0.4 --fog-top 200"},
+    {"fog_above", "--utc 2026-06-21T09:00:00Z --yaw 270 --alt 500 --pitch -5 --fog-visibility 0.4 --fog-top 200"},
     // Night-vision goggles (class A, P43; class B, P45): the moon with its halo, and the
     // moonless night's stars and airglow through the tube's noise (its hash is the frame's
     // instant: the same on every run).

@@ -94,8 +94,8 @@ TEST(HostAtmosphere, ValuesOutsideTheModelsRangeThrowOnceAndAreIgnored) {
   HostAtmosphere h(kMedium, 0.2, 0.0);
   const auto t0 = Clock::now();
   ASSERT_TRUE((h.observe(8000.0, 50.0, t0), h.observe(8000.0, 50.0, t0 + 1ms)));
-  // Clearer than clean air (Koschmieder with Rayleigh alone: about 288 km), none, negative, NaN.
-  for (double bad : {400000.0, 0.0, -5.0, std::numeric_limits<double>::quiet_NaN()}) {
+  // None, negative, NaN.
+  for (double bad : {0.0, -5.0, std::numeric_limits<double>::quiet_NaN()}) {
     try {
       h.observe(bad, 50.0, t0 + 2ms);
       FAIL() << bad << " accepted";
@@ -110,6 +110,20 @@ TEST(HostAtmosphere, ValuesOutsideTheModelsRangeThrowOnceAndAreIgnored) {
   // The last good state stays: the same values again ask for nothing.
   EXPECT_FALSE(h.observe(8000.0, 50.0, t0 + 5ms));
   EXPECT_FALSE(h.observe(8000.0, 50.0, t0 + 6ms));
+}
+
+TEST(HostAtmosphere, AnUnlimitedVisibilityIsCleanAir) {
+  // Hosts send hundreds of km (or more) for "unlimited": the air without aerosols, about 288 km.
+  HostAtmosphere h(kMedium, 0.2, 0.0);
+  const auto t0 = Clock::now();
+  ASSERT_TRUE((h.observe(8000.0, 50.0, t0), h.observe(8000.0, 50.0, t0 + 1ms)));
+  h.observe(1.0e6, 50.0, t0 + 2ms);
+  const auto c = h.observe(1.0e6, 50.0, t0 + 500ms);
+  ASSERT_TRUE(c);
+  const atmosphere::Medium m = atmosphere::applyConditions(kMedium, *c);
+  EXPECT_EQ(m.mieExtinctionPerM, 0.0);
+  EXPECT_NEAR(atmosphere::visibilityOf(m), atmosphere::cleanAirVisibilityKm(kMedium), 1e-9);
+  EXPECT_GT(atmosphere::visibilityOf(m), 250.0);
 }
 
 TEST(HostAtmosphere, TheUpdaterBuildsTheHostsVisibility) {
@@ -154,16 +168,25 @@ TEST(HostAtmosphere, NodeTablesFollowTheConfiguredMedium) {
   EXPECT_EQ(m.options.scatteringOrders, 6);
   EXPECT_EQ(m.medium.groundAlbedo, config.sky.groundAlbedo);
   atmosphere::Conditions hazy;
-  hazy.visibilityKm = 5.0;
-  EXPECT_NEAR(atmosphere::visibilityOf(nodeModelConfig(config, hazy).medium), 5.0, 1e-9);
+  hazy.visibilityKm = 20.0;
+  EXPECT_NEAR(atmosphere::visibilityOf(nodeModelConfig(config, hazy).medium), 20.0, 1e-9);
   EXPECT_EQ(nodeModelConfig(config, hazy).medium.miePhaseG, 0.7);
+  // Below 10 km the tables stay at 10 km and the haze layer takes the rest: at the ground the
+  // two together are Koschmieder's 3.912 / 5 km.
+  hazy.visibilityKm = 5.0;
+  EXPECT_NEAR(atmosphere::visibilityOf(nodeModelConfig(config, hazy).medium), 10.0, 1e-9);
+  const skyig::sky::FogSpec layer = nodeHaze(config, 5.0);
+  EXPECT_NEAR(3.912 / layer.visibilityKm + 3.912 / 10.0, 3.912 / 5.0, 1e-12);
+  EXPECT_EQ(layer.topM, config.atmosphere.medium.mieScaleHeightM);
+  EXPECT_EQ(nodeHaze(config, 20.0).visibilityKm, 0.0);
 }
 
 // The node's half: a host's new visibility, between two cached steps, is in the very next state
 // the worker builds once the value has settled (a blend: it says so), while the exact tables are
 // still being built (held back here until the test lets them finish); the state after they are
-// done has them. Small tables at 16 wavelengths: the steps and the exact 7 km tables are
-// computed once into the build tree's cache, then loaded.
+// done has them. Small tables at 16 wavelengths: the steps and the exact 30 km tables are
+// computed once into the build tree's cache, then loaded. (Below 10 km the tables stay at 10 km
+// and the rest is a fog layer: no table to wait for.)
 TEST(SkyWorkerVisibility, NextStateShowsTheHostsVisibilityBlendedThenExact) {
   const fs::path dir = freshTestDirectory("skyig_visibility_blend_");
   const fs::path shared = fs::path(SKYIG_BINARY_DIR) / "atmosphere-test-cache" / "visibility-blend-node";
@@ -171,9 +194,9 @@ TEST(SkyWorkerVisibility, NextStateShowsTheHostsVisibilityBlendedThenExact) {
                                    << shared.string() << "\"\n[[channel]]\nname = \"front\"\nwidth = 32\nheight = 24\n";
   NodeConfig config = loadNodeConfig((dir / "node.toml").string());
   loadSkyData(config);  // the configuration's tables, from the shared cache
-  atmosphere::Conditions sevenKm;
-  sevenKm.visibilityKm = 7.0;
-  const std::uint64_t held = atmosphere::parameterHash(nodeModelConfig(config, sevenKm));
+  atmosphere::Conditions thirtyKm;
+  thirtyKm.visibilityKm = 30.0;
+  const std::uint64_t held = atmosphere::parameterHash(nodeModelConfig(config, thirtyKm));
   // The "precompute" loads from (or, the first time, computes into) the shared cache; the 7 km
   // tables wait for the gate.
   std::mutex mutex;
@@ -190,7 +213,7 @@ TEST(SkyWorkerVisibility, NextStateShowsTheHostsVisibilityBlendedThenExact) {
     return tables;
   };
   atmosphere::AtmosphereUpdater updater(nodeModelConfig(config, {}), dir / "cache", builder, {}, nullptr,
-                                        {{10.0, 5.0}, shared / "steps"});
+                                        {{50.0, 20.0}, shared / "steps"});
   updater.waitSteps();
   ASSERT_EQ(updater.stepFailures(), 0u);
   NodeStats stats;
@@ -200,7 +223,7 @@ TEST(SkyWorkerVisibility, NextStateShowsTheHostsVisibilityBlendedThenExact) {
   const Clock::time_point t0 = Clock::now();
   host.state.updates = 1;
   host.state.received = t0;
-  host.state.visibilityM = 7000.0;
+  host.state.visibilityM = 30000.0;
   EXPECT_FALSE(worker.followAtmosphere(&host, t0));  // not settled yet
   const auto first = worker.step(&host, t0);
   ASSERT_TRUE(first);
@@ -214,10 +237,10 @@ TEST(SkyWorkerVisibility, NextStateShowsTheHostsVisibilityBlendedThenExact) {
   const auto blended = worker.step(&host, t0 + 150ms, /*force=*/true);
   ASSERT_TRUE(blended);
   const auto& blend = blended->conditions.atmosphere;
-  EXPECT_NEAR(atmosphere::visibilityOf(blend->config().medium), 7.0, 1e-9);
+  EXPECT_NEAR(atmosphere::visibilityOf(blend->config().medium), 30.0, 1e-9);
   ASSERT_TRUE(blend->blendOrigin());
-  EXPECT_NEAR(blend->blendOrigin()->clearerKm, 10.0, 1e-9);
-  EXPECT_NEAR(blend->blendOrigin()->hazierKm, 5.0, 1e-9);
+  EXPECT_NEAR(blend->blendOrigin()->clearerKm, 50.0, 1e-9);
+  EXPECT_NEAR(blend->blendOrigin()->hazierKm, 20.0, 1e-9);
   EXPECT_FALSE(worker.followAtmosphere(&host, t0 + 250ms));  // nothing newer yet
 
   // The exact tables replace it once built.
@@ -231,7 +254,7 @@ TEST(SkyWorkerVisibility, NextStateShowsTheHostsVisibilityBlendedThenExact) {
   const auto exact = worker.step(&host, t0 + 350ms, /*force=*/true);
   ASSERT_TRUE(exact);
   EXPECT_FALSE(exact->conditions.atmosphere->blendOrigin());
-  EXPECT_NEAR(atmosphere::visibilityOf(exact->conditions.atmosphere->config().medium), 7.0, 1e-9);
+  EXPECT_NEAR(atmosphere::visibilityOf(exact->conditions.atmosphere->config().medium), 30.0, 1e-9);
   // What the eye adapts to (the scene's luminance) barely moves when the exact tables come.
   std::printf("scene luminance: configured %.4g, blended %.4g, exact %.4g cd/m^2\n", first->sceneLuminance,
               blended->sceneLuminance, exact->sceneLuminance);

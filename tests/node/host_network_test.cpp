@@ -386,3 +386,56 @@ TEST(CigiSensorControl, NanGainIsCountedAndDroppedWithoutLosingTheSwitch) {
   EXPECT_EQ(pose.channels[1].band, skyig::sky::SpectralBand::Visible);
   EXPECT_EQ(pose.channels[1].goggle.gain, 0.5);  // 1.5 dropped, the last good gain kept
 }
+
+namespace {
+
+void sendWeather(UdpSocket& host, const sockaddr_in& to, std::uint32_t frame, const cigi::WeatherControl& w) {
+  cigi::IgControl ig;
+  ig.hostFrameNumber = frame;
+  const cigi::Packet packets[] = {ig, w};
+  std::vector<std::uint8_t> bytes;
+  ASSERT_EQ(cigi::encodeMessage(packets, skyig::protocol::ByteOrder::big, bytes), "");
+  ASSERT_TRUE(host.sendTo(bytes, to));
+}
+
+}  // namespace
+
+// CIGI Weather Control, layer 0 (ground fog), global scope, over loopback: its base, thickness
+// and visibility become the sky state's fog layer; a NaN thickness is refused and counted and
+// the layer stays; the host's Weather Enable off removes it.
+TEST(CigiWeatherControl, GroundFogReachesTheSkyStateAndGoesAgain) {
+  // The analytic sky: the state carries the host's weather whatever model draws it.
+  const NodeConfig config = parseNodeConfig("[sky]\nmodel = \"preetham\"\n[[channel]]\nname = \"front\"\n", "fog.toml");
+  NodeStats workerStats;
+  SkyWorker worker(config, nullptr, workerStats);
+  Receiver node;
+  UdpSocket host({"127.0.0.1", 0});
+  cigi::WeatherControl fog;
+  fog.layerId = 0;
+  fog.weatherEnable = true;
+  fog.scope = cigi::WeatherScope::global;
+  fog.baseElevationM = 20.0f;
+  fog.thicknessM = 180.0f;
+  fog.visibilityRangeM = 400.0f;
+  sendWeather(host, node.address(), 1, fog);
+  ASSERT_TRUE(node.handled(1));
+  auto state = worker.step(node.latest.get().get(), Clock::now(), /*force=*/true);
+  ASSERT_TRUE(state);
+  EXPECT_EQ(state->conditions.fog, (skyig::sky::FogSpec{20.0, 200.0, 0.4}));
+  EXPECT_EQ(node.latest.get()->state.visibilityM, HostState{}.visibilityM);  // a layer's, not the global's
+
+  cigi::WeatherControl bad = fog;
+  bad.thicknessM = std::nanf("");
+  sendWeather(host, node.address(), 2, bad);
+  ASSERT_TRUE(node.handled(2));
+  EXPECT_EQ(node.stats.rejectedValues.load(), 1u);
+  state = worker.step(node.latest.get().get(), Clock::now(), true);
+  EXPECT_EQ(state->conditions.fog, (skyig::sky::FogSpec{20.0, 200.0, 0.4}));
+
+  cigi::WeatherControl off = fog;
+  off.weatherEnable = false;
+  sendWeather(host, node.address(), 3, off);
+  ASSERT_TRUE(node.handled(3));
+  state = worker.step(node.latest.get().get(), Clock::now(), true);
+  EXPECT_EQ(state->conditions.fog.visibilityKm, 0.0);
+}

@@ -5,6 +5,7 @@
 #include "protocol/cigi/encoder.h"
 #include "node/host/cigi_state.h"
 #include "node/host/host_path.h"
+#include "node/host/host_weather.h"
 #include "node/config/node_config.h"
 #include "node/host/ownship_predictor.h"
 #include "node/host/sim_clock.h"
@@ -221,6 +222,28 @@ TEST(HostPath, InterpolatesHeadingTheShortWayAndNamesBadLines) {
     EXPECT_EQ(std::string(e.what()), "p.csv:2: expected 7 numbers: time_s, latitude, longitude, altitude_m, yaw, pitch, roll");
   }
   EXPECT_THROW(HostPath::parse("0,47,11,600,350,0,0\n0,47,11,600,350,0,0\n", "p.csv"), ConfigError);
+}
+
+// The host emulator's weather script holds each line until the next (before the first: the
+// first), and names the file and line of a bad one; the bundled example parses.
+TEST(HostWeather, HoldsEachStepAndNamesBadLines) {
+  const HostWeather w = HostWeather::parse("time,vis,rh,fog,top\n0,3000,95,200,150\n10,8000,80,0,0\n", "w.csv");
+  EXPECT_EQ(w.at(-1.0).fogVisibilityM, 200.0);
+  EXPECT_EQ(w.at(9.99).visibilityM, 3000.0);
+  EXPECT_EQ(w.at(10.0).visibilityM, 8000.0);
+  EXPECT_EQ(w.at(1e6).fogVisibilityM, 0.0);
+  try {
+    HostWeather::parse("0,3000,95,200,150\n5,3000,95,200,0\n", "w.csv");
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("w.csv:2: a fog needs", 0), 0u) << e.what();
+  }
+  EXPECT_THROW(HostWeather::parse("0,3000,150,0,0\n", "w.csv"), ConfigError);  // 150 % humidity
+  EXPECT_THROW(HostWeather::parse("0,nan,50,0,0\n", "w.csv"), ConfigError);
+  EXPECT_THROW(HostWeather::parse("# nothing\n", "w.csv"), ConfigError);
+  const HostWeather bundled = HostWeather::load(std::string(SKYIG_SOURCE_DIR) + "/config/fog_lifting.csv");
+  EXPECT_EQ(bundled.at(0.0).fogVisibilityM, 200.0);
+  EXPECT_EQ(bundled.at(60.0).visibilityM, 40000.0);
 }
 
 // A CIGI 4.0 host states the seconds (a float the 3.3 Celestial Sphere Control lacks): the

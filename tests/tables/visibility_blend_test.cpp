@@ -105,9 +105,9 @@ TEST(VisibilityBlend, BlendLiesBetweenItsSteps) {
   EXPECT_EQ(fog.tables(0).scattering.texels, third.tables(0).scattering.texels);
 }
 
-// The optical depth along every ray is linear in the aerosol extinction, so the geometric
-// blend of two transmittance tables is the exact table (to the float32 the tables are kept in,
-// where the transmittance is above 1e-20: a step in thick haze underflows long before).
+// The optical depth along every ray is linear in the aerosol extinction, so the linear blend of
+// two optical-depth tables (the transmittance table holds tau) is the exact table, to the
+// float32 the tables are kept in, and a third step changes nothing.
 TEST(VisibilityBlend, TransmittanceBlendIsExact) {
   const ModelConfig base = tinyOneGroup();
   const AtmosphereModel clearer = testing::cachedModel(configAtVisibility(base, 10.0));
@@ -122,9 +122,9 @@ TEST(VisibilityBlend, TransmittanceBlendIsExact) {
   const auto& b = blend.tables(0).transmittance.texels;
   for (std::size_t i = 0; i < e.size(); ++i)
     for (glm::length_t c = 0; c < 4; ++c)
-      if (e[i][c] > 1e-20) worst = std::max(worst, std::abs(b[i][c] / e[i][c] - 1.0));
+      if (e[i][c] > 0.0) worst = std::max(worst, std::abs(b[i][c] / e[i][c] - 1.0));
   }
-  std::printf("transmittance, 7 km blended from 5 and 10 km (and 2 km): worst relative difference %.2e\n", worst);
+  std::printf("optical depth, 7 km blended from 5 and 10 km (and 2 km): worst relative difference %.2e\n", worst);
   EXPECT_LT(worst, 1e-5);
 }
 
@@ -186,7 +186,7 @@ TEST(VisibilityBlend, SkyWithinTenPercentOfTheExactTables) {
     steps.push_back(configAtVisibility(base, km));
     models.push_back(testing::cachedModel(steps.back()));
   }
-  for (const double km : {30.0, 14.0, 7.0, 3.2, 1.4}) {
+  for (const double km : {100.0, 30.0, 14.0}) {
     const ModelConfig target = configAtVisibility(base, km);
     const AtmosphereModel exact = testing::cachedModel(target);
     const auto b = bracketSteps(steps, target);

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "physics/atmosphere/orders_tail.h"
 #include "physics/atmosphere/precompute.h"
 #include "render/gl/egl_context.h"
 #include "render/gl/gl_context.h"
@@ -170,8 +171,8 @@ class AtmosphereGpuPrecompute::Run {
   Run(const Programs& programs, const ModelConfig& config, const atmosphere::TableSizes& densitySizes,
       const GpuPrecomputeOptions& options, GpuPrecomputeTiming& timing)
       : p_(programs), s_(config.sizes), density_(densitySizes), options_(options), t_(timing),
-        orders_(config.options.scatteringOrders), sw_(s_.scatteringNu * s_.scatteringMuS), sh_(s_.scatteringMu),
-        sd_(s_.scatteringR), x_(s_, densitySizes) {}
+        orders_(config.options.scatteringOrders), ordersTail_(config.options.ordersTail),
+        sw_(s_.scatteringNu * s_.scatteringMuS), sh_(s_.scatteringMu), sd_(s_.scatteringR), x_(s_, densitySizes) {}
 
   GroupTables group(const AtmosphereParameters& params, std::size_t g, std::size_t groups) {
     const auto groupStart = Clock::now();
@@ -180,6 +181,13 @@ class AtmosphereGpuPrecompute::Run {
     directPasses();
     for (int order = 2; order <= orders_; ++order) scatteringOrder(order);
     GroupTables tables = readBack();
+    if (tail()) {  // the CPU's code, on the last two orders read back
+      shader::cpu_texture::sampler3D last(sw_, sh_, sd_);
+      shader::cpu_texture::sampler2D lastIrradiance(s_.irradianceMuS, s_.irradianceR);
+      download(x_.delta_multiple, last.texels);
+      download(x_.delta_irradiance, lastIrradiance.texels);
+      atmosphere::addOrdersTail(params, before_, last, lastIrradiance, tables);
+    }
     if (options_.progress) {
       char line[96];
       std::snprintf(line, sizeof line, "group %zu/%zu done (%.1f s)", g + 1, groups, since(groupStart));
@@ -277,6 +285,10 @@ class AtmosphereGpuPrecompute::Run {
     dispatch(p_.indirect, s_.irradianceMuS, s_.irradianceR, 1, t_.indirect_irradiance, "indirect irradiance" + orderText);
     glBindTextureUnit(SKYIG_UNIT_DELTA_MULTIPLE, 0);
     glBindTextureUnit(SKYIG_UNIT_DELTA_DENSITY, x_.delta_density);
+    if (tail() && order == orders_) {  // keep the order before the last for the tail
+      before_ = shader::cpu_texture::sampler3D(sw_, sh_, sd_);
+      download(x_.delta_multiple, before_.texels);
+    }
     image(SKYIG_IMAGE_DELTA_MULTIPLE, x_.delta_multiple, GL_WRITE_ONLY);
     image(SKYIG_IMAGE_SCATTERING, x_.scattering, GL_READ_WRITE);
     dispatch(p_.multiple, sw_, sh_, sd_, t_.multiple_scattering, "multiple scattering" + orderText);
@@ -330,7 +342,12 @@ class AtmosphereGpuPrecompute::Run {
   const atmosphere::TableSizes& density_;
   const GpuPrecomputeOptions& options_;
   GpuPrecomputeTiming& t_;
-  const int orders_, sw_, sh_, sd_;
+  bool tail() const { return ordersTail_ && orders_ >= 3; }
+
+  const int orders_;
+  const bool ordersTail_;
+  const int sw_, sh_, sd_;
+  shader::cpu_texture::sampler3D before_;  // the order before the last (tail())
   Textures x_;
   std::string prefix_;
 };

@@ -1,4 +1,5 @@
-// GPU precomputation, step 1 (Bruneton & Neyret 2008, algorithm 4.1): T(r, mu). A pass
+// GPU precomputation, step 1 (Bruneton & Neyret 2008, algorithm 4.1): the optical depth
+// tau(r, mu) to the top, from which T(r, mu) = exp(-tau). A pass
 // (GLSL only); the physics is in transmittance.glsl. Host sequence: physics/atmosphere/
 // precompute.cpp does the same steps on the CPU; render/glsl/bindings.h names the bindings.
 #include "render/glsl/bindings.h"
@@ -11,5 +12,5 @@ void main() {
   if (any(greaterThanEqual(texel, imageSize(transmittance_out)))) {
     return;
   }
-  imageStore(transmittance_out, texel, computeTransmittanceTexel(atm, vec2(texel) + vec2(0.5)));
+  imageStore(transmittance_out, texel, computeOpticalDepthTexel(atm, vec2(texel) + vec2(0.5)));
 }

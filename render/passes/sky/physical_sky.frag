@@ -52,6 +52,10 @@
 // in render/glsl/frame_uniforms.h, the tone block in render/glsl/tone_uniforms.h.)
 #include "render/passes/sky/physical_sky_uniforms.glsl"
 #include "render/glsl/band.glsl"
+#include "physics/weather/fog_layer.glsl"
+// The haze below the tables' visibility, then the ground fog (sky/fog_state.h); extinction 0: none.
+uniform FogLayer fogLayers[2];
+uniform float cameraHeight;  // metres above the ground, from the CPU's double (not the float radius)
 #ifdef SKYIG_NIGHT_LAYER
 #include "render/glsl/frame_uniforms.h"
 #include "physics/night/transmittance_to_space.glsl"
@@ -103,7 +107,8 @@ float frameUMu(float rmu, bool ground, out float d) {
   return 0.5 + 0.5 * textureCoordFromUnitRange((d - d_min) / (rho + H - d_min), atm.scattering_mu_size / 2.0);
 }
 
-vec3 insideRec709(vec3 view) {
+// d: the distance the view ray goes on (to the ground, or out of the atmosphere).
+vec3 insideRec709(vec3 view, out float d) {
   float r = frameRadii.x;
   float rmu = dot(camera, view);
 #if defined(SKYIG_SKY)
@@ -114,7 +119,6 @@ vec3 insideRec709(vec3 view) {
   if (!ground) discard;
 #endif
 #endif
-  float d;
   float u_mu = frameUMu(rmu, ground, d);
   float nu = dot(view, sunDirectionP);
 #ifdef SKYIG_SUNLESS
@@ -153,7 +157,8 @@ void main() {
   // In a goggle's band the sum is weighted as sunlit sky, its other parts scaled above by their
   // weights' ratios to it (render/glsl/band.glsl).
   vec3 view = normalize(vViewRay);
-  vec3 radiance = max(inBand(insideRec709(view), lightWeights.x), vec3(0.0));
+  float d;
+  vec3 radiance = max(inBand(insideRec709(view, d), lightWeights.x), vec3(0.0));
 #ifdef SKYIG_NIGHT_LAYER
   nightLayerHere = nightLayerAt(gl_FragCoord.xy);
 #if defined(SKYIG_NIGHT_LAYER_TRANSMITTED)
@@ -163,6 +168,10 @@ void main() {
               (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
 #endif
 #endif
+  // Fog and mist over everything behind them (physics/weather/fog_layer.glsl); the camera is on
+  // the model's +z axis, so view.z is the cosine to its vertical.
+  radiance = throughFog(fogLayers[1], throughFog(fogLayers[0], radiance, cameraHeight, view.z, d),
+                        cameraHeight, view.z, d);
   outRadiance = vec4(radiance, 1.0);
 #ifdef SKYIG_FOLD_TONE
   outDisplay = toneDisplayValue(radiance, vec3(0.0), gl_FragCoord.xy);  // no point source drawn yet

@@ -52,7 +52,8 @@ PhysicalSkyPass::Program::Program(const char* vertex, const char* fragment, cons
       radii(glGetUniformLocation(program.id(), "frameRadii")),
       angles(glGetUniformLocation(program.id(), "frameAngles")),
       groundCap(glGetUniformLocation(program.id(), "groundCap")),
-      nightGround(glGetUniformLocation(program.id(), "nightGroundRadiance")) {}
+      nightGround(glGetUniformLocation(program.id(), "nightGroundRadiance")),
+      fog(program.id()) {}
 
 PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame, const char* insideFragment)
     : slicesPerFrame_(slicesPerFrame),
@@ -329,6 +330,7 @@ void PhysicalSkyPass::prepare(const Program& program, const Frame& f) const {
     glProgramUniform3fv(program.program.id(), program.moonScale, 1, &f3(f.moonlightScale)[0]);
   }
   if (f.night->texture) glProgramUniform3fv(program.program.id(), program.nightGround, 1, &f3(f.night->groundRadiance)[0]);
+  program.fog.set(program.program.id(), fog_, glm::length(f.camera) - current_.model->parameters(0).bottom_radius);
   program.program.use();
 }
 

@@ -10,6 +10,7 @@
 #include "render/gl/gl_program.h"
 #include "render/passes/tone/folded_tone.h"
 #include "render/passes/common/night_layer.h"
+#include "render/passes/sky/fog_uniforms.h"
 #include "render/passes/sky/sky_variant.h"
 #include "physics/atmosphere/physical_camera.h"
 
@@ -63,6 +64,10 @@ class PhysicalSkyPass {
             const glm::dvec4& sunRefraction = glm::dvec4(0.0), const FoldedTone& tone = {},
             const NightLayer& night = {}, bool sunlit = true);
 
+  // The fog layers the next draw() composes over the sky (sky/fog_state.h, drawnFogLayers); none
+  // (extinction 0) until set.
+  void setFog(const std::array<weather::FogLayer, 2>& layers) { fog_ = layers; }
+
   const atmosphere::AtmosphereModel* current() const { return current_.model.get(); }
   const atmosphere::AtmosphereModel* pending() const { return pending_ ? pending_->set.model.get() : nullptr; }
   // How many draw() calls from now the pending model is first drawn (0: none pending).
@@ -107,6 +112,7 @@ class PhysicalSkyPass {
     Program(const char* vertex, const char* fragment, const std::string& defines = "");
     GlProgram program;
     GLint camera, sun, sunRefraction, moonOn, moonDirection, moonScale, radii, angles, groundCap, nightGround;
+    FogUniforms fog;
   };
   // The program of a variant, compiled the first time a frame needs it (a node uses a few of the
   // many); the HDR variants without the night layer or the tone are compiled with the pass.
@@ -162,6 +168,7 @@ class PhysicalSkyPass {
   TableSet current_;
   std::unique_ptr<Pending> pending_;
   std::size_t lastUploadBytes_ = 0;
+  std::array<weather::FogLayer, 2> fog_{};
   double lastUploadSeconds_ = 0.0;
 };
 

@@ -82,10 +82,16 @@ TEST(AtmosphereConditions, KoschmiederVisibility) {
   const Medium m = applyConditions(clear, hazy);
   EXPECT_NEAR(m.mieExtinctionPerM, 3.912 / 5000.0 - 13.558e-6, 1e-9);
   EXPECT_NEAR(visibilityOf(m), 5.0, 1e-9);
-  hazy.visibilityKm = 400.0;  // clearer than clean air allows
-  EXPECT_THROW(applyConditions(clear, hazy), std::invalid_argument);
-  hazy.visibilityKm = -1.0;
-  EXPECT_THROW(applyConditions(clear, hazy), std::invalid_argument);
+  // The added aerosol is water: the absorption stays the medium's, 4.44e-6 x (1 - 0.9) m^-1.
+  EXPECT_NEAR(m.mieExtinctionPerM * (1.0 - m.mieSingleScatteringAlbedo), 4.44e-7, 1e-15);
+  EXPECT_GT(m.mieSingleScatteringAlbedo, 0.999);
+  hazy.visibilityKm = 400.0;  // clearer than clean air allows: clean air, no aerosols
+  EXPECT_EQ(applyConditions(clear, hazy).mieExtinctionPerM, 0.0);
+  EXPECT_NEAR(visibilityOf(applyConditions(clear, hazy)), cleanAirVisibilityKm(clear), 1e-9);
+  for (double bad : {-1.0, 0.0, std::nan(""), HUGE_VAL}) {
+    hazy.visibilityKm = bad;
+    EXPECT_THROW(applyConditions(clear, hazy), std::invalid_argument) << bad;
+  }
 }
 
 TEST(AtmosphereConditions, HumidityGrowsTheAerosolsAndAlbedoApplies) {

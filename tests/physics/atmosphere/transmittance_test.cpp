@@ -23,7 +23,7 @@ class TransmittanceTest : public ::testing::Test {
                                                     static_cast<int>(atm_.transmittance_height));
     parallelFor(transmittance_.height, 0, [](int y) {
       for (int x = 0; x < transmittance_.width; ++x) {
-        transmittance_.at(x, y) = shader::computeTransmittanceTexel(atm_, glm::dvec2(x + 0.5, y + 0.5));
+        transmittance_.at(x, y) = shader::computeOpticalDepthTexel(atm_, glm::dvec2(x + 0.5, y + 0.5));
       }
     });
   }

@@ -18,7 +18,7 @@ void main() {
   l += sunAndSkyIrradiance(atm, transmittance_texture, irradiance_texture, cam, vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0), sky);
   l += groundRadiance(atm, transmittance_texture, scattering_texture, single_mie_texture, irradiance_texture, cam, vec3(0.0, 0.0, atm.bottom_radius), atm.ground_albedo, vec3(0.0, 0.0, 1.0), t);
   l += sunDiscRadiance(atm, transmittance_texture, cam, vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0));
-  l += computeTransmittanceTexel(atm, vec2(gl_GlobalInvocationID.xy));
+  l += computeOpticalDepthTexel(atm, vec2(gl_GlobalInvocationID.xy));
   l += computeDirectIrradianceTexel(atm, transmittance_texture, vec2(gl_GlobalInvocationID.xy));
   vec4 r; vec4 m;
   computeSingleScatteringTexel(atm, transmittance_texture, vec3(gl_GlobalInvocationID), r, m);

@@ -1,0 +1,63 @@
+#include "node/host/host_weather.h"
+
+#include "node/common/config_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace skyig::services {
+
+HostWeather HostWeather::parse(const std::string& text, const std::string& sourceName) {
+  HostWeather w;
+  std::istringstream in(text);
+  std::string line;
+  int lineNumber = 0;
+  while (std::getline(in, line)) {
+    ++lineNumber;
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    if (line.find_first_not_of(" \t\r,") == std::string::npos) continue;
+    if (line.find_first_of("abcdfghijklmnopqrstuvwxyzABCDFGHIJKLMNOPQRSTUVWXYZ_") != std::string::npos && w.steps_.empty())
+      continue;  // a header line
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream fields(line);
+    WeatherStep s;
+    std::string extra;
+    auto fail = [&](const std::string& why) { throw ConfigError(sourceName + ":" + std::to_string(lineNumber) + ": " + why); };
+    if (!(fields >> s.timeS >> s.visibilityM >> s.humidityPct >> s.fogVisibilityM >> s.fogTopM) || (fields >> extra))
+      fail("expected 5 numbers: time_s, visibility_m, humidity_pct, fog_visibility_m, fog_top_m");
+    for (double v : {s.timeS, s.visibilityM, s.humidityPct, s.fogVisibilityM, s.fogTopM})
+      if (!std::isfinite(v)) fail("a value is not a finite number");
+    if (!(s.visibilityM > 0.0)) fail("visibility_m " + std::to_string(s.visibilityM) + " must be above 0");
+    if (s.humidityPct < 0.0 || s.humidityPct > 100.0) fail("humidity_pct " + std::to_string(s.humidityPct) + " must be in [0, 100]");
+    if (s.fogVisibilityM < 0.0 || (s.fogVisibilityM > 0.0 && !(s.fogTopM > 0.0)))
+      fail("a fog needs a visibility above 0 and a top above the ground (fog_visibility_m 0: none)");
+    if (!w.steps_.empty() && s.timeS <= w.steps_.back().timeS) fail("times must increase");
+    w.steps_.push_back(s);
+  }
+  if (w.steps_.empty()) throw ConfigError(sourceName + ": a weather script needs at least one line");
+  return w;
+}
+
+HostWeather HostWeather::load(const std::string& file) {
+  std::ifstream in(file);
+  if (!in) throw ConfigError(file + ": cannot open the weather script");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse(text.str(), file);
+}
+
+HostWeather HostWeather::constant(const WeatherStep& step) {
+  HostWeather w;
+  w.steps_.push_back(step);
+  return w;
+}
+
+const WeatherStep& HostWeather::at(double t) const {
+  auto next = std::upper_bound(steps_.begin(), steps_.end(), t, [](double v, const WeatherStep& s) { return v < s.timeS; });
+  return next == steps_.begin() ? steps_.front() : *(next - 1);
+}
+
+}  // namespace skyig::services

@@ -1,0 +1,60 @@
+#include "physics/weather/fog_layer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+namespace skyig::weather {
+
+namespace {
+
+constexpr double kKoschmieder = 3.912;  // ln 50: the 2% contrast (physics/atmosphere/conditions.h)
+
+[[noreturn]] void bad(const char* name, double value, const char* expected) {
+  char text[160];
+  std::snprintf(text, sizeof text, "fog layer: %s = %g is invalid (expected %s)", name, value, expected);
+  throw std::invalid_argument(text);
+}
+
+double rec709Luminance(const glm::dvec3& c) { return 0.2126729 * c.x + 0.7151522 * c.y + 0.0721750 * c.z; }
+
+}  // namespace
+
+double tablesVisibilityKm(double visibilityKm) { return std::max(visibilityKm, kTablesVisibilityKm); }
+
+sky::FogSpec hazeBelowTables(double visibilityKm, double scaleHeightM) {
+  if (!(visibilityKm > 0.0) || visibilityKm >= kTablesVisibilityKm) return {};
+  const double extinctionPerKm = kKoschmieder / visibilityKm - kKoschmieder / kTablesVisibilityKm;
+  return {0.0, scaleHeightM, kKoschmieder / extinctionPerKm};
+}
+
+void validate(const sky::FogSpec& s) {
+  if (!(s.visibilityKm >= 0.0) || !std::isfinite(s.visibilityKm)) bad("visibility_km", s.visibilityKm, "0 (none) or more");
+  if (s.visibilityKm == 0.0) return;
+  if (!(s.bottomM >= 0.0) || !std::isfinite(s.bottomM)) bad("bottom_m", s.bottomM, "0 or more, above the ground");
+  if (!(s.topM > s.bottomM) || !std::isfinite(s.topM)) bad("top_m", s.topM, "above the bottom");
+}
+
+FogLayer makeFogLayer(const sky::FogSpec& spec, double planetRadiusM, double groundAlbedo,
+                      const glm::dvec3& topIrradiance) {
+  validate(spec);
+  FogLayer f{};
+  f.planet_radius = planetRadiusM;
+  f.bottom_height = spec.bottomM;
+  f.top_height = spec.topM;
+  f.extinction = spec.visibilityKm > 0.0 ? kKoschmieder / (spec.visibilityKm * 1000.0) : 0.0;
+  f.asymmetry = kDropletAsymmetry;
+  f.ground_albedo = groundAlbedo;
+  f.top_irradiance = topIrradiance;
+  return f;
+}
+
+double throughFogLuminance(const FogLayer& fog, double behindCdM2, double h, double mu, double d) {
+  FogLayer grey = fog;
+  grey.top_irradiance = glm::dvec3(rec709Luminance(fog.top_irradiance));
+  return shader::throughFog(grey, glm::dvec3(behindCdM2), h, mu, d).x;
+}
+
+}  // namespace skyig::weather

@@ -1,0 +1,83 @@
+#ifndef SKYIG_WEATHER_FOG_LAYER_GLSL
+#define SKYIG_WEATHER_FOG_LAYER_GLSL
+// A layer of fog or mist over the clear-air sky: a homogeneous slab of water droplets between two
+// spheres about the planet's centre, grey (droplets far larger than the wavelength), lit from its
+// top by the sun and the sky the clear-air tables give there. Its light is the two-stream
+// solution of a non-absorbing slab (Bohren 1987, "Multiple scattering of light and some of its
+// observable consequences", Am. J. Phys. 55(6), 524-533: R = (1 - g) tau / (2 + (1 - g) tau),
+// T = 1 - R, the up and down fluxes linear in the optical depth inside) over a Lambertian ground
+// (adding the ground's reflections: R + T^2 a / (1 - R a)). Closed forms, so a new fog costs no
+// table and shows the frame after the host sends it. physics/weather/fog_layer.h derives a
+// layer from the host's weather; the sky pass and the CPU (the eye's adaptation) compose with
+// throughFog.
+#include "physics/common/constants.glsl"
+#include "physics/weather/fog_layer_parameters.glsl"
+
+
+// Length of the part of [0, d] of the ray from height h (above a sphere of radius R) with cosine
+// mu to the vertical that lies below height h_s: between the roots of t^2 + 2 r mu t + r^2 - r_s^2
+// (r = R + h, r_s = R + h_s), taken as q and c / q with c = (h - h_s)(2R + h + h_s): neither
+// cancels in single precision near the planet's radius.
+Float chordBelowHeight(Float R, Float h, Float mu, Float d, Float h_s) {
+  Float b = (R + h) * mu;
+  Float c = (h - h_s) * (2.0 * R + h + h_s);
+  Float discriminant = b * b - c;
+  if (discriminant <= 0.0) return 0.0;
+  Float q = -(b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant));
+  Float t0 = q;
+  Float t1 = q != 0.0 ? c / q : 0.0;
+  return max(min(max(t0, t1), d) - max(min(t0, t1), 0.0), 0.0);
+}
+
+// Metres of the ray's first d metres inside the layer, from height h.
+Float fogPathLength(IN(FogLayer) fog, Float h, Float mu, Float d) {
+  return max(chordBelowHeight(fog.planet_radius, h, mu, d, fog.top_height) -
+                 chordBelowHeight(fog.planet_radius, h, mu, d, fog.bottom_height),
+             0.0);
+}
+
+// Bohren 1987, eq. 31 (two-stream, no absorption): the slab's reflectance.
+Float fogSlabReflectance(Float tau, Float g) {
+  Float x = (1.0 - g) * tau;
+  return x / (2.0 + x);
+}
+
+// Down- and upward flux over the irradiance at the top, at optical depth tau_in below the top of
+// a slab of depth tau over a ground of albedo a: linear between the slab's ends, 1 and
+// R + T a T' down from the top, T' = T / (1 - R a) and a T' at the bottom.
+vec2 fogFluxes(Float tau_in, Float tau, Float g, Float a) {
+  Float r = fogSlabReflectance(tau, g);
+  Float down_bottom = (1.0 - r) / (1.0 - r * a);
+  Float up_top = r + (1.0 - r) * a * down_bottom;
+  Float s = tau > 0.0 ? clamp(tau_in / tau, 0.0, 1.0) : 0.0;
+  return vec2(mix(1.0, down_bottom, s), mix(up_top, a * down_bottom, s));
+}
+
+// The fog's own radiance (cd/m^2) along a view of cosine mu_view to the vertical (up positive),
+// tau_in below its top: the downward flux seen looking up, the upward looking down, each a
+// Lambertian field (radiance = flux / pi), mixed by the view's cosine.
+vec3 fogRadiance(IN(FogLayer) fog, Float tau_in, Float mu_view) {
+  Float tau = fog.extinction * (fog.top_height - fog.bottom_height);
+  vec2 f = fogFluxes(tau_in, tau, fog.asymmetry, fog.ground_albedo);
+  Float up = 0.5 * (1.0 + mu_view);
+  return fog.top_irradiance * ((up * f.x + (1.0 - up) * f.y) / PI);
+}
+
+// What the eye at height h sees along a view of cosine mu where the clear air shows `behind` and
+// the ray ends d metres on (the ground, or the top of the atmosphere): the fog on the way dims it
+// by exp(-extinction s) and adds its own light times 1 - exp(-extinction s), its radiance taken at
+// the eye's depth in it (its top seen from above, its bottom from below), so a climb through the
+// top is seamless.
+vec3 throughFog(IN(FogLayer) fog, IN(vec3) behind, Float h, Float mu, Float d) {
+  if (fog.extinction <= 0.0) return behind;
+  Float t = exp(-fog.extinction * fogPathLength(fog, h, mu, d));
+  Float tau_in = fog.extinction * (fog.top_height - clamp(h, fog.bottom_height, fog.top_height));
+  return behind * t + fogRadiance(fog, tau_in, mu) * (1.0 - t);
+}
+
+// The fog's transmittance along a ray (the sun's light to the eye, a surface's to the eye).
+Float fogTransmittance(IN(FogLayer) fog, Float h, Float mu, Float d) {
+  return fog.extinction > 0.0 ? exp(-fog.extinction * fogPathLength(fog, h, mu, d)) : 1.0;
+}
+
+#endif

@@ -1,0 +1,18 @@
+#ifndef SKYIG_WEATHER_FOG_LAYER_PARAMETERS_GLSL
+#define SKYIG_WEATHER_FOG_LAYER_PARAMETERS_GLSL
+// The parameters of a fog layer (physics/weather/fog_layer.glsl), a struct of its own so that the
+// C++ side can pass it between translation units (physics/weather/weather_physics.h).
+// One layer; extinction 0: no fog. Heights in metres above the ground (a sphere of
+// planet_radius): kept apart from the radius so that single precision holds them to the
+// millimetre (a radius near 6.4e6 m holds half metres).
+struct FogLayer {
+  Float planet_radius;
+  Float bottom_height;
+  Float top_height;
+  Float extinction;      // per metre, at every wavelength (Koschmieder: 3.912 / visibility)
+  Float asymmetry;       // g of the droplets' phase function
+  Float ground_albedo;   // the ground under the layer
+  vec3 top_irradiance;   // linear Rec.709 lux on a horizontal surface at the top, from above
+};
+
+#endif

@@ -1,0 +1,35 @@
+#pragma once
+// The fog layers of a sky state (physics/weather/fog_layer.h) lit by its sun and moon: what the
+// sky pass composes over the clear air and the eye's view sphere weighs.
+#include <glm/vec3.hpp>
+
+#include <array>
+
+#include "physics/atmosphere/model.h"
+#include "physics/common/sky_conditions.h"
+#include "physics/weather/fog_layer.h"
+
+namespace skyig::sky {
+
+// The haze below the tables' visibility, then the ground fog; extinction 0: none.
+struct FogState {
+  std::array<weather::FogLayer, 2> sunlit{};        // lit at the top by the sun and its sky
+  std::array<glm::dvec3, 2> moonIrradiance{};       // the moon's share at each top (Rec.709 lux)
+  bool any() const { return sunlit[0].extinction > 0.0 || sunlit[1].extinction > 0.0; }
+};
+
+// The layers of `haze` and `fog` over `model`'s ground, lit at their tops by the sun in `sun`
+// (unit, the model's frame: up is +z at the camera) and the moon in `moon` scaled by
+// moonlightScale (linear Rec.709). Throws std::invalid_argument for a bad layer.
+FogState makeFogState(const atmosphere::AtmosphereModel& model, const FogSpec& haze, const FogSpec& fog,
+                      const glm::dvec3& sun, const glm::dvec3& moon, const glm::dvec3& moonlightScale);
+
+// The layers as the sky pass draws them: each lit by the sun and the moon together.
+std::array<weather::FogLayer, 2> drawnFogLayers(const FogState& fog);
+
+// What the eye h metres above the ground sees through every layer of `layers` along (mu, d) where
+// the clear air shows `behindCdM2` (luminances; the fog is grey).
+double throughFogLayers(const std::array<weather::FogLayer, 2>& layers, double behindCdM2, double h, double mu,
+                        double d);
+
+}  // namespace skyig::sky

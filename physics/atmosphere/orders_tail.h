@@ -2,11 +2,10 @@
 // The orders of scattering after the last one computed, summed as a geometric series. Past the
 // first few orders, successive orders of scattering in a plane-parallel medium shrink by a near
 // constant factor q, the largest eigenvalue of the scattering operator (the light one order
-// passes on to the next), so the orders left sum to L_n (q + q^2 + ...) = L_n q / (1 - q). This
-// is the extrapolation of the successive-orders codes (6S: Vermote et al. 1997, "Second
-// Simulation of the Satellite Signal in the Solar Spectrum, 6S: An Overview", IEEE TGRS 35(3))
-// and the closure of Hillaire 2020 ("A Scalable and Production Ready Sky and Atmosphere
-// Rendering Technique"), whose transfer F_ms = 1 / (1 - f_ms) sums the orders with one ratio.
+// passes on to the next), so the orders left sum to L_n (q + q^2 + ...) = L_n q / (1 - q): the
+// closure of Hillaire 2020 ("A Scalable and Production Ready Sky and Atmosphere Rendering
+// Technique", EGSR), whose multiple-scattering transfer F_ms = 1 / (1 - f_ms) sums the orders
+// with one ratio, and the geometric extrapolation of successive-orders-of-scattering solvers.
 // q is measured as the ratio of the last two orders summed over the whole table, per wavelength
 // (a texel's own ratio is noisy while the angular shape of the orders still changes: it
 // overshot sixteen orders threefold at 5 km visibility).

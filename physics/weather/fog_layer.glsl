@@ -13,7 +13,6 @@
 #include "physics/common/constants.glsl"
 #include "physics/weather/fog_layer_parameters.glsl"
 
-
 // Length of the part of [0, d] of the ray from height h (above a sphere of radius R) with cosine
 // mu to the vertical that lies below height h_s: between the roots of t^2 + 2 r mu t + r^2 - r_s^2
 // (r = R + h, r_s = R + h_s), taken as q and c / q with c = (h - h_s)(2R + h + h_s): neither
@@ -36,7 +35,7 @@ Float fogPathLength(IN(FogLayer) fog, Float h, Float mu, Float d) {
              0.0);
 }
 
-// Bohren 1987, eq. 31 (two-stream, no absorption): the slab's reflectance.
+// Bohren 1987 (two-stream, no absorption): the slab's reflectance.
 Float fogSlabReflectance(Float tau, Float g) {
   Float x = (1.0 - g) * tau;
   return x / (2.0 + x);

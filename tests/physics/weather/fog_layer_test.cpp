@@ -19,7 +19,7 @@ FogLayer fog200mOf400m() {
 }
 
 TEST(FogSlab, ANonAbsorbingSlabReflectsWhatItDoesNotTransmit) {
-  // Bohren 1987, eq. 31: R = (1 - g) tau / (2 + (1 - g) tau); T = 1 - R (no absorption). A cloud
+  // Bohren 1987, two-stream: R = (1 - g) tau / (2 + (1 - g) tau); T = 1 - R (no absorption). A cloud
   // of tau = 10 with g = 0.85: R = 1.5 / 3.5 = 0.4286.
   EXPECT_NEAR(shader::fogSlabReflectance(10.0, 0.85), 1.5 / 3.5, 1e-12);
   EXPECT_EQ(shader::fogSlabReflectance(0.0, 0.85), 0.0);

@@ -47,13 +47,6 @@ std::array<double, 9> shBasis(const glm::dvec3& d) {
 // A ray's length past any ground or layer: "to the top of the atmosphere and beyond".
 constexpr double kBeyondTheGround = 1e9;
 
-// The fog layers' transmittance along a ray of cosine mu from h metres above the ground, d long.
-double fogTransmittanceAlong(const FogState& fog, double h, double mu, double d) {
-  double t = 1.0;
-  for (const weather::FogLayer& f : fog.sunlit) t *= shader::fogTransmittance(f, h, mu, d);
-  return t;
-}
-
 ClientDirectLight physicalSun(const SkyState& s, const atmosphere::AtmosphereModel& model, const glm::dvec3& camera) {
   ClientDirectLight out;
   out.direction = enuDirection(s.sunAzimuth, s.sunAltitude);
@@ -64,8 +57,7 @@ ClientDirectLight physicalSun(const SkyState& s, const atmosphere::AtmosphereMod
   out.normalLux = model.converter().luminance(normal);
   out.colour = colourOf(model.converter().toRec709(normal));
   // Through the fog layers on the way to the sun (grey: the colour stays).
-  const double t = fogTransmittanceAlong(s.fog, glm::length(camera) - model.parameters(0).bottom_radius,
-                                         out.direction.z, kBeyondTheGround);
+  const double t = fogTransmittanceToSpace(s.fog, model, s.observer.heightM, std::asin(out.direction.z));
   out.horizontalLux *= t;
   out.normalLux *= t;
   return out;

@@ -1,5 +1,9 @@
 #include "sky/fog_state.h"
 
+#include "physics/atmosphere/physical_camera.h"
+
+#include <cmath>
+
 namespace skyig::sky {
 
 namespace {
@@ -27,6 +31,14 @@ FogState makeFogState(const atmosphere::AtmosphereModel& model, const FogSpec& h
     if (moonlightScale != glm::dvec3(0.0)) out.moonIrradiance[i] = irradianceAt(model, top, moon) * moonlightScale;
   }
   return out;
+}
+
+double fogTransmittanceToSpace(const FogState& fog, const atmosphere::AtmosphereModel& model, double heightM,
+                               double elevationRad) {
+  const double h = glm::length(atmosphere::physicalCamera(model, heightM)) - model.parameters(0).bottom_radius;
+  double t = 1.0;
+  for (const weather::FogLayer& f : fog.sunlit) t *= shader::fogTransmittance(f, h, std::sin(elevationRad), 1e9);
+  return t;
 }
 
 std::array<weather::FogLayer, 2> drawnFogLayers(const FogState& fog) {

@@ -24,6 +24,11 @@ struct FogState {
 FogState makeFogState(const atmosphere::AtmosphereModel& model, const FogSpec& haze, const FogSpec& fog,
                       const glm::dvec3& sun, const glm::dvec3& moon, const glm::dvec3& moonlightScale);
 
+// The layers' transmittance from an observer heightM above the ground (physicalCamera's height)
+// to space at elevation e (radians): what the stars, the moon and the night's light keep.
+double fogTransmittanceToSpace(const FogState& fog, const atmosphere::AtmosphereModel& model, double heightM,
+                               double elevationRad);
+
 // The layers as the sky pass draws them: each lit by the sun and the moon together.
 std::array<weather::FogLayer, 2> drawnFogLayers(const FogState& fog);
 

@@ -207,6 +207,13 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
   const atmosphere::Medium medium = s.conditions.atmosphere ? s.conditions.atmosphere->config().medium : atmosphere::Medium{};
   SkyStateCaches own;
   s.extinction = (caches ? *caches : own).extinction(medium, observer.heightM);
+  if (s.conditions.model == SkyModel::Physical) {
+    s.fog = makeFogState(*s.conditions.atmosphere, s.conditions.haze, s.conditions.fog,
+                         enuDirection(s.sunAzimuth, s.sunAltitude), s.moonDirection, s.moonlightScale);
+    // What comes from beyond the air (moon, planets, stars, the night's light) through the fog too.
+    if (s.fog.any()) s.extinction = std::make_shared<const atmosphere::ExtinctionProfile>(s.extinction->dimmedBy(
+                         [&](double e) { return fogTransmittanceToSpace(s.fog, *s.conditions.atmosphere, observer.heightM, e); }));
+  }
   s.starField = starFieldOf(s);
   if (s.ephemeris) {
     s.moonDisc = std::make_shared<const night::MoonDisc>(night::makeMoonDisc(night::moonPlacement(*s.ephemeris), s.extinction));
@@ -217,9 +224,6 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
   }
   if (s.conditions.model != SkyModel::Physical)
     s.sky = makeAnalyticSky(s.conditions, s.sunAzimuth, s.sunAltitude, s.sunApparentAltitude);
-  else
-    s.fog = makeFogState(*s.conditions.atmosphere, s.conditions.haze, s.conditions.fog,
-                         enuDirection(s.sunAzimuth, s.sunAltitude), s.moonDirection, s.moonlightScale);
   s.glare = glareSources(s);
   // The eye adapts to what it sees over the whole view sphere: sky and terrain, sunlit and
   // moonlit, with the night's own light (sky/view_sphere.h); its log-mean is the scene's level.

@@ -58,11 +58,6 @@ ViewSphere viewSphere(const SkyState& s) {
   auto cells = std::make_shared<std::vector<ViewCellLight>>();
   cells->reserve(kMu * kPhi);
   const std::array<weather::FogLayer, 2> moonFog = moonlitFog(s.fog);
-  const std::array<weather::FogLayer, 2> blackFog = [&] {  // the night's own light: only dimmed
-    std::array<weather::FogLayer, 2> f = s.fog.sunlit;
-    for (weather::FogLayer& l : f) l.top_irradiance = glm::dvec3(0.0);
-    return f;
-  }();
   forEachEqualAreaCell(kMu, kPhi, [&](const glm::dvec3& view, double cell) {
     double sunlit = 0.0, moonlit = 0.0, own = 0.0;
     const double d = model ? groundDistance(*model, camera, view) : kFar;
@@ -74,11 +69,11 @@ ViewSphere viewSphere(const SkyState& s) {
     }
     if (night && view.z > 0.0) own = shader::rec709Luminance(night::nightDiffuseRadianceWithoutMap(*night, view));
     if (view.z < 0.0) own = shader::rec709Luminance(s.nightGroundRadiance);
-    if (s.fog.any()) {  // the sky pass's composite (physics/weather/fog_layer.glsl), per light
+    if (s.fog.any()) {  // the sky pass's composite (physics/weather/fog_layer.glsl), per light;
+      // the night's own light came through the fog already (the state's extinction profile)
       const double height = glm::length(camera) - model->parameters(0).bottom_radius;
       sunlit = throughFogLayers(s.fog.sunlit, sunlit, height, view.z, d);
       moonlit = throughFogLayers(moonFog, moonlit, height, view.z, d);
-      own = throughFogLayers(blackFog, own, height, view.z, d);
     }
     const double l = sunlit + moonlit + own;
     cells->push_back({static_cast<float>(sunlit), static_cast<float>(moonlit), static_cast<float>(own)});

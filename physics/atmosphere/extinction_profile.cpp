@@ -72,6 +72,16 @@ ExtinctionProfile::ExtinctionProfile(const Medium& medium, double altitudeM,
   for (int s = 0; s < kSamples; ++s) rec709Table_[s] = glm::vec3(converter.toRec709(spectral_[s]) / sun);
 }
 
+ExtinctionProfile ExtinctionProfile::dimmedBy(const std::function<double(double)>& grey) const {
+  ExtinctionProfile out = *this;
+  for (int s = 0; s < kSamples; ++s) {
+    const double t = std::clamp(grey(sampleElevation(s)), 0.0, 1.0);
+    for (double& v : out.spectral_[static_cast<std::size_t>(s)]) v *= t;
+    out.rec709Table_[static_cast<std::size_t>(s)] *= static_cast<float>(t);
+  }
+  return out;
+}
+
 std::vector<double> ExtinctionProfile::spectral(double elevationRad) const {
   const auto [i0, i1, f] = bracket(elevationRad);
   std::vector<double> out(wavelengths_.size());

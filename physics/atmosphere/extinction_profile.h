@@ -6,6 +6,7 @@
 // medium, with no precomputed tables, so it serves every sky model.
 #include <glm/vec3.hpp>
 
+#include <functional>
 #include <vector>
 
 #include "physics/atmosphere/medium.h"
@@ -39,6 +40,10 @@ class ExtinctionProfile {
   const std::vector<glm::vec3>& rec709Table() const { return rec709Table_; }
   // Texture coordinate of an elevation, matching rec709Table().
   static double textureCoordinate(double elevationRad);
+
+  // The profile seen through something grey besides the medium (a fog layer,
+  // physics/weather/fog_layer.h): every sample times grey(elevation in radians), in [0, 1].
+  ExtinctionProfile dimmedBy(const std::function<double(double)>& grey) const;
 
  private:
   double altitudeM_;

@@ -159,6 +159,11 @@ void main() {
   vec3 view = normalize(vViewRay);
   float d;
   vec3 radiance = max(inBand(insideRec709(view, d), lightWeights.x), vec3(0.0));
+  // Fog and mist in front of the air's light (physics/weather/fog_layer.glsl); the camera is on
+  // the model's +z axis, so view.z is the cosine to its vertical. The night's layer below came
+  // through the fog already (the state's extinction profile, sky/sky_state.cpp).
+  radiance = throughFog(fogLayers[1], throughFog(fogLayers[0], radiance, cameraHeight, view.z, d),
+                        cameraHeight, view.z, d);
 #ifdef SKYIG_NIGHT_LAYER
   nightLayerHere = nightLayerAt(gl_FragCoord.xy);
 #if defined(SKYIG_NIGHT_LAYER_TRANSMITTED)
@@ -168,10 +173,6 @@ void main() {
               (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
 #endif
 #endif
-  // Fog and mist over everything behind them (physics/weather/fog_layer.glsl); the camera is on
-  // the model's +z axis, so view.z is the cosine to its vertical.
-  radiance = throughFog(fogLayers[1], throughFog(fogLayers[0], radiance, cameraHeight, view.z, d),
-                        cameraHeight, view.z, d);
   outRadiance = vec4(radiance, 1.0);
 #ifdef SKYIG_FOLD_TONE
   outDisplay = toneDisplayValue(radiance, vec3(0.0), gl_FragCoord.xy);  // no point source drawn yet

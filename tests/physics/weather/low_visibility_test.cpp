@@ -13,6 +13,7 @@
 #include <string>
 
 #include "physics/atmosphere/conditions.h"
+#include "physics/atmosphere/extinction_profile.h"
 #include "physics/atmosphere/rec709_tables.h"
 #include "physics/common/units.h"
 #include "sky/fog_state.h"
@@ -159,6 +160,24 @@ INSTANTIATE_TEST_SUITE_P(FogToClearAir, LowVisibility,
                          [](const ::testing::TestParamInfo<double>& i) {
                            return "Metres" + std::to_string(static_cast<int>(std::lround(i.param * 1000.0)));
                          });
+
+
+// The stars, the moon and the night's light come through the fog as the sky does: the state's
+// extinction profile is dimmed by the layers (sky/sky_state.cpp), at 30 m in a 200 m fog of 400 m
+// by exp(-3.912 x 170 / 400) = 0.19% straight up and nothing near the horizon.
+TEST(FogAtNight, WhatComesFromBeyondTheAirIsDimmedByTheLayer) {
+  const AtmosphereModel model = atmosphere::testing::cachedModel(tablesConfig(40.0));
+  const glm::dvec3 up(0.0, 0.0, 1.0);
+  const sky::FogState fog = sky::makeFogState(model, {}, {0.0, 200.0, 0.4}, up, up, glm::dvec3(0.0));
+  const double h = 30.0;  // physicalCamera's height: at least a metre
+  const atmosphere::ExtinctionProfile clear(model.config().medium, h);
+  const atmosphere::ExtinctionProfile dimmed =
+      clear.dimmedBy([&](double e) { return sky::fogTransmittanceToSpace(fog, model, h, e); });
+  const double zenith = 0.5 * 3.14159265358979323846;
+  EXPECT_NEAR(dimmed.rec709(zenith).g / clear.rec709(zenith).g, std::exp(-3.912 * 170.0 / 400.0), 1e-5);
+  EXPECT_LT(dimmed.rec709(2.0 * kDeg).g, 1e-12);
+  EXPECT_EQ(sky::fogTransmittanceToSpace(sky::FogState{}, model, h, zenith), 1.0);
+}
 
 }  // namespace
 }  // namespace skyig::weather

@@ -211,8 +211,11 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
     s.fog = makeFogState(*s.conditions.atmosphere, s.conditions.haze, s.conditions.fog,
                          enuDirection(s.sunAzimuth, s.sunAltitude), s.moonDirection, s.moonlightScale);
     // What comes from beyond the air (moon, planets, stars, the night's light) through the fog too.
-    if (s.fog.any()) s.extinction = std::make_shared<const atmosphere::ExtinctionProfile>(s.extinction->dimmedBy(
-                         [&](double e) { return fogTransmittanceToSpace(s.fog, *s.conditions.atmosphere, observer.heightM, e); }));
+    auto throughFog = [&](double e) {
+      return fogTransmittanceToSpace(s.fog, *s.conditions.atmosphere, observer.heightM, e);
+    };
+    if (s.fog.any())
+      s.extinction = std::make_shared<const atmosphere::ExtinctionProfile>(s.extinction->dimmedBy(throughFog));
   }
   s.starField = starFieldOf(s);
   if (s.ephemeris) {

@@ -107,7 +107,7 @@ const toml::table* subTable(TableReader& parent, const std::string& key) {
 // [weather]: a ground fog (physics/weather/fog_layer.h) until the host sends its own (CIGI
 // Weather Control layer 0): fog_visibility_km (0: none), fog_bottom_m, fog_top_m above the ground.
 void readWeather(TableReader& r, skyig::sky::FogSpec& fog) {
-  fog.visibilityKm = r.number("fog_visibility_km", fog.visibilityKm, 0.0, 1000.0);
+  fog.visibilityKm = r.number("fog_visibility_km", fog.visibilityKm, 0.0, atmosphere::kLargestVisibilityKm);
   fog.bottomM = r.number("fog_bottom_m", fog.bottomM, 0.0, 20000.0);
   fog.topM = r.number("fog_top_m", fog.topM, 0.0, 20000.0);
   if (fog.visibilityKm > 0.0 && !(fog.topM > fog.bottomM))

@@ -4,6 +4,7 @@
 #include "commands/probe_json.h"
 #include "physics/atmosphere/conditions.h"
 #include "physics/atmosphere/probe.h"
+#include "physics/weather/fog_layer.h"
 #include "sky/night_probe.h"
 #include "sky/sky_state.h"
 #include "node/config/node_tables.h"
@@ -119,6 +120,13 @@ int run(const ProbeCli& cli) {
   atmosphere::Conditions conditions;
   if (cli.humidityPct) conditions.relativeHumidity = *cli.humidityPct / 100.0;
   const auto model = loadNodeAtmosphere(node, conditions);
+  // Below the tables' lowest visibility the node draws the rest as a fog layer, which the
+  // probe's figures (the tables') do not include: say so rather than report clearer air.
+  if (const double km = node.atmosphere.visibilityKm.value_or(0.0); km > 0.0 && km < weather::kTablesVisibilityKm)
+    std::fprintf(stderr,
+                 "probe: visibility %.3g km is below the tables' %.3g km: these are the %.3g km tables' figures, "
+                 "without the haze layer the node draws over them (docs/atmosphere.md, \"Low visibility\")\n",
+                 km, weather::kTablesVisibilityKm, weather::kTablesVisibilityKm);
   if (!place) {
     std::printf("%s\n", probeJson(atmosphere::probe(*model, request)).dump(2).c_str());
     return 0;

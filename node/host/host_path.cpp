@@ -1,12 +1,12 @@
 #include "node/host/host_path.h"
 
 #include "node/common/config_error.h"
+#include "node/host/host_script.h"
 #include "node/host/ownship_predictor.h"
 #include "physics/common/units.h"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <numbers>
 #include <sstream>
 
@@ -19,19 +19,7 @@ constexpr double kEarthRadius = 6371008.8;  // mean radius: rates are for dead r
 
 HostPath HostPath::parse(const std::string& text, const std::string& sourceName) {
   HostPath path;
-  std::istringstream in(text);
-  std::string line;
-  int lineNumber = 0;
-  while (std::getline(in, line)) {
-    ++lineNumber;
-    const auto hash = line.find('#');
-    if (hash != std::string::npos) line.erase(hash);
-    if (line.find_first_not_of(" \t\r,") == std::string::npos) continue;
-    if (line.find_first_of("abcdfghijklmnopqrstuvwxyzABCDFGHIJKLMNOPQRSTUVWXYZ_") != std::string::npos &&
-        path.waypoints_.empty())
-      continue;  // a header line
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream fields(line);
+  forEachScriptLine(text, [&](std::istringstream& fields, int lineNumber) {
     Waypoint w;
     sky::Ownship& p = w.pose;
     std::string extra;
@@ -47,18 +35,12 @@ HostPath HostPath::parse(const std::string& text, const std::string& sourceName)
     if (std::abs(p.latitudeDeg) > 90.0 || std::abs(p.attitude.pitchDeg) > 90.0) fail("latitude or pitch outside [-90, 90]");
     if (!path.waypoints_.empty() && w.timeS <= path.waypoints_.back().timeS) fail("times must increase");
     path.waypoints_.push_back(w);
-  }
+  });
   if (path.waypoints_.size() < 2) throw ConfigError(sourceName + ": a path needs at least two waypoints");
   return path;
 }
 
-HostPath HostPath::load(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw ConfigError(file + ": cannot open the path file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse(text.str(), file);
-}
+HostPath HostPath::load(const std::string& file) { return parse(readHostScript(file, "path file"), file); }
 
 sky::Ownship HostPath::at(double t) const {
   t = std::clamp(t, waypoints_.front().timeS, waypoints_.back().timeS);

@@ -1,28 +1,16 @@
 #include "node/host/host_weather.h"
 
 #include "node/common/config_error.h"
+#include "node/host/host_script.h"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace skyig::services {
 
 HostWeather HostWeather::parse(const std::string& text, const std::string& sourceName) {
   HostWeather w;
-  std::istringstream in(text);
-  std::string line;
-  int lineNumber = 0;
-  while (std::getline(in, line)) {
-    ++lineNumber;
-    const auto hash = line.find('#');
-    if (hash != std::string::npos) line.erase(hash);
-    if (line.find_first_not_of(" \t\r,") == std::string::npos) continue;
-    if (line.find_first_of("abcdfghijklmnopqrstuvwxyzABCDFGHIJKLMNOPQRSTUVWXYZ_") != std::string::npos && w.steps_.empty())
-      continue;  // a header line
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream fields(line);
+  forEachScriptLine(text, [&](std::istringstream& fields, int lineNumber) {
     WeatherStep s;
     std::string extra;
     auto fail = [&](const std::string& why) { throw ConfigError(sourceName + ":" + std::to_string(lineNumber) + ": " + why); };
@@ -36,18 +24,12 @@ HostWeather HostWeather::parse(const std::string& text, const std::string& sourc
       fail("a fog needs a visibility above 0 and a top above the ground (fog_visibility_m 0: none)");
     if (!w.steps_.empty() && s.timeS <= w.steps_.back().timeS) fail("times must increase");
     w.steps_.push_back(s);
-  }
+  });
   if (w.steps_.empty()) throw ConfigError(sourceName + ": a weather script needs at least one line");
   return w;
 }
 
-HostWeather HostWeather::load(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw ConfigError(file + ": cannot open the weather script");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse(text.str(), file);
-}
+HostWeather HostWeather::load(const std::string& file) { return parse(readHostScript(file, "weather script"), file); }
 
 HostWeather HostWeather::constant(const WeatherStep& step) {
   HostWeather w;

@@ -31,10 +31,16 @@ bool SkyWorker::followAtmosphere(const HostSnapshot* host, Clock::time_point now
       }
       if (c) {
         // Replay waits for the exact tables: no blend for it.
-        const atmosphere::RequestAnswer a = updater_->request(nodeModelConfig(config_, *c), /*blend=*/!wait);
-        spdlog::info("physical sky: visibility {:.3g} km, humidity {:.0f} %: new tables requested{}{}",
-                     c->visibilityKm.value_or(0.0), host->state.humidityPct,
-                     a.why.empty() ? "" : " (no blend: ", a.why.empty() ? "" : a.why + ")");
+        const atmosphere::ModelConfig wanted = nodeModelConfig(config_, *c);
+        const atmosphere::RequestAnswer a = updater_->request(wanted, /*blend=*/!wait);
+        const double tablesKm = atmosphere::visibilityOf(wanted.medium);
+        if (c->visibilityKm && *c->visibilityKm < tablesKm)  // the rest is the haze layer (nodeHaze)
+          spdlog::info("physical sky: visibility {:.3g} km, humidity {:.0f} %: the {:.3g} km tables and a haze layer",
+                       *c->visibilityKm, host->state.humidityPct, tablesKm);
+        else
+          spdlog::info("physical sky: visibility {:.3g} km, humidity {:.0f} %: new tables requested{}{}",
+                       c->visibilityKm.value_or(0.0), host->state.humidityPct,
+                       a.why.empty() ? "" : " (no blend: ", a.why.empty() ? "" : a.why + ")");
         if (wait) updater_->waitIdle();
       }
     } catch (const std::invalid_argument& e) {

@@ -11,8 +11,10 @@
 #include <cmath>
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 namespace skyig::services {
 
@@ -31,9 +33,12 @@ struct HostOptions {
   double speed = 1.0;
   double durationS = 0.0;
   double visibilityM = 40000.0;
-  double fogVisibilityM = 0.0;  // a ground fog (Weather Control layer 0); 0: none
+  std::optional<double> fogVisibilityM;  // a ground fog (Weather Control layer 0); 0: none
   double fogTopM = 200.0;
   std::string weatherFile;      // a weather script (node/host/host_weather.h) instead of the three above
+  // Weather Control only when asked for (a script or a fog): without it the node keeps the ground
+  // fog of its own configuration.
+  bool sendsWeather() const { return !weatherFile.empty() || fogVisibilityM.has_value(); }
   int dropEvery = 0;
   bool swapPairs = false;
   bool loop = false;
@@ -90,7 +95,8 @@ std::vector<std::uint8_t> message(std::uint32_t frame, double pathTime, const Ho
   cigi::AtmosphereControl a;
   a.visibilityRangeM = static_cast<float>(weather.visibilityM);
   a.globalHumidityPct = static_cast<std::uint8_t>(std::lround(weather.humidityPct));
-  // The ground fog, every frame (a node that joins late sees it): layer 0, global scope.
+  // The ground fog, every frame while the weather is scripted (a node that joins late sees it):
+  // layer 0, global scope.
   cigi::WeatherControl fog;
   fog.layerId = 0;
   fog.scope = cigi::WeatherScope::global;
@@ -107,7 +113,8 @@ std::vector<std::uint8_t> message(std::uint32_t frame, double pathTime, const Ho
     const cigi::Packet packets[] = {ig, e, cs, a};
     error = cigi::encodeMessage4(packets, order, bytes);
   } else {
-    const cigi::Packet packets[] = {ig, e, rc, cs, a, fog};
+    std::vector<cigi::Packet> packets = {ig, e, rc, cs, a};
+    if (o.sendsWeather()) packets.push_back(fog);
     error = cigi::encodeMessage(packets, order, bytes);
   }
   if (!error.empty()) throw std::runtime_error("encoding host message: " + error);
@@ -178,9 +185,9 @@ struct StartOfFrameLog {
 int run(const HostOptions& o) {
   const HostPath path = HostPath::load(o.pathFile);
   const HostWeather weather = o.weatherFile.empty()
-                                  ? HostWeather::constant({0.0, o.visibilityM, 0.0, o.fogVisibilityM, o.fogTopM})
+                                  ? HostWeather::constant({0.0, o.visibilityM, 0.0, o.fogVisibilityM.value_or(0.0), o.fogTopM})
                                   : HostWeather::load(o.weatherFile);
-  if (o.cigiVersion == 4 && (!o.weatherFile.empty() || o.fogVisibilityM > 0.0))
+  if (o.cigiVersion == 4 && o.sendsWeather())
     throw ConfigError("--weather/--fog-visibility: skyig's CIGI 4.0 subset has no Weather Control; use --cigi 3");
   const auto start = ephemeris::parseIso8601Utc(o.startUtc);
   if (!start) throw ConfigError("--start-utc: expected a UTC time like 2026-06-21T19:00:00Z, got \"" + o.startUtc + "\"");

@@ -2,6 +2,7 @@
 // strangers and spoofers (127.0.0.2 is another address on loopback), a host whose datagrams
 // come in bursts of two, a host switching a channel's goggle with Sensor Control, and
 // `skyig serve` processes competing for a port.
+#include "protocol/cigi/decoder.h"
 #include "protocol/cigi/encoder.h"
 #include "node/transport/cigi_receiver.h"
 #include "node/frame/sky_worker.h"
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -438,4 +440,39 @@ TEST(CigiWeatherControl, GroundFogReachesTheSkyStateAndGoesAgain) {
   ASSERT_TRUE(node.handled(3));
   state = worker.step(node.latest.get().get(), Clock::now(), true);
   EXPECT_EQ(state->conditions.fog.visibilityKm, 0.0);
+}
+
+// `skyig host` sends Weather Control (layer 0, global) only when its weather is scripted or a fog
+// is asked for: otherwise a node keeps the ground fog of its own configuration. The datagram's
+// Weather Control carries the fog the command line named.
+TEST(HostCommandWeather, GroundFogIsSentOnlyWhenAskedFor) {
+  auto firstDatagram = [](const std::string& extra) {
+    UdpSocket node({"127.0.0.1", 0});
+    const std::string cmd = std::string(SKYIG_EXECUTABLE) + " host --path " + SKYIG_SOURCE_DIR +
+                            "/config/circuit.csv --rate 30 --duration 0.01 --to 127.0.0.1:" +
+                            std::to_string(node.localEndpoint().port) + " " + extra + " >/dev/null 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    std::array<std::uint8_t, 2048> buffer{};
+    sockaddr_in from{};
+    const std::size_t n = node.receive(buffer, from, std::chrono::milliseconds(2000));
+    return cigi::decodeMessage(std::span<const std::uint8_t>(buffer.data(), n));
+  };
+  auto fogOf = [](const cigi::DecodedMessage& m) -> std::optional<cigi::WeatherControl> {
+    for (const cigi::Packet& p : m.packets)
+      if (const auto* w = std::get_if<cigi::WeatherControl>(&p)) return *w;
+    return std::nullopt;
+  };
+  const cigi::DecodedMessage plain = firstDatagram("");
+  ASSERT_TRUE(plain.ok());
+  EXPECT_FALSE(fogOf(plain).has_value());
+  const cigi::DecodedMessage foggy = firstDatagram("--fog-visibility 300 --fog-top 150");
+  ASSERT_TRUE(foggy.ok());
+  const auto w = fogOf(foggy);
+  ASSERT_TRUE(w.has_value());
+  EXPECT_EQ(w->layerId, 0);
+  EXPECT_EQ(w->scope, cigi::WeatherScope::global);
+  EXPECT_TRUE(w->weatherEnable);
+  EXPECT_EQ(w->visibilityRangeM, 300.0f);
+  EXPECT_EQ(w->thicknessM, 150.0f);
+  EXPECT_EQ(w->baseElevationM, 0.0f);
 }

@@ -15,6 +15,14 @@ glm::dvec3 irradianceAt(const atmosphere::AtmosphereModel& model, double r, cons
          model.converter().toRec709(model.skyIrradiance(point, up, light));
 }
 
+// The layers lit at their tops by sun * sunWeight + moon * moonWeight.
+std::array<weather::FogLayer, 2> litBy(const FogState& fog, double sunWeight, double moonWeight) {
+  std::array<weather::FogLayer, 2> out = fog.sunlit;
+  for (std::size_t i = 0; i < 2; ++i)
+    out[i].top_irradiance = sunWeight * fog.sunlit[i].top_irradiance + moonWeight * fog.moonIrradiance[i];
+  return out;
+}
+
 }  // namespace
 
 FogState makeFogState(const atmosphere::AtmosphereModel& model, const FogSpec& haze, const FogSpec& fog,
@@ -41,11 +49,9 @@ double fogTransmittanceToSpace(const FogState& fog, const atmosphere::Atmosphere
   return t;
 }
 
-std::array<weather::FogLayer, 2> drawnFogLayers(const FogState& fog) {
-  std::array<weather::FogLayer, 2> out = fog.sunlit;
-  for (std::size_t i = 0; i < 2; ++i) out[i].top_irradiance += fog.moonIrradiance[i];
-  return out;
-}
+std::array<weather::FogLayer, 2> drawnFogLayers(const FogState& fog) { return litBy(fog, 1.0, 1.0); }
+
+std::array<weather::FogLayer, 2> moonlitFogLayers(const FogState& fog) { return litBy(fog, 0.0, 1.0); }
 
 double throughFogLayers(const std::array<weather::FogLayer, 2>& layers, double behindCdM2, double h, double mu,
                         double d) {

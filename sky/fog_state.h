@@ -31,6 +31,9 @@ double fogTransmittanceToSpace(const FogState& fog, const atmosphere::Atmosphere
 
 // The layers as the sky pass draws them: each lit by the sun and the moon together.
 std::array<weather::FogLayer, 2> drawnFogLayers(const FogState& fog);
+// The layers lit by the moon alone (its share of each top's irradiance): the eye's view sphere
+// keeps the sunlit and the moonlit light apart.
+std::array<weather::FogLayer, 2> moonlitFogLayers(const FogState& fog);
 
 // What the eye h metres above the ground sees through every layer of `layers` along (mu, d) where
 // the clear air shows `behindCdM2` (luminances; the fog is grey).

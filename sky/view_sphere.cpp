@@ -33,13 +33,6 @@ double physicalLuminance(const atmosphere::AtmosphereModel& model, const glm::dv
   return model.converter().luminance(model.skyRadiance(camera, view, light));
 }
 
-// The fog layers lit by the moon alone (its share of each top's irradiance).
-std::array<weather::FogLayer, 2> moonlitFog(const FogState& fog) {
-  std::array<weather::FogLayer, 2> out = fog.sunlit;
-  for (std::size_t i = 0; i < 2; ++i) out[i].top_irradiance = fog.moonIrradiance[i];
-  return out;
-}
-
 }  // namespace
 
 ViewSphere viewSphere(const SkyState& s) {
@@ -57,7 +50,7 @@ ViewSphere viewSphere(const SkyState& s) {
   if (s.ephemeris) night = night::makeNightDiffuseSky(*s.ephemeris, s.extinction, false);
   auto cells = std::make_shared<std::vector<ViewCellLight>>();
   cells->reserve(kMu * kPhi);
-  const std::array<weather::FogLayer, 2> moonFog = moonlitFog(s.fog);
+  const std::array<weather::FogLayer, 2> moonFog = moonlitFogLayers(s.fog);
   forEachEqualAreaCell(kMu, kPhi, [&](const glm::dvec3& view, double cell) {
     double sunlit = 0.0, moonlit = 0.0, own = 0.0;
     const double d = model ? groundDistance(*model, camera, view) : kFar;

@@ -69,7 +69,7 @@ constexpr std::array<Packet4Info, kPacketTypeCount> kInfo4{{
     {kCigi4CelestialSphereControl, 24, "Celestial Sphere Control"},
     {kCigi4AtmosphereControl, 32, "Atmosphere Control"},
     {0, 0, "Environmental Region Control"},
-    {0, 0, "Weather Control"},
+    {kCigi4WeatherControl, 72, "Weather Control"},
     {kCigi4ViewControl, 40, "View Control"},
     {kCigi4ViewDefinition, 40, "View Definition"},
     {kCigi4SensorControl, 32, "Sensor Control"},

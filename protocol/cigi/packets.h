@@ -141,7 +141,8 @@ struct EnvironmentalRegionControl {
 
 enum class WeatherScope : std::uint8_t { global = 0, regional = 1, entity = 2 };
 
-// Weather Control (id 12, 56 bytes): one weather layer, globally, in a region or on an entity.
+// Weather Control (id 12, 56 bytes; CIGI 4.0: 0x0B, 72 bytes): one weather layer, globally, in a
+// region or on an entity. The top scud and top transition band are CIGI 4.0's alone.
 struct WeatherControl {
   std::uint16_t entityRegionId = 0;
   std::uint8_t layerId = 0;        // 0 ground fog, 1-3 cloud layers, 4 rain, 5 snow, ...
@@ -165,6 +166,9 @@ struct WeatherControl {
   float windDirectionDeg = 0.0f;
   float barometricPressureHpa = 0.0f;
   float aerosolConcentrationGpm3 = 0.0f;
+  bool topScudEnable = false;        // 4.0
+  float topScudFrequencyPct = 0.0f;  // 4.0
+  float topTransitionBandM = 0.0f;   // 4.0
   bool operator==(const WeatherControl&) const = default;
 };
 
@@ -271,6 +275,7 @@ inline constexpr std::uint16_t kCigi4IgControl = 0x0000;
 inline constexpr std::uint16_t kCigi4EntityPositionControl = 0x0001;
 inline constexpr std::uint16_t kCigi4CelestialSphereControl = 0x0008;
 inline constexpr std::uint16_t kCigi4AtmosphereControl = 0x0009;
+inline constexpr std::uint16_t kCigi4WeatherControl = 0x000B;
 inline constexpr std::uint16_t kCigi4ViewControl = 0x000F;
 inline constexpr std::uint16_t kCigi4ViewDefinition = 0x0014;
 inline constexpr std::uint16_t kCigi4SensorControl = 0x0010;

@@ -1,5 +1,5 @@
 // CIGI 4.0 subset: IG Control, Entity Position Control, Celestial Sphere Control (with
-// seconds), Atmosphere Control and Start of Frame against bytes written by hand from the
+// seconds), Atmosphere Control, Weather Control and Start of Frame against bytes written by hand from the
 // CIGI 4.0 layouts (u16 size, u16 id, then the fields; CIGI 4.0 ICD, SISO-STD-013-2014, as the
 // CIGI Class Library 4.0 port's Pack functions implement it), both byte orders, and errors.
 #include <gtest/gtest.h>
@@ -228,9 +228,57 @@ TEST(Cigi4, UnknownPacketsSkippedAndErrorsNamed) {
   EXPECT_EQ(decodeMessage(cut).error->kind, ErrorKind::packetPastEnd);
 }
 
+// Weather Control (0x0B, 72 bytes), CCL 4.0 CigiWeatherCtrlV4: layer, humidity, the 3.3 flags
+// with the top scud enable at byte 7 bit 5, the region/entity ID at 8, the floats from 12, the
+// top scud frequency and top transition band at 60 and 64, 68-71 reserved. A rain layer.
+TEST(Cigi4, WeatherControlWithItsTopScudAndTransition) {
+  WeatherControl w;
+  w.layerId = 4;
+  w.humidityPct = 90;
+  w.weatherEnable = true;
+  w.randomLightningEnable = true;
+  w.cloudType = 8;  // nimbostratus
+  w.severity = 3;
+  w.topScudEnable = true;
+  w.airTemperatureC = 12.5f;
+  w.visibilityRangeM = 1500.0f;
+  w.scudFrequencyPct = 25.0f;
+  w.coveragePct = 75.0f;
+  w.thicknessM = 1200.0f;
+  w.transitionBandM = 50.0f;
+  w.horizontalWindSpeedMps = 5.0f;
+  w.verticalWindSpeedMps = -1.0f;
+  w.windDirectionDeg = -90.0f;
+  w.barometricPressureHpa = 1013.25f;
+  w.aerosolConcentrationGpm3 = 0.5f;
+  w.topScudFrequencyPct = 10.0f;
+  w.topTransitionBandM = 30.0f;
+  const auto be = hexBytes("00 48 00 0B 04 5A 89 2C | 00 00 00 00 41 48 00 00 | 44 BB 80 00 41 C8 00 00 |"
+                           "42 96 00 00 00 00 00 00 | 44 96 00 00 42 48 00 00 | 40 A0 00 00 BF 80 00 00 |"
+                           "C2 B4 00 00 44 7D 50 00 | 3F 00 00 00 41 20 00 00 | 41 F0 00 00 00 00 00 00");
+  EXPECT_EQ(toHex(encode4(w, ByteOrder::big)), toHex(be));
+  for (const auto order : {ByteOrder::big, ByteOrder::little}) {
+    std::vector<std::uint8_t> b = encode4(ig4(), order);
+    const auto bytes = encode4(w, order);
+    ASSERT_EQ(bytes.size(), 72u);
+    b.insert(b.end(), bytes.begin(), bytes.end());
+    const DecodedMessage m = decodeMessage(b);
+    ASSERT_TRUE(m.ok()) << m.error->describe();
+    ASSERT_EQ(m.packets.size(), 2u);
+    EXPECT_EQ(std::get<WeatherControl>(m.packets[1]), w);
+  }
+  // A region's layer: the ID at 8 whatever the scope says (the decoder keeps both).
+  w.scope = WeatherScope::regional;
+  w.entityRegionId = 0x0102;
+  const auto regional = encode4(w, ByteOrder::little);
+  EXPECT_EQ(toHex(std::vector<std::uint8_t>(regional.begin() + 6, regional.begin() + 12)),
+            toHex(hexBytes("89 2D 02 01 00 00")));
+}
+
 TEST(Cigi4, EncoderRefusesPacketsOutsideTheSubset) {
   std::vector<std::uint8_t> b;
-  EXPECT_NE(appendPacket4(b, WeatherControl{}, ByteOrder::big).find("Weather Control: not in skyig's CIGI 4.0 subset"),
+  EXPECT_NE(appendPacket4(b, EnvironmentalRegionControl{}, ByteOrder::big)
+                .find("Environmental Region Control: not in skyig's CIGI 4.0 subset"),
             std::string::npos);
   EXPECT_TRUE(b.empty());
   AtmosphereControl a;

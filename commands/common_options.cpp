@@ -30,6 +30,16 @@ void SkyOptions::add(CLI::App& c) {
   c.add_option("--fog-top", fogTopM, "The ground fog's top above the ground, metres (default 200)")->check(CLI::Range(0.0, 20000.0));
   c.add_option("--fog-bottom", fogBottomM, "The ground fog's bottom above the ground, metres (default 0)")
       ->check(CLI::Range(0.0, 20000.0));
+  c.add_option("--precipitation", precipitation, "Physical sky: precipitation or dust from the ground up: none | rain | snow | sleet | hail | sand | dust")
+      ->check(CLI::IsMember({"none", "rain", "snow", "sleet", "hail", "sand", "dust"}));
+  c.add_option("--precipitation-severity", precipitationSeverity, "Its severity, 0 (least) .. 5 (CIGI's; default 2)")
+      ->check(CLI::Range(0, 5));
+  c.add_option("--precipitation-visibility", precipitationVisibilityKm, "The visibility inside it, km (default: the severity's)")
+      ->check(CLI::Range(0.0, atmosphere::kLargestVisibilityKm));
+  c.add_option("--precipitation-top", precipitationTopM, "Its top above the ground, metres (default 1500)")
+      ->check(CLI::Range(1.0, 20000.0));
+  c.add_option("--precipitation-coverage", precipitationCoveragePct, "The share of the sky it covers, percent (default 100)")
+      ->check(CLI::Range(0.0, 100.0));
   c.add_option("--sun-azimuth", sunAzimuth, "Override the sun's azimuth, degrees from north through east")
       ->check(CLI::Range(-360.0, 360.0));
   c.add_option("--sun-elevation", sunElevation, "Override the sun's true (airless) elevation, degrees; its disc is seen lifted by refraction")->check(CLI::Range(-90.0, 90.0));
@@ -66,6 +76,15 @@ NodeConfig SkyOptions::resolve() const {
     if (f.visibilityKm > 0.0 && !(f.topM > f.bottomM))
       throw ConfigError("--fog-top " + std::to_string(f.topM) + " m: expected a top above the fog's bottom (" +
                         std::to_string(f.bottomM) + " m)");
+  }
+  if (precipitation || precipitationSeverity || precipitationVisibilityKm || precipitationTopM || precipitationCoveragePct) {
+    weather::PrecipitationSettings& p = config.precipitation;
+    if (precipitation) p.kind = weather::parsePrecipitation(*precipitation);  // "none": none
+    if (precipitationSeverity) p.severity = *precipitationSeverity;
+    if (precipitationVisibilityKm) p.visibilityKm = *precipitationVisibilityKm;
+    if (precipitationTopM) p.topM = *precipitationTopM;
+    if (precipitationCoveragePct) p.coveragePct = *precipitationCoveragePct;
+    config.sky.precipitation = weather::precipitationLayer(p);
   }
   return config;
 }

@@ -14,6 +14,10 @@ struct SkyOptions {
   std::string configPath;
   std::optional<double> lat, lon, alt, yaw, pitch, roll, turbidity, groundAlbedo, visibilityKm;
   std::optional<double> fogVisibilityKm, fogBottomM, fogTopM;  // a ground fog ([weather])
+  // Precipitation or dust ([weather] precipitation_*): a kind or "none", and its figures.
+  std::optional<std::string> precipitation;
+  std::optional<int> precipitationSeverity;
+  std::optional<double> precipitationVisibilityKm, precipitationTopM, precipitationCoveragePct;
   std::optional<double> sunAzimuth, sunElevation;
   std::optional<std::string> utc, skyModel;
   std::optional<int> cieType;

@@ -35,10 +35,12 @@ struct HostOptions {
   double visibilityM = 40000.0;
   std::optional<double> fogVisibilityM;  // a ground fog (Weather Control layer 0); 0: none
   double fogTopM = 200.0;
-  std::string weatherFile;      // a weather script (node/host/host_weather.h) instead of the three above
-  // Weather Control only when asked for (a script or a fog): without it the node keeps the ground
-  // fog of its own configuration.
-  bool sendsWeather() const { return !weatherFile.empty() || fogVisibilityM.has_value(); }
+  std::optional<std::string> precipitation;  // Weather Control layers 4-9: a kind or "none"
+  int precipitationSeverity = 2;
+  std::string weatherFile;      // a weather script (node/host/host_weather.h) instead of the above
+  // Weather Control only when asked for (a script, a fog or precipitation): without it the node
+  // keeps the fog and precipitation of its own configuration.
+  bool sendsWeather() const { return !weatherFile.empty() || fogVisibilityM.has_value() || precipitation.has_value(); }
   int dropEvery = 0;
   bool swapPairs = false;
   bool loop = false;
@@ -105,18 +107,30 @@ std::vector<std::uint8_t> message(std::uint32_t frame, double pathTime, const Ho
   fog.baseElevationM = 0.0f;
   fog.thicknessM = static_cast<float>(weather.fogTopM);
   fog.humidityPct = 100;
+  // skyig's CIGI 4.0 subset has no Rate Control (4.0 moved rates to Velocity Control).
+  std::vector<cigi::Packet> packets = {ig, e};
+  if (o.cigiVersion != 4) packets.push_back(rc);
+  packets.push_back(cs);
+  packets.push_back(a);
+  if (o.sendsWeather()) {
+    packets.push_back(fog);
+    // Every precipitation layer, the step's on and the others off, from the ground up.
+    for (std::size_t k = 0; k < weather::kPrecipitationKinds; ++k) {
+      cigi::WeatherControl layer;
+      layer.layerId = static_cast<std::uint8_t>(weather::kFirstPrecipitationLayerId + k);
+      layer.scope = cigi::WeatherScope::global;
+      layer.weatherEnable = weather.precipitation && static_cast<std::size_t>(*weather.precipitation) == k;
+      layer.severity = static_cast<std::uint8_t>(weather.precipitationSeverity);
+      layer.visibilityRangeM = static_cast<float>(weather.precipitationVisibilityM);
+      layer.coveragePct = 100.0f;
+      layer.thicknessM = static_cast<float>(weather.precipitationTopM);
+      packets.push_back(layer);
+    }
+  }
   const auto order = o.littleEndian ? protocol::ByteOrder::little : protocol::ByteOrder::big;
   std::vector<std::uint8_t> bytes;
-  std::string error;
-  if (o.cigiVersion == 4) {
-    // skyig's CIGI 4.0 subset has no Rate Control (4.0 moved rates to Velocity Control).
-    const cigi::Packet packets[] = {ig, e, cs, a};
-    error = cigi::encodeMessage4(packets, order, bytes);
-  } else {
-    std::vector<cigi::Packet> packets = {ig, e, rc, cs, a};
-    if (o.sendsWeather()) packets.push_back(fog);
-    error = cigi::encodeMessage(packets, order, bytes);
-  }
+  const std::string error = o.cigiVersion == 4 ? cigi::encodeMessage4(packets, order, bytes)
+                                               : cigi::encodeMessage(packets, order, bytes);
   if (!error.empty()) throw std::runtime_error("encoding host message: " + error);
   return bytes;
 }
@@ -184,11 +198,15 @@ struct StartOfFrameLog {
 
 int run(const HostOptions& o) {
   const HostPath path = HostPath::load(o.pathFile);
-  const HostWeather weather = o.weatherFile.empty()
-                                  ? HostWeather::constant({0.0, o.visibilityM, 0.0, o.fogVisibilityM.value_or(0.0), o.fogTopM})
-                                  : HostWeather::load(o.weatherFile);
-  if (o.cigiVersion == 4 && o.sendsWeather())
-    throw ConfigError("--weather/--fog-visibility: skyig's CIGI 4.0 subset has no Weather Control; use --cigi 3");
+  WeatherStep constant;
+  constant.visibilityM = o.visibilityM;
+  constant.fogVisibilityM = o.fogVisibilityM.value_or(0.0);
+  constant.fogTopM = o.fogTopM;
+  if (o.precipitation) {
+    constant.precipitation = weather::parsePrecipitation(*o.precipitation);  // "none": none
+    constant.precipitationSeverity = o.precipitationSeverity;
+  }
+  const HostWeather weather = o.weatherFile.empty() ? HostWeather::constant(constant) : HostWeather::load(o.weatherFile);
   const auto start = ephemeris::parseIso8601Utc(o.startUtc);
   if (!start) throw ConfigError("--start-utc: expected a UTC time like 2026-06-21T19:00:00Z, got \"" + o.startUtc + "\"");
   Endpoint to, local;
@@ -282,9 +300,15 @@ void registerHostCommand(CLI::App& app, int& exitCode) {
   c->add_option("--fog-visibility", o->fogVisibilityM, "Weather Control layer 0 (ground fog): visibility inside, m (0: none)")
       ->check(CLI::Range(0.0, 1e6));
   c->add_option("--fog-top", o->fogTopM, "The ground fog's thickness above the ground, m (200)")->check(CLI::Range(1.0, 20000.0));
+  c->add_option("--precipitation", o->precipitation,
+                "Weather Control layers 4-9: none | rain | snow | sleet | hail | sand | dust, from the ground to 1500 m")
+      ->check(CLI::IsMember({"none", "rain", "snow", "sleet", "hail", "sand", "dust"}));
+  c->add_option("--precipitation-severity", o->precipitationSeverity, "Its severity, 0 (least) .. 5; its visibility follows (2)")
+      ->check(CLI::Range(0, 5));
   c->add_option("--weather", o->weatherFile,
-                "Weather script CSV: time_s, visibility_m, humidity_pct, fog_visibility_m, fog_top_m, each held until the "
-                "next (e.g. config/fog_lifting.csv); replaces --visibility and --fog-*")
+                "Weather script CSV: time_s, visibility_m, humidity_pct, fog_visibility_m, fog_top_m [, precipitation, "
+                "severity, precipitation_visibility_m, precipitation_top_m], each held until the next (e.g. "
+                "config/fog_lifting.csv, config/showers.csv); replaces --visibility, --fog-* and --precipitation*")
       ->check(CLI::ExistingFile);
   c->add_option("--drop-every", o->dropEvery, "Drop every Nth datagram (loss test)")->check(CLI::Range(0, 1000000));
   c->add_flag("--swap-pairs", o->swapPairs, "Send datagrams in swapped pairs (reordering test)");

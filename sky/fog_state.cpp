@@ -2,6 +2,7 @@
 
 #include "physics/atmosphere/physical_camera.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace skyig::sky {
@@ -16,22 +17,26 @@ glm::dvec3 irradianceAt(const atmosphere::AtmosphereModel& model, double r, cons
 }
 
 // The layers lit at their tops by sun * sunWeight + moon * moonWeight.
-std::array<weather::FogLayer, 2> litBy(const FogState& fog, double sunWeight, double moonWeight) {
-  std::array<weather::FogLayer, 2> out = fog.sunlit;
-  for (std::size_t i = 0; i < 2; ++i)
+weather::FogLayers litBy(const FogState& fog, double sunWeight, double moonWeight) {
+  weather::FogLayers out = fog.sunlit;
+  for (std::size_t i = 0; i < out.size(); ++i)
     out[i].top_irradiance = sunWeight * fog.sunlit[i].top_irradiance + moonWeight * fog.moonIrradiance[i];
   return out;
 }
 
 }  // namespace
 
-FogState makeFogState(const atmosphere::AtmosphereModel& model, const FogSpec& haze, const FogSpec& fog,
+bool FogState::any() const {
+  return std::any_of(sunlit.begin(), sunlit.end(), [](const weather::FogLayer& f) { return f.extinction > 0.0; });
+}
+
+FogState makeFogState(const atmosphere::AtmosphereModel& model, const SkyConditions& conditions,
                       const glm::dvec3& sun, const glm::dvec3& moon, const glm::dvec3& moonlightScale) {
   FogState out;
   const double ground = model.parameters(0).bottom_radius;
   const double albedo = model.config().medium.groundAlbedo;
-  const FogSpec specs[2] = {haze, fog};
-  for (std::size_t i = 0; i < 2; ++i) {
+  const std::array<FogSpec, weather::kFogLayerCount> specs{conditions.haze, conditions.fog, conditions.precipitation};
+  for (std::size_t i = 0; i < specs.size(); ++i) {
     weather::validate(specs[i]);
     if (specs[i].visibilityKm == 0.0) continue;
     const double top = ground + specs[i].topM;
@@ -49,11 +54,11 @@ double fogTransmittanceToSpace(const FogState& fog, const atmosphere::Atmosphere
   return t;
 }
 
-std::array<weather::FogLayer, 2> drawnFogLayers(const FogState& fog) { return litBy(fog, 1.0, 1.0); }
+weather::FogLayers drawnFogLayers(const FogState& fog) { return litBy(fog, 1.0, 1.0); }
 
-std::array<weather::FogLayer, 2> moonlitFogLayers(const FogState& fog) { return litBy(fog, 0.0, 1.0); }
+weather::FogLayers moonlitFogLayers(const FogState& fog) { return litBy(fog, 0.0, 1.0); }
 
-double throughFogLayers(const std::array<weather::FogLayer, 2>& layers, double behindCdM2, double h, double mu,
+double throughFogLayers(const weather::FogLayers& layers, double behindCdM2, double h, double mu,
                         double d) {
   double l = behindCdM2;
   for (const weather::FogLayer& f : layers) l = weather::throughFogLuminance(f, l, h, mu, d);

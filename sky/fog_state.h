@@ -11,17 +11,17 @@
 
 namespace skyig::sky {
 
-// The haze below the tables' visibility, then the ground fog; extinction 0: none.
+// The haze below the tables' visibility, the ground fog, the precipitation; extinction 0: none.
 struct FogState {
-  std::array<weather::FogLayer, 2> sunlit{};        // lit at the top by the sun and its sky
-  std::array<glm::dvec3, 2> moonIrradiance{};       // the moon's share at each top (Rec.709 lux)
-  bool any() const { return sunlit[0].extinction > 0.0 || sunlit[1].extinction > 0.0; }
+  weather::FogLayers sunlit{};                                      // lit at the top by the sun and its sky
+  std::array<glm::dvec3, weather::kFogLayerCount> moonIrradiance{};  // the moon's share at each top (Rec.709 lux)
+  bool any() const;
 };
 
-// The layers of `haze` and `fog` over `model`'s ground, lit at their tops by the sun in `sun`
-// (unit, the model's frame: up is +z at the camera) and the moon in `moon` scaled by
-// moonlightScale (linear Rec.709). Throws std::invalid_argument for a bad layer.
-FogState makeFogState(const atmosphere::AtmosphereModel& model, const FogSpec& haze, const FogSpec& fog,
+// The layers of `conditions` (haze, fog, precipitation) over `model`'s ground, lit at their tops
+// by the sun in `sun` (unit, the model's frame: up is +z at the camera) and the moon in `moon`
+// scaled by moonlightScale (linear Rec.709). Throws std::invalid_argument for a bad layer.
+FogState makeFogState(const atmosphere::AtmosphereModel& model, const SkyConditions& conditions,
                       const glm::dvec3& sun, const glm::dvec3& moon, const glm::dvec3& moonlightScale);
 
 // The layers' transmittance from an observer heightM above the ground (physicalCamera's height)
@@ -30,14 +30,14 @@ double fogTransmittanceToSpace(const FogState& fog, const atmosphere::Atmosphere
                                double elevationRad);
 
 // The layers as the sky pass draws them: each lit by the sun and the moon together.
-std::array<weather::FogLayer, 2> drawnFogLayers(const FogState& fog);
+weather::FogLayers drawnFogLayers(const FogState& fog);
 // The layers lit by the moon alone (its share of each top's irradiance): the eye's view sphere
 // keeps the sunlit and the moonlit light apart.
-std::array<weather::FogLayer, 2> moonlitFogLayers(const FogState& fog);
+weather::FogLayers moonlitFogLayers(const FogState& fog);
 
 // What the eye h metres above the ground sees through every layer of `layers` along (mu, d) where
 // the clear air shows `behindCdM2` (luminances; the fog is grey).
-double throughFogLayers(const std::array<weather::FogLayer, 2>& layers, double behindCdM2, double h, double mu,
+double throughFogLayers(const weather::FogLayers& layers, double behindCdM2, double h, double mu,
                         double d);
 
 }  // namespace skyig::sky

@@ -208,7 +208,7 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
   SkyStateCaches own;
   s.extinction = (caches ? *caches : own).extinction(medium, observer.heightM);
   if (s.conditions.model == SkyModel::Physical) {
-    s.fog = makeFogState(*s.conditions.atmosphere, s.conditions.haze, s.conditions.fog,
+    s.fog = makeFogState(*s.conditions.atmosphere, s.conditions,
                          enuDirection(s.sunAzimuth, s.sunAltitude), s.moonDirection, s.moonlightScale);
     // What comes from beyond the air (moon, planets, stars, the night's light) through the fog too.
     auto throughFog = [&](double e) {

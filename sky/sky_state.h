@@ -84,8 +84,9 @@ struct SkyState {
   glm::dvec3 nightGroundRadiance{0.0};
   // The sun and the moon as glare sources for the display (physics/eye/glare.h).
   eye::GlareSources glare{};
-  // Fog and mist over the clear air (physical sky only): the haze below the tables' visibility
-  // and the ground fog of conditions.haze and conditions.fog, lit by this state's sun and moon.
+  // Fog, mist and precipitation over the clear air (physical sky only): the haze below the
+  // tables' visibility, the ground fog and the precipitation of conditions.haze, .fog and
+  // .precipitation, lit by this state's sun and moon.
   FogState fog;
 };
 

@@ -50,7 +50,7 @@ ViewSphere viewSphere(const SkyState& s) {
   if (s.ephemeris) night = night::makeNightDiffuseSky(*s.ephemeris, s.extinction, false);
   auto cells = std::make_shared<std::vector<ViewCellLight>>();
   cells->reserve(kMu * kPhi);
-  const std::array<weather::FogLayer, 2> moonFog = moonlitFogLayers(s.fog);
+  const weather::FogLayers moonFog = moonlitFogLayers(s.fog);
   forEachEqualAreaCell(kMu, kPhi, [&](const glm::dvec3& view, double cell) {
     double sunlit = 0.0, moonlit = 0.0, own = 0.0;
     const double d = model ? groundDistance(*model, camera, view) : kFar;

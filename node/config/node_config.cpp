@@ -105,13 +105,27 @@ const toml::table* subTable(TableReader& parent, const std::string& key) {
 }
 
 // [weather]: a ground fog (physics/weather/fog_layer.h) until the host sends its own (CIGI
-// Weather Control layer 0): fog_visibility_km (0: none), fog_bottom_m, fog_top_m above the ground.
-void readWeather(TableReader& r, skyig::sky::FogSpec& fog) {
+// Weather Control layer 0): fog_visibility_km (0: none), fog_bottom_m, fog_top_m above the ground;
+// and precipitation or dust (physics/weather/precipitation.h, layers 4-9): precipitation ("none",
+// "rain", "snow", "sleet", "hail", "sand", "dust"), precipitation_severity (0-5),
+// precipitation_visibility_km (0: the severity's), precipitation_top_m, precipitation_coverage_pct.
+void readWeather(TableReader& r, skyig::sky::FogSpec& fog, skyig::weather::PrecipitationSettings& rain,
+                 skyig::sky::FogSpec& precipitation) {
   fog.visibilityKm = r.number("fog_visibility_km", fog.visibilityKm, 0.0, atmosphere::kLargestVisibilityKm);
   fog.bottomM = r.number("fog_bottom_m", fog.bottomM, 0.0, 20000.0);
   fog.topM = r.number("fog_top_m", fog.topM, 0.0, 20000.0);
   if (fog.visibilityKm > 0.0 && !(fog.topM > fog.bottomM))
     r.fail(r.find("fog_top_m"), "fog_top_m", "expected a top above fog_bottom_m (" + std::to_string(fog.bottomM) + " m)");
+  constexpr const char* kKinds = "\"none\", \"rain\", \"snow\", \"sleet\", \"hail\", \"sand\" or \"dust\"";
+  const std::string kind = r.string("precipitation", rain.kind ? std::string(skyig::weather::toString(*rain.kind)) : "none", kKinds);
+  rain.kind = skyig::weather::parsePrecipitation(kind);
+  if (!rain.kind && kind != "none")
+    r.fail(r.find("precipitation"), "precipitation", "expected " + std::string(kKinds) + ", got \"" + kind + "\"");
+  rain.severity = r.integer("precipitation_severity", rain.severity, 0, 5);
+  rain.visibilityKm = r.number("precipitation_visibility_km", rain.visibilityKm, 0.0, atmosphere::kLargestVisibilityKm);
+  rain.topM = r.number("precipitation_top_m", rain.topM, 1.0, 20000.0);
+  rain.coveragePct = r.number("precipitation_coverage_pct", rain.coveragePct, 0.0, 100.0);
+  precipitation = skyig::weather::precipitationLayer(rain);
   r.rejectUnknownKeys();
 }
 
@@ -401,7 +415,7 @@ NodeConfig parseNodeConfig(const std::string& text, const std::string& sourceNam
   }
   if (const toml::table* t = subTable(r, "weather")) {
     TableReader w(*t, "weather.", sourceName);
-    readWeather(w, config.sky.fog);
+    readWeather(w, config.sky.fog, config.precipitation, config.sky.precipitation);
   }
   if (const toml::table* t = subTable(r, "observer")) {
     TableReader o(*t, "observer.", sourceName);

@@ -7,6 +7,7 @@
 #include "node/host/host_state.h"
 #include "sky/channel.h"
 #include "physics/common/sky_conditions.h"
+#include "physics/weather/precipitation.h"
 #include "physics/atmosphere/conditions.h"
 #include "physics/atmosphere/medium.h"
 #include "node/common/config_error.h"
@@ -66,6 +67,8 @@ struct NodeConfig {
   std::vector<ProjectorSettings> channelProjectors{ProjectorSettings{}};  // per channel: its projector, if any
   HostLink host;
   AtmosphereSettings atmosphere;
+  // [weather] precipitation_*: the layer in sky.precipitation until the host sends its own.
+  weather::PrecipitationSettings precipitation;
   // The star catalogue (BSC5 CSV) that sky.starCatalogue is loaded from (node/config/sky_data.h):
   // "" = the bundled one, "none" = planets only.
   std::string starCataloguePath;

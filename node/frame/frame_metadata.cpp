@@ -80,14 +80,18 @@ render::ImageAttributes frameAttributes(const sky::SkyState& s, const sky::Attit
   // The weather drawn: the tables' visibility, and the fog layers over them (0: none).
   if (s.conditions.atmosphere) {
     a["skyig:visibility_tables_km"] = atmosphere::visibilityOf(s.conditions.atmosphere->config().medium);
-    const sky::FogSpec layers[2] = {s.conditions.haze, s.conditions.fog};
-    const char* names[2] = {"haze", "fog"};
-    for (int i = 0; i < 2; ++i) {
+    const sky::FogSpec layers[3] = {s.conditions.haze, s.conditions.fog, s.conditions.precipitation};
+    const char* names[3] = {"haze", "fog", "precipitation"};
+    for (int i = 0; i < 3; ++i) {
       const std::string p = std::string("skyig:") + names[i];
       a[p + "_visibility_km"] = layers[i].visibilityKm;
       a[p + "_bottom_m"] = layers[i].bottomM;
       a[p + "_top_m"] = layers[i].topM;
     }
+    // The precipitation's particles: dust tints (an albedo below 1 per Rec.709 channel).
+    const sky::FogSpec& p = s.conditions.precipitation;
+    a["skyig:precipitation_albedo_rgb"] = std::to_string(p.albedo[0]) + " " + std::to_string(p.albedo[1]) + " " +
+                                          std::to_string(p.albedo[2]);
   }
   if (sky::isGoggle(c)) {
     // A goggle's image is its NVIS radiance (render/sky_renderer.h), drawn with the goggle's

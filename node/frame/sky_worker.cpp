@@ -1,9 +1,12 @@
 #include "node/frame/sky_worker.h"
 #include "physics/common/units.h"
 #include "node/config/node_tables.h"
+#include "physics/weather/precipitation.h"
 
 #include <spdlog/spdlog.h>
 
+#include <array>
+#include <span>
 #include <stdexcept>
 
 namespace skyig::services {
@@ -79,9 +82,16 @@ sky::SkyState SkyWorker::scene(const HostSnapshot* host, Clock::time_point t) {
   // CIGI Celestial Sphere Control: the host dims or hides the star field.
   if (host) c.starFieldIntensity = host->state.starFieldIntensity;
   // The air below the tables' visibility, and the host's ground fog (CIGI Weather Control layer
-  // 0) over the configuration's.
+  // 0) and precipitation (layers 4-9) over the configuration's.
   if (c.atmosphere) c.haze = nodeHaze(config_, visibilityKm_);
   if (host && host->state.groundFog) c.fog = *host->state.groundFog;
+  if (host) {
+    std::array<sky::FogSpec, weather::kPrecipitationKinds> sent{};
+    std::size_t n = 0;
+    for (const auto& layer : host->state.precipitation)
+      if (layer) sent[n++] = *layer;
+    if (n > 0) c.precipitation = weather::combinedLayers(std::span(sent.data(), n));
+  }
   return sky::buildSkyState(observerAt(host, t), c, std::nullopt, &caches_);
 }
 

@@ -1,6 +1,7 @@
 #include "node/frame/state_dump.h"
 
 #include "tables/parameter_hash.h"
+#include "physics/weather/precipitation.h"
 
 #include "render/output_file.h"
 #include "physics/common/units.h"
@@ -25,7 +26,8 @@ namespace {
 using skyig::kDeg;
 
 nlohmann::json fogJson(const sky::FogSpec& f) {
-  return {{"visibility_km", f.visibilityKm}, {"bottom_m", f.bottomM}, {"top_m", f.topM}};
+  return {{"visibility_km", f.visibilityKm}, {"bottom_m", f.bottomM}, {"top_m", f.topM}, {"asymmetry", f.asymmetry},
+          {"albedo", f.albedo}};
 }
 
 nlohmann::json hostJson(const HostState& h) {
@@ -36,6 +38,9 @@ nlohmann::json hostJson(const HostState& h) {
               {"yaw", h.ownship.attitude.yawDeg}, {"pitch", h.ownship.attitude.pitchDeg}, {"roll", h.ownship.attitude.rollDeg}});
   if (h.timeValid) j["utc"] = ephemeris::formatIso8601Utc(h.utc);
   if (h.groundFog) j["ground_fog"] = fogJson(*h.groundFog);
+  for (std::size_t i = 0; i < h.precipitation.size(); ++i)
+    if (h.precipitation[i])
+      j["precipitation"][std::string(weather::toString(static_cast<weather::Precipitation>(i)))] = fogJson(*h.precipitation[i]);
   return j;
 }
 
@@ -76,6 +81,7 @@ void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const sky
                            ? nlohmann::json(atmosphere::hexHash(atmosphere::parameterHash(used.conditions.atmosphere->config())))
                            : nlohmann::json(nullptr)},
         {"haze", fogJson(used.conditions.haze)}, {"fog", fogJson(used.conditions.fog)},
+        {"precipitation", fogJson(used.conditions.precipitation)},
         {"adaptation_cd_m2", used.worldAdaptationLuminance}, {"scene_cd_m2", used.sceneLuminance},
         {"adaptation_gain", used.adaptationGain},
         {"views", views}}},

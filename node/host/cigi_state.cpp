@@ -64,6 +64,34 @@ double HostClock::continuousAt(Clock::time_point t) const {
 namespace {
 using Applied = CigiStateTracker::Applied;
 constexpr Applied kChanged{true, 0, true}, kRejected{false, 1, true}, kIgnored{false, 0, true};
+
+// The thinnest visibility a weather layer is given: 10 m, denser than any fog a crew flies in
+// (a host's 1 mm would make an extinction single precision cannot hold).
+constexpr double kSmallestLayerVisibilityM = 10.0;
+
+// Weather Control layers 4-9 (rain, snow, sleet, hail, sand, dust), global: from the base
+// elevation (MSL, the model's ground) up through the thickness, the visibility inside (0: the
+// one the severity names) over the coverage (physics/weather/precipitation.h).
+Applied precipitationFrom(weather::Precipitation kind, const cigi::WeatherControl& p, HostState& state) {
+  std::optional<sky::FogSpec>& slot = state.precipitation[static_cast<std::size_t>(kind)];
+  if (!p.weatherEnable) {
+    slot = sky::FogSpec{};
+    return kChanged;
+  }
+  if (!std::isfinite(p.baseElevationM) || !std::isfinite(p.thicknessM) || !(p.thicknessM > 0.0f) ||
+      !std::isfinite(p.visibilityRangeM) || p.visibilityRangeM < 0.0f || !(p.coveragePct >= 0.0f && p.coveragePct <= 100.0f))
+    return kRejected;
+  const double base = std::max(0.0, static_cast<double>(p.baseElevationM));
+  const double top = static_cast<double>(p.baseElevationM) + static_cast<double>(p.thicknessM);
+  if (!(top > base)) {  // wholly below the ground
+    slot = sky::FogSpec{};
+    return kChanged;
+  }
+  const double visibilityM = p.visibilityRangeM > 0.0f ? std::max<double>(p.visibilityRangeM, kSmallestLayerVisibilityM) : 0.0;
+  slot = weather::precipitationLayer(kind, base, top, visibilityM / 1000.0, p.severity, static_cast<double>(p.coveragePct) / 100.0);
+  return kChanged;
+}
+
 }  // namespace
 
 CigiStateTracker::Applied CigiStateTracker::on(const cigi::IgControl& p, const cigi::DecodedMessage&,
@@ -175,12 +203,14 @@ CigiStateTracker::Applied CigiStateTracker::on(const cigi::WeatherControl& p, co
       return kRejected;
     const double base = std::max(0.0, static_cast<double>(p.baseElevationM));
     const double top = static_cast<double>(p.baseElevationM) + static_cast<double>(p.thicknessM);
-    state_.groundFog = sky::FogSpec{base, std::max(base, top), static_cast<double>(p.visibilityRangeM) / 1000.0};
+    const double visibilityM = std::max<double>(p.visibilityRangeM, kSmallestLayerVisibilityM);
+    state_.groundFog = sky::FogSpec{base, std::max(base, top), visibilityM / 1000.0};
     if (!(state_.groundFog->topM > state_.groundFog->bottomM)) state_.groundFog = sky::FogSpec{};  // wholly below the ground
     return kChanged;
   }
-  // Other global layers: their visibility and humidity as the global weather's (skyig renders
-  // no cloud or precipitation layers yet).
+  if (const auto kind = weather::precipitationOfLayer(p.layerId)) return precipitationFrom(*kind, p, state_);
+  // The cloud layers: their visibility and humidity as the global weather's (skyig renders no
+  // cloud layers yet).
   if (!p.weatherEnable) return kIgnored;
   if (!std::isfinite(p.visibilityRangeM) || p.visibilityRangeM < 0.0f || p.humidityPct > 100) return kRejected;
   state_.visibilityM = p.visibilityRangeM;

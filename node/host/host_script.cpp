@@ -25,10 +25,15 @@ void forEachScriptLine(const std::string& text, const std::function<void(std::is
     const auto hash = line.find('#');
     if (hash != std::string::npos) line.erase(hash);
     if (line.find_first_not_of(" \t\r,") == std::string::npos) continue;
-    // A header: letters before any data line (the digits' 'e' of 1e3 is allowed).
-    if (!data && line.find_first_of("abcdfghijklmnopqrstuvwxyzABCDFGHIJKLMNOPQRSTUVWXYZ_") != std::string::npos) continue;
-    data = true;
     std::replace(line.begin(), line.end(), ',', ' ');
+    // A header: a line before any data line whose first field is not a number (a data line
+    // starts with its time, and may name things later: "rain").
+    if (!data) {
+      std::istringstream first(line);
+      double time = 0.0;
+      if (!(first >> time)) continue;
+    }
+    data = true;
     std::istringstream fields(line);
     fn(fields, lineNumber);
   }

@@ -11,7 +11,8 @@ namespace skyig::services {
 // The file's text; throws ConfigError "<path>: cannot open the <what>".
 std::string readHostScript(const std::string& path, const char* what);
 
-// Calls fn(fields, lineNumber) for each data line, its commas made blanks.
+// Calls fn(fields, lineNumber) for each data line, its commas made blanks; '#' starts a comment,
+// and lines before the first data line whose first field is not a number are a header.
 void forEachScriptLine(const std::string& text, const std::function<void(std::istringstream& fields, int lineNumber)>& fn);
 
 }  // namespace skyig::services

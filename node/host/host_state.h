@@ -4,6 +4,7 @@
 #include "ephemeris/refraction.h"
 #include "ephemeris/time.h"
 #include "physics/common/sky_conditions.h"
+#include "physics/weather/precipitation.h"
 #include "sky/observer.h"
 
 #include <array>
@@ -88,6 +89,9 @@ struct HostState {
   // CIGI Weather Control, layer 0 (ground fog), global: unset until the host sends one; a layer
   // the host disabled has a visibility of 0.
   std::optional<sky::FogSpec> groundFog;
+  // CIGI Weather Control, layers 4-9 (weather::Precipitation), global: unset until the host sends
+  // one; a layer the host disabled has a visibility of 0.
+  std::array<std::optional<sky::FogSpec>, weather::kPrecipitationKinds> precipitation;
   double temperatureC = ephemeris::kStandardTemperatureC;  // CIGI Atmosphere Control: refraction
   double pressureHpa = ephemeris::kStandardPressureHpa;
   // CIGI Celestial Sphere Control: star field intensity / 100, 0 while the field is disabled.

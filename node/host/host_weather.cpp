@@ -14,9 +14,24 @@ HostWeather HostWeather::parse(const std::string& text, const std::string& sourc
     WeatherStep s;
     std::string extra;
     auto fail = [&](const std::string& why) { throw ConfigError(sourceName + ":" + std::to_string(lineNumber) + ": " + why); };
-    if (!(fields >> s.timeS >> s.visibilityM >> s.humidityPct >> s.fogVisibilityM >> s.fogTopM) || (fields >> extra))
+    if (!(fields >> s.timeS >> s.visibilityM >> s.humidityPct >> s.fogVisibilityM >> s.fogTopM))
       fail("expected 5 numbers: time_s, visibility_m, humidity_pct, fog_visibility_m, fog_top_m");
-    for (double v : {s.timeS, s.visibilityM, s.humidityPct, s.fogVisibilityM, s.fogTopM})
+    std::string kind;
+    if (fields >> kind) {
+      if (kind != "none") {
+        s.precipitation = weather::parsePrecipitation(kind);
+        if (!s.precipitation) fail("precipitation \"" + kind + "\": expected none, rain, snow, sleet, hail, sand or dust");
+      }
+      if (!(fields >> s.precipitationSeverity >> s.precipitationVisibilityM >> s.precipitationTopM))
+        fail("after the precipitation, expected its severity, precipitation_visibility_m and precipitation_top_m");
+      if (s.precipitationSeverity < 0 || s.precipitationSeverity > 5)
+        fail("severity " + std::to_string(s.precipitationSeverity) + " must be in [0, 5]");
+      if (!(s.precipitationVisibilityM >= 0.0) || !(s.precipitationTopM > 0.0))
+        fail("precipitation_visibility_m must be 0 (the severity's) or more and precipitation_top_m above 0");
+    }
+    if (fields >> extra) fail("unexpected \"" + extra + "\" after the last field");
+    for (double v : {s.timeS, s.visibilityM, s.humidityPct, s.fogVisibilityM, s.fogTopM, s.precipitationVisibilityM,
+                     s.precipitationTopM})
       if (!std::isfinite(v)) fail("a value is not a finite number");
     if (!(s.visibilityM > 0.0)) fail("visibility_m " + std::to_string(s.visibilityM) + " must be above 0");
     if (s.humidityPct < 0.0 || s.humidityPct > 100.0) fail("humidity_pct " + std::to_string(s.humidityPct) + " must be in [0, 100]");

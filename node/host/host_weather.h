@@ -2,10 +2,15 @@
 // Scripted weather for the host emulator (`skyig host --weather FILE`): what the host sends from
 // each time on, held until the next line. CSV, one change a line:
 //   time_s, visibility_m, humidity_pct, fog_visibility_m, fog_top_m
+//   [, precipitation, severity, precipitation_visibility_m, precipitation_top_m]
 // with '#' comments and an optional header line; a fog visibility of 0 switches the ground fog
-// (CIGI Weather Control layer 0) off.
+// (CIGI Weather Control layer 0) off; precipitation is none, rain, snow, sleet, hail, sand or
+// dust (layers 4-9; the others off), its visibility 0 the severity's (0-5).
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "physics/weather/precipitation.h"
 
 namespace skyig::services {
 
@@ -15,6 +20,10 @@ struct WeatherStep {
   double humidityPct = 0.0;
   double fogVisibilityM = 0.0;
   double fogTopM = 0.0;
+  std::optional<weather::Precipitation> precipitation;  // none: every layer 4-9 off
+  int precipitationSeverity = 2;
+  double precipitationVisibilityM = 0.0;  // 0: the severity's
+  double precipitationTopM = 1500.0;
 };
 
 class HostWeather {

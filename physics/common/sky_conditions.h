@@ -1,5 +1,6 @@
 #pragma once
 // What the sky depends on besides the sun: the model and the state of the air and ground.
+#include <array>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -15,12 +16,18 @@ namespace skyig::sky {
 
 enum class SkyModel { Preetham, Cie, Physical };
 
-// A layer of fog or mist (physics/weather/fog_layer.h): from bottomM to topM above the ground,
-// visibilityKm inside it; a visibility of 0 is no layer.
+// The asymmetry factor of fog and cloud droplets in the visible (Hansen & Travis 1974: 0.85).
+inline constexpr double kDropletAsymmetry = 0.85;
+
+// A layer of fog, mist, precipitation or dust (physics/weather/fog_layer.h): from bottomM to topM
+// above the ground, visibilityKm inside it; a visibility of 0 is no layer. Its particles' optics
+// (physics/weather/precipitation.h) default to fog's water droplets.
 struct FogSpec {
   double bottomM = 0.0;
   double topM = 0.0;
   double visibilityKm = 0.0;
+  double asymmetry = kDropletAsymmetry;           // g of the phase function, [0, 1)
+  std::array<double, 3> albedo{1.0, 1.0, 1.0};   // single-scattering albedo per Rec.709 channel
   bool operator==(const FogSpec&) const = default;
 };
 
@@ -43,9 +50,11 @@ struct SkyConditions {
   // CIGI Celestial Sphere Control: star field intensity / 100, 0 when the field is disabled.
   double starFieldIntensity = 1.0;
   // SkyModel::Physical: the air below the tables' visibility (physics/weather/fog_layer.h,
-  // hazeBelowTables), and a ground fog (CIGI Weather Control layer 0, [weather], render --fog-*).
+  // hazeBelowTables), a ground fog (CIGI Weather Control layer 0, [weather], render --fog-*) and
+  // the precipitation or dust (CIGI Weather Control layers 4-9, physics/weather/precipitation.h).
   FogSpec haze;
   FogSpec fog;
+  FogSpec precipitation;
 };
 
 }  // namespace skyig::sky

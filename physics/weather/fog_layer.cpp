@@ -35,6 +35,9 @@ void validate(const sky::FogSpec& s) {
   if (s.visibilityKm == 0.0) return;
   if (!(s.bottomM >= 0.0) || !std::isfinite(s.bottomM)) bad("bottom_m", s.bottomM, "0 or more, above the ground");
   if (!(s.topM > s.bottomM) || !std::isfinite(s.topM)) bad("top_m", s.topM, "above the bottom");
+  if (!(s.asymmetry >= 0.0 && s.asymmetry < 1.0)) bad("asymmetry", s.asymmetry, "in [0, 1)");
+  for (double a : s.albedo)
+    if (!(a > 0.0 && a <= 1.0)) bad("albedo", a, "in (0, 1]");
 }
 
 FogLayer makeFogLayer(const sky::FogSpec& spec, double planetRadiusM, double groundAlbedo,
@@ -45,16 +48,16 @@ FogLayer makeFogLayer(const sky::FogSpec& spec, double planetRadiusM, double gro
   f.bottom_height = spec.bottomM;
   f.top_height = spec.topM;
   f.extinction = spec.visibilityKm > 0.0 ? kKoschmieder / (spec.visibilityKm * 1000.0) : 0.0;
-  f.asymmetry = kDropletAsymmetry;
+  f.asymmetry = spec.asymmetry;
+  f.albedo = glm::dvec3(spec.albedo[0], spec.albedo[1], spec.albedo[2]);
   f.ground_albedo = groundAlbedo;
   f.top_irradiance = topIrradiance;
   return f;
 }
 
 double throughFogLuminance(const FogLayer& fog, double behindCdM2, double h, double mu, double d) {
-  FogLayer grey = fog;
-  grey.top_irradiance = glm::dvec3(rec709Luminance(fog.top_irradiance));
-  return shader::throughFog(grey, glm::dvec3(behindCdM2), h, mu, d).x;
+  return behindCdM2 * shader::fogTransmittance(fog, h, mu, d) +
+         rec709Luminance(shader::throughFog(fog, glm::dvec3(0.0), h, mu, d));
 }
 
 }  // namespace skyig::weather

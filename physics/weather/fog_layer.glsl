@@ -1,14 +1,16 @@
 #ifndef SKYIG_WEATHER_FOG_LAYER_GLSL
 #define SKYIG_WEATHER_FOG_LAYER_GLSL
-// A layer of fog or mist over the clear-air sky: a homogeneous slab of water droplets between two
-// spheres about the planet's centre, grey (droplets far larger than the wavelength), lit from its
-// top by the sun and the sky the clear-air tables give there. Its light is the two-stream
-// solution of a non-absorbing slab (Bohren 1987, "Multiple scattering of light and some of its
-// observable consequences", Am. J. Phys. 55(6), 524-533: R = (1 - g) tau / (2 + (1 - g) tau),
-// T = 1 - R, the up and down fluxes linear in the optical depth inside) over a Lambertian ground
-// (adding the ground's reflections: R + T^2 a / (1 - R a)). Closed forms, so a new fog costs no
-// table and shows the frame after the host sends it. physics/weather/fog_layer.h derives a
-// layer from the host's weather; the sky pass and the CPU (the eye's adaptation) compose with
+// A layer of fog, mist, precipitation or dust over the clear-air sky: a homogeneous slab of
+// particles between two spheres about the planet's centre, grey in extinction (particles far
+// larger than the wavelength), lit from its top by the sun and the sky the clear-air tables give
+// there. Its light is the two-stream solution for diffuse light (Bohren 1987, "Multiple
+// scattering of light and some of its observable consequences", Am. J. Phys. 55(6), 524-533):
+// without absorption (water) R = (1 - g) tau / (2 + (1 - g) tau), T = 1 - R, the up and down
+// fluxes linear in the optical depth inside, over a Lambertian ground (adding the ground's
+// reflections: R + T^2 a / (1 - R a)); with absorption (dust, sand: an albedo per channel below
+// 1, which tints the layer) the same equations' hyperbolic solution. Closed forms, so a new layer
+// costs no table and shows the frame after the host sends it. physics/weather/fog_layer.h derives
+// a layer from the host's weather; the sky pass and the CPU (the eye's adaptation) compose with
 // throughFog.
 #include "physics/common/constants.glsl"
 #include "physics/weather/fog_layer_parameters.glsl"
@@ -52,14 +54,51 @@ vec2 fogFluxes(Float tau_in, Float tau, Float g, Float a) {
   return vec2(mix(1.0, down_bottom, s), mix(up_top, a * down_bottom, s));
 }
 
+// Bohren's two-stream equations with absorption, for the backscattered fraction b = (1 - g) / 2
+// and single-scattering albedo omega, tau counted down from the top:
+//   dF_down/dtau = -alpha F_down + beta F_up,  dF_up/dtau = -beta F_down + alpha F_up,
+//   alpha = 1 - omega (1 - b),  beta = omega b,  k^2 = alpha^2 - beta^2.
+// From the bottom (F_up = a D, F_down = D) up by u = tau - tau_in the solution is
+// exp(-M u) = cosh(k u) - sinh(k u) / k M, and F_down = 1 at the top fixes D:
+//   F_down = [cosh(k u) + sinh(k u) / k (alpha - beta a)] / [cosh(k tau) + sinh(k tau) / k (alpha - beta a)]
+//   F_up   = [a cosh(k u) + sinh(k u) / k (beta - alpha a)] / (the same).
+// Written with exponentials that never overflow (numerator and denominator over cosh(k tau)).
+// omega = 1 (k = 0) is fogFluxes' linear solution, the limit of this one.
+vec2 fogFluxesAbsorbing(Float tau_in, Float tau, Float g, Float a, Float omega) {
+  Float b = 0.5 * (1.0 - g);
+  Float alpha = 1.0 - omega * (1.0 - b);
+  Float beta = omega * b;
+  Float k = sqrt(max(alpha * alpha - beta * beta, 1e-12));
+  Float u = clamp(tau - tau_in, 0.0, tau);
+  Float p = exp(k * (u - tau));
+  Float m = exp(-k * (u + tau));
+  Float e2 = exp(-2.0 * k * tau);
+  Float c = alpha - beta * a;
+  Float denominator = (1.0 + e2) + c * (1.0 - e2) / k;
+  return vec2((p + m) + c * (p - m) / k, a * (p + m) + (beta - alpha * a) * (p - m) / k) / denominator;
+}
+
+// Below this albedo the layer absorbs (fogFluxesAbsorbing); at or above it, it is taken as water
+// (fogFluxes), where the hyperbolic form's 1 / k would lose single precision.
+#define FOG_CONSERVATIVE_ALBEDO 0.999
+
 // The fog's own radiance (cd/m^2) along a view of cosine mu_view to the vertical (up positive),
 // tau_in below its top: the downward flux seen looking up, the upward looking down, each a
 // Lambertian field (radiance = flux / pi), mixed by the view's cosine.
 vec3 fogRadiance(IN(FogLayer) fog, Float tau_in, Float mu_view) {
   Float tau = fog.extinction * (fog.top_height - fog.bottom_height);
-  vec2 f = fogFluxes(tau_in, tau, fog.asymmetry, fog.ground_albedo);
   Float up = 0.5 * (1.0 + mu_view);
-  return fog.top_irradiance * ((up * f.x + (1.0 - up) * f.y) / PI);
+  vec3 flux;
+  if (min(fog.albedo.x, min(fog.albedo.y, fog.albedo.z)) >= FOG_CONSERVATIVE_ALBEDO) {
+    vec2 f = fogFluxes(tau_in, tau, fog.asymmetry, fog.ground_albedo);
+    flux = vec3(up * f.x + (1.0 - up) * f.y);
+  } else {
+    for (int i = 0; i < 3; ++i) {
+      vec2 f = fogFluxesAbsorbing(tau_in, tau, fog.asymmetry, fog.ground_albedo, fog.albedo[i]);
+      flux[i] = up * f.x + (1.0 - up) * f.y;
+    }
+  }
+  return fog.top_irradiance * flux / PI;
 }
 
 // What the eye at height h sees along a view of cosine mu where the clear air shows `behind` and

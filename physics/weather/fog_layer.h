@@ -9,6 +9,9 @@
 // approximation) and free to change every frame.
 #include <glm/vec3.hpp>
 
+#include <array>
+#include <cstddef>
+
 #include "physics/common/sky_conditions.h"
 #include "physics/weather/weather_physics.h"
 
@@ -18,8 +21,10 @@ using FogLayer = shader::weather_types::FogLayer;
 
 // The lowest visibility the tables are built for; below it the layer takes the rest.
 inline constexpr double kTablesVisibilityKm = 10.0;
-// The asymmetry factor of fog and cloud droplets in the visible (Hansen & Travis 1974: 0.85).
-inline constexpr double kDropletAsymmetry = 0.85;
+// The layers over the clear air: the haze below the tables' visibility, the ground fog, the
+// precipitation (sky/fog_state.h; the sky pass's fogLayers[]).
+inline constexpr std::size_t kFogLayerCount = 3;
+using FogLayers = std::array<FogLayer, kFogLayerCount>;
 
 // The visibility the tables are built for: the host's, or kTablesVisibilityKm if it is lower.
 double tablesVisibilityKm(double visibilityKm);
@@ -31,7 +36,7 @@ double tablesVisibilityKm(double visibilityKm);
 sky::FogSpec hazeBelowTables(double visibilityKm, double scaleHeightM);
 
 // Throws std::invalid_argument naming a bad value (negative or non-finite heights, a top below
-// the bottom, a negative visibility).
+// the bottom, a negative visibility, an asymmetry outside [0, 1), an albedo outside (0, 1]).
 void validate(const sky::FogSpec& spec);
 
 // The layer of `spec` over a planet of radius planetRadiusM whose ground has `groundAlbedo`, lit
@@ -40,8 +45,9 @@ void validate(const sky::FogSpec& spec);
 FogLayer makeFogLayer(const sky::FogSpec& spec, double planetRadiusM, double groundAlbedo,
                       const glm::dvec3& topIrradiance);
 
-// throughFog for luminances (the fog is grey, so the luminance of the composite is the composite
-// of the luminances): what the eye h metres above the ground sees of `behindCdM2` along (mu, d).
+// throughFog for luminances (the extinction is grey, so what lies behind is dimmed alike in every
+// channel; the layer's own light, tinted where it absorbs, is added as its luminance): what the
+// eye h metres above the ground sees of `behindCdM2` along (mu, d).
 double throughFogLuminance(const FogLayer& fog, double behindCdM2, double h, double mu, double d);
 
 }  // namespace skyig::weather

@@ -10,9 +10,10 @@ struct FogLayer {
   Float bottom_height;
   Float top_height;
   Float extinction;      // per metre, at every wavelength (Koschmieder: 3.912 / visibility)
-  Float asymmetry;       // g of the droplets' phase function
+  Float asymmetry;       // g of the particles' phase function
   Float ground_albedo;   // the ground under the layer
   vec3 top_irradiance;   // linear Rec.709 lux on a horizontal surface at the top, from above
+  vec3 albedo;           // the particles' single-scattering albedo per Rec.709 channel (1: water)
 };
 
 #endif

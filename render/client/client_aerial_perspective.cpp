@@ -2,6 +2,7 @@
 
 #include "render/gl/shader_source.h"
 #include "render/passes/common/atmosphere_uniforms.h"
+#include "render/passes/sky/fog_uniforms.h"
 #include "physics/atmosphere/physical_camera.h"
 #include "physics/spectrum/spectrum.h"
 
@@ -81,7 +82,10 @@ void ClientAerialPerspective::bind(const PhysicalSkyPass::Tables& tables, const 
     const glm::vec3 f(v);
     glProgramUniform3f(program, glGetUniformLocation(program, name), f.x, f.y, f.z);
   };
-  v3("skyig_camera", atmosphere::physicalCamera(*tables.model, state.observer.heightM));
+  const glm::dvec3 camera = atmosphere::physicalCamera(*tables.model, state.observer.heightM);
+  v3("skyig_camera", camera);
+  FogUniforms(program, "skyig_fog", "skyig_cameraHeight")
+      .set(program, skyig::sky::drawnFogLayers(state.fog), glm::length(camera) - tables.model->parameters(0).bottom_radius);
   v3("skyig_sunDirection", skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude));
   v3("skyig_moonDirection", state.moonDirection);
   // As the CPU's: the moonlit in-scatter whenever the moon lights the sky at all.

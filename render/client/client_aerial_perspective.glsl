@@ -5,6 +5,7 @@
 // from the tables the sky is drawn with: Bruneton & Neyret (2008) section 4, as Bruneton's 2017
 // GetSkyRadianceToPoint (physics/atmosphere/aerial_perspective.glsl).
 #include "physics/atmosphere/aerial_perspective.glsl"
+#include "physics/weather/fog_layer.glsl"
 
 // Wavelength groups of four (physics/atmosphere/model.h) the transmittance is summed over.
 #define SKYIG_AERIAL_GROUPS 4
@@ -22,13 +23,19 @@ uniform vec3 skyig_camera;
 uniform vec3 skyig_sunDirection;    // east-north-up unit vectors, airless
 uniform vec3 skyig_moonDirection;
 uniform vec3 skyig_moonlightScale;  // the moonlit sky's Rec.709 scale (0: none)
+// The haze below the tables' visibility, the ground fog and the precipitation as the sky pass
+// draws them (sky/fog_state.h), and the observer's height above the ground, metres.
+uniform FogLayer skyig_fog[3];
+uniform float skyig_cameraHeight;
 
 // Between the observer and a point offsetEnuM metres from it (east, north, up): a surface of
 // radiance L seen there is L * transmittance + the returned in-scattered radiance (linear
 // Rec.709, cd/m^2), lit by the sun and the moon as Sky::aerialPerspective is. The
 // transmittance is sunlight's per Rec.709 channel, as the CPU defines it: the Rec.709 of the
 // sun's spectrum through the segment (every wavelength's own transmittance, Bruneton & Neyret
-// 2008 section 4: T(x, x_p) = T(x, v) / T(x_p, v)) over the Rec.709 of the sun's spectrum.
+// 2008 section 4: T(x, x_p) = T(x, v) / T(x_p, v)) over the Rec.709 of the sun's spectrum. The fog
+// layers on the segment then dim both and add their own light (physics/weather/fog_layer.glsl), as
+// the CPU's does: a black target at the visibility keeps Koschmieder's 2% against the fog behind.
 vec3 skyigAerialPerspective(vec3 offsetEnuM, out vec3 transmittance) {
   transmittance = vec3(1.0);
   vec3 camera;
@@ -60,6 +67,12 @@ vec3 skyigAerialPerspective(vec3 offsetEnuM, out vec3 transmittance) {
                                             view_ray, r, mu, d, ground, skyig_moonDirection,
                                             transmittance) *
                     skyig_moonlightScale;
+  }
+  Float segment_length = length(offsetEnuM);
+  Float mu_fog = segment_length > 0.0 ? offsetEnuM.z / segment_length : 1.0;
+  for (int i = 0; i < 3; ++i) {
+    in_scattered = throughFog(skyig_fog[i], in_scattered, skyig_cameraHeight, mu_fog, segment_length);
+    transmittance *= fogTransmittance(skyig_fog[i], skyig_cameraHeight, mu_fog, segment_length);
   }
   return in_scattered;
 }

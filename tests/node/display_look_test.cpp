@@ -275,3 +275,40 @@ TEST_F(DisplayLook, InsideAboveAndThroughAGroundFog) {
               luminance(up), luminance(down), sky.r, sky.g, sky.b, luminance(sea), below, over);
   EXPECT_NEAR(over / below, 1.0, 0.02);
 }
+
+// Precipitation and dust from the ground to 1500 m (render --precipitation), the same morning
+// from 30 m: heavy rain (severity 3, 10 mm/h, 2.5 km) greys the frame like fog (no channel 30%
+// from the others); a dust storm (severity 2, 1 km) turns it brown, red over blue by more than a
+// clear sky's ground does (the particles absorb blue, Dubovik et al. 2002), the same in the
+// display's PNG codes; a layer of 0% coverage changes nothing.
+TEST_F(DisplayLook, RainGreysAndDustBrownsTheFrame) {
+  const std::string scene = "--utc 2026-06-21T09:00:00Z --yaw 270 --alt 30 --pitch 0 ";
+  auto mean = [](const Frame& f) {
+    glm::dvec3 m(0.0);
+    for (int y = 0; y < f.height; ++y)
+      for (int x = 0; x < f.width; ++x) m += f.world(x, y);
+    return m / double(f.height * f.width);
+  };
+  auto meanCode = [](const Frame& f) {
+    glm::dvec3 m(0.0);
+    for (int y = 0; y < f.height; ++y)
+      for (int x = 0; x < f.width; ++x) m += f.code(x, y);
+    return m / double(f.height * f.width);
+  };
+  const Frame clear = render(scene);
+  const Frame rain = render(scene + "--precipitation rain --precipitation-severity 3");
+  const Frame dust = render(scene + "--precipitation dust --precipitation-severity 2");
+  const Frame none = render(scene + "--precipitation dust --precipitation-coverage 0");
+  const glm::dvec3 r = mean(rain), d = mean(dust), c = mean(clear);
+  EXPECT_LT(std::max({r.r, r.g, r.b}) / std::min({r.r, r.g, r.b}), 1.3) << "rain is grey: " << r.r << ", " << r.g << ", " << r.b;
+  EXPECT_GT(d.r / d.b, 1.25 * (c.r / c.b)) << "dust is brown";
+  EXPECT_GT(d.r, d.g);
+  EXPECT_GT(d.g, d.b);
+  const glm::dvec3 dc = meanCode(dust), rc = meanCode(rain);
+  EXPECT_GT(dc.r - dc.b, 10.0) << "on the display too";
+  EXPECT_LT(std::abs(rc.r - rc.b), 15.0);
+  EXPECT_EQ(mean(none), c);
+  std::printf("30 m, rain severity 3: (%.0f, %.0f, %.0f) cd/m^2, codes (%.0f, %.0f, %.0f); dust severity 2: "
+              "(%.0f, %.0f, %.0f) cd/m^2, codes (%.0f, %.0f, %.0f)\n",
+              r.r, r.g, r.b, rc.r, rc.g, rc.b, d.r, d.g, d.b, dc.r, dc.g, dc.b);
+}

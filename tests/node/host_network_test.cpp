@@ -391,12 +391,16 @@ TEST(CigiSensorControl, NanGainIsCountedAndDroppedWithoutLosingTheSwitch) {
 
 namespace {
 
-void sendWeather(UdpSocket& host, const sockaddr_in& to, std::uint32_t frame, const cigi::WeatherControl& w) {
+void sendWeather(UdpSocket& host, const sockaddr_in& to, std::uint32_t frame, const cigi::WeatherControl& w,
+                 int cigiVersion = 3) {
   cigi::IgControl ig;
   ig.hostFrameNumber = frame;
   const cigi::Packet packets[] = {ig, w};
   std::vector<std::uint8_t> bytes;
-  ASSERT_EQ(cigi::encodeMessage(packets, skyig::protocol::ByteOrder::big, bytes), "");
+  if (cigiVersion == 4)
+    ASSERT_EQ(cigi::encodeMessage4(packets, skyig::protocol::ByteOrder::little, bytes), "");
+  else
+    ASSERT_EQ(cigi::encodeMessage(packets, skyig::protocol::ByteOrder::big, bytes), "");
   ASSERT_TRUE(host.sendTo(bytes, to));
 }
 
@@ -442,6 +446,65 @@ TEST(CigiWeatherControl, GroundFogReachesTheSkyStateAndGoesAgain) {
   EXPECT_EQ(state->conditions.fog.visibilityKm, 0.0);
 }
 
+// CIGI Weather Control, layers 4-9, global scope, over loopback in 3.3 and 4.0: heavy rain with
+// no visibility of its own takes its severity's (10 mm/h: 2.5 km); a dust layer over half the
+// sky (4.0) joins it in the one precipitation layer the sky draws, tinting it; a coverage of
+// 150% is refused and counted; Weather Enable off removes each.
+TEST(CigiWeatherControl, PrecipitationLayersReachTheSkyStateIn33And40) {
+  const NodeConfig config = parseNodeConfig("[sky]\nmodel = \"preetham\"\n[[channel]]\nname = \"front\"\n", "rain.toml");
+  NodeStats workerStats;
+  SkyWorker worker(config, nullptr, workerStats);
+  Receiver node;
+  UdpSocket host({"127.0.0.1", 0});
+  cigi::WeatherControl rain;
+  rain.layerId = 4;
+  rain.weatherEnable = true;
+  rain.severity = 3;
+  rain.coveragePct = 100.0f;
+  rain.thicknessM = 1500.0f;
+  sendWeather(host, node.address(), 1, rain);
+  ASSERT_TRUE(node.handled(1));
+  auto state = worker.step(node.latest.get().get(), Clock::now(), /*force=*/true);
+  ASSERT_TRUE(state);
+  const skyig::sky::FogSpec heavyRain = state->conditions.precipitation;
+  EXPECT_NEAR(heavyRain.visibilityKm, skyig::weather::rainVisibilityKm(10.0), 1e-9);
+  EXPECT_EQ(heavyRain.topM, 1500.0);
+  EXPECT_EQ(heavyRain.albedo[2], 1.0);
+
+  cigi::WeatherControl dust;
+  dust.layerId = 9;
+  dust.weatherEnable = true;
+  dust.visibilityRangeM = 800.0f;
+  dust.coveragePct = 50.0f;
+  dust.thicknessM = 1500.0f;
+  sendWeather(host, node.address(), 2, dust, 4);
+  ASSERT_TRUE(node.handled(2));
+  EXPECT_EQ(node.latest.get()->state.cigiMajorVersion, 4);
+  state = worker.step(node.latest.get().get(), Clock::now(), true);
+  const skyig::sky::FogSpec both = state->conditions.precipitation;
+  EXPECT_NEAR(3.912 / both.visibilityKm, 3.912 / heavyRain.visibilityKm + 3.912 / 1.6, 1e-9);
+  EXPECT_LT(both.albedo[2], both.albedo[0]);
+
+  cigi::WeatherControl bad = dust;
+  bad.coveragePct = 150.0f;
+  sendWeather(host, node.address(), 3, bad, 4);
+  ASSERT_TRUE(node.handled(3));
+  EXPECT_EQ(node.stats.rejectedValues.load(), 1u);
+  EXPECT_EQ(worker.step(node.latest.get().get(), Clock::now(), true)->conditions.precipitation, both);
+
+  cigi::WeatherControl rainOff = rain;
+  rainOff.weatherEnable = false;
+  sendWeather(host, node.address(), 4, rainOff);
+  ASSERT_TRUE(node.handled(4));
+  state = worker.step(node.latest.get().get(), Clock::now(), true);
+  EXPECT_NEAR(state->conditions.precipitation.visibilityKm, 1.6, 1e-9);  // the dust alone
+  cigi::WeatherControl dustOff = dust;
+  dustOff.weatherEnable = false;
+  sendWeather(host, node.address(), 5, dustOff, 4);
+  ASSERT_TRUE(node.handled(5));
+  EXPECT_EQ(worker.step(node.latest.get().get(), Clock::now(), true)->conditions.precipitation.visibilityKm, 0.0);
+}
+
 // `skyig host` sends Weather Control (layer 0, global) only when its weather is scripted or a fog
 // is asked for: otherwise a node keeps the ground fog of its own configuration. The datagram's
 // Weather Control carries the fog the command line named.
@@ -475,4 +538,26 @@ TEST(HostCommandWeather, GroundFogIsSentOnlyWhenAskedFor) {
   EXPECT_EQ(w->visibilityRangeM, 300.0f);
   EXPECT_EQ(w->thicknessM, 150.0f);
   EXPECT_EQ(w->baseElevationM, 0.0f);
+  // Precipitation, in CIGI 4.0 as in 3.3: every layer 4-9 is sent, the one asked for on.
+  for (const char* version : {"3", "4"}) {
+    const cigi::DecodedMessage snowy = firstDatagram(std::string("--precipitation snow --precipitation-severity 4 --cigi ") + version);
+    ASSERT_TRUE(snowy.ok()) << version;
+    EXPECT_EQ(snowy.majorVersion, std::stoi(version));
+    int on = 0, off = 0;
+    for (const cigi::Packet& p : snowy.packets)
+      if (const auto* l = std::get_if<cigi::WeatherControl>(&p); l && l->layerId >= 4) {
+        if (!l->weatherEnable) {
+          ++off;
+          continue;
+        }
+        ++on;
+        EXPECT_EQ(l->layerId, 5);  // snow
+        EXPECT_EQ(l->severity, 4);
+        EXPECT_EQ(l->visibilityRangeM, 0.0f);  // the severity's
+        EXPECT_EQ(l->coveragePct, 100.0f);
+        EXPECT_EQ(l->thicknessM, 1500.0f);
+      }
+    EXPECT_EQ(on, 1) << version;
+    EXPECT_EQ(off, 5) << version;
+  }
 }

@@ -107,6 +107,25 @@ TEST(NodeConfig, WrongTypeAndUnknownKeys) {
             "bad.toml:2: observer.utc: expected a UTC time like \"2026-06-21T19:30:00Z\"");
 }
 
+// [weather]: a ground fog and a precipitation layer from the ground up; a kind it does not know
+// is named with the line.
+TEST(NodeConfig, WeatherFogAndPrecipitation) {
+  const NodeConfig c = parseNodeConfig(
+      "[weather]\nfog_visibility_km = 0.4\nfog_top_m = 200\nprecipitation = \"snow\"\nprecipitation_severity = 4\n"
+      "precipitation_top_m = 900\nprecipitation_coverage_pct = 50\n",
+      "w.toml");
+  EXPECT_EQ(c.sky.fog, (skyig::sky::FogSpec{0.0, 200.0, 0.4}));
+  EXPECT_EQ(c.precipitation.kind, skyig::weather::Precipitation::snow);
+  EXPECT_EQ(c.sky.precipitation.topM, 900.0);
+  EXPECT_EQ(c.sky.precipitation.visibilityKm, 2.0 * skyig::weather::visibilityForSeverityKm(skyig::weather::Precipitation::snow, 4));
+  EXPECT_EQ(parseNodeConfig("[weather]\nprecipitation = \"none\"\n", "w.toml").sky.precipitation.visibilityKm, 0.0);
+  EXPECT_EQ(errorOf("[weather]\nprecipitation = \"drizzle\"\n"),
+            "bad.toml:2: weather.precipitation: expected \"none\", \"rain\", \"snow\", \"sleet\", \"hail\", \"sand\" or "
+            "\"dust\", got \"drizzle\"");
+  EXPECT_EQ(errorOf("[weather]\nprecipitation_severity = 9\n"),
+            "bad.toml:2: weather.precipitation_severity: expected an integer in [0, 5], got 9");
+}
+
 TEST(NodeConfig, SyntaxErrorsAndDuplicates) {
   EXPECT_NE(errorOf("[sky\nmodel = 1\n").find("bad.toml:1:"), std::string::npos);
   EXPECT_EQ(errorOf("[[channel]]\nname = \"a\"\n[[channel]]\nname = \"a\"\n"),

@@ -244,6 +244,25 @@ TEST(HostWeather, HoldsEachStepAndNamesBadLines) {
   const HostWeather bundled = HostWeather::load(std::string(SKYIG_SOURCE_DIR) + "/config/fog_lifting.csv");
   EXPECT_EQ(bundled.at(0.0).fogVisibilityM, 200.0);
   EXPECT_EQ(bundled.at(60.0).visibilityM, 40000.0);
+  EXPECT_FALSE(bundled.at(60.0).precipitation);
+  // Precipitation after the fog: a kind (or none), its severity, visibility (0: the severity's)
+  // and top; the first data line may name it (it starts with its time: not a header).
+  const HostWeather rain = HostWeather::parse("0,3000,95,0,0,rain,3,0,1200\n5,9000,80,0,0,none,0,0,1500\n", "r.csv");
+  EXPECT_EQ(rain.at(0.0).precipitation, skyig::weather::Precipitation::rain);
+  EXPECT_EQ(rain.at(0.0).precipitationSeverity, 3);
+  EXPECT_EQ(rain.at(0.0).precipitationTopM, 1200.0);
+  EXPECT_FALSE(rain.at(5.0).precipitation);
+  try {
+    HostWeather::parse("0,3000,95,0,0,drizzle,3,0,1200\n", "r.csv");
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("r.csv:1: precipitation \"drizzle\"", 0), 0u) << e.what();
+  }
+  EXPECT_THROW(HostWeather::parse("0,3000,95,0,0,rain,6,0,1200\n", "r.csv"), ConfigError);  // severity 6
+  EXPECT_THROW(HostWeather::parse("0,3000,95,0,0,rain,3\n", "r.csv"), ConfigError);         // fields missing
+  EXPECT_THROW(HostWeather::parse("0,3000,95,0,0,rain,3,0,1200,7\n", "r.csv"), ConfigError);
+  const HostWeather showers = HostWeather::load(std::string(SKYIG_SOURCE_DIR) + "/config/showers.csv");
+  EXPECT_EQ(showers.at(59.0).timeS, 59.0);  // a change every second for a minute
 }
 
 // A CIGI 4.0 host states the seconds (a float the 3.3 Celestial Sphere Control lacks): the

@@ -53,8 +53,9 @@
 #include "render/passes/sky/physical_sky_uniforms.glsl"
 #include "render/glsl/band.glsl"
 #include "physics/weather/fog_layer.glsl"
-// The haze below the tables' visibility, then the ground fog (sky/fog_state.h); extinction 0: none.
-uniform FogLayer fogLayers[2];
+// The haze below the tables' visibility, the ground fog, the precipitation (sky/fog_state.h,
+// weather::kFogLayerCount); extinction 0: none.
+uniform FogLayer fogLayers[3];
 uniform float cameraHeight;  // metres above the ground, from the CPU's double (not the float radius)
 #ifdef SKYIG_NIGHT_LAYER
 #include "render/glsl/frame_uniforms.h"
@@ -162,8 +163,7 @@ void main() {
   // Fog and mist in front of the air's light (physics/weather/fog_layer.glsl); the camera is on
   // the model's +z axis, so view.z is the cosine to its vertical. The night's layer below came
   // through the fog already (the state's extinction profile, sky/sky_state.cpp).
-  radiance = throughFog(fogLayers[1], throughFog(fogLayers[0], radiance, cameraHeight, view.z, d),
-                        cameraHeight, view.z, d);
+  for (int i = 0; i < 3; ++i) radiance = throughFog(fogLayers[i], radiance, cameraHeight, view.z, d);
 #ifdef SKYIG_NIGHT_LAYER
   nightLayerHere = nightLayerAt(gl_FragCoord.xy);
 #if defined(SKYIG_NIGHT_LAYER_TRANSMITTED)

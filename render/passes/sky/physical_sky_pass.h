@@ -66,7 +66,7 @@ class PhysicalSkyPass {
 
   // The fog layers the next draw() composes over the sky (sky/fog_state.h, drawnFogLayers); none
   // (extinction 0) until set.
-  void setFog(const std::array<weather::FogLayer, 2>& layers) { fog_ = layers; }
+  void setFog(const weather::FogLayers& layers) { fog_ = layers; }
 
   const atmosphere::AtmosphereModel* current() const { return current_.model.get(); }
   const atmosphere::AtmosphereModel* pending() const { return pending_ ? pending_->set.model.get() : nullptr; }
@@ -168,7 +168,7 @@ class PhysicalSkyPass {
   TableSet current_;
   std::unique_ptr<Pending> pending_;
   std::size_t lastUploadBytes_ = 0;
-  std::array<weather::FogLayer, 2> fog_{};
+  weather::FogLayers fog_{};
   double lastUploadSeconds_ = 0.0;
 };
 

@@ -63,7 +63,7 @@ struct ColumnResult {
 };
 
 ColumnResult checkColumn(const AtmosphereModel& model, const atmosphere::PackedRec709Tables& tables,
-                         const std::array<FogLayer, 2>& fog, const Scene& s) {
+                         const FogLayers& fog, const Scene& s) {
   ColumnResult out;
   const glm::dvec3 camera = atmosphere::observerPosition(model.config().medium, s.altitudeM);
   const glm::dvec3 sun = atmosphere::directionFromAngles((90.0 - s.sunElevationDeg) * kDeg, 0.0);
@@ -133,7 +133,9 @@ TEST_P(LowVisibility, SkyAndGroundFiniteSmoothAndColouredThroughTheHorizon) {
   for (double h : {2.0, 300.0, 3000.0, 12000.0})
     for (double sunDeg : {-12.0, 0.0, 5.0, 30.0, 70.0}) {
       const glm::dvec3 sun = atmosphere::directionFromAngles((90.0 - sunDeg) * kDeg, 0.0);
-      const sky::FogState fog = sky::makeFogState(model, haze, {}, sun, sun, glm::dvec3(0.0));
+      sky::SkyConditions conditions;
+      conditions.haze = haze;
+      const sky::FogState fog = sky::makeFogState(model, conditions, sun, sun, glm::dvec3(0.0));
       for (double az : {30.0, 90.0, 180.0}) {
         const Scene s{v, h, sunDeg, az};
         const ColumnResult r = checkColumn(model, tables, sky::drawnFogLayers(fog), s);
@@ -168,7 +170,9 @@ INSTANTIATE_TEST_SUITE_P(FogToClearAir, LowVisibility,
 TEST(FogAtNight, WhatComesFromBeyondTheAirIsDimmedByTheLayer) {
   const AtmosphereModel model = atmosphere::testing::cachedModel(tablesConfig(40.0));
   const glm::dvec3 up(0.0, 0.0, 1.0);
-  const sky::FogState fog = sky::makeFogState(model, {}, {0.0, 200.0, 0.4}, up, up, glm::dvec3(0.0));
+  sky::SkyConditions conditions;
+  conditions.fog = {0.0, 200.0, 0.4};
+  const sky::FogState fog = sky::makeFogState(model, conditions, up, up, glm::dvec3(0.0));
   const double h = 30.0;  // physicalCamera's height: at least a metre
   const atmosphere::ExtinctionProfile clear(model.config().medium, h);
   const atmosphere::ExtinctionProfile dimmed =

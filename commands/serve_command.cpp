@@ -25,6 +25,7 @@ struct ServeOptions {
   std::uint64_t frames = 0;
   bool synchronous = false;
   double frameRate = 0.0;
+  double logIntervalS = 5.0;
 };
 
 int run(const ServeOptions& o) {
@@ -59,6 +60,7 @@ int run(const ServeOptions& o) {
   opt.recordPath = o.record;
   opt.saveFramesDir = o.saveFrames;
   opt.saveEvery = o.saveEvery;
+  opt.logIntervalS = o.logIntervalS;
   // Output files are checked before anything starts: a bad path is a usage error (exit 2).
   for (const std::string* path : {&o.dumpState, &o.statsJson, &o.record})
     if (!path->empty()) render::checkWritable(*path);
@@ -105,6 +107,10 @@ void registerServeCommand(CLI::App& app, int& exitCode) {
                 "Write every channel's frame (EXR in cd/m^2, PNG as displayed) to this directory, as replay names them");
   c->add_option("--save-every", o->saveEvery, "With --save-frames: every Nth frame (30)")->check(CLI::PositiveNumber);
   c->add_option("--stats-json", o->statsJson, "Write counters and latency percentiles every few seconds and on exit");
+  c->add_option("--log-interval", o->logIntervalS,
+                "Seconds between the frame-timing info lines (frame rate, frame and channel times, frames over the "
+                "period, host frame age; default 5, 0: only the summary at exit)")
+      ->check(CLI::Range(0.0, 3600.0));
   c->callback([o, &exitCode] { exitCode = run(*o); });
 }
 

@@ -8,6 +8,7 @@
 #include "node/frame/display_outputs.h"
 #include "node/transport/cigi_receiver.h"
 #include "node/frame/frame_files.h"
+#include "node/frame/frame_timing.h"
 #include "node/frame/frame_metadata.h"
 #include "node/config/projector_channel.h"
 #include "node/frame/sky_worker.h"
@@ -157,6 +158,18 @@ NodeChannels loadNodeChannels(const NodeConfig& config) {
   return out;
 }
 
+// The run's timing in one line at exit (the statistics' rings: the last 8192 frames).
+void logRunTiming(const NodeStats& stats, double elapsedS) {
+  const std::uint64_t frames = stats.frames.load();
+  if (frames == 0) return;
+  const nlohmann::json t = stats.frameTime.summary();
+  auto ms = [&](const char* key) { return t.value(key, 0.0) / 1000.0; };
+  spdlog::info("served {} frames in {:.1f} s ({:.1f} fps): frame p50 {:.1f} ms, p99 {:.1f} ms, max {:.1f} ms; {} over "
+               "{:.1f} ms; {} Start of Frames sent",
+               frames, elapsedS, static_cast<double>(frames) / elapsedS, ms("p50_us"), ms("p99_us"), ms("max_us"),
+               stats.framesOverPeriod.load(), stats.targetPeriodUs.load() / 1000.0, stats.startOfFrameSent.load());
+}
+
 void logChannels(const NodeOptions& opt, const NodeChannels& nc, const DisplayOutputs& display) {
   spdlog::info("rendering {} channel(s) of node \"{}\" on {} ({})", nc.channels.size(), opt.config.nodeName,
                display.info().renderer, opt.headless ? "headless" : "windows");
@@ -179,6 +192,12 @@ class FrameLoop {
 
   void run(const NodeChannels& nc, DisplayOutputs& display, const std::atomic<bool>& externalStop) {
     SystemdNotifier systemd = SystemdNotifier::fromEnvironment();  // Type=notify: ready after frame 0, then the watchdog
+    std::vector<std::string> names;
+    for (const auto& c : nc.channels) names.push_back(c.name);
+    stats_.channelGpuTime.setChannels(names);
+    stats_.targetPeriodUs = 1e6 / opt_.frameRateHz;
+    timing_.emplace(names, 1.0 / opt_.frameRateHz);
+    lastLog_ = Clock::now();
     for (std::uint64_t frame = 0; !externalStop && (opt_.frames == 0 || frame < opt_.frames); ++frame) {
       waitForFrame(externalStop);
       const std::shared_ptr<const BuiltSky> built = sky_.get();
@@ -196,8 +215,11 @@ class FrameLoop {
       draw(display, frame, *built, pose);
       const auto frameEnd = Clock::now();
       count(snapshot, frameStart, frameEnd);
+      time(snapshot, frameStart, frameEnd, display.lastChannelGpuSeconds());
       sendStartOfFrame(frame, snapshot, frameEnd);
-      if (dump_) dump_->write(frame, snapshot, built->state, pose);
+      if (dump_)
+        dump_->write(frame, snapshot, built->state, pose, std::chrono::duration<double>(frameEnd - frameStart).count(),
+                     display.lastChannelGpuSeconds());
       systemd.frameDone(Clock::now());
       if (!opt_.headless && display.closeRequested()) break;
     }
@@ -246,6 +268,26 @@ class FrameLoop {
     }
   }
 
+  // The frame's timing: in the statistics, and in the info line every logIntervalS.
+  void time(const HostSnapshot* snapshot, Clock::time_point frameStart, Clock::time_point frameEnd,
+            const std::vector<double>& channelGpuS) {
+    auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
+    const double frameS = seconds(frameEnd - frameStart);
+    std::optional<double> intervalS, hostAgeS;
+    if (previousStart_) intervalS = seconds(frameStart - *previousStart_);
+    previousStart_ = frameStart;
+    if (snapshot && snapshot->state.updates > 0) hostAgeS = seconds(frameEnd - snapshot->state.received);
+    if (frameS * 1e6 > stats_.targetPeriodUs.load()) stats_.framesOverPeriod.fetch_add(1, std::memory_order_relaxed);
+    if (intervalS) stats_.frameInterval.add(*intervalS * 1e6);
+    if (hostAgeS) stats_.shownHostAge.add(*hostAgeS * 1e6);
+    for (std::size_t i = 0; i < channelGpuS.size(); ++i) stats_.channelGpuTime.add(i, channelGpuS[i] * 1e6);
+    timing_->add(frameS, intervalS, channelGpuS, hostAgeS);
+    if (opt_.logIntervalS > 0.0 && frameEnd - lastLog_ >= std::chrono::duration<double>(opt_.logIntervalS)) {
+      spdlog::info("{}; {} Start of Frames sent", timing_->takeLogLine(), stats_.startOfFrameSent.load());
+      lastLog_ = frameEnd;
+    }
+  }
+
   // Start of Frame: to the configured host (host.reply_to, --reply-to), else to the followed
   // host's address on the reply port while it is alive: only an allowed sender that won a
   // session is answered, and one datagram from a spoofed source gets at most a session gap's
@@ -282,6 +324,9 @@ class FrameLoop {
   std::unique_ptr<StateDump> dump_;
   std::uint64_t hostVersionShown_ = 0;
   Clock::time_point lastArrivalShown_{};
+  std::optional<FrameTimingWindow> timing_;
+  std::optional<Clock::time_point> previousStart_;
+  Clock::time_point lastLog_{};
   std::vector<std::uint8_t> sof_;
 };
 
@@ -328,6 +373,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
     FrameLoop(opt, stats, sky, worker, udp, start).run(channels, display, externalStop);
   }  // the threads are joined here
   if (!opt.statsPath.empty()) writeStatsFile(opt.statsPath, stats);  // the final counters, once
+  logRunTiming(stats, std::chrono::duration<double>(Clock::now() - start).count());
   return 0;
 }
 

@@ -31,6 +31,7 @@ struct NodeOptions {
   std::string saveFramesDir;                        // every saveEvery-th frame of each channel, EXR + PNG
   std::uint64_t saveEvery = 30;
   double statsIntervalS = 2.0;
+  double logIntervalS = 5.0;                        // the frame-timing info line (0: only at exit)
   std::optional<std::string> canInterface;          // SocketCAN interface (CANaerospace host)
   int canFd = -1;                                   // an already open CAN frame stream (tests)
 };

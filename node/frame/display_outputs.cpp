@@ -66,10 +66,27 @@ bool DisplayOutputs::closeRequested() const {
 
 std::vector<std::string> DisplayOutputs::windowTitles() const { return titles_; }
 
+std::array<unsigned, 2>& DisplayOutputs::queries(std::size_t index) {
+  if (queries_.size() <= index) queries_.resize(index + 1, {0u, 0u});
+  if (queries_[index][0] == 0) glGenQueries(2, queries_[index].data());
+  return queries_[index];
+}
+
 void DisplayOutputs::drawChannel(render::SkyRenderer& renderer, const sky::SkyState& state, const sky::Attitude& attitude,
                                  const sky::ChannelConfig& channel, std::size_t index) {
+  const std::array<unsigned, 2>& q = queries(index);
+  glQueryCounter(q[0], GL_TIMESTAMP);
   if (index < projectors_.size() && projectors_[index]) renderer.drawProjector(state, attitude, channel, projectors_[index]);
   else renderer.draw(state, attitude, channel);
+  glQueryCounter(q[1], GL_TIMESTAMP);
+}
+
+void DisplayOutputs::readChannelTime(std::size_t index) {
+  if (channelGpuS_.size() <= index) channelGpuS_.resize(index + 1, 0.0);
+  GLuint64 begin = 0, end = 0;
+  glGetQueryObjectui64v(queries_[index][0], GL_QUERY_RESULT, &begin);
+  glGetQueryObjectui64v(queries_[index][1], GL_QUERY_RESULT, &end);
+  channelGpuS_[index] = end > begin ? static_cast<double>(end - begin) * 1e-9 : 0.0;
 }
 
 void DisplayOutputs::draw(const sky::SkyState& state, const sky::Attitude& attitude,
@@ -80,6 +97,7 @@ void DisplayOutputs::draw(const sky::SkyState& state, const sky::Attitude& attit
       if (drawn) drawn(*renderers_.front(), channels[i], i < projectors_.size() ? projectors_[i].get() : nullptr);
     }
     glFinish();  // the frame ends when its pixels exist
+    for (std::size_t i = 0; i < channels.size(); ++i) readChannelTime(i);
     return;
   }
   if (channels.size() != windows_.size())
@@ -105,9 +123,10 @@ void DisplayOutputs::draw(const sky::SkyState& state, const sky::Attitude& attit
   }
   // Then the swaps, back to back: interval 0 on all but the last, which alone waits for the
   // vertical blank, so the frame costs one refresh whatever the number of windows.
-  for (auto& w : windows_) {
-    w->makeCurrent();
-    w->swapBuffers();
+  for (std::size_t i = 0; i < windows_.size(); ++i) {
+    windows_[i]->makeCurrent();
+    readChannelTime(i);  // done: its fence was passed
+    windows_[i]->swapBuffers();
   }
   lastPresentS_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - submitted).count();
   render::pollWindowEvents();

@@ -18,6 +18,7 @@
 #include "sky/channel.h"
 #include "sky/sky_state.h"
 
+#include <array>
 #include <chrono>
 #include <functional>
 #include <memory>
@@ -53,10 +54,17 @@ class DisplayOutputs {
   double lastPresentSeconds() const { return lastPresentS_; }
   // How many windows joined swap group 1 (0 without GLX_NV_swap_group).
   std::size_t swapGroupMembers() const { return swapGroupMembers_; }
+  // Each channel's GPU time in the last frame, seconds, in channel order: GL timestamp queries
+  // before and after its draw (a frame saved to files is not counted), read once the frame's
+  // pixels exist, so reading them never waits.
+  const std::vector<double>& lastChannelGpuSeconds() const { return channelGpuS_; }
 
  private:
   void drawChannel(render::SkyRenderer& renderer, const sky::SkyState& state, const sky::Attitude& attitude,
                    const sky::ChannelConfig& channel, std::size_t index);
+  // The channel's query pair in the current context (made on first use), and its time once done.
+  std::array<unsigned, 2>& queries(std::size_t index);
+  void readChannelTime(std::size_t index);
 
   bool headless_;
   std::unique_ptr<render::GlContext> context_;
@@ -66,6 +74,8 @@ class DisplayOutputs {
   std::vector<Projector> projectors_;  // one per channel (null: plain)
   std::size_t swapGroupMembers_ = 0;
   double lastPresentS_ = 0.0;
+  std::vector<std::array<unsigned, 2>> queries_;  // per channel, in the context it is drawn in
+  std::vector<double> channelGpuS_;
 };
 
 }  // namespace skyig::services

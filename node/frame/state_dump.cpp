@@ -10,6 +10,7 @@
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <chrono>
@@ -60,7 +61,7 @@ StateDump::~StateDump() {
 }
 
 void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const sky::SkyState& used,
-                      const FramePose& pose) {
+                      const FramePose& pose, double frameS, const std::vector<double>& channelGpuS) {
   const auto& o = used.observer;
   nlohmann::json views = nlohmann::json::array();
   for (const sky::ChannelConfig& c : pose.channels)
@@ -98,6 +99,12 @@ void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const sky
     const auto& m = used.ephemeris->moon;
     line["moon"] = {{"azimuth_deg", m.azimuthRad / kDeg}, {"altitude_deg", m.altitudeRad / kDeg},
                     {"altitude_refracted_deg", m.altitudeRefractedRad / kDeg}};
+  }
+  if (frameS >= 0.0) {
+    nlohmann::json gpu = nlohmann::json::object();
+    for (std::size_t i = 0; i < std::min(channelGpuS.size(), pose.channels.size()); ++i)
+      gpu[pose.channels[i].name] = 1000.0 * channelGpuS[i];
+    line["timing"] = {{"frame_ms", 1000.0 * frameS}, {"channel_gpu_ms", gpu}};
   }
   const std::string text = line.dump() + "\n";
   // One line per frame, flushed: a crash loses at most the frame being written.

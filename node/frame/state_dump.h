@@ -3,7 +3,8 @@
 // frame, the host's values as last received, what the frame used (the state's observer, air,
 // star field, atmosphere tables and adaptation; the frame's own attitude and channel views),
 // and the sun and moon — for debugging, support and tests. `serve` and `replay` write the same
-// lines, so a replay can be compared with the flight line by line.
+// lines, so a replay can be compared with the flight line by line; serve adds the frame's
+// timing ("timing": the frame's milliseconds and each channel's GPU milliseconds).
 #include "sky/sky_state.h"
 #include "node/host/host_snapshot.h"
 #include "node/host/node_stats.h"
@@ -11,6 +12,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace skyig::services {
 
@@ -20,7 +22,9 @@ class StateDump {
   ~StateDump();
   StateDump(const StateDump&) = delete;
   StateDump& operator=(const StateDump&) = delete;
-  void write(std::uint64_t igFrame, const HostSnapshot* host, const sky::SkyState& used, const FramePose& pose);
+  // `channelGpuS` in pose.channels' order; `frameS` < 0: no timing (replay).
+  void write(std::uint64_t igFrame, const HostSnapshot* host, const sky::SkyState& used, const FramePose& pose,
+             double frameS = -1.0, const std::vector<double>& channelGpuS = {});
 
  private:
   std::FILE* file_ = nullptr;

@@ -15,6 +15,31 @@ void LatencyRing::add(double us) {
   ++count_;
 }
 
+double percentileOfSorted(std::span<const double> sorted, double p) {
+  if (sorted.empty()) return 0.0;
+  const auto rank = static_cast<std::size_t>(p * static_cast<double>(sorted.size()));
+  return sorted[std::min(sorted.size() - 1, rank)];
+}
+
+void ChannelTimes::setChannels(const std::vector<std::string>& names) {
+  std::lock_guard lock(mutex_);
+  names_ = names;
+  rings_.clear();
+  for (std::size_t i = 0; i < names.size(); ++i) rings_.push_back(std::make_unique<LatencyRing>());
+}
+
+void ChannelTimes::add(std::size_t channel, double us) {
+  std::lock_guard lock(mutex_);
+  if (channel < rings_.size()) rings_[channel]->add(us);
+}
+
+nlohmann::json ChannelTimes::summary() const {
+  std::lock_guard lock(mutex_);
+  nlohmann::json out = nlohmann::json::object();
+  for (std::size_t i = 0; i < names_.size(); ++i) out[names_[i]] = rings_[i]->summary();
+  return out;
+}
+
 nlohmann::json LatencyRing::summary() const {
   std::vector<double> v;
   std::uint64_t count = 0;
@@ -25,7 +50,7 @@ nlohmann::json LatencyRing::summary() const {
   }
   if (v.empty()) return {{"count", 0}};
   std::sort(v.begin(), v.end());
-  auto pct = [&](double p) { return v[std::min(v.size() - 1, static_cast<std::size_t>(p * static_cast<double>(v.size())))]; };
+  auto pct = [&](double p) { return percentileOfSorted(v, p); };
   return {{"count", count}, {"p50_us", pct(0.5)}, {"p90_us", pct(0.9)}, {"p99_us", pct(0.99)}, {"max_us", v.back()}};
 }
 
@@ -93,6 +118,14 @@ nlohmann::json NodeStats::toJson() const {
       {"latency", {{"arrival_to_visible", arrivalToVisible.summary()},
                    {"arrival_to_frame_end", arrivalToFrameEnd.summary()},
                    {"frame_render", frameTime.summary()}}},
+      // The frame's timing: target period (1 / the frame rate) and the frames over it; the
+      // start-to-start interval (its p50 gives the rate); each channel's GPU time (timestamp
+      // queries around its draw); the age of the host state a frame shows at its end.
+      {"timing", {{"target_period_us", targetPeriodUs.load()},
+                  {"frames_over_period", framesOverPeriod.load()},
+                  {"frame_interval", frameInterval.summary()},
+                  {"channel_gpu", channelGpuTime.summary()},
+                  {"shown_host_age", shownHostAge.summary()}}},
   };
 }
 

@@ -12,10 +12,16 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <mutex>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace skyig::services {
+
+// p in [0, 1] of `sorted` (ascending; nearest rank: the sample at floor(p n)); 0 for none.
+double percentileOfSorted(std::span<const double> sorted, double p);
 
 // Keeps the last N samples (microseconds) and reports percentiles.
 class LatencyRing {
@@ -29,6 +35,20 @@ class LatencyRing {
   std::vector<double> samples_;
   std::size_t next_ = 0;
   std::uint64_t count_ = 0;
+};
+
+// One LatencyRing per channel, named when the node knows its channels (the render thread adds,
+// the worker's statistics file reads).
+class ChannelTimes {
+ public:
+  void setChannels(const std::vector<std::string>& names);
+  void add(std::size_t channel, double us);
+  nlohmann::json summary() const;  // {name: LatencyRing::summary()}
+
+ private:
+  mutable std::mutex mutex_;
+  std::vector<std::string> names_;
+  std::vector<std::unique_ptr<LatencyRing>> rings_;
 };
 
 struct NodeStats {
@@ -60,6 +80,14 @@ struct NodeStats {
   LatencyRing arrivalToVisible;   // datagram arrival -> state published to the render thread
   LatencyRing arrivalToFrameEnd;  // datagram arrival -> end of the first frame that shows it
   LatencyRing frameTime;          // render of all channels, per frame
+  // The frame's timing (node/frame/frame_timing.h): the period it is held to, the frames that
+  // took longer, start-to-start intervals, each channel's GPU time, and the age of the host
+  // state each frame shows at its end.
+  std::atomic<double> targetPeriodUs{0.0};
+  std::atomic<std::uint64_t> framesOverPeriod{0};
+  LatencyRing frameInterval;
+  LatencyRing shownHostAge;
+  ChannelTimes channelGpuTime;
 
   nlohmann::json toJson() const;
 };

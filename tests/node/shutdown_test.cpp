@@ -170,6 +170,44 @@ TEST_F(Shutdown, SigintWhileServingWritesTheStatsAndKeepsTheRecording) {
   EXPECT_EQ(fs::file_size(dir_ / "r.pcap"), 24u);  // the pcap header, flushed (no datagram came)
 }
 
+// A node tells its operator how it is doing: every --log-interval an info line of the frame rate,
+// the frame's and each channel's times and the frames over the period, and at exit the run's
+// line; --stats-json's "timing" counts the same frames the state dump wrote, one GPU time per
+// channel and frame, and the frames over the period as the dump's own frame times do.
+TEST_F(Shutdown, ARunSaysItsTimingAndItsStatisticsCountTheDumpedFrames) {
+  std::ofstream(dir_ / "two.toml") << "[sky]\nmodel = \"preetham\"\n[[channel]]\nname = \"front\"\nwidth = 64\nheight = 48\n"
+                                      "[[channel]]\nname = \"left\"\nyaw = -60.0\nwidth = 64\nheight = 48\n";
+  Child node({"serve", "--config", (dir_ / "two.toml").string(), "--headless", "--listen", "127.0.0.1:0", "--frames",
+              "90", "--frame-rate", "60", "--log-interval", "0.5", "--stats-json", (dir_ / "stats.json").string(),
+              "--dump-state", (dir_ / "dump.jsonl").string()},
+             dir_, {});
+  ASSERT_TRUE(node.started());
+  ASSERT_TRUE(node.exited(60s)) << node.said();
+  EXPECT_EQ(node.exitCode(), 0) << node.said();
+  const std::string said = node.said();
+  for (const char* text : {"] frames: ", " fps, frame p50 ", " over 16.7 ms; front GPU p50 ", ", left GPU p50 ",
+                           "served 90 frames in "})
+    EXPECT_NE(said.find(text), std::string::npos) << text << " missing from:\n" << said;
+  const auto stats = nlohmann::json::parse(slurp(dir_ / "stats.json"));
+  const auto dump = skyig::services::testing::readStateDump(dir_ / "dump.jsonl");
+  ASSERT_EQ(dump.size(), 90u);
+  EXPECT_EQ(stats["frames"].get<std::size_t>(), dump.size());
+  const nlohmann::json& t = stats["timing"];
+  EXPECT_NEAR(t["target_period_us"].get<double>(), 1e6 / 60.0, 1e-6);
+  EXPECT_EQ(t["frame_interval"]["count"].get<std::size_t>(), dump.size() - 1);
+  std::size_t over = 0;
+  for (const auto& line : dump) {
+    const double ms = line["timing"]["frame_ms"].get<double>();
+    EXPECT_GT(ms, 0.0);
+    over += ms > 1000.0 / 60.0 ? 1 : 0;
+    for (const char* channel : {"front", "left"}) EXPECT_GT(line["timing"]["channel_gpu_ms"][channel].get<double>(), 0.0);
+  }
+  EXPECT_EQ(t["frames_over_period"].get<std::size_t>(), over);
+  for (const char* channel : {"front", "left"})
+    EXPECT_EQ(t["channel_gpu"][channel]["count"].get<std::size_t>(), dump.size()) << channel;
+  EXPECT_EQ(t["shown_host_age"]["count"].get<std::size_t>(), 0u);  // no host
+}
+
 // The second signal does not wait for the first one's clean stop: stopped, then sent SIGINT and
 // SIGTERM together, the node exits at once with 128 + the second signal handled, not 0 as a clean
 // stop would. Which of the two is handled second is not fixed: both are process-directed, and in a

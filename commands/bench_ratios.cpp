@@ -6,6 +6,8 @@
 #include "render/sky_renderer.h"
 #include "node/config/sky_data.h"
 #include "physics/common/units.h"
+#include "physics/weather/fog_layer.h"
+#include "physics/weather/precipitation.h"
 
 #include <glad/gl.h>
 #include <nlohmann/json.hpp>
@@ -112,16 +114,25 @@ struct Scenes {
   // The moonless night's sky pass against the reference does the reference's work: the sun's
   // sky too, which the frame leaves out once night has fallen (sky/shown_layers.h).
   sky::SkyState moonlessSunlit;
+  // The day in the worst weather the sky pass composes: all three layers at once, the camera
+  // inside the haze and the dust (the absorbing layer's per-channel solution) and above the fog.
+  sky::SkyState dayWeather;
   const sky::SkyState& of(const Scene* s) const { return s == &kDay ? day : s == &kMoonlit ? moonlit : moonless; }
 };
 
 Scenes buildScenes(const NodeConfig& config) {
-  Scenes s{buildScene(config, kDay), buildScene(config, kMoonlit), buildScene(config, kMoonless), {}, {}};
+  Scenes s{buildScene(config, kDay), buildScene(config, kMoonlit), buildScene(config, kMoonless), {}, {}, {}};
   s.dayForced = sky::buildSkyState(s.day.observer, config.sky,
                                    sky::SunOverride{s.day.sunAzimuth * kDegPerRad, s.day.sunAltitude * kDegPerRad});
   sky::mapForDisplays(s.dayForced, {config.channels.front().display});
   s.moonlessSunlit = s.moonless;
   s.moonlessSunlit.shown.sunlitSky = true;
+  sky::SkyConditions weather = config.sky;
+  weather.haze = weather::hazeBelowTables(2.5, 1200.0);
+  weather.fog = {0.0, 200.0, 0.4};
+  weather.precipitation = weather::precipitationLayer(weather::Precipitation::dust, 0.0, 1500.0, 0.0, 2, 1.0);
+  s.dayWeather = sky::buildSkyState(s.day.observer, weather);
+  sky::mapForDisplays(s.dayWeather, {config.channels.front().display});
   return s;
 }
 
@@ -140,6 +151,8 @@ std::vector<Item> benchItems(Renderers& r, const Scenes& s, const sky::ChannelCo
   return {
       {"reference_sky_pass_day", "reference sky pass", &kDay, [&] { r.reference.drawSkyPass(s.day, channel); }, {}},
       {"sky_pass_day", "sky pass", &kDay, [&] { r.live.drawSkyPass(s.day, channel); }, {}},
+      {"sky_pass_weather_day", "sky pass under haze (2.5 km), a 200 m fog and a dust storm", &kDay,
+       [&] { r.live.drawSkyPass(s.dayWeather, channel); }, {}},
       {"sky_pass_mapped_day", "sky pass mapping its pixels, as in the frame", &kDay,
        [&] { r.live.drawMappedSkyPass(s.day, channel); }, {}},
       {"day_frame", "day frame (every pass + tone)", &kDay, [&] { r.live.draw(s.day, channel); }, {}},
@@ -161,6 +174,8 @@ const std::vector<Ratio>& benchRatios() {
       {"sky_pass_over_reference_moonless_night", "sky pass / reference (moonless night)", "sky_pass_moonless_night",
        "reference_sky_pass_moonless_night"},
       {"day_frame_over_sky_pass", "day frame / sky pass", "day_frame", "sky_pass_day"},
+      {"weather_sky_pass_over_sky_pass", "sky pass under haze, fog and dust / sky pass (clear)", "sky_pass_weather_day",
+       "sky_pass_day"},
       {"day_frame_over_mapped_sky_pass", "day frame / sky pass mapping its pixels, as in the frame", "day_frame", "sky_pass_mapped_day"},
       {"day_frame_over_sun_forced_day_frame", "day frame / day frame with the sun forced", "day_frame",
        "day_frame_sun_forced"},

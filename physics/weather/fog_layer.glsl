@@ -30,11 +30,11 @@ Float chordBelowHeight(Float R, Float h, Float mu, Float d, Float h_s) {
   return max(min(max(t0, t1), d) - max(min(t0, t1), 0.0), 0.0);
 }
 
-// Metres of the ray's first d metres inside the layer, from height h.
+// Metres of the ray's first d metres inside the layer, from height h. A layer on the ground (most
+// are) has nothing below it on a ray that ends at the ground: its bottom's chord is skipped.
 Float fogPathLength(IN(FogLayer) fog, Float h, Float mu, Float d) {
-  return max(chordBelowHeight(fog.planet_radius, h, mu, d, fog.top_height) -
-                 chordBelowHeight(fog.planet_radius, h, mu, d, fog.bottom_height),
-             0.0);
+  Float below = fog.bottom_height > 0.0 ? chordBelowHeight(fog.planet_radius, h, mu, d, fog.bottom_height) : 0.0;
+  return max(chordBelowHeight(fog.planet_radius, h, mu, d, fog.top_height) - below, 0.0);
 }
 
 // Bohren 1987 (two-stream, no absorption): the slab's reflectance.
@@ -82,23 +82,37 @@ vec2 fogFluxesAbsorbing(Float tau_in, Float tau, Float g, Float a, Float omega) 
 // (fogFluxes), where the hyperbolic form's 1 / k would lose single precision.
 #define FOG_CONSERVATIVE_ALBEDO 0.999
 
-// The fog's own radiance (cd/m^2) along a view of cosine mu_view to the vertical (up positive),
-// tau_in below its top: the downward flux seen looking up, the upward looking down, each a
-// Lambertian field (radiance = flux / pi), mixed by the view's cosine.
-vec3 fogRadiance(IN(FogLayer) fog, Float tau_in, Float mu_view) {
+// The layer's radiance at the depth of an eye h metres above the ground (its top seen from
+// above, its bottom from below): the downward flux seen looking up, the upward looking down, each
+// a Lambertian field (radiance = flux / pi).
+FogEye fogEye(IN(FogLayer) fog, Float h) {
   Float tau = fog.extinction * (fog.top_height - fog.bottom_height);
-  Float up = 0.5 * (1.0 + mu_view);
-  vec3 flux;
-  if (min(fog.albedo.x, min(fog.albedo.y, fog.albedo.z)) >= FOG_CONSERVATIVE_ALBEDO) {
-    vec2 f = fogFluxes(tau_in, tau, fog.asymmetry, fog.ground_albedo);
-    flux = vec3(up * f.x + (1.0 - up) * f.y);
-  } else {
-    for (int i = 0; i < 3; ++i) {
-      vec2 f = fogFluxesAbsorbing(tau_in, tau, fog.asymmetry, fog.ground_albedo, fog.albedo[i]);
-      flux[i] = up * f.x + (1.0 - up) * f.y;
-    }
+  Float tau_in = fog.extinction * (fog.top_height - clamp(h, fog.bottom_height, fog.top_height));
+  vec3 down = vec3(0.0);
+  vec3 up = vec3(0.0);
+  for (int i = 0; i < 3; ++i) {
+    vec2 f = fog.albedo[i] >= FOG_CONSERVATIVE_ALBEDO
+                 ? fogFluxes(tau_in, tau, fog.asymmetry, fog.ground_albedo)
+                 : fogFluxesAbsorbing(tau_in, tau, fog.asymmetry, fog.ground_albedo, fog.albedo[i]);
+    down[i] = f.x;
+    up[i] = f.y;
   }
-  return fog.top_irradiance * flux / PI;
+  FogEye eye;
+  eye.looking_up = fog.top_irradiance * down / PI;
+  eye.looking_down = fog.top_irradiance * up / PI;
+  return eye;
+}
+
+// Along a view of cosine mu_view to the vertical (up positive): the two mixed by the cosine.
+vec3 fogRadiance(IN(FogEye) eye, Float mu_view) {
+  Float up = 0.5 * (1.0 + mu_view);
+  return up * eye.looking_up + (1.0 - up) * eye.looking_down;
+}
+
+// throughFog with the eye's radiance already solved (fogEye at h): what the sky pass does per pixel.
+vec3 throughFogSeen(IN(FogLayer) fog, IN(FogEye) eye, IN(vec3) behind, Float h, Float mu, Float d) {
+  Float t = exp(-fog.extinction * fogPathLength(fog, h, mu, d));
+  return behind * t + fogRadiance(eye, mu) * (1.0 - t);
 }
 
 // What the eye at height h sees along a view of cosine mu where the clear air shows `behind` and
@@ -108,9 +122,7 @@ vec3 fogRadiance(IN(FogLayer) fog, Float tau_in, Float mu_view) {
 // top is seamless.
 vec3 throughFog(IN(FogLayer) fog, IN(vec3) behind, Float h, Float mu, Float d) {
   if (fog.extinction <= 0.0) return behind;
-  Float t = exp(-fog.extinction * fogPathLength(fog, h, mu, d));
-  Float tau_in = fog.extinction * (fog.top_height - clamp(h, fog.bottom_height, fog.top_height));
-  return behind * t + fogRadiance(fog, tau_in, mu) * (1.0 - t);
+  return throughFogSeen(fog, fogEye(fog, h), behind, h, mu, d);
 }
 
 // The fog's transmittance along a ray (the sun's light to the eye, a surface's to the eye).

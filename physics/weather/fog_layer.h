@@ -18,6 +18,7 @@
 namespace skyig::weather {
 
 using FogLayer = shader::weather_types::FogLayer;
+using FogEye = shader::weather_types::FogEye;
 
 // The lowest visibility the tables are built for; below it the layer takes the rest.
 inline constexpr double kTablesVisibilityKm = 10.0;

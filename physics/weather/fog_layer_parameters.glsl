@@ -16,4 +16,12 @@ struct FogLayer {
   vec3 albedo;           // the particles' single-scattering albedo per Rec.709 channel (1: water)
 };
 
+// A layer's own radiance at one eye's depth in it (fogEye), linear Rec.709 cd/m^2: looking straight
+// up (the downward flux over pi) and straight down (the upward one). The same for every view of a
+// frame, so the sky pass gets it from the CPU instead of solving the slab per pixel.
+struct FogEye {
+  vec3 looking_up;
+  vec3 looking_down;
+};
+
 #endif

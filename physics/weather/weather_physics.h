@@ -1,6 +1,7 @@
 #pragma once
-// The weather's layers (fog and mist) written once in GLSL and compiled here as C++ in double
-// precision (physics/README.md), for physics/weather, the sky state and the tests.
+// The weather's layers (fog, mist, precipitation and their table) written once in GLSL and
+// compiled here as C++ in double precision (physics/README.md), for physics/weather, the sky state
+// and the tests.
 #include "physics/common/glsl_cpp.h"
 
 // The layer's struct outside the anonymous namespace of glsl_cpp_begin.h, so C++ interfaces can
@@ -15,4 +16,5 @@ using glsl_types::vec3;
 using namespace weather_types;
 #include "physics/common/constants.glsl"
 #include "physics/weather/fog_layer.glsl"
+#include "physics/weather/fog_table.glsl"
 #include "physics/common/glsl_cpp_end.h"

@@ -2,7 +2,7 @@
 
 #include "render/gl/shader_source.h"
 #include "render/passes/common/atmosphere_uniforms.h"
-#include "render/passes/sky/fog_uniforms.h"
+#include "render/client/fog_uniforms.h"
 #include "physics/atmosphere/physical_camera.h"
 #include "physics/spectrum/spectrum.h"
 

@@ -58,6 +58,9 @@
 // sky pass beside its own 0 to 7 and the tone's glare veil.
 #define SKYIG_UNIT_NIGHT_LAYER 9
 #define SKYIG_UNIT_NIGHT_LAYER_EXTINCTION 10  // the same ExtinctionTexture as the night pass's
+// The weather's layers along this frame's views (render/passes/sky/fog_table_texture.h), read by
+// the physical sky pass when a layer is on (SKYIG_FOG).
+#define SKYIG_UNIT_FOG_TABLE 11
 
 // The moon (render/passes/night/moon.frag, MoonPass). Kept apart from the sky pass's 0 to 7 as they always
 // were; nothing needs it (see above), and any GL 4.5 driver has far more units than 22.

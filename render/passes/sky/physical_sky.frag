@@ -52,11 +52,13 @@
 // in render/glsl/frame_uniforms.h, the tone block in render/glsl/tone_uniforms.h.)
 #include "render/passes/sky/physical_sky_uniforms.glsl"
 #include "render/glsl/band.glsl"
-#include "physics/weather/fog_layer.glsl"
-// The haze below the tables' visibility, the ground fog, the precipitation (sky/fog_state.h,
-// weather::kFogLayerCount); extinction 0: none.
-uniform FogLayer fogLayers[3];
-uniform float cameraHeight;  // metres above the ground, from the CPU's double (not the float radius)
+#ifdef SKYIG_FOG
+#include "physics/weather/fog_table.glsl"
+// The haze below the tables' visibility, the ground fog and the precipitation (sky/fog_state.h)
+// along this frame's views by their cosine to the vertical: their own light (rgb) and the
+// transmittance of what lies behind them (a), composed on the CPU from physics/weather/fog_layer.glsl.
+layout(binding = SKYIG_UNIT_FOG_TABLE) uniform sampler1D fogTable;
+#endif
 #ifdef SKYIG_NIGHT_LAYER
 #include "render/glsl/frame_uniforms.h"
 #include "physics/night/transmittance_to_space.glsl"
@@ -163,7 +165,10 @@ void main() {
   // Fog and mist in front of the air's light (physics/weather/fog_layer.glsl); the camera is on
   // the model's +z axis, so view.z is the cosine to its vertical. The night's layer below came
   // through the fog already (the state's extinction profile, sky/sky_state.cpp).
-  for (int i = 0; i < 3; ++i) radiance = throughFog(fogLayers[i], radiance, cameraHeight, view.z, d);
+#ifdef SKYIG_FOG
+  vec4 fog = texture(fogTable, fogTableU(view.z));
+  radiance = radiance * fog.a + fog.rgb;
+#endif
 #ifdef SKYIG_NIGHT_LAYER
   nightLayerHere = nightLayerAt(gl_FragCoord.xy);
 #if defined(SKYIG_NIGHT_LAYER_TRANSMITTED)

@@ -52,8 +52,7 @@ PhysicalSkyPass::Program::Program(const char* vertex, const char* fragment, cons
       radii(glGetUniformLocation(program.id(), "frameRadii")),
       angles(glGetUniformLocation(program.id(), "frameAngles")),
       groundCap(glGetUniformLocation(program.id(), "groundCap")),
-      nightGround(glGetUniformLocation(program.id(), "nightGroundRadiance")),
-      fog(program.id()) {}
+      nightGround(glGetUniformLocation(program.id(), "nightGroundRadiance")) {}
 
 PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame, const char* insideFragment)
     : slicesPerFrame_(slicesPerFrame),
@@ -330,7 +329,6 @@ void PhysicalSkyPass::prepare(const Program& program, const Frame& f) const {
     glProgramUniform3fv(program.program.id(), program.moonScale, 1, &f3(f.moonlightScale)[0]);
   }
   if (f.night->texture) glProgramUniform3fv(program.program.id(), program.nightGround, 1, &f3(f.night->groundRadiance)[0]);
-  program.fog.set(program.program.id(), fog_, glm::length(f.camera) - current_.model->parameters(0).bottom_radius);
   program.program.use();
 }
 
@@ -398,6 +396,8 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   SkyVariant base;
   base.moonlit = moonlightScale != glm::dvec3(0.0);
   base.sunless = !sunlit;
+  // The weather's layers only when one is on: clear air pays nothing for them.
+  base.fog = std::any_of(fog_.begin(), fog_.end(), [](const weather::FogLayer& l) { return l.extinction > 0.0; });
   base.nightLayer = night.texture != 0;
   base.nightLayerCellPx = base.nightLayer ? night.cellPx : 0;
   base.tone = tone.defines;
@@ -416,6 +416,7 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   }
   // The camera inside the atmosphere (every IG frame): what every pixel shares, in double, once.
   const Frame f = frameInside(camera, sunDirection, moonDirection, moonlightScale, sunRefraction, night, sunlit);
+  if (base.fog) fogTable_->use(fog_, glm::length(camera) - current_.model->parameters(0).bottom_radius, SKYIG_UNIT_FOG_TABLE);
   const GLint target = drawSlices(f);
   if (reference_) {  // the frozen reference: everything in one program, the moon a uniform branch
     prepare(*reference_, f);

@@ -10,7 +10,7 @@
 #include "render/gl/gl_program.h"
 #include "render/passes/tone/folded_tone.h"
 #include "render/passes/common/night_layer.h"
-#include "render/passes/sky/fog_uniforms.h"
+#include "render/passes/sky/fog_table_texture.h"
 #include "render/passes/sky/sky_variant.h"
 #include "physics/atmosphere/physical_camera.h"
 
@@ -112,7 +112,6 @@ class PhysicalSkyPass {
     Program(const char* vertex, const char* fragment, const std::string& defines = "");
     GlProgram program;
     GLint camera, sun, sunRefraction, moonOn, moonDirection, moonScale, radii, angles, groundCap, nightGround;
-    FogUniforms fog;
   };
   // The program of a variant, compiled the first time a frame needs it (a node uses a few of the
   // many); the HDR variants without the night layer or the tone are compiled with the pass.
@@ -169,6 +168,7 @@ class PhysicalSkyPass {
   std::unique_ptr<Pending> pending_;
   std::size_t lastUploadBytes_ = 0;
   weather::FogLayers fog_{};
+  std::unique_ptr<FogTableTexture> fogTable_ = std::make_unique<FogTableTexture>();
   double lastUploadSeconds_ = 0.0;
 };
 

@@ -23,6 +23,7 @@ struct SkyVariant {
   bool nightLayer = false;             // SKYIG_NIGHT_LAYER: the night's own light added
   int nightLayerCellPx = 0;            // its cell, pixels (SKYIG_NIGHT_LAYER_CELL_PX)
   bool nightLayerTransmitted = false;  // SKYIG_NIGHT_LAYER_TRANSMITTED: the layer already dimmed
+  bool fog = false;                    // SKYIG_FOG: the weather's layers composed (one of them is on)
   std::string tone;                    // SKYIG_FOLD_TONE with the tone pass's defines; empty: HDR only
 
   // The #define lines, in the order the blocks are read.
@@ -34,6 +35,7 @@ struct SkyVariant {
     if (part == Part::ground) d += "#define SKYIG_GROUND\n";
     if (sunDisc) d += "#define SKYIG_SUN_DISC\n";
     if (sunless) d += "#define SKYIG_SUNLESS\n";
+    if (fog) d += "#define SKYIG_FOG\n";
     if (nightLayer)
       d += "#define SKYIG_NIGHT_LAYER\n" + nightLayerCellDefine(nightLayerCellPx);
     if (!tone.empty()) d += "#define SKYIG_FOLD_TONE\n" + tone;

@@ -1,4 +1,4 @@
-#include "render/passes/sky/fog_uniforms.h"
+#include "render/client/fog_uniforms.h"
 
 #include <string>
 

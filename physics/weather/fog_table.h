@@ -1,0 +1,25 @@
+#pragma once
+// The weather's layers along every view of one eye, tabulated by the view's cosine
+// (fog_table.glsl): what the sky pass composes per pixel with one texture read. Each entry is the
+// layers' own light added along the view (linear Rec.709 cd/m^2) and the transmittance of what
+// lies behind them, composed in the layers' order exactly as throughFog composes them.
+#include <glm/vec4.hpp>
+
+#include <vector>
+
+#include "physics/weather/fog_layer.h"
+
+namespace skyig::weather {
+
+// Texels of the table: at 2048 a texel spans 0.011 deg at the top of a fog 300 m below the eye
+// and 0.03 deg at a 12 km eye's horizon, under a pixel of a 60 deg, 1920 pixel channel.
+inline constexpr int kFogTableSize = 2048;
+
+// The table for an eye heightM above the ground: entry i at mu = fogTableMu((i + 0.5) / size), its
+// ray ending at the ground where it meets it. Layers of extinction 0 add nothing.
+std::vector<glm::vec4> fogTable(const FogLayers& layers, double heightM, int size = kFogTableSize);
+
+// The same composition for one view: in-scattered light (rgb) and transmittance (a).
+glm::dvec4 fogAlong(const FogLayers& layers, double heightM, double mu);
+
+}  // namespace skyig::weather

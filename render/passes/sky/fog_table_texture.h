@@ -1,0 +1,28 @@
+#pragma once
+// The weather's table of one frame (physics/weather/fog_table.h) as the 1D texture the physical sky
+// pass reads at SKYIG_UNIT_FOG_TABLE (RGBA32F: the layers' own light, the transmittance behind
+// them). Filled on the CPU from the same GLSL the shader would otherwise run per pixel, whenever
+// the layers or the eye's height change.
+#include <glad/gl.h>
+
+#include "physics/weather/fog_layer.h"
+
+namespace skyig::render {
+
+class FogTableTexture {
+ public:
+  FogTableTexture();  // needs the GL context current
+  ~FogTableTexture();
+  FogTableTexture(const FogTableTexture&) = delete;
+  FogTableTexture& operator=(const FogTableTexture&) = delete;
+
+  // The table of `layers` for an eye heightM above the ground, bound to `unit`.
+  void use(const weather::FogLayers& layers, double heightM, GLuint unit);
+
+ private:
+  GLuint id_ = 0;
+  weather::FogLayers layers_{};
+  double heightM_ = -1.0;
+};
+
+}  // namespace skyig::render

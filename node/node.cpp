@@ -197,6 +197,7 @@ class FrameLoop {
     stats_.channelGpuTime.setChannels(names);
     stats_.targetPeriodUs = 1e6 / opt_.frameRateHz;
     timing_.emplace(names, 1.0 / opt_.frameRateHz);
+    warmUpWeather(display, nc);
     lastLog_ = Clock::now();
     for (std::uint64_t frame = 0; !externalStop && (opt_.frames == 0 || frame < opt_.frames); ++frame) {
       waitForFrame(externalStop);
@@ -266,6 +267,23 @@ class FrameLoop {
       stats_.arrivalToFrameEnd.add(std::chrono::duration<double, std::micro>(frameEnd - snapshot->state.received).count());
       lastArrivalShown_ = snapshot->state.received;
     }
+  }
+
+  // The physical sky's programs with the weather's layers, compiled before the first frame that
+  // shows fog or rain (a second on llvmpipe otherwise): the first state drawn once with a ground
+  // fog, nothing shown.
+  void warmUpWeather(DisplayOutputs& display, const NodeChannels& nc) {
+    const std::shared_ptr<const BuiltSky> built = sky_.get();
+    if (built->state.conditions.model != sky::SkyModel::Physical || !built->state.conditions.atmosphere) return;
+    sky::SkyState foggy = built->state;
+    sky::FogState& fog = foggy.fog;
+    if (!fog.any()) {
+      const double ground = foggy.conditions.atmosphere->parameters(0).bottom_radius;
+      fog.sunlit[1] = weather::makeFogLayer({0.0, 200.0, 0.4}, ground, 0.2, glm::dvec3(1.0));
+    }
+    const auto start = Clock::now();
+    display.warmUp(foggy, worker_.poseAt(built->host.get(), start, nc.channels).attitude, nc.channels);
+    spdlog::info("weather programs compiled in {:.0f} ms", 1000.0 * std::chrono::duration<double>(Clock::now() - start).count());
   }
 
   // The frame's timing: in the statistics, and in the info line every logIntervalS.

@@ -89,6 +89,15 @@ void DisplayOutputs::readChannelTime(std::size_t index) {
   channelGpuS_[index] = end > begin ? static_cast<double>(end - begin) * 1e-9 : 0.0;
 }
 
+void DisplayOutputs::warmUp(const sky::SkyState& state, const sky::Attitude& attitude,
+                            const std::vector<sky::ChannelConfig>& channels) {
+  for (std::size_t i = 0; i < channels.size(); ++i) {
+    if (!headless_) windows_.at(i)->makeCurrent();
+    drawChannel(headless_ ? *renderers_.front() : *renderers_[i], state, attitude, channels[i], i);
+  }
+  glFinish();
+}
+
 void DisplayOutputs::draw(const sky::SkyState& state, const sky::Attitude& attitude,
                           const std::vector<sky::ChannelConfig>& channels, const DrawnCallback& drawn) {
   if (headless_) {

@@ -47,6 +47,11 @@ class DisplayOutputs {
   void draw(const sky::SkyState& state, const sky::Attitude& attitude, const std::vector<sky::ChannelConfig>& channels,
             const DrawnCallback& drawn = {});
 
+  // Draws every channel once without showing it (no swap, no file): the programs a frame of
+  // `state` needs are compiled now rather than in the frame that first needs them (the node
+  // warms up with a foggy copy of its first state, so the first weather costs no frame).
+  void warmUp(const sky::SkyState& state, const sky::Attitude& attitude, const std::vector<sky::ChannelConfig>& channels);
+
   // The windows' titles, in channel order (none when headless).
   std::vector<std::string> windowTitles() const;
   // Seconds the last frame spent presenting after its draws were submitted: the fence wait and

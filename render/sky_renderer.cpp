@@ -166,7 +166,9 @@ bool SkyRenderer::drawSky(const skyig::sky::SkyState& state, const skyig::sky::C
     // share the planet, so the camera is the same. The moonlit sky, and the sun's own sky at
     // night, only where they change what the displays show (sky/shown_layers.h), and always in
     // a goggle, which sees far fainter light than the eye.
-    physical_->setFog(sky::drawnFogLayers(state.fog));
+    physical_->setFog(skyig::sky::isGoggle(channel)
+                          ? skyig::sky::goggleFogLayers(state.fog, skyig::sky::nvisClassOf(channel.band))
+                          : sky::drawnFogLayers(state.fog));
     return physical_->draw(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
                            skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection,
                            state.shown.moonlitSky || skyig::sky::isGoggle(channel) ? state.moonlightScale

@@ -9,12 +9,19 @@ namespace skyig::sky {
 
 namespace {
 
-// Sun (or moon) and sky on a horizontal surface at radius r above the model's origin, Rec.709 lux.
-glm::dvec3 irradianceAt(const atmosphere::AtmosphereModel& model, double r, const glm::dvec3& light) {
+// Sun (or moon) and sky on a horizontal surface at radius r above the model's origin, Rec.709 lux:
+// the direct light and the sky's.
+struct TopLight {
+  glm::dvec3 direct, sky;
+  glm::dvec3 total() const { return direct + sky; }
+};
+TopLight irradianceAt(const atmosphere::AtmosphereModel& model, double r, const glm::dvec3& light) {
   const glm::dvec3 point(0.0, 0.0, r), up(0.0, 0.0, 1.0);
-  return model.converter().toRec709(model.sunIrradiance(point, up, light)) +
-         model.converter().toRec709(model.skyIrradiance(point, up, light));
+  return {model.converter().toRec709(model.sunIrradiance(point, up, light)),
+          model.converter().toRec709(model.skyIrradiance(point, up, light))};
 }
+
+double luminanceOf(const glm::dvec3& c) { return 0.2126729 * c.x + 0.7151522 * c.y + 0.0721750 * c.z; }
 
 // The layers lit at their tops by sun * sunWeight + moon * moonWeight.
 weather::FogLayers litBy(const FogState& fog, double sunWeight, double moonWeight) {
@@ -40,8 +47,11 @@ FogState makeFogState(const atmosphere::AtmosphereModel& model, const SkyConditi
     weather::validate(specs[i]);
     if (specs[i].visibilityKm == 0.0) continue;
     const double top = ground + specs[i].topM;
-    out.sunlit[i] = weather::makeFogLayer(specs[i], ground, albedo, irradianceAt(model, top, sun));
-    if (moonlightScale != glm::dvec3(0.0)) out.moonIrradiance[i] = irradianceAt(model, top, moon) * moonlightScale;
+    const TopLight sunlit = irradianceAt(model, top, sun);
+    out.sunlit[i] = weather::makeFogLayer(specs[i], ground, albedo, sunlit.total());
+    const double lux = luminanceOf(sunlit.total());
+    out.sunShare[i] = lux > 0.0 ? luminanceOf(sunlit.direct) / lux : 0.0;
+    if (moonlightScale != glm::dvec3(0.0)) out.moonIrradiance[i] = irradianceAt(model, top, moon).total() * moonlightScale;
   }
   return out;
 }

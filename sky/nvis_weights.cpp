@@ -1,6 +1,8 @@
 #include "sky/nvis_weights.h"
 
+#include "physics/atmosphere/physical_camera.h"
 #include "physics/goggle/nvis_sky.h"
+#include "physics/weather/fog_table.h"
 
 #include <glm/geometric.hpp>
 
@@ -48,6 +50,23 @@ struct BlackbodyTable {
 
 }  // namespace
 
+double nvisHazeExtinctionScale(nvis::NvisClass nvisClass) {
+  constexpr double kAngstromExponent = 1.3;
+  double weighted = 0.0, total = 0.0;
+  for (double nm = nvis::kNvisMinNm; nm <= nvis::kNvisMaxNm; nm += 1.0) {
+    const double g = nvis::nvisResponse(nvisClass, nm);
+    weighted += nm * g;
+    total += g;
+  }
+  return std::pow(weighted / total / 550.0, -kAngstromExponent);
+}
+
+weather::FogLayers goggleFogLayers(const FogState& fog, nvis::NvisClass nvisClass) {
+  weather::FogLayers layers = drawnFogLayers(fog);
+  layers[0].extinction *= nvisHazeExtinctionScale(nvisClass);  // the haze below the tables (FogState's order)
+  return layers;
+}
+
 nvis::NvisClass nvisClassOf(SpectralBand band) {
   if (band == SpectralBand::Visible) throw std::invalid_argument("nvisClassOf: the visible band has no NVIS class");
   return band == SpectralBand::NvisClassA ? nvis::NvisClass::A : nvis::NvisClass::B;
@@ -83,6 +102,23 @@ NvisWeights nvisWeights(SpectralBand band, const SkyState& state, const glm::dve
   w.zodiacal = perLuminance(nvis::zodiacalSpectrum(), alongView, c);
   w.milkyWay = perLuminance(nvis::integratedStarlightSpectrum(), alongView, c);
   w.nightGround = w.airglow;
+  if (state.fog.any() && state.conditions.atmosphere) {
+    // The layers' share of the light along the centre, and the spectrum of what lights them.
+    const weather::FogLayers layers = goggleFogLayers(state.fog, c);
+    const double h = glm::length(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM)) -
+                     state.conditions.atmosphere->parameters(0).bottom_radius;
+    const glm::dvec3 view = glm::length(viewEnu) > 0.0 ? glm::normalize(viewEnu) : glm::dvec3(0.0, 1.0, 0.0);
+    const double replaced = 1.0 - weather::fogAlong(layers, h, view.z).a;
+    double depth = 0.0, sunShare = 0.0;
+    for (std::size_t i = 0; i < layers.size(); ++i) {
+      const double tau = layers[i].extinction * (layers[i].top_height - layers[i].bottom_height);
+      depth += tau;
+      sunShare += tau * state.fog.sunShare[i];
+    }
+    if (depth > 0.0) sunShare /= depth;
+    const double fogLight = sunShare * w.sunDisc + (1.0 - sunShare) * w.sunlitSky;
+    w.sunlitSky += replaced * (fogLight - w.sunlitSky);
+  }
   return w;
 }
 

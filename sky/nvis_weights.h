@@ -37,6 +37,25 @@ struct NvisWeights {
 // The weights of `band` for `state` seen along the ENU direction `viewEnu` (the channel's centre).
 NvisWeights nvisWeights(SpectralBand band, const SkyState& state, const glm::dvec3& viewEnu);
 
+// Under the weather (sky/fog_state.h) the sunlit sky's weight moves, along the channel's centre,
+// from the clear sky's towards that of the light the layers scatter: grey droplets keep the
+// spectrum of what lights their top, the direct sun (sunDisc's) and the sky (sunlitSky's) in
+// their shares of its lux, weighted by how much of the view's light the layers replace (1 - their
+// transmittance there). A fog therefore reads brighter in a goggle than the blue sky of the same
+// luminance, as sunlight does.
+
+// The haze's extinction in the goggle's band over its extinction at 550 nm: aerosols scatter
+// less at longer wavelengths, extinction ~ lambda^-alpha (Angstrom 1929, "On the atmospheric
+// transmission of sun radiation and on dust in the air", Geografiska Annaler 11, 156-166), with
+// alpha = 1.3, the value Angstrom found for continental air; taken at the class's mean
+// wavelength, the integral of lambda G(lambda) over that of G (physics/goggle/nvis_response.h).
+double nvisHazeExtinctionScale(nvis::NvisClass nvisClass);
+
+// The layers a goggle channel draws: the haze below the tables' visibility thinner by
+// nvisHazeExtinctionScale (a goggle sees farther through haze than the eye), the fog, rain, snow
+// and dust as the eye's (droplets, drops and grains far larger than the wavelength: grey).
+weather::FogLayers goggleFogLayers(const FogState& fog, nvis::NvisClass nvisClass);
+
 // The NVIS irradiance per lux of a blackbody of `temperatureK` above the atmosphere (the stars'
 // weight: each star's own, from the temperature it keeps), interpolated in a table of
 // log-spaced temperatures from 1500 K to 50000 K (clamped beyond) that is within 0.1% of the

@@ -1,0 +1,80 @@
+// The goggle channel under the weather (sky/nvis_weights.h): the haze below the tables thinner in
+// the goggle's band (Angstrom 1929: extinction ~ lambda^-1.3), droplets grey, and the sunlit sky's
+// weight moving towards that of the sunlight the fog scatters.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "physics/atmosphere/conditions.h"
+#include "physics/goggle/nvis_response.h"
+#include "physics/weather/fog_table.h"
+#include "sky/nvis_weights.h"
+#include "sky/sky_state.h"
+#include "tests/physics/atmosphere/shared_models.h"
+
+namespace skyig::sky {
+namespace {
+
+// The class's response-weighted mean wavelength gives the haze's extinction ratio: class B's
+// filter cuts further into the red, so it sees through haze better than class A, and both better
+// than the eye (ratio below 1).
+TEST(GoggleWeather, HazeIsThinnerInTheGogglesBandAndThinnestInClassB) {
+  const double a = nvisHazeExtinctionScale(nvis::NvisClass::A), b = nvisHazeExtinctionScale(nvis::NvisClass::B);
+  std::printf("haze extinction, goggle over eye: class A %.3f, class B %.3f\n", a, b);
+  EXPECT_LT(b, a);
+  EXPECT_LT(a, 0.8);
+  // (lambda / 550)^-1.3 lies between the band's ends: 930 nm's 0.505 and 625 nm's 0.847.
+  EXPECT_GT(b, std::pow(930.0 / 550.0, -1.3));
+  EXPECT_LT(a, std::pow(625.0 / 550.0, -1.3));
+}
+
+// A 2 km haze (the 10 km tables and a layer) and a 200 m fog of 400 m, seen level from 30 m in a
+// class B goggle: the haze layer's extinction is the eye's times the ratio, the fog's the eye's;
+// a black target at the eye's 2 km visibility keeps more contrast in the goggle. Inside the fog
+// (the centre of the view all fog) the sunlit sky's weight lies between the clear sky's and the
+// direct sun's, by the sun's share of the light on the fog's top.
+TEST(GoggleWeather, TheGoggleSeesFartherInHazeAndWeighsTheFogAsItsLight) {
+  atmosphere::ModelConfig config = atmosphere::testing::oneGroupConfig();
+  config.medium = atmosphere::applyConditions(config.medium, atmosphere::Conditions{10.0, std::nullopt, std::nullopt});
+  const auto model = std::make_shared<const atmosphere::AtmosphereModel>(atmosphere::testing::cachedModel(config));
+  SkyConditions conditions;
+  conditions.model = SkyModel::Physical;
+  conditions.atmosphere = model;
+  conditions.haze = weather::hazeBelowTables(2.0, 1200.0);
+  ObserverState o;
+  o.utc = {2026, 6, 21, 9.0 * 3600.0};
+  o.heightM = 30.0;
+  const SkyState hazy = buildSkyState(o, conditions);
+  const weather::FogLayers eye = drawnFogLayers(hazy.fog);
+  const weather::FogLayers goggle = goggleFogLayers(hazy.fog, nvis::NvisClass::B);
+  EXPECT_NEAR(goggle[0].extinction, eye[0].extinction * nvisHazeExtinctionScale(nvis::NvisClass::B), 1e-12);
+  const double h = hazy.observer.heightM;
+  const double tEye = shader::fogTransmittance(eye[0], h, 0.0, 2000.0);
+  const double tGoggle = shader::fogTransmittance(goggle[0], h, 0.0, 2000.0);
+  std::printf("2 km of the haze layer, level: the eye keeps %.3f, a class B goggle %.3f\n", tEye, tGoggle);
+  EXPECT_GT(tGoggle, tEye);
+
+  conditions.haze = {};
+  conditions.fog = {0.0, 200.0, 0.4};
+  const SkyState foggy = buildSkyState(o, conditions);
+  SkyState clear = foggy;
+  clear.fog = FogState{};
+  const glm::dvec3 level(0.0, 1.0, 0.0);
+  const NvisWeights inFog = nvisWeights(SpectralBand::NvisClassB, foggy, level);
+  const NvisWeights inClear = nvisWeights(SpectralBand::NvisClassB, clear, level);
+  EXPECT_EQ(goggleFogLayers(foggy.fog, nvis::NvisClass::B)[1].extinction, drawnFogLayers(foggy.fog)[1].extinction);
+  const double share = foggy.fog.sunShare[1];
+  ASSERT_GT(share, 0.3);
+  ASSERT_LT(share, 1.0);
+  const double expected = share * inClear.sunDisc + (1.0 - share) * inClear.sunlitSky;  // the level view is all fog
+  std::printf("class B sunlit sky's weight: clear %.4g, in fog %.4g (the sun's share of the fog's light %.2f, the "
+              "sun's weight %.4g)\n",
+              inClear.sunlitSky, inFog.sunlitSky, share, inClear.sunDisc);
+  EXPECT_NEAR(inFog.sunlitSky, expected, 1e-6 * expected);
+  EXPECT_GT(inFog.sunlitSky, inClear.sunlitSky);
+  EXPECT_EQ(inFog.sunDisc, inClear.sunDisc);
+}
+
+}  // namespace
+}  // namespace skyig::sky

@@ -7,6 +7,7 @@
 // epan/dissectors/packet-cigi.c). Bits count from
 // 0 = least significant. Bytes 0 and 1 (packet id and size) are written by the framework.
 // The tests pin each layout with hand-written bytes (tests/protocol/cigi_layout_test.cpp).
+#include <cstddef>
 #include <type_traits>
 
 #include "protocol/cigi/packets.h"
@@ -106,9 +107,10 @@ void layout(IO& io, P& m) {
   io.f32(40, m.transitionPerimeterM);
 }
 
-template <class IO, class P> requires std::is_same_v<std::remove_const_t<P>, WeatherControl>
-void layout(IO& io, P& m) {
-  io.u16(2, m.entityRegionId);
+// Weather Control's layer, humidity and flag bytes (4-7) and its twelve floats from `floats`: the
+// same in CIGI 3.3 (floats from 8) and 4.0 (from 12, layouts4.h).
+template <class IO, class P>
+void weatherLayerAndFlags(IO& io, P& m) {
   io.u8(4, m.layerId);
   io.u8(5, m.humidityPct);
   io.bits(6, 0, 1, m.weatherEnable, "Weather Enable");
@@ -118,18 +120,28 @@ void layout(IO& io, P& m) {
   io.bits(6, 4, 4, m.cloudType, "Cloud Type");
   io.bits(7, 0, 2, m.scope, "Scope");
   io.bits(7, 2, 3, m.severity, "Severity");
-  io.f32(8, m.airTemperatureC);
-  io.f32(12, m.visibilityRangeM);
-  io.f32(16, m.scudFrequencyPct);
-  io.f32(20, m.coveragePct);
-  io.f32(24, m.baseElevationM);
-  io.f32(28, m.thicknessM);
-  io.f32(32, m.transitionBandM);
-  io.f32(36, m.horizontalWindSpeedMps);
-  io.f32(40, m.verticalWindSpeedMps);
-  io.f32(44, m.windDirectionDeg);
-  io.f32(48, m.barometricPressureHpa);
-  io.f32(52, m.aerosolConcentrationGpm3);
+}
+template <class IO, class P>
+void weatherFloats(IO& io, P& m, std::size_t floats) {
+  io.f32(floats, m.airTemperatureC);
+  io.f32(floats + 4, m.visibilityRangeM);
+  io.f32(floats + 8, m.scudFrequencyPct);
+  io.f32(floats + 12, m.coveragePct);
+  io.f32(floats + 16, m.baseElevationM);
+  io.f32(floats + 20, m.thicknessM);
+  io.f32(floats + 24, m.transitionBandM);
+  io.f32(floats + 28, m.horizontalWindSpeedMps);
+  io.f32(floats + 32, m.verticalWindSpeedMps);
+  io.f32(floats + 36, m.windDirectionDeg);
+  io.f32(floats + 40, m.barometricPressureHpa);
+  io.f32(floats + 44, m.aerosolConcentrationGpm3);
+}
+
+template <class IO, class P> requires std::is_same_v<std::remove_const_t<P>, WeatherControl>
+void layout(IO& io, P& m) {
+  io.u16(2, m.entityRegionId);
+  weatherLayerAndFlags(io, m);
+  weatherFloats(io, m, 8);
 }
 
 template <class IO, class P> requires std::is_same_v<std::remove_const_t<P>, ViewControl>

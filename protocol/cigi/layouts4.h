@@ -9,6 +9,7 @@
 // SISO text itself (SISO-STD-013-2014) was not available to check them against.
 #include <type_traits>
 
+#include "protocol/cigi/layouts.h"
 #include "protocol/cigi/packets.h"
 
 namespace skyig::protocol::cigi::detail {
@@ -78,29 +79,10 @@ void layout4(IO& io, P& m) {
 // top transition band; 68-71 reserved.
 template <class IO, class P> requires std::is_same_v<std::remove_const_t<P>, WeatherControl>
 void layout4(IO& io, P& m) {
-  io.u8(4, m.layerId);
-  io.u8(5, m.humidityPct);
-  io.bits(6, 0, 1, m.weatherEnable, "Weather Enable");
-  io.bits(6, 1, 1, m.scudEnable, "Scud Enable");
-  io.bits(6, 2, 1, m.randomWindsEnable, "Random Winds Enable");
-  io.bits(6, 3, 1, m.randomLightningEnable, "Random Lightning Enable");
-  io.bits(6, 4, 4, m.cloudType, "Cloud Type");
-  io.bits(7, 0, 2, m.scope, "Scope");
-  io.bits(7, 2, 3, m.severity, "Severity");
+  weatherLayerAndFlags(io, m);
   io.bits(7, 5, 1, m.topScudEnable, "Top Scud Enable");
   io.u16(8, m.entityRegionId);
-  io.f32(12, m.airTemperatureC);
-  io.f32(16, m.visibilityRangeM);
-  io.f32(20, m.scudFrequencyPct);
-  io.f32(24, m.coveragePct);
-  io.f32(28, m.baseElevationM);
-  io.f32(32, m.thicknessM);
-  io.f32(36, m.transitionBandM);
-  io.f32(40, m.horizontalWindSpeedMps);
-  io.f32(44, m.verticalWindSpeedMps);
-  io.f32(48, m.windDirectionDeg);
-  io.f32(52, m.barometricPressureHpa);
-  io.f32(56, m.aerosolConcentrationGpm3);
+  weatherFloats(io, m, 12);
   io.f32(60, m.topScudFrequencyPct);
   io.f32(64, m.topTransitionBandM);
 }

@@ -80,7 +80,7 @@ vec2 fogFluxesAbsorbing(Float tau_in, Float tau, Float g, Float a, Float omega) 
 
 // Below this albedo the layer absorbs (fogFluxesAbsorbing); at or above it, it is taken as water
 // (fogFluxes), where the hyperbolic form's 1 / k would lose single precision.
-#define FOG_CONSERVATIVE_ALBEDO 0.999
+const Float kFogConservativeAlbedo = 0.999;
 
 // The layer's radiance at the depth of an eye h metres above the ground (its top seen from
 // above, its bottom from below): the downward flux seen looking up, the upward looking down, each
@@ -91,7 +91,7 @@ FogEye fogEye(IN(FogLayer) fog, Float h) {
   vec3 down = vec3(0.0);
   vec3 up = vec3(0.0);
   for (int i = 0; i < 3; ++i) {
-    vec2 f = fog.albedo[i] >= FOG_CONSERVATIVE_ALBEDO
+    vec2 f = fog.albedo[i] >= kFogConservativeAlbedo
                  ? fogFluxes(tau_in, tau, fog.asymmetry, fog.ground_albedo)
                  : fogFluxesAbsorbing(tau_in, tau, fog.asymmetry, fog.ground_albedo, fog.albedo[i]);
     down[i] = f.x;
@@ -109,7 +109,8 @@ vec3 fogRadiance(IN(FogEye) eye, Float mu_view) {
   return up * eye.looking_up + (1.0 - up) * eye.looking_down;
 }
 
-// throughFog with the eye's radiance already solved (fogEye at h): what the sky pass does per pixel.
+// throughFog with the eye's radiance already solved (fogEye at h): one solve for the many views of
+// one eye (the sky pass's table, fog_table.h).
 vec3 throughFogSeen(IN(FogLayer) fog, IN(FogEye) eye, IN(vec3) behind, Float h, Float mu, Float d) {
   Float t = exp(-fog.extinction * fogPathLength(fog, h, mu, d));
   return behind * t + fogRadiance(eye, mu) * (1.0 - t);

@@ -98,6 +98,28 @@ TEST_F(BenchCommand, RatiosKeepTheUsersLlvmpipeThreads) {
 // Bad flags stop the bench with exit code 2 and a message naming the flag, before any GL: the
 // ratios' scenes are fixed (no --utc, attitude or sun), rounds need --ratios and are at least
 // one, thread counts are not negative, and the reference is the physical sky's pass.
+// Without --ratios the bench also times the node's whole frame: every channel of the
+// configuration at its own size, as serve draws them; its channels are named and each takes less
+// than the frame they make up.
+TEST_F(BenchCommand, TheNodesFrameIsEveryChannelOfTheConfiguration) {
+  std::ofstream(dir_ / "two.toml") << "[sky]\nmodel = \"preetham\"\n[[channel]]\nname = \"front\"\nwidth = 48\nheight = 32\n"
+                                      "[[channel]]\nname = \"left\"\nyaw = -60.0\nwidth = 32\nheight = 24\n";
+  const SkyigResult r =
+      run("--json --width 32 --height 24 --frames 3 --projector-size 32x24 --config " + (dir_ / "two.toml").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const nlohmann::json& n = j["node_frame"];
+  EXPECT_EQ(n["channels"].get<int>(), 2);
+  const double p50 = n["p50_ms"], p99 = n["p99_ms"], max = n["max_ms"];
+  EXPECT_GT(p50, 0.0);
+  EXPECT_LE(p50, p99);
+  EXPECT_LE(p99, max);
+  for (const char* channel : {"front", "left"}) {
+    ASSERT_TRUE(n["channel_ms"].contains(channel)) << channel;
+    EXPECT_GT(n["channel_ms"][channel].get<double>(), 0.0);
+  }
+}
+
 TEST_F(BenchCommand, BadRatiosFlagsExitTwo) {
   struct Case {
     std::string args, named;

@@ -19,6 +19,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -158,7 +159,8 @@ NodeChannels loadNodeChannels(const NodeConfig& config) {
   return out;
 }
 
-// The run's timing in one line at exit (the statistics' rings: the last 8192 frames).
+// The run's timing in one line at exit (the statistics' rings: the last 8192 frames), its rate
+// over the seconds from the first frame to the last (the start-up not counted).
 void logRunTiming(const NodeStats& stats, double elapsedS) {
   const std::uint64_t frames = stats.frames.load();
   if (frames == 0) return;
@@ -166,8 +168,9 @@ void logRunTiming(const NodeStats& stats, double elapsedS) {
   auto ms = [&](const char* key) { return t.value(key, 0.0) / 1000.0; };
   spdlog::info("served {} frames in {:.1f} s ({:.1f} fps): frame p50 {:.1f} ms, p99 {:.1f} ms, max {:.1f} ms; {} over "
                "{:.1f} ms; {} Start of Frames sent",
-               frames, elapsedS, static_cast<double>(frames) / elapsedS, ms("p50_us"), ms("p99_us"), ms("max_us"),
-               stats.framesOverPeriod.load(), stats.targetPeriodUs.load() / 1000.0, stats.startOfFrameSent.load());
+               frames, elapsedS, elapsedS > 0.0 ? static_cast<double>(frames) / elapsedS : 0.0, ms("p50_us"),
+               ms("p99_us"), ms("max_us"), stats.framesOverPeriod.load(), stats.targetPeriodUs.load() / 1000.0,
+               stats.startOfFrameSent.load());
 }
 
 void logChannels(const NodeOptions& opt, const NodeChannels& nc, const DisplayOutputs& display) {
@@ -197,7 +200,7 @@ class FrameLoop {
     stats_.channelGpuTime.setChannels(names);
     stats_.targetPeriodUs = 1e6 / opt_.frameRateHz;
     timing_.emplace(names, 1.0 / opt_.frameRateHz);
-    warmUpWeather(display, nc);
+    warmUp(display, nc);
     lastLog_ = Clock::now();
     for (std::uint64_t frame = 0; !externalStop && (opt_.frames == 0 || frame < opt_.frames); ++frame) {
       waitForFrame(externalStop);
@@ -217,6 +220,8 @@ class FrameLoop {
       const auto frameEnd = Clock::now();
       count(snapshot, frameStart, frameEnd);
       time(snapshot, frameStart, frameEnd, display.lastChannelGpuSeconds());
+      if (!firstStart_) firstStart_ = frameStart;
+      lastEnd_ = frameEnd;
       sendStartOfFrame(frame, snapshot, frameEnd);
       if (dump_)
         dump_->write(frame, snapshot, built->state, pose, std::chrono::duration<double>(frameEnd - frameStart).count(),
@@ -224,6 +229,11 @@ class FrameLoop {
       systemd.frameDone(Clock::now());
       if (!opt_.headless && display.closeRequested()) break;
     }
+  }
+
+  // Seconds from the first frame's start to the last one's end (0 before a frame).
+  double servedSeconds() const {
+    return firstStart_ ? std::chrono::duration<double>(lastEnd_ - *firstStart_).count() : 0.0;
   }
 
  private:
@@ -269,21 +279,35 @@ class FrameLoop {
     }
   }
 
-  // The physical sky's programs with the weather's layers, compiled before the first frame that
-  // shows fog or rain (a second on llvmpipe otherwise): the first state drawn once with a ground
-  // fog, nothing shown.
-  void warmUpWeather(DisplayOutputs& display, const NodeChannels& nc) {
+  // The programs a frame needs depend on its light (the sun's sky, the moon's, the night's layer,
+  // the tone folded in) and on the weather: compiled in the frame that first needs them they cost
+  // it a second on llvmpipe. So before the first frame the node draws, nothing shown, its first
+  // state and that day's noon and midnight at its longitude, each clear and, under the physical
+  // sky, with a ground fog.
+  void warmUp(DisplayOutputs& display, const NodeChannels& nc) {
     const std::shared_ptr<const BuiltSky> built = sky_.get();
-    if (built->state.conditions.model != sky::SkyModel::Physical || !built->state.conditions.atmosphere) return;
-    sky::SkyState foggy = built->state;
-    sky::FogState& fog = foggy.fog;
-    if (!fog.any()) {
-      const double ground = foggy.conditions.atmosphere->parameters(0).bottom_radius;
-      fog.sunlit[1] = weather::makeFogLayer({0.0, 200.0, 0.4}, ground, 0.2, glm::dvec3(1.0));
+    const sky::SkyState& first = built->state;
+    const bool physical = first.conditions.model == sky::SkyModel::Physical && first.conditions.atmosphere;
+    std::vector<sky::DisplayParams> displays;
+    for (const auto& c : nc.channels) displays.push_back(c.display);
+    std::vector<sky::SkyState> states{first};
+    for (const double solarHour : {12.0, 0.0}) {
+      sky::ObserverState o = first.observer;
+      o.utc.secondsOfDay = std::fmod(3600.0 * (solarHour - o.longitudeDeg / 15.0) + 2.0 * 86400.0, 86400.0);
+      states.push_back(sky::buildSkyState(o, first.conditions));
+      sky::mapForDisplays(states.back(), displays);
     }
     const auto start = Clock::now();
-    display.warmUp(foggy, worker_.poseAt(built->host.get(), start, nc.channels).attitude, nc.channels);
-    spdlog::info("weather programs compiled in {:.0f} ms", 1000.0 * std::chrono::duration<double>(Clock::now() - start).count());
+    const sky::Attitude attitude = worker_.poseAt(built->host.get(), start, nc.channels).attitude;
+    for (sky::SkyState& s : states) {
+      display.warmUp(s, attitude, nc.channels);
+      if (!physical) continue;
+      const double ground = s.conditions.atmosphere->parameters(0).bottom_radius;
+      s.fog.sunlit[1] = weather::makeFogLayer({0.0, 200.0, 0.4}, ground, 0.2, glm::dvec3(1.0));
+      display.warmUp(s, attitude, nc.channels);
+    }
+    spdlog::info("the sky's programs for day, night{} compiled in {:.0f} ms", physical ? " and weather" : "",
+                 1000.0 * std::chrono::duration<double>(Clock::now() - start).count());
   }
 
   // The frame's timing: in the statistics, and in the info line every logIntervalS.
@@ -344,6 +368,8 @@ class FrameLoop {
   Clock::time_point lastArrivalShown_{};
   std::optional<FrameTimingWindow> timing_;
   std::optional<Clock::time_point> previousStart_;
+  std::optional<Clock::time_point> firstStart_;  // of the first frame: the run's time excludes the start-up
+  Clock::time_point lastEnd_{};
   Clock::time_point lastLog_{};
   std::vector<std::uint8_t> sof_;
 };
@@ -380,6 +406,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
   worker.setHostInstantsOnly(opt.synchronous);
   sky.publish(BuiltSky{worker.build(nullptr, Clock::now()), nullptr, 0});  // frame 0 already has a sky
 
+  double servedS = 0.0;
   {
     ThreadGroup threads(stop);  // inside what the threads use: joined before any of it goes
     threads.start([&] { cigi.run(udp, stop); });
@@ -388,10 +415,12 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
     const NodeChannels channels = loadNodeChannels(opt.config);
     DisplayOutputs display(opt.headless, opt.config.nodeName, channels.channels, channels.projectors);
     logChannels(opt, channels, display);
-    FrameLoop(opt, stats, sky, worker, udp, start).run(channels, display, externalStop);
+    FrameLoop loop(opt, stats, sky, worker, udp, start);
+    loop.run(channels, display, externalStop);
+    servedS = loop.servedSeconds();
   }  // the threads are joined here
   if (!opt.statsPath.empty()) writeStatsFile(opt.statsPath, stats);  // the final counters, once
-  logRunTiming(stats, std::chrono::duration<double>(Clock::now() - start).count());
+  logRunTiming(stats, servedS);
   return 0;
 }
 

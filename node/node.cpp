@@ -200,7 +200,7 @@ class FrameLoop {
     stats_.channelGpuTime.setChannels(names);
     stats_.targetPeriodUs = 1e6 / opt_.frameRateHz;
     timing_.emplace(names, 1.0 / opt_.frameRateHz);
-    warmUp(display, nc);
+    warmUp(display, nc, externalStop);
     lastLog_ = Clock::now();
     for (std::uint64_t frame = 0; !externalStop && (opt_.frames == 0 || frame < opt_.frames); ++frame) {
       waitForFrame(externalStop);
@@ -283,8 +283,8 @@ class FrameLoop {
   // the tone folded in) and on the weather: compiled in the frame that first needs them they cost
   // it a second on llvmpipe. So before the first frame the node draws, nothing shown, its first
   // state and that day's noon and midnight at its longitude, each clear and, under the physical
-  // sky, with a ground fog.
-  void warmUp(DisplayOutputs& display, const NodeChannels& nc) {
+  // sky, with a ground fog. A stop asked for meanwhile ends it between two draws.
+  void warmUp(DisplayOutputs& display, const NodeChannels& nc, const std::atomic<bool>& externalStop) {
     const std::shared_ptr<const BuiltSky> built = sky_.get();
     const sky::SkyState& first = built->state;
     const bool physical = first.conditions.model == sky::SkyModel::Physical && first.conditions.atmosphere;
@@ -300,8 +300,9 @@ class FrameLoop {
     const auto start = Clock::now();
     const sky::Attitude attitude = worker_.poseAt(built->host.get(), start, nc.channels).attitude;
     for (sky::SkyState& s : states) {
+      if (externalStop) return;
       display.warmUp(s, attitude, nc.channels);
-      if (!physical) continue;
+      if (!physical || externalStop) continue;
       const double ground = s.conditions.atmosphere->parameters(0).bottom_radius;
       s.fog.sunlit[1] = weather::makeFogLayer({0.0, 200.0, 0.4}, ground, 0.2, glm::dvec3(1.0));
       display.warmUp(s, attitude, nc.channels);

@@ -155,9 +155,15 @@ TEST_F(Shutdown, SigintWhileServingWritesTheStatsAndKeepsTheRecording) {
              dir_, {});
   ASSERT_TRUE(node.started());
   ASSERT_TRUE(node.waitFor("channel front:", 60s)) << node.said();
-  // Serving: the first statistics (every 2 s) count frames.
+  // Serving (its programs compiled first): the statistics (every 2 s) count frames.
+  ASSERT_TRUE(node.waitFor("compiled in", 60s)) << node.said();
   const auto start = Clock::now();
-  while (!fs::exists(dir_ / "stats.json") && Clock::now() - start < 30s) std::this_thread::sleep_for(20ms);
+  auto framesCounted = [&] {
+    if (!fs::exists(dir_ / "stats.json")) return false;
+    const auto j = nlohmann::json::parse(slurp(dir_ / "stats.json"), nullptr, false);
+    return !j.is_discarded() && j.value("frames", 0) > 0;
+  };
+  while (!framesCounted() && Clock::now() - start < 30s) std::this_thread::sleep_for(20ms);
   const double seconds = stopWith(node, SIGINT);
   EXPECT_EQ(node.exitCode(), 0) << node.said();
   EXPECT_LT(seconds, 2.0) << node.said();

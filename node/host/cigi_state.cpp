@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <type_traits>
 #include <variant>
 
@@ -88,7 +89,12 @@ Applied precipitationFrom(weather::Precipitation kind, const cigi::WeatherContro
     return kChanged;
   }
   const double visibilityM = p.visibilityRangeM > 0.0f ? std::max<double>(p.visibilityRangeM, kSmallestLayerVisibilityM) : 0.0;
-  slot = weather::precipitationLayer(kind, base, top, visibilityM / 1000.0, p.severity, static_cast<double>(p.coveragePct) / 100.0);
+  try {  // a layer the model refuses is refused and counted, the last good one kept
+    slot = weather::precipitationLayer(kind, base, top, visibilityM / 1000.0, p.severity,
+                                       static_cast<double>(p.coveragePct) / 100.0);
+  } catch (const std::invalid_argument&) {
+    return kRejected;
+  }
   return kChanged;
 }
 

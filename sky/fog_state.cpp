@@ -21,8 +21,6 @@ TopLight irradianceAt(const atmosphere::AtmosphereModel& model, double r, const 
           model.converter().toRec709(model.skyIrradiance(point, up, light))};
 }
 
-double luminanceOf(const glm::dvec3& c) { return 0.2126729 * c.x + 0.7151522 * c.y + 0.0721750 * c.z; }
-
 // The layers lit at their tops by sun * sunWeight + moon * moonWeight.
 weather::FogLayers litBy(const FogState& fog, double sunWeight, double moonWeight) {
   weather::FogLayers out = fog.sunlit;
@@ -49,8 +47,8 @@ FogState makeFogState(const atmosphere::AtmosphereModel& model, const SkyConditi
     const double top = ground + specs[i].topM;
     const TopLight sunlit = irradianceAt(model, top, sun);
     out.sunlit[i] = weather::makeFogLayer(specs[i], ground, albedo, sunlit.total());
-    const double lux = luminanceOf(sunlit.total());
-    out.sunShare[i] = lux > 0.0 ? luminanceOf(sunlit.direct) / lux : 0.0;
+    const double lux = shader::rec709Luminance(sunlit.total());
+    out.sunShare[i] = lux > 0.0 ? shader::rec709Luminance(sunlit.direct) / lux : 0.0;
     if (moonlightScale != glm::dvec3(0.0)) out.moonIrradiance[i] = irradianceAt(model, top, moon).total() * moonlightScale;
   }
   return out;

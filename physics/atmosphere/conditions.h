@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "physics/atmosphere/medium.h"
+#include "physics/common/sky_conditions.h"
 
 namespace skyig::atmosphere {
 
@@ -17,10 +18,9 @@ struct Conditions {
   std::optional<double> groundAlbedo;
 };
 
-// Koschmieder's relation (Koschmieder 1924; WMO No. 8): an object is just visible at the
-// distance where its contrast falls to 2%, V = ln(50) / beta_ext = 3.912 / beta_ext, with
-// beta_ext the total extinction at 550 nm at the ground.
-inline constexpr double kKoschmiederConstant = 3.912;
+// Koschmieder's relation (physics/common/sky_conditions.h), with beta_ext the total extinction at
+// 550 nm at the ground.
+inline constexpr double kKoschmiederConstant = sky::kKoschmiederConstant;
 
 // The visibilities the configuration, the command line and the host may give (km): from a
 // 50 m fog to a host's "unlimited"; past cleanAirVisibilityKm they are all clean air.

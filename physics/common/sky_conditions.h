@@ -16,6 +16,11 @@ namespace skyig::sky {
 
 enum class SkyModel { Preetham, Cie, Physical };
 
+// Koschmieder's relation (Koschmieder 1924; WMO No. 8): an object is just visible at the
+// distance where its contrast falls to 2%, V = ln(50) / beta_ext = 3.912 / beta_ext. Here with
+// FogSpec, whose visibilities it turns into extinctions; physics/atmosphere/conditions.h names it too.
+inline constexpr double kKoschmiederConstant = 3.912;
+
 // The asymmetry factor of fog and cloud droplets in the visible (Hansen & Travis 1974: 0.85).
 inline constexpr double kDropletAsymmetry = 0.85;
 

@@ -10,7 +10,7 @@ namespace skyig::weather {
 
 namespace {
 
-constexpr double kKoschmieder = 3.912;  // ln 50: the 2% contrast (physics/atmosphere/conditions.h)
+constexpr double kKoschmieder = sky::kKoschmiederConstant;
 
 [[noreturn]] void bad(const char* name, double value, const char* expected) {
   char text[160];
@@ -18,7 +18,6 @@ constexpr double kKoschmieder = 3.912;  // ln 50: the 2% contrast (physics/atmos
   throw std::invalid_argument(text);
 }
 
-double rec709Luminance(const glm::dvec3& c) { return 0.2126729 * c.x + 0.7151522 * c.y + 0.0721750 * c.z; }
 
 }  // namespace
 
@@ -57,7 +56,7 @@ FogLayer makeFogLayer(const sky::FogSpec& spec, double planetRadiusM, double gro
 
 double throughFogLuminance(const FogLayer& fog, double behindCdM2, double h, double mu, double d) {
   return behindCdM2 * shader::fogTransmittance(fog, h, mu, d) +
-         rec709Luminance(shader::throughFog(fog, glm::dvec3(0.0), h, mu, d));
+         shader::rec709Luminance(shader::throughFog(fog, glm::dvec3(0.0), h, mu, d));
 }
 
 }  // namespace skyig::weather

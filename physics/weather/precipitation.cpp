@@ -12,7 +12,7 @@ namespace skyig::weather {
 
 namespace {
 
-constexpr double kKoschmieder = 3.912;  // ln 50: the 2% contrast (physics/atmosphere/conditions.h)
+constexpr double kKoschmieder = sky::kKoschmiederConstant;
 constexpr double kPi = 3.14159265358979323846;
 
 struct Optics {

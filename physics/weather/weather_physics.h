@@ -15,6 +15,7 @@ using glsl_types::vec3;
 #include "physics/common/glsl_cpp_begin.h"
 using namespace weather_types;
 #include "physics/common/constants.glsl"
+#include "physics/common/color.glsl"
 #include "physics/weather/fog_layer.glsl"
 #include "physics/weather/fog_table.glsl"
 #include "physics/common/glsl_cpp_end.h"

@@ -117,12 +117,28 @@ eye::GlareSources glareSources(const SkyState& s) {
 
 }  // namespace
 
+namespace {
+
+// The height a cached extinction profile is computed at: the nearest point of a fixed grid,
+// 25 m apart up to 1250 m and 2 % apart above (where 2 % of the height is 25 m), so a profile
+// is at most 12.5 m or 1 % off. A fixed grid rather than "within 25 m of the last one": the
+// profile a state gets depends on its own height only, never on which heights the builder saw
+// before, and two nodes (or a node and its replay) that skipped different host frames show the
+// same frame alike to the bit.
+double extinctionGridHeight(double heightM) {
+  constexpr double kStepM = 25.0, kRatio = 1.02, kGeometricFromM = kStepM / (kRatio - 1.0);
+  if (heightM <= kGeometricFromM) return kStepM * std::round(heightM / kStepM);
+  return kGeometricFromM * std::pow(kRatio, std::round(std::log(heightM / kGeometricFromM) / std::log(kRatio)));
+}
+
+}  // namespace
+
 std::shared_ptr<const atmosphere::ExtinctionProfile> SkyStateCaches::extinction(const atmosphere::Medium& medium,
                                                                                double heightM) {
   const double top = medium.topRadiusM - medium.bottomRadiusM;
-  const double h = std::clamp(heightM, 0.0, top - 1.0);  // above the top nothing changes
-  if (lastExtinction_ && lastMedium_ == medium && std::abs(lastExtinction_->altitudeM() - h) <= std::max(25.0, 0.02 * h))
-    return lastExtinction_;
+  // Above the top nothing changes.
+  const double h = std::clamp(extinctionGridHeight(std::clamp(heightM, 0.0, top - 1.0)), 0.0, top - 1.0);
+  if (lastExtinction_ && lastMedium_ == medium && lastExtinction_->altitudeM() == h) return lastExtinction_;
   lastExtinction_ = std::make_shared<const atmosphere::ExtinctionProfile>(medium, h);
   lastMedium_ = medium;
   return lastExtinction_;

@@ -102,9 +102,10 @@ std::optional<night::NightDiffuseSky> nightDiffuseSky(const SkyState& state, boo
 
 // What consecutive states of one observer share, owned by whoever builds them (the sky worker,
 // node/frame/sky_worker.h): the ephemeris' frame-to-frame interpolation (3 us instead of 28 us an
-// update) and the extinction profile (tens of milliseconds), which states reuse while the
-// observer stays within max(25 m, 2%) of its height and the medium is unchanged. Not shared
-// between threads.
+// update) and the extinction profile (tens of milliseconds), computed at the nearest height of a
+// fixed grid (25 m apart, 2 % above 1250 m) and reused while the observer stays nearest to it and
+// the medium is unchanged: a state is a function of its own inputs, whatever was built before.
+// Not shared between threads.
 class SkyStateCaches {
  public:
   ephemeris::EphemerisCache ephemeris;

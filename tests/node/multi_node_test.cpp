@@ -140,7 +140,7 @@ class MultiNodeDome : public ::testing::Test {
       nodes_.push_back(std::move(n));
     }
     for (auto& n : nodes_)
-      ASSERT_TRUE(waitUntil([&] { return !n->process->running() || completeDumpLines(n->dump).size() > 0; }, 60000ms))
+      ASSERT_TRUE(waitUntil([&] { return !n->process->running() || completeDumpLines(n->dump).size() > 0; }, kFirstFrameLimit))
           << n->name;
     for (auto& n : nodes_) ASSERT_TRUE(n->process->running()) << n->name << ":\n" << n->process->output();
     listening_ = true;
@@ -319,7 +319,8 @@ std::vector<std::uint32_t> expectShownAlike(const DomeNode& a, const DomeNode& b
     const auto& ua = shownA.at(frame)["used"];
     const auto& ub = shownB.at(frame)["used"];
     for (const char* key : {"adaptation_cd_m2", "adaptation_gain", "scene_cd_m2", "yaw", "pitch", "roll", "lat", "lon", "alt"})
-      EXPECT_EQ(ua[key].get<double>(), ub[key].get<double>()) << key << " at host frame " << frame;
+      EXPECT_EQ(ua[key].get<double>(), ub[key].get<double>())
+          << key << " at host frame " << frame << ": apart by " << ua[key].get<double>() - ub[key].get<double>();
     EXPECT_EQ(ua["utc"], ub["utc"]) << frame;
     EXPECT_EQ(shownA.at(frame)["sun"], shownB.at(frame)["sun"]) << frame;
   }

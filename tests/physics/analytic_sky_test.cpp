@@ -126,22 +126,34 @@ TEST(SkyState, RejectsBadInput) {
 }
 
 // Every state carries the extinction towards space at the observer's altitude, shared between
-// the states of one builder's caches at nearly the same altitude and rebuilt after a climb;
-// another builder's caches are its own (no process-wide state).
+// the states of one builder's caches at nearly the same altitude (the nearest point of a 25 m
+// grid, 2 % above 1250 m) and rebuilt after a climb; another builder's caches are its own (no
+// process-wide state), and what a state gets does not depend on what its builder built before:
+// a builder that came down from 3 km gives the profile of a fresh one.
 TEST(SkyState, ExtinctionProfileFollowsTheAltitude) {
   ObserverState o;
+  o.heightM = 581.0;
   SkyStateCaches caches, others;
   const SkyState a = buildSkyState(o, SkyConditions{}, std::nullopt, &caches);
-  o.heightM += 10.0;
+  o.heightM += 5.0;  // 581 and 586 m: both nearest to 575 m
   const SkyState b = buildSkyState(o, SkyConditions{}, std::nullopt, &caches);
   ASSERT_TRUE(a.extinction && b.extinction);
   EXPECT_EQ(a.extinction, b.extinction);
+  EXPECT_EQ(a.extinction->altitudeM(), 575.0);
   EXPECT_NE(buildSkyState(o, SkyConditions{}, std::nullopt, &others).extinction, a.extinction);
-  o.heightM = 3000.0;
+  o.heightM = 3000.0;  // 1250 m * 1.02^44 = 2995.6 m
   const SkyState c = buildSkyState(o, SkyConditions{}, std::nullopt, &caches);
   EXPECT_NE(c.extinction, a.extinction);
-  EXPECT_NEAR(c.extinction->altitudeM(), 3000.0, 1e-9);
+  EXPECT_NEAR(c.extinction->altitudeM(), 1250.0 * std::pow(1.02, 44), 1e-9);
   EXPECT_GT(c.extinction->rec709(std::numbers::pi / 2).g, a.extinction->rec709(std::numbers::pi / 2).g);
+  // Down again, to a height between two grid points the first builder never used (597 m: 600).
+  o.heightM = 597.0;
+  SkyStateCaches fresh;
+  const SkyState afterClimb = buildSkyState(o, SkyConditions{}, std::nullopt, &caches);
+  const SkyState first = buildSkyState(o, SkyConditions{}, std::nullopt, &fresh);
+  EXPECT_EQ(afterClimb.extinction->altitudeM(), 600.0);
+  EXPECT_EQ(afterClimb.extinction->rec709(0.1).r, first.extinction->rec709(0.1).r);
+  EXPECT_EQ(afterClimb.sceneLuminance, first.sceneLuminance);
 }
 
 // The default state is the sun of the ephemeris: midsummer evening at Innsbruck, the sun in

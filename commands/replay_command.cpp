@@ -134,9 +134,10 @@ int runReplay(ReplayCli& cli) {
   } catch (const atmosphere::Cancelled&) {
     r.stopped = true;  // signalled while the tables were being built: nothing replayed
   }
-  std::printf("replayed %llu host messages%s: %llu frames, %llu images in %.2f s (%.1f frames/s)%s\n",
+  std::printf("replayed %llu host messages%s: %llu frames (%llu drawn), %llu images in %.2f s (%.1f frames/s)%s\n",
               static_cast<unsigned long long>(r.events), o.sendTo ? (" to " + o.sendTo->toString()).c_str() : "",
-              static_cast<unsigned long long>(r.frames), static_cast<unsigned long long>(r.imagesWritten), r.wallSeconds,
+              static_cast<unsigned long long>(r.frames), static_cast<unsigned long long>(r.framesDrawn),
+              static_cast<unsigned long long>(r.imagesWritten), r.wallSeconds,
               r.wallSeconds > 0 ? static_cast<double>(r.frames) / r.wallSeconds : 0.0,
               r.skippedRecords ? (", skipped " + std::to_string(r.skippedRecords) + " bad records").c_str() : "");
   if (r.stopped) std::printf("stopped by a signal before the end of the recording\n");

@@ -313,12 +313,15 @@ ReplayResult replay(const ReplayOptions& o) {
     }
     if (afterFrom && lastSky) {
       if (o.realtime) sleepUntil(wallStart + Ns(frame.timeNs - feeder.firstNs()), o.stop);
+      // Only the frames written are drawn: the worker stepped at every host message all the same
+      // (the eye, the weather and the tables are those of a replay that draws every frame), and
+      // nothing the renderer keeps between frames changes a frame's pixels (its caches hold what
+      // the state names), so a written frame is byte for byte the one an every-frame replay writes.
       const bool write = !o.outDir.empty() && k % static_cast<std::uint64_t>(o.every) == 0;
-      for (std::size_t i = 0; i < lastPose.channels.size(); ++i) {
+      for (std::size_t i = 0; write && i < lastPose.channels.size(); ++i) {
         if (!wanted[i]) continue;
         const sky::ChannelConfig& c = lastPose.channels[i];
         renderer.draw(*lastSky, lastPose.attitude, c);
-        if (!write) continue;
         const std::string stem = frameStem(o.outDir, k, lastSky->observer.utc, written > 1 ? c.name : "");
         render::ImageAttributes attributes = frameAttributes(*lastSky, lastPose.attitude, c);
         attributes["skyig:frame"] = static_cast<double>(k);  // an integer, exact to 2^53
@@ -327,7 +330,10 @@ ReplayResult replay(const ReplayOptions& o) {
         result.imagesWritten +=
             static_cast<std::uint64_t>(writeFrameFiles(renderer, stem, c, o.writeExr, o.writePng, attributes));
       }
-      glFinish();  // the frame is done when its pixels are, written or not
+      if (write) {
+        glFinish();  // the frame is done when its pixels are
+        ++result.framesDrawn;
+      }
       if (dump) dump->write(k, frame.host.get(), *lastSky, lastPose);
     }
     shown = span.fraction(frame.timeNs, lastSky);

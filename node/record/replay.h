@@ -40,7 +40,8 @@ struct ReplayOptions {
 
 struct ReplayResult {
   std::uint64_t events = 0;
-  std::uint64_t frames = 0;           // frames computed
+  std::uint64_t frames = 0;           // frames computed (the worker stepped to each)
+  std::uint64_t framesDrawn = 0;      // frames drawn: those written (every Nth)
   std::uint64_t imagesWritten = 0;
   std::uint64_t skippedRecords = 0;   // bad records passed over (--skip-bad)
   std::uint64_t skippedGaps = 0;      // pauses longer than maxGapS not rendered

@@ -61,7 +61,7 @@ class NodeRun {
   ~NodeRun() { stop(); }
   // The first frame: the socket is bound and the renderer up.
   bool waitUntilRendering() {
-    return waitUntil([this] { return stats.frames.load() > 0 || !running_; });
+    return waitUntil([this] { return stats.frames.load() > 0 || !running_; }, kFirstFrameLimit);
   }
   void stop() {
     stop_ = true;

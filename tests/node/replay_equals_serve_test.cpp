@@ -124,8 +124,8 @@ TEST(ReplayEqualsServe, ReplayUsesTheHostsStarsViewsAirAndVisibilityAsTheNodeDid
   o.saveEvery = 10;
   NodeStats stats;
   std::atomic<bool> stop{false};
-  std::thread node([&] { runNode(o, stats, stop); });
-  ASSERT_TRUE(waitUntil([&] { return stats.frames.load() > 0; }));  // the socket is bound
+  StoppedThread node(stop, [&] { runNode(o, stats, stop); });
+  ASSERT_TRUE(waitForFirstFrame(stats.frames));  // the socket is bound
 
   UdpSocket host({"127.0.0.1", 0});
   const sockaddr_in to = toSockaddr({"127.0.0.1", port});
@@ -212,7 +212,7 @@ TEST(ReplayEqualsServe, TwoNodesFedOneStreamAdaptAlike) {
   struct Node {
     NodeOptions options;
     NodeStats stats;
-    std::thread thread;
+    std::unique_ptr<StoppedThread> thread;
   };
   std::atomic<bool> stop{false};
   Node nodes[2];
@@ -222,9 +222,9 @@ TEST(ReplayEqualsServe, TwoNodesFedOneStreamAdaptAlike) {
     loadSkyData(n.options.config);
     n.options.listen = {"127.0.0.1", freeLoopbackPort()};
     n.options.dumpStatePath = (dir / ("node" + std::to_string(i) + ".jsonl")).string();
-    n.thread = std::thread([&n, &stop] { runNode(n.options, n.stats, stop); });
+    n.thread = std::make_unique<StoppedThread>(stop, [&n, &stop] { runNode(n.options, n.stats, stop); });
   }
-  for (Node& n : nodes) ASSERT_TRUE(waitUntil([&] { return n.stats.frames.load() > 0; }));
+  for (Node& n : nodes) ASSERT_TRUE(waitForFirstFrame(n.stats.frames));
 
   UdpSocket host({"127.0.0.1", 0});
   constexpr std::uint32_t kFrames = 60;
@@ -244,7 +244,7 @@ TEST(ReplayEqualsServe, TwoNodesFedOneStreamAdaptAlike) {
   for (int i = 0; i < 2; ++i)
     EXPECT_TRUE(waitUntil([&] { return !lastHostFrame(nodes[i].options.dumpStatePath).is_null(); }, 20000ms)) << i;
   stop = true;
-  for (Node& n : nodes) n.thread.join();
+  for (Node& n : nodes) n.thread->join();
 
   const nlohmann::json a = lastHostFrame(nodes[0].options.dumpStatePath), b = lastHostFrame(nodes[1].options.dumpStatePath);
   ASSERT_FALSE(a.is_null());

@@ -96,6 +96,35 @@ inline bool waitUntil(const std::function<bool()>& done,
   return true;
 }
 
+// How long a node under test may take to its first frame: before it the node compiles the sky's
+// programs for day, night and weather (node/node.cpp, FrameLoop::warmUp), seconds on llvmpipe and
+// a minute or more with two sanitized nodes sharing a loaded 2-core CI machine.
+inline constexpr std::chrono::milliseconds kFirstFrameLimit{240000};
+
+// Waits for a node's first frame (its socket is bound, its programs compiled).
+inline bool waitForFirstFrame(const std::atomic<std::uint64_t>& frames) {
+  return waitUntil([&] { return frames.load() > 0; }, kFirstFrameLimit);
+}
+
+// A thread that runs a node until `stop` is set: stopped and joined however the test leaves its
+// scope, so a failed ASSERT that returns early ends the test, not the whole program (a joinable
+// std::thread destroyed calls std::terminate).
+class StoppedThread {
+ public:
+  StoppedThread(std::atomic<bool>& stop, std::function<void()> body) : stop_(stop), thread_(std::move(body)) {}
+  ~StoppedThread() { join(); }
+  StoppedThread(const StoppedThread&) = delete;
+  StoppedThread& operator=(const StoppedThread&) = delete;
+  void join() {
+    stop_ = true;
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  std::atomic<bool>& stop_;
+  std::thread thread_;
+};
+
 // Waits until `frames` has advanced by `count` from its value now: the node has rendered (and
 // dumped) what it had received before the call.
 inline bool waitForFrames(const std::atomic<std::uint64_t>& frames, std::uint64_t count) {

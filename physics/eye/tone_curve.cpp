@@ -31,6 +31,16 @@ double LuminanceHistogram::total() const {
   return t;
 }
 
+double LuminanceHistogram::percentileLog10(double fraction) const {
+  const double wanted = fraction * total();
+  double run = 0.0;
+  for (int i = 0; i < kBins; ++i) {
+    run += weight[static_cast<std::size_t>(i)];
+    if (run >= wanted && run > 0.0) return minLog10 + (i + 1) * (maxLog10 - minLog10) / kBins;
+  }
+  return maxLog10;
+}
+
 double LuminanceHistogram::logMean() const {
   double sum = 0.0, t = 0.0;
   for (int i = 0; i < kBins; ++i) {
@@ -46,6 +56,16 @@ double ToneCurve::displayLuminance(double worldCdM2) const {
   const int i = std::min(static_cast<int>(x), kPoints - 2);
   return shader::toneCurveLuminance(double(displayLog10[static_cast<std::size_t>(i)]),
                                     double(displayLog10[static_cast<std::size_t>(i + 1)]), x - i);
+}
+
+double shoulder(double above, double range, double headroom) {
+  // Below the knee, and wherever the brightest extended part fits under the top: slope 1.
+  if (above <= 0.0 || range <= headroom) return above;
+  // Above it the rational roll-off y = u / (1 + k u), k = 1/H - 1/U: slope 1 at the knee (no
+  // kink in the curve), y(U) = H (the brightest extended part at the top, never past it),
+  // monotonic, and the slope (H/U)^2 at the top.
+  const double u = std::min(above, range);
+  return u / (1.0 + u * (1.0 / headroom - 1.0 / range));
 }
 
 double wardScaleFactor(double worldAdaptation, double displayAdaptation) {
@@ -149,17 +169,27 @@ ToneCurve histogramAdjustment(const LuminanceHistogram& histogram, const Display
   }
   // The ceiling left (almost) nothing to equalise: the scene's range fits the display. Keep its
   // contrasts (slope 1 in log luminance) about its level, placed at the level's matched
-  // luminance.
+  // luminance; raised where its darkest part would fall below the display's black, as far as
+  // its brightest extended part stays under the top. Where the matched level leaves the
+  // brightest part no room, the contrasts are kept up to the knee, the brightest tenth of the
+  // view (kKneeShare), and what lies above the knee rolls off into the room under the top
+  // (shoulder()); the level is lowered only as far as the knee needs. A bright day's sky around
+  // the sun is 10-20 times its level, a tenth of the view or less: when the whole frame was
+  // lowered until it fitted, a hazy afternoon showed as dusk. A night sky's faint features (the
+  // Milky Way at the zenith) lie below its knee and keep their contrast.
   curve.linear = true;
-  // Placed at the level's matched luminance, but never so high that the scene's brightest
-  // extended part passes dMax (a twilight glow 10x the sky would turn white) nor, where the
-  // range allows, so low that its darkest part falls below the display's black.
-  const double matchedAnchor = matched(std::log10(level)) - std::log10(level);
-  const double highest = dMax - worldMax, lowest = dMin - worldMin;
-  const double anchor = std::min(std::max(matchedAnchor, lowest), highest);
+  const double levelLog10 = std::log10(level);
+  const double kneeLog10 = std::clamp(histogram.percentileLog10(1.0 - kKneeShare), levelLog10, worldMax);
+  const double matchedAnchor = matched(levelLog10) - levelLog10;
+  const double lowest = dMin - worldMin, highest = dMax - worldMax;
+  const double kneeHighest = dMax - kShoulderHeadroomLog10 - kneeLog10;  // the knee, with room above it
+  const double anchor = std::max(std::min(matchedAnchor, std::max(highest, kneeHighest)), std::min(lowest, highest));
+  const double dKnee = kneeLog10 + anchor;
   for (int k = 0; k < ToneCurve::kPoints; ++k) {
     const double bw = worldMin + (curve.maxLog10 - worldMin) * k / (ToneCurve::kPoints - 1);
-    curve.displayLog10[static_cast<std::size_t>(k)] = static_cast<float>(std::min(bw + anchor + gain, std::log10(display.maxCdM2) + 3.0));
+    const double bd = dKnee + shoulder(bw - kneeLog10, worldMax - kneeLog10, dMax - dKnee) +
+                      std::max(bw - worldMax, 0.0);  // highlights: slope 1 above the extended scene
+    curve.displayLog10[static_cast<std::size_t>(k)] = static_cast<float>(std::min(bd + gain, std::log10(display.maxCdM2) + 3.0));
   }
   return curve;
 }

@@ -35,6 +35,8 @@ struct LuminanceHistogram {
   double total() const;
   // The solid-angle weighted log-mean luminance (cd/m^2): the scene's steady adaptation level.
   double logMean() const;
+  // The log10 luminance below which `fraction` of the weight lies (a bin's upper edge).
+  double percentileLog10(double fraction) const;
 };
 
 // How far below the display's white (log10) the brightest extended part of a scene is shown:
@@ -42,6 +44,20 @@ struct LuminanceHistogram {
 // ~80% of white a saturated colour cannot keep its hue (its brightest channel clips) and turns
 // to white along it (physics/eye/tone_reproduction.glsl, compressToDisplay).
 inline constexpr double kHighlightHeadroomLog10 = 0.1;
+
+// The share of the view above a fitting scene's knee: its brightest tenth (by solid angle), the
+// part whose contrasts roll off when the scene's matched level leaves it no room under the top.
+inline constexpr double kKneeShare = 0.1;
+
+// The least room a fitting scene keeps between its knee and the top of its extended part
+// (log10: 1.6x), where its matched level would put the knee higher still.
+inline constexpr double kShoulderHeadroomLog10 = 0.2;
+
+// The shoulder of a fitting scene's curve above its knee (log10 luminance): `above` the knee, the
+// brightest extended part `range` above it, shown at most `headroom` above the knee's display
+// luminance. Slope 1 where the range fits the headroom; else a rational roll-off from slope 1 at
+// the knee to the top at `range`.
+double shoulder(double above, double range, double headroom);
 
 // The range the display can show: black (its ambient) to white, cd/m^2, and the luminance its
 // viewer is adapted to (Tumblin & Rushmeier's L_a(d)).

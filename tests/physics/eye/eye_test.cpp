@@ -24,16 +24,18 @@ TEST(Threshold, PiecesMeetAndDaylightFollowsWebersLaw) {
   EXPECT_NEAR(shader::thresholdLuminance(1000.0) / 1000.0, std::pow(10.0, -1.255), 1e-9);
 }
 
-// A scene whose range fits the display keeps its contrasts (slope 1 in log luminance: a 2:1
-// ratio in the world is 2:1 on the display); a scene wider than the display is compressed
-// monotonically into it and no contrast is exaggerated (the linear ceiling).
+// A scene whose range fits the display keeps its contrasts up to its level (slope 1 in log
+// luminance: a 2:1 ratio in the world is 2:1 on the display) and never exaggerates one above it;
+// a scene wider than the display is compressed monotonically into it and no contrast is
+// exaggerated (the linear ceiling).
 TEST(ToneCurve, KeepsContrastsThatFitAndNeverExaggerates) {
   LuminanceHistogram narrow;
   for (double l = 0.01; l < 0.1; l *= 1.1) narrow.add(l, 0.1);
   const DisplayRange display{0.1, 100.0, 10.0};
   const ToneCurve a = histogramAdjustment(narrow, display);
   EXPECT_TRUE(a.linear);
-  EXPECT_NEAR(a.displayLuminance(0.04) / a.displayLuminance(0.02), 2.0, 0.02);
+  EXPECT_NEAR(a.displayLuminance(0.03) / a.displayLuminance(0.015), 2.0, 0.02);  // the level: 0.031
+  for (double l = 0.03; l < 0.1; l *= 1.05) EXPECT_LE(a.displayLuminance(l * 1.05) / a.displayLuminance(l), 1.05 * 1.001) << l;
 
   LuminanceHistogram wide;
   for (double l = 1e-3; l < 1e5; l *= 1.2) wide.add(l, 0.05);
@@ -52,6 +54,47 @@ TEST(ToneCurve, KeepsContrastsThatFitAndNeverExaggerates) {
   }
   EXPECT_THROW(histogramAdjustment(LuminanceHistogram{}, display), std::invalid_argument);
   EXPECT_THROW(histogramAdjustment(narrow, DisplayRange{0.0, 100.0, 10.0}), std::invalid_argument);
+}
+
+// A bright day fits the display but its sky around the sun lies further above its level than the
+// display's white lies above the level's matched luminance (a hazy afternoon: level 3,800 cd/m^2,
+// the circumsolar sky to 110,000). The level is shown at its matched luminance (Tumblin &
+// Rushmeier 1993), lowered only as far as the brightest tenth of the view needs to start under
+// the top, where lowering the whole frame until the aureole fitted showed a bright day as dusk;
+// contrasts are kept up to that knee and roll off above it: monotonic, the brightest extended
+// part at the top (80% of white), never past it, no contrast exaggerated.
+TEST(ToneCurve, ABrightDayKeepsItsLevelAndRollsItsBrightestTenthOffUnderTheTop) {
+  LuminanceHistogram day;
+  for (double l = 1300.0; l < 11000.0; l *= 1.05) day.add(l, 0.2);
+  for (double l = 11000.0; l < 110000.0; l *= 1.05) day.add(l, 0.005);  // the sky near the sun
+  const DisplayRange display{0.1, 100.0, 10.0};
+  const ToneCurve c = histogramAdjustment(day, display);
+  ASSERT_TRUE(c.linear);
+  const double level = day.logMean(), knee = day.percentileLog10(1.0 - kKneeShare);
+  const double top = std::log10(display.maxCdM2) - kHighlightHeadroomLog10;
+  const double matched = std::log10(skyig::shader::tumblinRushmeierDisplayLuminance(level, level, display.adaptationCdM2));
+  const double shown = std::min(matched, top - kShoulderHeadroomLog10 - (knee - std::log10(level)));
+  EXPECT_NEAR(std::log10(c.displayLuminance(level)), shown, 0.01);
+  // Lowered until the aureole fitted, the level would sit more than 3 times lower.
+  const double fitted = top - (std::log10(110000.0) - std::log10(level));
+  EXPECT_GT(std::log10(c.displayLuminance(level)), fitted + 0.5);
+  EXPECT_NEAR(c.displayLuminance(level) / c.displayLuminance(level / 2.0), 2.0, 0.02);
+  EXPECT_NEAR(c.displayLuminance(std::pow(10.0, knee) * 0.99) / c.displayLuminance(level), std::pow(10.0, knee) * 0.99 / level, 0.02);
+  double previous = 0.0;
+  for (double l = level; l < 100000.0; l *= 1.05) {
+    const double d = c.displayLuminance(l);
+    EXPECT_GT(d, previous) << l;
+    EXPECT_LE(std::log10(d), top + 1e-3) << l;
+    EXPECT_LE(c.displayLuminance(l * 1.05) / d, 1.05 * 1.001) << l;
+    previous = d;
+  }
+  EXPECT_GT(c.displayLuminance(100000.0), 0.9 * std::pow(10.0, top));
+  // The roll-off itself: slope 1 at the knee, the range's top at the headroom, identity where
+  // the range fits.
+  EXPECT_NEAR((shoulder(1e-4, 1.2, 0.4) - shoulder(0.0, 1.2, 0.4)) / 1e-4, 1.0, 1e-3);
+  EXPECT_NEAR(shoulder(1.2, 1.2, 0.4), 0.4, 1e-12);
+  EXPECT_EQ(shoulder(0.3, 0.35, 0.4), 0.3);
+  EXPECT_EQ(shoulder(-0.5, 1.2, 0.4), -0.5);
 }
 
 // Pattanaik et al. 2000: light adaptation takes a fraction of a second, dark adaptation minutes

@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# CI's sanitizer job: the protocol and node tests (codecs, the node, record/replay, the CLI
-# through build-asan/bin/skyig) built with AddressSanitizer and UndefinedBehaviorSanitizer in
-# build-asan/. Builds only those test programs and what they link, then runs their tests; a
-# finding fails its test. Extra arguments go to CMake's configure step.
-# SKYIG_SANITIZE=thread bash deploy/test-sanitize.sh runs the node tests (node_tests)
-# under ThreadSanitizer in build-tsan/ instead: a developer's command, not CI's, whose 20 minutes
-# it would overrun (docs/design.md, "Build habits").
+# CI's sanitizer job: the readers of what comes from outside, the protocol tests (CIGI and
+# CANaerospace codecs, pcap and candump recordings) and the calibration tests (MPCDI, PFM and
+# Bourke files, every way one can be bad), built with AddressSanitizer and
+# UndefinedBehaviorSanitizer in build-asan/. Builds only those test programs and the two
+# libraries they link (no GL, no tables), then runs their tests; a finding fails its test.
+# Extra arguments go to CMake's configure step.
+# SKYIG_SANITIZE_TARGETS="protocol_tests node_tests" adds the node's tests (its threads,
+# record/replay, the CLI through build-asan/bin/skyig): twenty minutes more on two cores, a
+# developer's command before changing the node, not CI's (docs/design.md, "Build habits").
+# SKYIG_SANITIZE=thread runs the node tests under ThreadSanitizer in build-tsan/ instead.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash deploy/setup.sh
@@ -16,7 +19,7 @@ if [ "$sanitizers" = thread ]; then
   targets=(node_tests)
 else
   dir=build-asan
-  targets=(protocol_tests node_tests)
+  read -r -a targets <<<"${SKYIG_SANITIZE_TARGETS:-protocol_tests calibration_tests}"
 fi
 start=$SECONDS
 # -O1 -g1: half the compile time of -O2 -g with ASan and UBSan (measured on five of the heaviest

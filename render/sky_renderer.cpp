@@ -138,6 +138,10 @@ void SkyRenderer::ensureTargets(int width, int height) {
   foldedValues_ = std::make_unique<TwoTargetFramebuffer>(*hdr_, *displayValues_);
 }
 
+void SkyRenderer::advance(const skyig::sky::SkyState& state) {
+  if (state.conditions.model == skyig::sky::SkyModel::Physical) physicalPassFor(state).stepUpload();
+}
+
 PhysicalSkyPass& SkyRenderer::physicalPassFor(const skyig::sky::SkyState& state) {
   if (!state.conditions.atmosphere) throw std::invalid_argument("physical sky without an atmosphere model");
   if (!physical_) physical_ = std::make_unique<PhysicalSkyPass>();

@@ -42,6 +42,10 @@ class SkyRenderer {
   void draw(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
     draw(state, state.observer.attitude, channel);
   }
+  // What draw() of `channel` would change in the renderer's own state, without drawing: the
+  // physical sky's pending tables take their next slices. Drawn later, a frame then shows what
+  // it would have shown had every frame before it been drawn.
+  void advance(const skyig::sky::SkyState& state);
   // Draws `channel` for a projector: the calibration's region camera, where it gives one,
   // replaces the channel's offset and frustum (the channel's size stays the render size), the
   // tone pass writes the

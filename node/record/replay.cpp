@@ -313,14 +313,19 @@ ReplayResult replay(const ReplayOptions& o) {
     }
     if (afterFrom && lastSky) {
       if (o.realtime) sleepUntil(wallStart + Ns(frame.timeNs - feeder.firstNs()), o.stop);
-      // Only the frames written are drawn: the worker stepped at every host message all the same
+      // Only the frames written are drawn. The worker stepped at every host message all the same
       // (the eye, the weather and the tables are those of a replay that draws every frame), and
-      // nothing the renderer keeps between frames changes a frame's pixels (its caches hold what
-      // the state names), so a written frame is byte for byte the one an every-frame replay writes.
+      // a frame not drawn still advances what the renderer carries from frame to frame (a new
+      // table set's upload, slices per draw), so a written frame is byte for byte the one an
+      // every-frame replay writes.
       const bool write = !o.outDir.empty() && k % static_cast<std::uint64_t>(o.every) == 0;
-      for (std::size_t i = 0; write && i < lastPose.channels.size(); ++i) {
+      for (std::size_t i = 0; i < lastPose.channels.size(); ++i) {
         if (!wanted[i]) continue;
         const sky::ChannelConfig& c = lastPose.channels[i];
+        if (!write) {
+          renderer.advance(*lastSky);
+          continue;
+        }
         renderer.draw(*lastSky, lastPose.attitude, c);
         const std::string stem = frameStem(o.outDir, k, lastSky->observer.utc, written > 1 ? c.name : "");
         render::ImageAttributes attributes = frameAttributes(*lastSky, lastPose.attitude, c);

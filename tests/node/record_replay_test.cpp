@@ -120,31 +120,33 @@ TEST_F(RecordReplay, ReplayGivesTheLiveRunsHostStates) {
   EXPECT_GT(compared, 30);
 }
 
-// Two replays of one recording write the same bytes, and a replay that writes every 20th frame
-// draws only those (4 of 61 frames) yet writes each as the replay writing every frame does: the
-// worker still steps at every host message, so the eye and the clock are the same.
+// Two replays of one recording write the same bytes, and a replay that writes every 30th frame
+// draws only those (4 of 91 frames) yet writes each, EXR and PNG, byte for byte as the replay
+// writing every frame does: the worker still steps at every host message (the eye, the clock),
+// and each frame not drawn still advances the renderer's upload of the tables the recording's
+// visibility changes to (without that, frame 30 on showed the old tables longer).
 TEST_F(RecordReplay, AReplayDrawsOnlyTheFramesItWritesByteForByteAsAnEveryFrameReplay) {
   std::map<std::string, std::string> summary;
-  for (const auto& [out, every] : {std::pair{"a", 20}, {"b", 20}, {"all", 1}}) {
-    const SkyigResult r = skyig("replay " + kRecording + " --quiet --size 48x32 --to 60 --every " + std::to_string(every) +
-                                " --exr --out " + (dir_ / out).string());
+  for (const auto& [out, every] : {std::pair{"a", 30}, {"b", 30}, {"all", 1}}) {
+    const SkyigResult r = skyig("replay " + kRecording + " --quiet --size 64x48 --to 90 --every " + std::to_string(every) +
+                                " --exr --png --out " + (dir_ / out).string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     summary[out] = r.out;
   }
-  // Frames 0-60 and the 61st, computed to find it past --to.
-  EXPECT_NE(summary["a"].find(": 62 frames (4 drawn), 4 images"), std::string::npos) << summary["a"];
-  EXPECT_NE(summary["all"].find(": 62 frames (61 drawn), 61 images"), std::string::npos) << summary["all"];
+  // Frames 0-90 and the 92nd, computed to find it past --to.
+  EXPECT_NE(summary["a"].find(": 92 frames (4 drawn), 8 images"), std::string::npos) << summary["a"];
+  EXPECT_NE(summary["all"].find(": 92 frames (91 drawn), 182 images"), std::string::npos) << summary["all"];
   int compared = 0;
   for (const auto& e : fs::directory_iterator(dir_ / "a")) {
     EXPECT_EQ(slurp(e.path()), slurp(dir_ / "b" / e.path().filename())) << e.path().filename();
     EXPECT_EQ(slurp(e.path()), slurp(dir_ / "all" / e.path().filename())) << e.path().filename();
     ++compared;
   }
-  EXPECT_EQ(compared, 4);  // frames 0, 20, 40, 60
-  // Named by frame number and the sim time it shows. Frame 20 is 0.667 s into the recording and
-  // shows the state of the host's last message, frame 13 (0.65 s, timestamp 58.5 s of a 90x
-  // time-lapse from 18:30), at that message's own instant, as the node does.
-  EXPECT_TRUE(fs::exists(dir_ / "a" / "frame_000020_2026-06-21T18-30-58.500Z.exr"));
+  EXPECT_EQ(compared, 8);  // frames 0, 30, 60, 90, EXR and PNG
+  // Named by frame number and the sim time it shows. Frame 30 is 1 s into the recording and
+  // shows the state of the host's last message (0.95 s, timestamp 85.5 s of a 90x time-lapse
+  // from 18:30), at that message's own instant, as the node does.
+  EXPECT_TRUE(fs::exists(dir_ / "a" / "frame_000030_2026-06-21T18-31-25.500Z.exr"));
 }
 
 TEST_F(RecordReplay, FromAndToSelectAPart) {

@@ -68,6 +68,11 @@ class PhysicalSkyPass {
   // (extinction 0) until set.
   void setFog(const weather::FogLayers& layers) { fog_ = layers; }
 
+  // What a draw() does to the pass's own state, without drawing: the pending model's next
+  // slices uploaded (swapped in once complete). A replay that skips the frames it does not
+  // write calls it for them, so its written frames show the tables a frame-by-frame run would.
+  void stepUpload();
+
   const atmosphere::AtmosphereModel* current() const { return current_.model.get(); }
   const atmosphere::AtmosphereModel* pending() const { return pending_ ? pending_->set.model.get() : nullptr; }
   // How many draw() calls from now the pending model is first drawn (0: none pending).
@@ -104,7 +109,6 @@ class PhysicalSkyPass {
   static void releaseSet(TableSet& set);
   static std::size_t uploadSlices(const TableSet& set, const atmosphere::Rec709Packer& packer, int first, int count);
   void makeCurrent(TableSet set);
-  void stepUpload();
 
   // One of the programs (a variant of the sky inside the atmosphere, the sun disc's quad, the
   // camera in space) and its per-frame uniforms, looked up once: draw() runs every frame.

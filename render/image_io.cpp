@@ -148,6 +148,13 @@ void writePng(const std::string& path, const DisplayImage& image, double display
     png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
                  PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_gAMA(png, info, 1.0 / displayGamma);
+    // zlib's fastest level and the Sub filter alone: a frame of sky is smooth along its rows, so
+    // the left neighbour predicts it nearly as well as the best of the five filters libpng would
+    // try on every row. At 1920 x 1200 the encoding takes 0.4 s instead of 1.25 s (llvmpipe
+    // machine, 2 cores) for a file 26% larger (2.1 MB against 1.7): it was most of a rendered
+    // frame's cost, and of a replay's.
+    png_set_compression_level(png, 1);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
     png_write_info(png, info);
     for (int row = 0; row < image.height; ++row)
       png_write_row(png, &image.rgba[static_cast<size_t>(row) * static_cast<size_t>(image.width) * 4]);

@@ -42,7 +42,7 @@ class SkyRenderer {
   void draw(const skyig::sky::SkyState& state, const skyig::sky::ChannelConfig& channel) {
     draw(state, state.observer.attitude, channel);
   }
-  // What draw() of `channel` would change in the renderer's own state, without drawing: the
+  // What a draw() would change in the renderer's own state, without drawing anything: the
   // physical sky's pending tables take their next slices. Drawn later, a frame then shows what
   // it would have shown had every frame before it been drawn.
   void advance(const skyig::sky::SkyState& state);

@@ -60,7 +60,7 @@ double ToneCurve::displayLuminance(double worldCdM2) const {
 
 double shoulder(double above, double range, double headroom) {
   // Below the knee, and wherever the brightest extended part fits under the top: slope 1.
-  if (above <= 0.0 || range <= headroom) return above;
+  if (above <= 0.0 || range <= 0.0 || range <= headroom) return above;
   // Above it the rational roll-off y = u / (1 + k u), k = 1/H - 1/U: slope 1 at the knee (no
   // kink in the curve), y(U) = H (the brightest extended part at the top, never past it),
   // monotonic, and the slope (H/U)^2 at the top.
@@ -179,7 +179,9 @@ ToneCurve histogramAdjustment(const LuminanceHistogram& histogram, const Display
   // Milky Way at the zenith) lie below its knee and keep their contrast.
   curve.linear = true;
   const double levelLog10 = std::log10(level);
-  const double kneeLog10 = std::clamp(histogram.percentileLog10(1.0 - kKneeShare), levelLog10, worldMax);
+  // Not std::clamp: a level above the extended scene's top (a scene of one bin and a disc) would
+  // make its bounds cross, which is undefined; the knee is then the level and nothing rolls off.
+  const double kneeLog10 = std::max(levelLog10, std::min(histogram.percentileLog10(1.0 - kKneeShare), worldMax));
   const double matchedAnchor = matched(levelLog10) - levelLog10;
   const double lowest = dMin - worldMin, highest = dMax - worldMax;
   const double kneeHighest = dMax - kShoulderHeadroomLog10 - kneeLog10;  // the knee, with room above it

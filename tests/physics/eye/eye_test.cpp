@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 using namespace skyig::sky::eye;
 namespace shader = skyig::shader;
@@ -95,6 +96,15 @@ TEST(ToneCurve, ABrightDayKeepsItsLevelAndRollsItsBrightestTenthOffUnderTheTop) 
   EXPECT_NEAR(shoulder(1.2, 1.2, 0.4), 0.4, 1e-12);
   EXPECT_EQ(shoulder(0.3, 0.35, 0.4), 0.3);
   EXPECT_EQ(shoulder(-0.5, 1.2, 0.4), -0.5);
+  EXPECT_EQ(shoulder(0.3, -0.1, -0.3), 0.3);  // a knee above the scene's top: nothing rolls off
+  // A scene of one bin and the sun's disc: its level can lie above its extended top; the curve
+  // is still finite and rising.
+  LuminanceHistogram flat;
+  flat.add(5000.0, 4.0 * std::numbers::pi);
+  flat.add(1.6e9, 6.8e-5);
+  const ToneCurve f = histogramAdjustment(flat, display);
+  EXPECT_TRUE(std::isfinite(f.displayLuminance(5000.0)));
+  EXPECT_GT(f.displayLuminance(1.6e9), f.displayLuminance(5000.0));
 }
 
 // Pattanaik et al. 2000: light adaptation takes a fraction of a second, dark adaptation minutes

@@ -60,6 +60,19 @@ void SkyDraw::draw(const Sky& sky, const float* view, const float* projection, c
   }
 }
 
+void SkyDraw::prepare(const Sky& sky, const float* view, const float* projection, const Viewport& viewport,
+                      const DrawOptions& o) {
+  try {
+    impl_->renderer.prepare(sky.impl().state, matrix(view, "view"), matrix(projection, "projection"),
+                            render::ClientViewport{viewport.x, viewport.y, viewport.width, viewport.height},
+                            options(sky, o));
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw Error(std::string("skyig::SkyDraw::prepare: ") + e.what());
+  }
+}
+
 unsigned SkyDraw::texture(const Sky& sky, const float* view, const float* projection, int width, int height,
                           Output output) {
   try {

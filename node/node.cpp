@@ -3,6 +3,7 @@
 #include "protocol/cigi/encoder.h"
 #include "tables/updater.h"
 #include "render/sky_renderer.h"
+#include "render/warm_up_states.h"
 #include "node/config/node_tables.h"
 #include "node/transport/can_receiver.h"
 #include "node/frame/display_outputs.h"
@@ -279,35 +280,23 @@ class FrameLoop {
     }
   }
 
-  // The programs a frame needs depend on its light (the sun's sky, the moon's, the night's layer,
-  // the tone folded in) and on the weather: compiled in the frame that first needs them they cost
-  // it a second on llvmpipe. So before the first frame the node draws, nothing shown, its first
-  // state and that day's noon and midnight at its longitude, each clear and, under the physical
-  // sky, with a ground fog. A stop asked for meanwhile ends it between two draws.
+  // Compiled in the frame that first needs them, a light's or a weather's programs cost that
+  // frame a second on llvmpipe: so before the first frame the node draws, nothing shown, the
+  // states of its day (render/warm_up_states.h). A stop asked for meanwhile ends it between two
+  // draws.
   void warmUp(DisplayOutputs& display, const NodeChannels& nc, const std::atomic<bool>& externalStop) {
+    const auto start = Clock::now();
     const std::shared_ptr<const BuiltSky> built = sky_.get();
-    const sky::SkyState& first = built->state;
-    const bool physical = first.conditions.model == sky::SkyModel::Physical && first.conditions.atmosphere;
     std::vector<sky::DisplayParams> displays;
     for (const auto& c : nc.channels) displays.push_back(c.display);
-    std::vector<sky::SkyState> states{first};
-    for (const double solarHour : {12.0, 0.0}) {
-      sky::ObserverState o = first.observer;
-      o.utc.secondsOfDay = std::fmod(3600.0 * (solarHour - o.longitudeDeg / 15.0) + 2.0 * 86400.0, 86400.0);
-      states.push_back(sky::buildSkyState(o, first.conditions));
-      sky::mapForDisplays(states.back(), displays);
-    }
-    const auto start = Clock::now();
+    const std::vector<sky::SkyState> states = render::warmUpStates(built->state, displays);
     const sky::Attitude attitude = worker_.poseAt(built->host.get(), start, nc.channels).attitude;
-    for (sky::SkyState& s : states) {
-      if (externalStop) return;
-      display.warmUp(s, attitude, nc.channels);
-      if (!physical || externalStop) continue;
-      const double ground = s.conditions.atmosphere->parameters(0).bottom_radius;
-      s.fog.sunlit[1] = weather::makeFogLayer({0.0, 200.0, 0.4}, ground, 0.2, glm::dvec3(1.0));
-      display.warmUp(s, attitude, nc.channels);
-    }
-    spdlog::info("the sky's programs for day, night{} compiled in {:.0f} ms", physical ? " and weather" : "",
+    for (const sky::SkyState& s : states)
+      for (const sky::Attitude& a : render::warmUpAttitudes(s, attitude)) {
+        if (externalStop) return;
+        display.warmUp(s, a, nc.channels);
+      }
+    spdlog::info("the programs of {} lights and weathers of the day compiled in {:.0f} ms", states.size(),
                  1000.0 * std::chrono::duration<double>(Clock::now() - start).count());
   }
 

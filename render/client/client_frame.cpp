@@ -2,6 +2,7 @@
 
 #include "render/gl/gl_state_guard.h"
 #include "render/client/client_aerial_perspective.h"
+#include "render/warm_up_states.h"
 
 #include "render/glsl/bindings.h"
 #include "physics/common/units.h"
@@ -129,6 +130,18 @@ void ClientFrameRenderer::draw(const skyig::sky::SkyState& state, const glm::dma
                     options.output == ClientOutput::LinearLight ? sky_.hdrTexture() : sky_.displayTexture());
   glBindVertexArray(emptyVao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void ClientFrameRenderer::prepare(const skyig::sky::SkyState& state, const glm::dmat4& view,
+                                  const glm::dmat4& projection, const ClientViewport& viewport,
+                                  const ClientFrameOptions& options) {
+  const ClientCamera camera = clientCamera(view, projection);
+  const skyig::sky::ChannelConfig channel = clientChannel(camera, viewport, options);
+  const GlStateGuard guard;
+  guard.setSkyigDefaults();
+  for (const skyig::sky::SkyState& s : warmUpStates(state, {options.display}))
+    for (const skyig::sky::Attitude& a : warmUpAttitudes(s, camera.attitude)) sky_.draw(s, a, channel);
+  glFinish();  // a driver may compile at the first draw rather than at the link: done by now
 }
 
 GLuint ClientFrameRenderer::drawTexture(const skyig::sky::SkyState& state, const glm::dmat4& view,

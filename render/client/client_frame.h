@@ -89,6 +89,12 @@ class ClientFrameRenderer {
   // values, valid until the next call. The client's GL state is restored as by draw.
   GLuint drawTexture(const skyig::sky::SkyState& state, const glm::dmat4& view, const glm::dmat4& projection,
                      int width, int height, const ClientFrameOptions& options = {});
+  // Compiles, before the first frame needs them, the programs of `state`'s day for this camera
+  // and viewport: draws its lights and weathers (render/warm_up_states.h) into skyig's own
+  // targets, nothing into the client's framebuffer, its GL state restored. Seconds on llvmpipe;
+  // without it the first dusk, night or fog costs its frame the compile.
+  void prepare(const skyig::sky::SkyState& state, const glm::dmat4& view, const glm::dmat4& projection,
+               const ClientViewport& viewport, const ClientFrameOptions& options = {});
   // The eye adaptation skyig's tone mapping used (cd/m^2), for a client that tone-maps the linear
   // output itself and wants the same exposure.
   static double adaptationLuminance(const skyig::sky::SkyState& state) { return state.worldAdaptationLuminance; }

@@ -3,9 +3,16 @@
 #include "render/gl/shader_source.h"
 
 #include <algorithm>
+#include <atomic>
 #include <vector>
 
 namespace skyig::render {
+
+namespace {
+std::atomic<std::size_t> linked{0};
+}  // namespace
+
+std::size_t programsLinked() { return linked.load(std::memory_order_relaxed); }
 
 GLuint compileShaderStage(GLenum stage, const std::string& path, const std::string& defines) {
   const AssembledShader source = assembleShader(path, defines);
@@ -30,6 +37,7 @@ GLuint linkProgram(std::initializer_list<GLuint> shaders, const std::string& wha
   const GLuint program = glCreateProgram();
   for (GLuint s : shaders) glAttachShader(program, s);
   glLinkProgram(program);
+  linked.fetch_add(1, std::memory_order_relaxed);
   for (GLuint s : shaders) glDeleteShader(s);
   GLint ok = GL_FALSE;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);

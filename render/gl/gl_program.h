@@ -3,6 +3,7 @@
 // compiler messages that name the real file and line.
 #include <glad/gl.h>
 
+#include <cstddef>
 #include <initializer_list>
 #include <stdexcept>
 #include <string>
@@ -21,6 +22,10 @@ GLuint compileShaderStage(GLenum stage, const std::string& path, const std::stri
 // A program of `shaders`, which it deletes (linked or not); throws ShaderCompileError with the
 // linker's log, naming `what`.
 GLuint linkProgram(std::initializer_list<GLuint> shaders, const std::string& what);
+
+// How many programs linkProgram has linked in this process, for everyone: a frame that links
+// one paid for compiling it (render/warm_up_states.h, and its tests).
+std::size_t programsLinked();
 
 class GlProgram {
  public:

@@ -197,6 +197,35 @@ TEST(SkyLibrary, TextureIsTheSkyTheDrawShows) {
   EXPECT_GT(frame.final[(16 * 48 + 24) * 3 + 2], 100.0f);  // a blue afternoon sky, cd/m^2
 }
 
+// SkyDraw::prepare draws the day's lights and weathers into skyig's own targets first: the frame
+// after it is the frame an unprepared SkyDraw shows, to the bit, and the host's framebuffer
+// binding is as it was.
+TEST(SkyLibrary, APreparedDrawShowsTheSameFrame) {
+  skyig::Sky sky(smallPhysicalSky());
+  sky.update(at(17, 0), 0.0);
+  terrain_host::HeadlessContext context;
+  ASSERT_TRUE(gladLoadGL(reinterpret_cast<GLADloadfunc>(terrain_host::HeadlessContext::procAddress())));
+  const int w = 48, h = 32;
+  const terrain_host::Mat4 view = terrain_host::viewMatrix(250.0, 10.0);
+  const terrain_host::Mat4 projection = terrain_host::projectionMatrix(60.0, double(w) / h, 10.0, 1.0e6, skyig::DepthConvention::Standard);
+  auto frame = [&](skyig::SkyDraw& draw) {
+    std::vector<float> rgba(static_cast<std::size_t>(w * h * 4));
+    const unsigned texture = draw.texture(sky, view.data(), projection.data(), w, h, skyig::Output::LinearLight);
+    glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(float)), rgba.data());
+    return rgba;
+  };
+  skyig::SkyDraw plain(terrain_host::HeadlessContext::procAddress());
+  const std::vector<float> unprepared = frame(plain);
+  skyig::SkyDraw prepared(terrain_host::HeadlessContext::procAddress());
+  GLint framebufferBefore = -1, framebufferAfter = -2;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebufferBefore);
+  prepared.prepare(sky, view.data(), projection.data(), skyig::Viewport{0, 0, w, h});
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebufferAfter);
+  EXPECT_EQ(framebufferAfter, framebufferBefore);
+  EXPECT_EQ(frame(prepared), unprepared);
+  EXPECT_THROW(prepared.prepare(sky, nullptr, projection.data(), skyig::Viewport{0, 0, w, h}), skyig::Error);
+}
+
 // Fog of 100, 200 and 300 m (below the tables' lowest visibility: a fog layer over the 10 km
 // tables, no table build): every update is usable, the light finite, and the eye adapts to a
 // grey-white world. (Before the optical-depth tables a 0.3 km visibility threw on 572 of 600

@@ -96,8 +96,8 @@ inline bool waitUntil(const std::function<bool()>& done,
   return true;
 }
 
-// How long a node under test may take to its first frame: before it the node compiles the sky's
-// programs for day, night and weather (node/node.cpp, FrameLoop::warmUp), seconds on llvmpipe and
+// How long a node under test may take to its first frame: before it the node compiles the
+// programs of its day's lights and weathers (render/warm_up_states.h), seconds on llvmpipe and
 // a minute or more with two sanitized nodes sharing a loaded 2-core CI machine.
 inline constexpr std::chrono::milliseconds kFirstFrameLimit{240000};
 

@@ -8,6 +8,7 @@
 #include "render/client/client_frame.h"
 #include "render/sky_renderer.h"
 #include "physics/common/units.h"
+#include "tests/physics/atmosphere/shared_models.h"
 
 #include <gtest/gtest.h>
 
@@ -504,4 +505,52 @@ TEST_F(HostFrame, CameraFromMatricesMatchesTheChannel) {
   glm::dmat4 mirrored = viewOf({}, {});
   mirrored[0] = -mirrored[0];
   EXPECT_THROW(clientCamera(mirrored, projectionOf(Frustum{}, false)), std::invalid_argument);
+}
+
+namespace {
+
+// Innsbruck on midsummer's day (the observer's default) under the physical sky's tiny tables,
+// at `utcHour`, clear or under a ground fog of 300 m visibility 150 m deep, mapped for the
+// client's display as the library maps its states.
+SkyState innsbruckAt(double utcHour, bool fog) {
+  SkyConditions c;
+  c.model = SkyModel::Physical;
+  c.atmosphere = atmosphere::testing::tinyNightModel();
+  if (fog) c.fog = FogSpec{0.0, 150.0, 0.3};
+  ObserverState o;
+  o.attitude = {250.0, 5.0, 0.0};
+  o.utc.secondsOfDay = 3600.0 * utcHour;
+  SkyState s = buildSkyState(o, c);
+  mapForDisplays(s, {ClientFrameOptions{}.display});
+  return s;
+}
+
+}  // namespace
+
+// A client that prepared its first state's day (ClientFrameRenderer::prepare) flies through that
+// day's morning, noon, dusk and night, clear and in fog, without linking one program more; one
+// that did not links programs at its first dusk (each a second on llvmpipe: a frame lost).
+TEST(ClientFramePrepare, APreparedDayCompilesNothingMidFrame) {
+  const auto context = createHeadlessContext();
+  const Frustum f{30, 30, 20, 20};
+  const glm::dmat4 view = viewOf({250.0, 5.0, 0.0}, {}), projection = projectionOf(f, false);
+  const ClientViewport viewport{0, 0, kW, kH};
+  const SkyState first = innsbruckAt(9.0, false);
+
+  ClientFrameRenderer unprepared;
+  unprepared.drawTexture(first, view, projection, kW, kH);
+  const std::size_t beforeDusk = programsLinked();
+  unprepared.drawTexture(innsbruckAt(20.25, false), view, projection, kW, kH);
+  EXPECT_GT(programsLinked(), beforeDusk) << "dusk needs programs a morning does not: the check below could not fail";
+
+  ClientFrameRenderer prepared;
+  prepared.prepare(first, view, projection, viewport);
+  const std::size_t afterPrepare = programsLinked();
+  for (const double hour : {9.0, 11.5, 15.0, 18.5, 19.5, 20.25, 21.0, 22.0, 23.5, 1.0, 2.5, 3.5})
+    for (const bool fog : {false, true}) {
+      const SkyState s = innsbruckAt(hour, fog);
+      prepared.drawTexture(s, view, projection, kW, kH);
+      EXPECT_EQ(programsLinked(), afterPrepare)
+          << hour << " h UTC" << (fog ? " in fog" : "") << ", sun at " << s.sunAltitude / kDeg << " deg";
+    }
 }

@@ -54,6 +54,15 @@ class SKYIG_API SkyDraw {
   void draw(const Sky& sky, const float* view, const float* projection, const Viewport& viewport,
             const DrawOptions& options = {});
 
+  // Compiles now, before a frame needs them, the programs every light and weather of `sky`'s day
+  // will need for this camera and viewport (the day, the twilights, the night with and without
+  // the moon, each clear and in fog): draws them into skyig's own targets, nothing into the
+  // host's framebuffer, the host's GL state kept. Call it once after the first Sky::update,
+  // while loading: seconds on a software GL, a fraction of one on a GPU. Without it the first
+  // frame of a dusk, a night or a fog pays for its compile (a second on llvmpipe).
+  void prepare(const Sky& sky, const float* view, const float* projection, const Viewport& viewport,
+               const DrawOptions& options = {});
+
   // Renders the same sky into a texture of skyig's own (width x height) and returns its GL name,
   // for a host that composites it itself: GL_RGBA32F in cd/m^2 for LinearLight, GL_RGBA8
   // display codes otherwise. Valid until the next call on this SkyDraw.

@@ -1,0 +1,68 @@
+#include "render/warm_up_states.h"
+
+#include "physics/weather/fog_layer.h"
+
+#include "physics/common/units.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace skyig::render {
+
+namespace {
+
+// What decides a frame's programs besides its weather and its view: the layers drawn
+// (sky/shown_layers.h) and the glare veil's sources.
+auto programKey(const skyig::sky::SkyState& s) {
+  const skyig::sky::ShownLayers& l = s.shown;
+  const auto lit = std::count_if(s.glare.begin(), s.glare.end(),
+                                 [](const skyig::sky::eye::GlareSource& g) { return g.rec709Lux != glm::dvec3(0.0); });
+  return std::tuple{l.sunlitSky, l.moonlitSky, l.nightLight, l.mesopic, l.pointSources, lit};
+}
+
+// The same light under a ground fog 200 m deep of 400 m visibility: the sky pass's weather
+// variant and the fog's share in every pass that reads it.
+skyig::sky::SkyState underFog(skyig::sky::SkyState s) {
+  const double ground = s.conditions.atmosphere->parameters(0).bottom_radius;
+  s.fog.sunlit[1] = weather::makeFogLayer({0.0, 200.0, 0.4}, ground, 0.2, glm::dvec3(1.0));
+  return s;
+}
+
+}  // namespace
+
+std::vector<skyig::sky::SkyState> warmUpStates(const skyig::sky::SkyState& first,
+                                               const std::vector<skyig::sky::DisplayParams>& displays) {
+  std::vector<skyig::sky::SkyState> states{first};
+  if (first.ephemeris) {  // an overridden sun has no day to walk through
+    skyig::sky::SkyStateCaches caches;
+    for (int halfHour = 0; halfHour < 48; ++halfHour) {
+      skyig::sky::ObserverState o = first.observer;
+      const double solarHour = 0.5 * halfHour;
+      o.utc.secondsOfDay = std::fmod(3600.0 * (solarHour - o.longitudeDeg / 15.0) + 2.0 * 86400.0, 86400.0);
+      skyig::sky::SkyState s = skyig::sky::buildSkyState(o, first.conditions, std::nullopt, &caches);
+      skyig::sky::mapForDisplays(s, displays);
+      bool seen = false;
+      for (const skyig::sky::SkyState& earlier : states) seen = seen || programKey(earlier) == programKey(s);
+      if (!seen) states.push_back(std::move(s));
+    }
+  }
+  const bool physical = first.conditions.model == skyig::sky::SkyModel::Physical && first.conditions.atmosphere;
+  if (physical) {
+    const std::size_t clear = states.size();
+    for (std::size_t i = 0; i < clear; ++i) states.push_back(underFog(states[i]));
+  }
+  return states;
+}
+
+std::vector<skyig::sky::Attitude> warmUpAttitudes(const skyig::sky::SkyState& state, const skyig::sky::Attitude& own) {
+  std::vector<skyig::sky::Attitude> attitudes{own};
+  for (const skyig::sky::eye::GlareSource& g : state.glare) {
+    if (g.rec709Lux == glm::dvec3(0.0)) continue;
+    const glm::dvec3 d = glm::normalize(g.direction);  // east, north, up
+    attitudes.push_back({std::atan2(d.x, d.y) / kDeg, std::asin(std::clamp(d.z, -1.0, 1.0)) / kDeg, 0.0});
+  }
+  return attitudes;
+}
+
+}  // namespace skyig::render

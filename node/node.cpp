@@ -379,8 +379,9 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
                opt.multicastGroup ? fmt::format(", multicast group {} on interface {}", *opt.multicastGroup,
                                                 opt.multicastInterface.value_or(opt.listen.address))
                                   : std::string());
+  const NodeChannels channels = loadNodeChannels(opt.config);
   CigiReceiver cigi(stats, host, opt.config.host.session);
-  cigi.setMaxViews(static_cast<std::size_t>(opt.config.host.maxViews));
+  cigi.setViews(static_cast<std::size_t>(opt.config.host.maxViews), channels.channels);
   const std::unique_ptr<PcapRecorder> recorder = openRecorder(opt, udp, cigi);
   prepareSaveFrames(opt);
   OwnedFd ownedCan;
@@ -402,7 +403,6 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
     threads.start([&] { cigi.run(udp, stop); });
     if (can) threads.start([&] { can->run(stop); });
     threads.start([&] { workerLoop(opt, stats, host, sky, worker, stop); });
-    const NodeChannels channels = loadNodeChannels(opt.config);
     DisplayOutputs display(opt.headless, opt.config.nodeName, channels.channels, channels.projectors);
     logChannels(opt, channels, display);
     FrameLoop loop(opt, stats, sky, worker, udp, start);

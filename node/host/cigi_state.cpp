@@ -239,12 +239,25 @@ CigiStateTracker::Applied CigiStateTracker::on(const cigi::ViewControl& p, const
 CigiStateTracker::Applied CigiStateTracker::on(const cigi::ViewDefinition& p, const cigi::DecodedMessage&,
                                                 Clock::time_point) {
   // CIGI's half-angles are signed (left and bottom negative for a centred view); skyig's are
-  // positive towards their own side. The frustum must stay non-empty.
+  // positive towards their own side. The frustum the edits produce must stay non-empty.
   const double left = -p.leftDeg, right = p.rightDeg, up = p.topDeg, down = -p.bottomDeg;
   auto ok = [](double a) { return std::isfinite(a) && std::abs(a) < 89.5; };
-  if (p.orthographic || !ok(left) || !ok(right) || !ok(up) || !ok(down) ||
-      (p.leftEnable && p.rightEnable && left + right <= 0.1) || (p.topEnable && p.bottomEnable && up + down <= 0.1))
-    return kRejected;
+  if (p.orthographic || !ok(left) || !ok(right) || !ok(up) || !ok(down)) return kRejected;
+  // Each edge as it would stand: the edit, else the host's last for this view, else the channel's.
+  const ViewOverride* last = state_.views.find(p.viewId);
+  const sky::Frustum* channel = p.viewId < channelFrusta_.size() ? &channelFrusta_[p.viewId] : nullptr;
+  auto edge = [&](bool enabled, double edited, std::optional<double> ViewOverride::*field,
+                  double sky::Frustum::*configured) -> std::optional<double> {
+    if (enabled) return edited;
+    if (last && last->*field) return *(last->*field);
+    if (channel) return channel->*configured;
+    return std::nullopt;  // unknown: this pair is not checked
+  };
+  const auto l = edge(p.leftEnable, left, &ViewOverride::leftDeg, &sky::Frustum::leftDeg);
+  const auto r = edge(p.rightEnable, right, &ViewOverride::rightDeg, &sky::Frustum::rightDeg);
+  const auto u = edge(p.topEnable, up, &ViewOverride::upDeg, &sky::Frustum::upDeg);
+  const auto d = edge(p.bottomEnable, down, &ViewOverride::downDeg, &sky::Frustum::downDeg);
+  if ((l && r && *l + *r <= 0.1) || (u && d && *u + *d <= 0.1)) return kRejected;
   ViewOverride* v = view(p.viewId);
   if (!v) return kIgnored;
   if (p.leftEnable) v->leftDeg = left;

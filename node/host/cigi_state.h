@@ -3,9 +3,11 @@
 #include "protocol/cigi/decoder.h"
 #include "node/host/host_state.h"
 #include "node/host/sim_clock.h"
+#include "sky/camera.h"
 
 #include <algorithm>
 #include <optional>
+#include <vector>
 
 namespace skyig::services {
 
@@ -57,6 +59,11 @@ class CigiStateTracker {
   // (host.max_views, at most kViewTableCapacity): counted and dropped.
   void setMaxViews(std::size_t n) { maxViews_ = std::min(n, kViewTableCapacity); }
   std::uint64_t droppedViews() const { return droppedViews_; }
+  // The configured frusta of the node's channels (view n is channel n): a View Definition that
+  // edits one edge of a pair is checked against the frustum it would produce with the other
+  // edge as it stands (the host's last, else the channel's), so one edge moved past the other
+  // is refused like a pair that crosses. Views without a channel are checked on the edges known.
+  void setChannelFrusta(std::vector<sky::Frustum> frusta) { channelFrusta_ = std::move(frusta); }
 
   const HostState& state() const { return state_; }
   const HostClock& clock() const { return clock_; }
@@ -96,6 +103,7 @@ class CigiStateTracker {
 
   bool sessionHasTimestamp_ = false;  // lastTimestamp_ belongs to the current session
   std::size_t maxViews_ = kDefaultMaxViews;
+  std::vector<sky::Frustum> channelFrusta_;
   std::uint64_t droppedViews_ = 0;
   std::uint32_t lastTimestamp_ = 0;   // IG Control timestamp, 10 us ticks
   // The continuous time as the anchor's time plus whole ticks since it (not a running sum of

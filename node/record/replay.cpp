@@ -115,7 +115,7 @@ class Feeder {
         can_(-1, o.config.canIdentifiers, stats_, latest_),
         worker_(o.config, updater, stats_),
         channels_(o.config.channelsOf(o.config.nodeName)) {
-    cigi_.setMaxViews(static_cast<std::size_t>(o.config.host.maxViews));
+    cigi_.setViews(static_cast<std::size_t>(o.config.host.maxViews), channels_);
     haveEvent_ = source_.next(event_);
     firstNs_ = haveEvent_ ? event_.timeNs : 0;
   }

@@ -9,10 +9,12 @@
 #include "node/host/node_stats.h"
 #include "node/transport/udp_socket.h"
 #include "node/common/warning_throttle.h"
+#include "sky/channel.h"
 
 #include <atomic>
 #include <mutex>
 #include <optional>
+#include <vector>
 
 namespace skyig::services {
 
@@ -34,8 +36,14 @@ class CigiReceiver {
   // and recorded arrival times.
   void handle(std::span<const std::uint8_t> datagram, const Sender& from, Clock::time_point arrival);
   void setRecorder(DatagramRecorder* recorder) { recorder_ = recorder; }
-  // host.max_views: View Controls for higher ids are counted (NodeStats::droppedViews).
-  void setMaxViews(std::size_t n) { tracker_.setMaxViews(n); }
+  // host.max_views (View Controls for higher ids are counted: NodeStats::droppedViews) and the
+  // node's channels, view n the n-th (a View Definition is checked against the frustum it makes).
+  void setViews(std::size_t maxViews, const std::vector<sky::ChannelConfig>& channels) {
+    tracker_.setMaxViews(maxViews);
+    std::vector<sky::Frustum> frusta;
+    for (const sky::ChannelConfig& c : channels) frusta.push_back(c.frustum);
+    tracker_.setChannelFrusta(std::move(frusta));
+  }
 
  private:
   DatagramRecorder* recorder_ = nullptr;

@@ -165,6 +165,47 @@ TEST(CigiState, CelestialDateAndViewsApply) {
   EXPECT_EQ(t.apply(m, now), 1);
 }
 
+// A View Definition that moves one edge of a pair past the other (left only at CIGI +80 where the
+// channel's right edge is at 30; top only at -80 where its bottom is at -20) would invert the
+// frustum: refused (counted) with the view left as it was; the same edge within the frustum
+// applies. The check uses the host's last edge where it set one, else the channel's.
+TEST(CigiState, OneEdgeMovedPastTheOtherIsRefused) {
+  CigiStateTracker t;
+  t.setChannelFrusta({skyig::sky::Frustum{30.0, 30.0, 20.0, 20.0}, skyig::sky::Frustum{45.0, 45.0, 30.0, 30.0}});
+  auto definition = [](std::uint16_t viewId, std::optional<float> left, std::optional<float> right,
+                       std::optional<float> top, std::optional<float> bottom) {
+    cigi::ViewDefinition vd;
+    vd.viewId = viewId;
+    vd.leftEnable = left.has_value();
+    vd.rightEnable = right.has_value();
+    vd.topEnable = top.has_value();
+    vd.bottomEnable = bottom.has_value();
+    vd.leftDeg = left.value_or(0.0f);
+    vd.rightDeg = right.value_or(0.0f);
+    vd.topDeg = top.value_or(0.0f);
+    vd.bottomDeg = bottom.value_or(0.0f);
+    cigi::DecodedMessage m;
+    m.packets = {cigi::IgControl{}, vd};
+    return m;
+  };
+  const auto now = Clock::now();
+  EXPECT_EQ(t.apply(definition(0, 80.0f, {}, {}, {}), now), 1);  // left at +80 against right at 30
+  EXPECT_EQ(t.apply(definition(0, {}, {}, -80.0f, {}), now), 1);  // top at -80 against bottom at -20
+  EXPECT_EQ(t.apply(definition(1, {}, -50.0f, {}, {}), now), 1);  // right at -50 against left at -45
+  EXPECT_EQ(t.state().views.find(0), nullptr);
+  EXPECT_EQ(t.state().views.find(1), nullptr);
+  // Within the frustum: applied; then judged against the host's own edge.
+  EXPECT_EQ(t.apply(definition(0, 25.0f, {}, {}, {}), now), 0);  // left edge at 25 deg right of the boresight
+  ASSERT_NE(t.state().views.find(0), nullptr);
+  EXPECT_EQ(*t.state().views.find(0)->leftDeg, -25.0);
+  EXPECT_EQ(t.apply(definition(0, {}, -26.0f, {}, {}), now), 1);  // right edge left of that left edge
+  EXPECT_EQ(t.apply(definition(0, {}, 31.0f, {}, {}), now), 0);  // 6 deg wide: applied
+  EXPECT_EQ(*t.state().views.find(0)->rightDeg, 31.0);
+  // A view without a channel: a pair that crosses is refused, a single edge cannot be judged.
+  EXPECT_EQ(t.apply(definition(7, 10.0f, -20.0f, {}, {}), now), 1);
+  EXPECT_EQ(t.apply(definition(7, 10.0f, {}, {}, {}), now), 0);
+}
+
 // A message is one host frame: an Entity Control with a NaN latitude (or a roll of 400 deg)
 // refuses the whole message, so neither the pose, the frame number Start of Frame acknowledges,
 // nor the host's clock moves; the next good message continues from the last good one.

@@ -27,8 +27,8 @@ namespace {
 using skyig::kDeg;
 
 nlohmann::json fogJson(const sky::FogSpec& f) {
-  return {{"visibility_km", f.visibilityKm}, {"bottom_m", f.bottomM}, {"top_m", f.topM}, {"asymmetry", f.asymmetry},
-          {"albedo", f.albedo}};
+  return {{"visibility_km", f.visibilityKm}, {"bottom_m", f.bottomM}, {"top_m", f.topM},
+          {"transition_m", f.transitionM}, {"asymmetry", f.asymmetry}, {"albedo", f.albedo}};
 }
 
 nlohmann::json hostJson(const HostState& h) {
@@ -43,6 +43,17 @@ nlohmann::json hostJson(const HostState& h) {
     if (h.precipitation[i])
       j["precipitation"][std::string(weather::toString(static_cast<weather::Precipitation>(i)))] = fogJson(*h.precipitation[i]);
   return j;
+}
+
+// The channel's night-vision goggle as the frame used it (configured, or switched and set by the
+// host's Sensor Control): on or off, its class and phosphor, and its gain.
+nlohmann::json goggleJson(const sky::ChannelConfig& c) {
+  const sky::SpectralBand nvisClass = sky::isGoggle(c) ? c.band : c.goggle.nvisClass;
+  return {{"on", sky::isGoggle(c)},
+          {"class", nvisClass == sky::SpectralBand::NvisClassA ? "A" : "B"},
+          {"phosphor", c.goggle.phosphor == sky::Phosphor::P43 ? "P43" : "P45"},
+          {"automatic_gain", c.goggle.automaticGain},
+          {"gain", c.goggle.gain}};
 }
 
 }  // namespace
@@ -68,7 +79,7 @@ void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const sky
     views.push_back({{"channel", c.name},
                      {"yaw", c.offset.yawDeg}, {"pitch", c.offset.pitchDeg}, {"roll", c.offset.rollDeg},
                      {"left", c.frustum.leftDeg}, {"right", c.frustum.rightDeg},
-                     {"down", c.frustum.downDeg}, {"up", c.frustum.upDeg}});
+                     {"down", c.frustum.downDeg}, {"up", c.frustum.upDeg}, {"goggle", goggleJson(c)}});
   nlohmann::json line = {
       {"ig_frame", igFrame},
       {"host_frame", host ? nlohmann::json(host->state.hostFrame) : nlohmann::json(nullptr)},

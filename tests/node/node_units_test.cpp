@@ -9,8 +9,14 @@
 #include "node/config/node_config.h"
 #include "node/host/ownship_predictor.h"
 #include "node/host/sim_clock.h"
+#include "node/frame/state_dump.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
 
 #include <cmath>
 
@@ -350,4 +356,37 @@ TEST(CigiState, Cigi4SecondsAndTimestampSetTheClockAndTheReplyVersion) {
   EXPECT_EQ(t3.apply(through(false, {ig, cs}), now), 0);
   EXPECT_EQ(t3.state().cigiMajorVersion, 3);
   EXPECT_NEAR(t3.state().utc.secondsOfDay, 19 * 3600.0 + 30 * 60.0, 1e-3);
+}
+
+// The state dump records each view's goggle as the frame used it: a channel the host switched to
+// its class B goggle with a manual gain of 0.375 says so, an eye channel says its goggle is off.
+TEST(StateDump, EachViewRecordsItsGoggle) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("skyig-state-dump-" + std::to_string(::getpid()) + ".jsonl");
+  skyig::sky::ChannelConfig eye, goggle;
+  eye.name = "front";
+  goggle.name = "chin";
+  goggle.band = skyig::sky::SpectralBand::NvisClassB;
+  goggle.goggle.phosphor = skyig::sky::Phosphor::P45;
+  goggle.goggle.automaticGain = false;
+  goggle.goggle.gain = 0.375;
+  const skyig::sky::SkyState state = skyig::sky::buildSkyState(skyig::sky::ObserverState{}, skyig::sky::SkyConditions{});
+  {
+    StateDump dump(path.string());
+    dump.write(7, nullptr, state, FramePose{{}, {eye, goggle}});
+  }
+  std::ifstream in(path);
+  std::string line;
+  ASSERT_TRUE(std::getline(in, line));
+  std::filesystem::remove(path);
+  const auto j = nlohmann::json::parse(line);
+  const auto& views = j["used"]["views"];
+  ASSERT_EQ(views.size(), 2u);
+  EXPECT_EQ(views[0]["goggle"]["on"], false);
+  EXPECT_EQ(views[0]["goggle"]["class"], "A");  // the configured class, were it switched on
+  EXPECT_EQ(views[1]["goggle"]["on"], true);
+  EXPECT_EQ(views[1]["goggle"]["class"], "B");
+  EXPECT_EQ(views[1]["goggle"]["phosphor"], "P45");
+  EXPECT_EQ(views[1]["goggle"]["automatic_gain"], false);
+  EXPECT_EQ(views[1]["goggle"]["gain"], 0.375);
 }

@@ -120,6 +120,25 @@ class Feeder {
     firstNs_ = haveEvent_ ? event_.timeNs : 0;
   }
   bool exhausted() const { return !haveEvent_; }
+
+  // The first frame shows the host's first place and time, not the configuration's: a
+  // CANaerospace host sends each parameter in a CAN frame of its own, so its recording's first
+  // record is a latitude alone. Records are fed until the host's state has a pose and a time,
+  // or kFirstPoseWindowS of the recording has passed, and the first frame is at the last record
+  // fed. A CIGI recording, whose first datagram states both, starts where it did.
+  void startAtTheFirstPose() {
+    auto complete = [&] {
+      const std::shared_ptr<const HostSnapshot> h = latest_.get();
+      return h && h->state.ownshipValid && h->state.timeValid;
+    };
+    const std::int64_t windowEndNs = firstNs_ + static_cast<std::int64_t>(kFirstPoseWindowS * 1e9);
+    std::int64_t lastFedNs = firstNs_;
+    while (haveEvent_ && event_.timeNs <= windowEndNs && !complete()) {
+      lastFedNs = event_.timeNs;
+      feedOne();
+    }
+    firstNs_ = lastFedNs;
+  }
   std::int64_t firstNs() const { return firstNs_; }
   std::uint64_t events() const { return events_; }
   std::uint64_t gaps() const { return gaps_; }
@@ -132,19 +151,11 @@ class Feeder {
   }
 
   Frame prepare(std::uint64_t number) {
+    if (number == 0) startAtTheFirstPose();
     Frame f;
     f.number = number;
     f.timeNs = frameTimeNs(number);
-    while (haveEvent_ && event_.timeNs <= f.timeNs) {
-      if (event_.kind == HostEvent::Kind::canFrame) {
-        can_.handle(event_.frame, at(event_.timeNs));
-      } else if (options_.port == 0 || event_.destinationPort == options_.port) {
-        cigi_.handle(event_.payload, event_.from, at(event_.timeNs));
-      }
-      ++events_;
-      lastRecord_ = event_.record;
-      haveEvent_ = source_.next(event_);
-    }
+    while (haveEvent_ && event_.timeNs <= f.timeNs) feedOne();
     // A pause longer than --max-gap (a paused host, a corrupt timestamp far ahead): the next
     // frame is the next record's instant, not one of the 1/frame-rate steps through the pause.
     const auto maxGapNs = static_cast<std::int64_t>(options_.maxGapS * 1e9);
@@ -188,6 +199,20 @@ class Feeder {
   std::uint64_t lastRecord_ = 0;
   SkyWorker worker_;
   const std::vector<sky::ChannelConfig> channels_;  // the node's: view n of the host is the n-th
+
+  static constexpr double kFirstPoseWindowS = 1.0;  // CANaerospace hosts send every parameter at 10 Hz or faster
+
+  // The next record into its receiver (a CIGI datagram only from the replayed port, if one is set).
+  void feedOne() {
+    if (event_.kind == HostEvent::Kind::canFrame) {
+      can_.handle(event_.frame, at(event_.timeNs));
+    } else if (options_.port == 0 || event_.destinationPort == options_.port) {
+      cigi_.handle(event_.payload, event_.from, at(event_.timeNs));
+    }
+    ++events_;
+    lastRecord_ = event_.record;
+    haveEvent_ = source_.next(event_);
+  }
 };
 
 class Progress {

@@ -186,7 +186,15 @@ TEST_F(RecordReplay, CandumpLogReplaysThroughTheCanAerospaceDecoder) {
                                                              static_cast<std::streamsize>(sink.data.size()));
   const SkyigResult r = skyig("replay " + (dir_ / "flight.log").string() + " --quiet --size 32x24 --dump-state " + (dir_ / "can.jsonl").string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  const auto last = readStateDump(dir_ / "can.jsonl").back();
+  const auto lines = readStateDump(dir_ / "can.jsonl");
+  ASSERT_FALSE(lines.empty());
+  // The first frame already shows the host's place and time: each parameter comes in a CAN frame
+  // of its own, and the first record (a latitude alone) is no pose to show yet.
+  const auto& first = lines.front();
+  EXPECT_NEAR(first["used"]["lat"].get<double>(), -33.9461, 1e-9);
+  EXPECT_NEAR(first["used"]["lon"].get<double>(), 151.1772, 1e-9);
+  EXPECT_EQ(first["used"]["utc"].get<std::string>().substr(0, 19), "2026-11-22T09:41:05");
+  const auto& last = lines.back();
   EXPECT_NEAR(last["used"]["lat"].get<double>(), -33.9461, 1e-9);
   EXPECT_NEAR(last["used"]["lon"].get<double>(), 151.1772, 1e-9);
   EXPECT_NEAR(last["used"]["yaw"].get<double>(), 160.0, 1e-4);

@@ -6,8 +6,26 @@ include(GNUInstallDirs)
 
 install(TARGETS skyig RUNTIME DESTINATION bin COMPONENT skyig)
 install(FILES ${SKYIG_DATA_FILES} DESTINATION share/skyig COMPONENT skyig)
-# The service: its unit (ExecStart=/usr/bin/skyig, the package's path) and its system user.
-install(FILES ${PROJECT_SOURCE_DIR}/deploy/skyig.service DESTINATION lib/systemd/system COMPONENT skyig)
+# The service: its unit and its system user. deploy/skyig.service names the package's paths
+# (/usr/bin/skyig, /etc/skyig/skyig.toml); the installed unit names those of the prefix it is
+# installed under, chosen at install time (`cmake --install --prefix P`, the package's /usr),
+# and the configuration directory below (absolute as the package sets it, else under P).
+install(CODE "
+  set(prefix \"\${CMAKE_INSTALL_PREFIX}\")
+  if(IS_ABSOLUTE \"${CMAKE_INSTALL_SYSCONFDIR}\")
+    set(sysconf \"${CMAKE_INSTALL_SYSCONFDIR}\")
+  else()
+    set(sysconf \"\${prefix}/${CMAKE_INSTALL_SYSCONFDIR}\")
+  endif()
+  file(READ \"${PROJECT_SOURCE_DIR}/deploy/skyig.service\" unit)
+  string(REPLACE \"ExecStart=/usr/bin/skyig \" \"ExecStart=\${prefix}/bin/skyig \" unit \"\${unit}\")
+  string(REPLACE \" --config /etc/skyig/skyig.toml \" \" --config \${sysconf}/skyig/skyig.toml \" unit \"\${unit}\")
+  string(REPLACE \"file:///usr/share/doc/skyig/\" \"file://\${prefix}/share/doc/skyig/\" unit \"\${unit}\")
+  set(path \"\$ENV{DESTDIR}\${prefix}/lib/systemd/system/skyig.service\")
+  message(STATUS \"Installing: \${path} (ExecStart=\${prefix}/bin/skyig)\")
+  file(WRITE \"\${path}\" \"\${unit}\")
+  list(APPEND CMAKE_INSTALL_MANIFEST_FILES \"\${path}\")
+" COMPONENT skyig)
 install(FILES ${PROJECT_SOURCE_DIR}/deploy/skyig.sysusers DESTINATION lib/sysusers.d RENAME skyig.conf COMPONENT skyig)
 # The example configuration becomes the node's: CMAKE_INSTALL_SYSCONFDIR is "etc" under the
 # prefix by default (a test installs into a temporary prefix); deploy/package.sh sets it to

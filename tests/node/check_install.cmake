@@ -1,15 +1,17 @@
-# `cmake --install` of this build into PREFIX, then the installed skyig run as a node runs it:
-# with SKYIG_DATA_DIR unset it reads PREFIX/share/skyig, its own prefix's data, and renders a
-# frame from it; with that directory moved away it exits 2 naming it, so it read no other copy
-# (the build tree's share/skyig, the sources). The service's files are where the package puts
-# them, relative to the prefix.
-#   cmake -DBINARY_DIR=... -DPREFIX=... -DWORK=... -P check_install.cmake
-file(REMOVE_RECURSE ${PREFIX} ${WORK})
+# `cmake --install` of this build as the package installs it (prefix /usr, under DESTDIR=ROOT),
+# then the installed skyig run as a node runs it: with SKYIG_DATA_DIR unset it reads
+# ROOT/usr/share/skyig, its own prefix's data, and renders a frame from it; with that directory
+# moved away it exits 2 naming it, so it read no other copy (the build tree's share/skyig, the
+# sources). The service's files are where the package puts them, and a unit installed under
+# another prefix starts that prefix's skyig with that prefix's configuration.
+#   cmake -DBINARY_DIR=... -DROOT=... -DWORK=... -P check_install.cmake
+set(PREFIX ${ROOT}/usr)
+file(REMOVE_RECURSE ${ROOT} ${WORK})
 file(MAKE_DIRECTORY ${WORK})
-execute_process(COMMAND ${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${PREFIX} --strip
+execute_process(COMMAND ${CMAKE_COMMAND} -E env DESTDIR=${ROOT} ${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix /usr --strip
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "cmake --install ${BINARY_DIR} --prefix ${PREFIX} failed (${rc}):\n${out}${err}")
+  message(FATAL_ERROR "DESTDIR=${ROOT} cmake --install ${BINARY_DIR} --prefix /usr failed (${rc}):\n${out}${err}")
 endif()
 foreach(f bin/skyig share/skyig/bsc5.csv share/skyig/moon.png share/skyig/milkyway.png
           lib/systemd/system/skyig.service lib/sysusers.d/skyig.conf etc/skyig/skyig.toml)
@@ -40,3 +42,25 @@ if(NOT rc EQUAL 2 OR named EQUAL -1)
   message(FATAL_ERROR "installed skyig without its share/skyig exited ${rc}, not 2 naming ${PREFIX}/share/skyig:\n${out}${err}")
 endif()
 message(STATUS "installed skyig reads ${PREFIX}/share/skyig and renders from it")
+
+# The unit's paths follow the prefix: /usr for the package, P for `--prefix P`.
+function(expect_unit unit_file prefix)
+  file(STRINGS ${unit_file} exec REGEX "^ExecStart=")
+  set(want "ExecStart=${prefix}/bin/skyig serve --config ${prefix}/etc/skyig/skyig.toml ")
+  string(FIND "${exec}" "${want}" at)
+  if(NOT at EQUAL 0)
+    message(FATAL_ERROR "${unit_file} says\n  ${exec}\nnot\n  ${want}...")
+  endif()
+endfunction()
+expect_unit(${PREFIX}/lib/systemd/system/skyig.service /usr)
+set(other ${WORK}/opt-skyig)
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${other} --component skyig
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "cmake --install ${BINARY_DIR} --prefix ${other} failed (${rc}):\n${out}${err}")
+endif()
+expect_unit(${other}/lib/systemd/system/skyig.service ${other})
+if(NOT EXISTS ${other}/bin/skyig OR NOT EXISTS ${other}/etc/skyig/skyig.toml)
+  message(FATAL_ERROR "the unit under ${other} names files the install did not put there")
+endif()
+message(STATUS "the unit starts its own prefix's skyig with its configuration (/usr and ${other})")

@@ -30,6 +30,9 @@ void SkyOptions::add(CLI::App& c) {
   c.add_option("--fog-top", fogTopM, "The ground fog's top above the ground, metres (default 200)")->check(CLI::Range(0.0, 20000.0));
   c.add_option("--fog-bottom", fogBottomM, "The ground fog's bottom above the ground, metres (default 0)")
       ->check(CLI::Range(0.0, 20000.0));
+  c.add_option("--fog-transition", fogTransitionM,
+               "The band over which the ground fog's top fades to clear air, metres (default 0: a hard top)")
+      ->check(CLI::Range(0.0, 20000.0));
   c.add_option("--precipitation", precipitation, "Physical sky: precipitation or dust from the ground up: none | rain | snow | sleet | hail | sand | dust")
       ->check(CLI::IsMember({"none", "rain", "snow", "sleet", "hail", "sand", "dust"}));
   c.add_option("--precipitation-severity", precipitationSeverity, "Its severity, 0 (least) .. 5 (CIGI's; default 2)")
@@ -67,11 +70,12 @@ NodeConfig SkyOptions::resolve() const {
   if (turbidity) config.sky.turbidity = *turbidity;
   if (groundAlbedo) config.sky.groundAlbedo = *groundAlbedo;
   if (visibilityKm) config.atmosphere.visibilityKm = *visibilityKm;
-  if (fogVisibilityKm || fogTopM || fogBottomM) {
+  if (fogVisibilityKm || fogTopM || fogBottomM || fogTransitionM) {
     sky::FogSpec& f = config.sky.fog;
     if (fogVisibilityKm) f.visibilityKm = *fogVisibilityKm;
     if (fogBottomM) f.bottomM = *fogBottomM;
     if (fogTopM) f.topM = *fogTopM;
+    if (fogTransitionM) f.transitionM = *fogTransitionM;
     else if (f.topM <= f.bottomM) f.topM = f.bottomM + 200.0;
     if (f.visibilityKm > 0.0 && !(f.topM > f.bottomM))
       throw ConfigError("--fog-top " + std::to_string(f.topM) + " m: expected a top above the fog's bottom (" +

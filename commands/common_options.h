@@ -13,7 +13,7 @@ namespace skyig::services {
 struct SkyOptions {
   std::string configPath;
   std::optional<double> lat, lon, alt, yaw, pitch, roll, turbidity, groundAlbedo, visibilityKm;
-  std::optional<double> fogVisibilityKm, fogBottomM, fogTopM;  // a ground fog ([weather])
+  std::optional<double> fogVisibilityKm, fogBottomM, fogTopM, fogTransitionM;  // a ground fog ([weather])
   // Precipitation or dust ([weather] precipitation_*): a kind or "none", and its figures.
   std::optional<std::string> precipitation;
   std::optional<int> precipitationSeverity;

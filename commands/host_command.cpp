@@ -35,6 +35,7 @@ struct HostOptions {
   double visibilityM = 40000.0;
   std::optional<double> fogVisibilityM;  // a ground fog (Weather Control layer 0); 0: none
   double fogTopM = 200.0;
+  double fogTransitionM = 0.0;  // its top's transition band
   std::optional<std::string> precipitation;  // Weather Control layers 4-9: a kind or "none"
   int precipitationSeverity = 2;
   std::string weatherFile;      // a weather script (node/host/host_weather.h) instead of the above
@@ -106,6 +107,7 @@ std::vector<std::uint8_t> message(std::uint32_t frame, double pathTime, const Ho
   fog.visibilityRangeM = static_cast<float>(weather.fogVisibilityM);
   fog.baseElevationM = 0.0f;
   fog.thicknessM = static_cast<float>(weather.fogTopM);
+  fog.transitionBandM = static_cast<float>(o.fogTransitionM);
   fog.humidityPct = 100;
   // skyig's CIGI 4.0 subset has no Rate Control (4.0 moved rates to Velocity Control).
   std::vector<cigi::Packet> packets = {ig, e};
@@ -300,6 +302,8 @@ void registerHostCommand(CLI::App& app, int& exitCode) {
   c->add_option("--fog-visibility", o->fogVisibilityM, "Weather Control layer 0 (ground fog): visibility inside, m (0: none)")
       ->check(CLI::Range(0.0, 1e6));
   c->add_option("--fog-top", o->fogTopM, "The ground fog's thickness above the ground, m (200)")->check(CLI::Range(1.0, 20000.0));
+  c->add_option("--fog-transition", o->fogTransitionM, "Its transition band: the top fades to clear air over it, m (0)")
+      ->check(CLI::Range(0.0, 20000.0));
   c->add_option("--precipitation", o->precipitation,
                 "Weather Control layers 4-9: none | rain | snow | sleet | hail | sand | dust, from the ground to 1500 m")
       ->check(CLI::IsMember({"none", "rain", "snow", "sleet", "hail", "sand", "dust"}));

@@ -3,6 +3,7 @@
 #include "physics/atmosphere/physical_camera.h"
 #include "physics/goggle/nvis_sky.h"
 #include "physics/weather/fog_table.h"
+#include "physics/weather/weather_physics.h"
 
 #include <glm/geometric.hpp>
 
@@ -111,7 +112,7 @@ NvisWeights nvisWeights(SpectralBand band, const SkyState& state, const glm::dve
     const double replaced = 1.0 - weather::fogAlong(layers, h, view.z).a;
     double depth = 0.0, sunShare = 0.0;
     for (std::size_t i = 0; i < layers.size(); ++i) {
-      const double tau = layers[i].extinction * (layers[i].top_height - layers[i].bottom_height);
+      const double tau = shader::fogColumnDepth(layers[i]);
       depth += tau;
       sunShare += tau * state.fog.sunShare[i];
     }

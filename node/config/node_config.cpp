@@ -105,7 +105,8 @@ const toml::table* subTable(TableReader& parent, const std::string& key) {
 }
 
 // [weather]: a ground fog (physics/weather/fog_layer.h) until the host sends its own (CIGI
-// Weather Control layer 0): fog_visibility_km (0: none), fog_bottom_m, fog_top_m above the ground;
+// Weather Control layer 0): fog_visibility_km (0: none), fog_bottom_m, fog_top_m above the ground,
+// fog_transition_m (the band over which its top, and a raised bottom, fade; 0: a hard edge);
 // and precipitation or dust (physics/weather/precipitation.h, layers 4-9): precipitation ("none",
 // "rain", "snow", "sleet", "hail", "sand", "dust"), precipitation_severity (0-5),
 // precipitation_visibility_km (0: the severity's), precipitation_top_m, precipitation_coverage_pct.
@@ -114,6 +115,7 @@ void readWeather(TableReader& r, skyig::sky::FogSpec& fog, skyig::weather::Preci
   fog.visibilityKm = r.number("fog_visibility_km", fog.visibilityKm, 0.0, atmosphere::kLargestVisibilityKm);
   fog.bottomM = r.number("fog_bottom_m", fog.bottomM, 0.0, 20000.0);
   fog.topM = r.number("fog_top_m", fog.topM, 0.0, 20000.0);
+  fog.transitionM = r.number("fog_transition_m", fog.transitionM, 0.0, 20000.0);
   if (fog.visibilityKm > 0.0 && !(fog.topM > fog.bottomM))
     r.fail(r.find("fog_top_m"), "fog_top_m", "expected a top above fog_bottom_m (" + std::to_string(fog.bottomM) + " m)");
   constexpr const char* kKinds = "\"none\", \"rain\", \"snow\", \"sleet\", \"hail\", \"sand\" or \"dust\"";

@@ -87,6 +87,7 @@ render::ImageAttributes frameAttributes(const sky::SkyState& s, const sky::Attit
       a[p + "_visibility_km"] = layers[i].visibilityKm;
       a[p + "_bottom_m"] = layers[i].bottomM;
       a[p + "_top_m"] = layers[i].topM;
+      a[p + "_transition_m"] = layers[i].transitionM;
     }
     // The precipitation's particles: dust tints (an albedo below 1 per Rec.709 channel).
     const sky::FogSpec& p = s.conditions.precipitation;

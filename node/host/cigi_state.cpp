@@ -205,13 +205,15 @@ CigiStateTracker::Applied CigiStateTracker::on(const cigi::WeatherControl& p, co
       return kChanged;
     }
     if (!std::isfinite(p.baseElevationM) || !std::isfinite(p.thicknessM) || !(p.thicknessM > 0.0f) ||
-        !std::isfinite(p.visibilityRangeM) || !(p.visibilityRangeM > 0.0f))
+        !std::isfinite(p.visibilityRangeM) || !(p.visibilityRangeM > 0.0f) || !std::isfinite(p.transitionBandM) ||
+        p.transitionBandM < 0.0f)
       return kRejected;
     const double base = std::max(0.0, static_cast<double>(p.baseElevationM));
     const double top = static_cast<double>(p.baseElevationM) + static_cast<double>(p.thicknessM);
     const double visibilityM = std::max<double>(p.visibilityRangeM, kSmallestLayerVisibilityM);
     state_.groundFog = sky::FogSpec{base, std::max(base, top), visibilityM / 1000.0};
     if (!(state_.groundFog->topM > state_.groundFog->bottomM)) state_.groundFog = sky::FogSpec{};  // wholly below the ground
+    else state_.groundFog->transitionM = p.transitionBandM;
     return kChanged;
   }
   if (const auto kind = weather::precipitationOfLayer(p.layerId)) return precipitationFrom(*kind, p, state_);

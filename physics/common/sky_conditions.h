@@ -33,6 +33,9 @@ struct FogSpec {
   double visibilityKm = 0.0;
   double asymmetry = kDropletAsymmetry;           // g of the phase function, [0, 1)
   std::array<double, 3> albedo{1.0, 1.0, 1.0};   // single-scattering albedo per Rec.709 channel
+  // CIGI Weather Control's transition band: over this height above the top (and below a bottom
+  // above the ground) the extinction falls linearly to none, so the layer's edge is soft.
+  double transitionM = 0.0;
   bool operator==(const FogSpec&) const = default;
 };
 

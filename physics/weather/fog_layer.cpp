@@ -37,6 +37,7 @@ void validate(const sky::FogSpec& s) {
   if (!(s.asymmetry >= 0.0 && s.asymmetry < 1.0)) bad("asymmetry", s.asymmetry, "in [0, 1)");
   for (double a : s.albedo)
     if (!(a > 0.0 && a <= 1.0)) bad("albedo", a, "in (0, 1]");
+  if (!(s.transitionM >= 0.0) || !std::isfinite(s.transitionM)) bad("transition_m", s.transitionM, "0 (a hard edge) or more");
 }
 
 FogLayer makeFogLayer(const sky::FogSpec& spec, double planetRadiusM, double groundAlbedo,
@@ -51,6 +52,7 @@ FogLayer makeFogLayer(const sky::FogSpec& spec, double planetRadiusM, double gro
   f.albedo = glm::dvec3(spec.albedo[0], spec.albedo[1], spec.albedo[2]);
   f.ground_albedo = groundAlbedo;
   f.top_irradiance = topIrradiance;
+  f.band_height = spec.transitionM;
   return f;
 }
 

@@ -30,12 +30,62 @@ Float chordBelowHeight(Float R, Float h, Float mu, Float d, Float h_s) {
   return max(min(max(t0, t1), d) - max(min(t0, t1), 0.0), 0.0);
 }
 
-// Metres of the ray's first d metres inside the layer, from height h. A layer on the ground (most
-// are) has nothing below it on a ray that ends at the ground: its bottom's chord is skipped.
-Float fogPathLength(IN(FogLayer) fog, Float h, Float mu, Float d) {
-  Float below = fog.bottom_height > 0.0 ? chordBelowHeight(fog.planet_radius, h, mu, d, fog.bottom_height) : 0.0;
-  return max(chordBelowHeight(fog.planet_radius, h, mu, d, fog.top_height) - below, 0.0);
+// The transition band (CIGI Weather Control): above the top (and below a raised bottom) the
+// extinction falls linearly to none over band_height metres. Along the ray x(t) the height under
+// a level h_s is, to first order, q(t) = (r_s^2 - |x(t)|^2) / 2 r_s = a - b t - k t^2 (exact but
+// for a factor 1 - (h_s - h) / 2 r_s: 1e-4 at 1.3 km), a concave quadratic in t, so the integral
+// of max(q - c, 0) over [0, d] has a closed form: between the roots of q = c, taken as
+// chordBelowHeight takes them, as (t1 - t0)(a - b (t0 + t1) / 2 - k (t0^2 + t0 t1 + t1^2) / 3).
+Float depthBelowIntegral(Float R, Float h, Float mu, Float d, Float h_s, Float c) {
+  Float r_s = R + h_s;
+  Float a = (h_s - h) * (2.0 * R + h_s + h) / (2.0 * r_s) - c;
+  Float b = (R + h) * mu / r_s;
+  Float k = 0.5 / r_s;
+  Float discriminant = b * b + 4.0 * k * a;
+  if (discriminant <= 0.0) return 0.0;
+  Float q = -0.5 * (b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant));
+  Float t0 = q / k;
+  Float t1 = q != 0.0 ? -a / q : 0.0;
+  Float lo = max(min(t0, t1), 0.0);
+  Float hi = min(max(t0, t1), d);
+  if (hi <= lo) return 0.0;
+  return (hi - lo) * (a - 0.5 * b * (lo + hi) - k * (lo * lo + lo * hi + hi * hi) / 3.0);
 }
+
+// Metres of the ray's first d metres under a ramp whose extinction grows from none at height
+// ramp_top to the layer's over `band` metres below it, each metre counted by its share: the
+// integral of clamp(q / band, 0, 1). A hard edge (band 0) is chordBelowHeight.
+Float chordBelowRamp(Float R, Float h, Float mu, Float d, Float ramp_top, Float band) {
+  if (band <= 0.0) return chordBelowHeight(R, h, mu, d, ramp_top);
+  return (depthBelowIntegral(R, h, mu, d, ramp_top, 0.0) - depthBelowIntegral(R, h, mu, d, ramp_top, band)) / band;
+}
+
+// The band below the bottom: no deeper than the bottom's height (it stops at the ground).
+Float fogBottomBand(IN(FogLayer) fog) { return min(fog.band_height, fog.bottom_height); }
+
+// Metres of the ray's first d metres inside the layer, from height h, a metre of its bands
+// counted by its share of the layer's extinction. A layer on the ground (most are) has nothing
+// below it on a ray that ends at the ground: its bottom's chord is skipped.
+Float fogPathLength(IN(FogLayer) fog, Float h, Float mu, Float d) {
+  Float R = fog.planet_radius;
+  Float below = fog.bottom_height > 0.0 ? chordBelowRamp(R, h, mu, d, fog.bottom_height, fogBottomBand(fog)) : 0.0;
+  return max(chordBelowRamp(R, h, mu, d, fog.top_height + fog.band_height, fog.band_height) - below, 0.0);
+}
+
+// The layer's vertical optical depth above height h (its bands' ramps integrated: (b - z)^2 / 2b
+// for z metres into a band of b), and its whole column (fogColumnDepth).
+Float fogDepthAbove(IN(FogLayer) fog, Float h) {
+  Float b = fog.band_height;
+  Float bb = fogBottomBand(fog);
+  Float top_band = b > 0.0 ? 0.5 * b : 0.0;
+  if (h >= fog.top_height + b) return 0.0;
+  if (h >= fog.top_height) return fog.extinction * (fog.top_height + b - h) * (fog.top_height + b - h) / (2.0 * b);
+  Float above = fog.extinction * (top_band + fog.top_height - max(h, fog.bottom_height));
+  if (h >= fog.bottom_height || bb <= 0.0) return above;
+  Float z = min(fog.bottom_height - h, bb);  // metres down into the bottom band
+  return above + fog.extinction * (z - 0.5 * z * z / bb);
+}
+Float fogColumnDepth(IN(FogLayer) fog) { return fogDepthAbove(fog, fog.bottom_height - fogBottomBand(fog)); }
 
 // Bohren 1987 (two-stream, no absorption): the slab's reflectance.
 Float fogSlabReflectance(Float tau, Float g) {
@@ -85,9 +135,11 @@ const Float kFogConservativeAlbedo = 0.999;
 // The layer's radiance at the depth of an eye h metres above the ground (its top seen from
 // above, its bottom from below): the downward flux seen looking up, the upward looking down, each
 // a Lambertian field (radiance = flux / pi).
+// Bohren's two-stream equations are written in optical depth, so they hold for a layer whose
+// extinction varies with height (its bands) with the depths counted through them.
 FogEye fogEye(IN(FogLayer) fog, Float h) {
-  Float tau = fog.extinction * (fog.top_height - fog.bottom_height);
-  Float tau_in = fog.extinction * (fog.top_height - clamp(h, fog.bottom_height, fog.top_height));
+  Float tau = fogColumnDepth(fog);
+  Float tau_in = fogDepthAbove(fog, h);
   vec3 down = vec3(0.0);
   vec3 up = vec3(0.0);
   for (int i = 0; i < 3; ++i) {

@@ -14,6 +14,7 @@ struct FogLayer {
   Float ground_albedo;   // the ground under the layer
   vec3 top_irradiance;   // linear Rec.709 lux on a horizontal surface at the top, from above
   vec3 albedo;           // the particles' single-scattering albedo per Rec.709 channel (1: water)
+  Float band_height;     // the transition band above the top and below a raised bottom, metres (0: a hard edge)
 };
 
 // A layer's own radiance at one eye's depth in it (fogEye), linear Rec.709 cd/m^2: looking straight

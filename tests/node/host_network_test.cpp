@@ -407,8 +407,9 @@ void sendWeather(UdpSocket& host, const sockaddr_in& to, std::uint32_t frame, co
 }  // namespace
 
 // CIGI Weather Control, layer 0 (ground fog), global scope, over loopback: its base, thickness
-// and visibility become the sky state's fog layer; a NaN thickness is refused and counted and
-// the layer stays; the host's Weather Enable off removes it.
+// and visibility become the sky state's fog layer, its transition band the layer's soft top; a
+// NaN thickness or a negative band is refused and counted and the layer stays; the host's
+// Weather Enable off removes it.
 TEST(CigiWeatherControl, GroundFogReachesTheSkyStateAndGoesAgain) {
   // The analytic sky: the state carries the host's weather whatever model draws it.
   const NodeConfig config = parseNodeConfig("[sky]\nmodel = \"preetham\"\n[[channel]]\nname = \"front\"\n", "fog.toml");
@@ -438,10 +439,24 @@ TEST(CigiWeatherControl, GroundFogReachesTheSkyStateAndGoesAgain) {
   state = worker.step(node.latest.get().get(), Clock::now(), true);
   EXPECT_EQ(state->conditions.fog, (skyig::sky::FogSpec{20.0, 200.0, 0.4}));
 
+  // Its transition band softens the top; a negative band is refused and counted.
+  cigi::WeatherControl banded = fog;
+  banded.transitionBandM = 60.0f;
+  sendWeather(host, node.address(), 3, banded);
+  ASSERT_TRUE(node.handled(3));
+  state = worker.step(node.latest.get().get(), Clock::now(), true);
+  EXPECT_EQ(state->conditions.fog.transitionM, 60.0);
+  banded.transitionBandM = -5.0f;
+  sendWeather(host, node.address(), 4, banded);
+  ASSERT_TRUE(node.handled(4));
+  EXPECT_EQ(node.stats.rejectedValues.load(), 2u);
+  state = worker.step(node.latest.get().get(), Clock::now(), true);
+  EXPECT_EQ(state->conditions.fog.transitionM, 60.0);
+
   cigi::WeatherControl off = fog;
   off.weatherEnable = false;
-  sendWeather(host, node.address(), 3, off);
-  ASSERT_TRUE(node.handled(3));
+  sendWeather(host, node.address(), 5, off);
+  ASSERT_TRUE(node.handled(5));
   state = worker.step(node.latest.get().get(), Clock::now(), true);
   EXPECT_EQ(state->conditions.fog.visibilityKm, 0.0);
 }

@@ -119,6 +119,10 @@ TEST(NodeConfig, WeatherFogAndPrecipitation) {
   EXPECT_EQ(c.sky.precipitation.topM, 900.0);
   EXPECT_EQ(c.sky.precipitation.visibilityKm, 2.0 * skyig::weather::visibilityForSeverityKm(skyig::weather::Precipitation::snow, 4));
   EXPECT_EQ(parseNodeConfig("[weather]\nprecipitation = \"none\"\n", "w.toml").sky.precipitation.visibilityKm, 0.0);
+  EXPECT_EQ(parseNodeConfig("[weather]\nfog_visibility_km = 0.4\nfog_top_m = 200\nfog_transition_m = 50\n", "w.toml")
+                .sky.fog.transitionM,
+            50.0);
+  EXPECT_NE(errorOf("[weather]\nfog_transition_m = -1\n").find("bad.toml:2: weather.fog_transition_m"), std::string::npos);
   EXPECT_EQ(errorOf("[weather]\nprecipitation = \"drizzle\"\n"),
             "bad.toml:2: weather.precipitation: expected \"none\", \"rain\", \"snow\", \"sleet\", \"hail\", \"sand\" or "
             "\"dust\", got \"drizzle\"");

@@ -3,6 +3,7 @@
 // slab and against a numerical march, and what a pilot sees below, inside and above a fog.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -114,6 +115,87 @@ TEST(FogLayer, AboveItIsAWhiteSeaAndClimbingThroughTheTopIsSeamless) {
                 std::exp(-3.912 / 400.0 * depth / oneDegree), 1e-3);
 }
 
+// CIGI Weather Control's transition band: over band_height above the top (and below a raised
+// bottom) the extinction falls linearly to none.
+FogLayer bandedFog(double bottomM, double topM, double bandM) {
+  sky::FogSpec s{bottomM, topM, 0.4};
+  s.transitionM = bandM;
+  return makeFogLayer(s, kR, 0.2, glm::dvec3(100000.0));
+}
+
+// The extinction at height z of a banded layer, and a 0.25 m march along the curved ray.
+double extinctionAt(const FogLayer& f, double z) {
+  const double b = f.band_height, bb = std::min(b, f.bottom_height);
+  if (z > f.top_height) return b > 0.0 ? f.extinction * std::max(0.0, 1.0 - (z - f.top_height) / b) : 0.0;
+  if (z >= f.bottom_height) return f.extinction;
+  return bb > 0.0 ? f.extinction * std::max(0.0, 1.0 - (f.bottom_height - z) / bb) : 0.0;
+}
+double marchedDepth(const FogLayer& f, double h, double mu, double d) {
+  const double r = kR + h, step = 0.25;
+  double tau = 0.0;
+  for (double t = 0.5 * step; t < d; t += step)
+    tau += extinctionAt(f, std::sqrt(r * r + 2.0 * r * mu * t + t * t) - kR) * step;
+  return tau;
+}
+
+TEST(FogBand, AVerticalColumnGainsHalfOfEachBand) {
+  // Straight up from the ground through a 200 m fog with a 100 m band: the ramp holds half of a
+  // 100 m slab, 250 m in all; a layer from 300 to 500 m with bands of 100 m: 300 m.
+  const FogLayer ground = bandedFog(0.0, 200.0, 100.0);
+  EXPECT_NEAR(shader::fogPathLength(ground, 0.0, 1.0, 1e9), 250.0, 1e-3);
+  EXPECT_NEAR(shader::fogColumnDepth(ground), ground.extinction * 250.0, 1e-12);
+  const FogLayer raised = bandedFog(300.0, 500.0, 100.0);
+  EXPECT_NEAR(shader::fogPathLength(raised, 0.0, 1.0, 1e9), 300.0, 1e-3);
+  EXPECT_NEAR(shader::fogColumnDepth(raised), raised.extinction * 300.0, 1e-12);
+  // The depth above an eye in the band: (b - z)^2 / 2b of the ramp above it; the whole ramp at the top.
+  EXPECT_NEAR(shader::fogDepthAbove(ground, 250.0), ground.extinction * 50.0 * 50.0 / 200.0, 1e-12);
+  EXPECT_NEAR(shader::fogDepthAbove(ground, 200.0), ground.extinction * 50.0, 1e-12);
+  EXPECT_NEAR(shader::fogDepthAbove(raised, 250.0), raised.extinction * (50.0 + 200.0 + 37.5), 1e-12);
+}
+
+TEST(FogBand, SlantAndLevelRaysMatchAMarchThroughTheRamps) {
+  // The closed form takes the height under a level to first order in its depth (1e-4 at 1.3 km):
+  // against a march along the curved ray, within 0.1% of the layer's optical depth on the way.
+  const FogLayer ground = bandedFog(0.0, 200.0, 100.0), raised = bandedFog(300.0, 500.0, 150.0);
+  struct Ray { double h, mu, d; };
+  for (const FogLayer* f : {&ground, &raised})
+    for (const Ray& ray : {Ray{30.0, 0.0, 60e3}, Ray{250.0, 0.0, 80e3}, Ray{270.0, -0.01, 27e3},
+                          Ray{600.0, -0.02, 30e3}, Ray{120.0, 0.03, 40e3}, Ray{400.0, 0.0, 120e3},
+                          Ray{1000.0, -0.1, 1e4}}) {
+      const double want = marchedDepth(*f, ray.h, ray.mu, ray.d);
+      const double got = f->extinction * shader::fogPathLength(*f, ray.h, ray.mu, ray.d);
+      std::printf("  bottom %4.0f m, from %5.0f m, mu %5.2f: optical depth %.4f marched, %.4f closed form\n", f->bottom_height, ray.h, ray.mu, want, got);
+      EXPECT_NEAR(got, want, 1e-3 * want + 1e-3) << "bottom " << f->bottom_height << " from " << ray.h << " m, mu "
+                                                 << ray.mu;
+    }
+}
+
+TEST(FogBand, ClimbingThroughTheBandClearsTheLevelViewGradually) {
+  // A hard top hides the level view within a centimetre (the fogged band above the horizon is a
+  // metre's chord: 7 km); with a 100 m band the level transmittance rises through the ramp's top
+  // metres without a jump, never falling as the eye climbs.
+  const FogLayer hard = fog200mOf400m(), soft = bandedFog(0.0, 200.0, 100.0);
+  const double jump = shader::fogTransmittance(hard, 200.01, 0.0, 1e9) - shader::fogTransmittance(hard, 199.99, 0.0, 1e9);
+  EXPECT_GT(jump, 0.9);
+  double last = 0.0, largestStep = 0.0;
+  for (double h = 250.0; h <= 300.5; h += 0.1) {
+    const double t = shader::fogTransmittance(soft, h, 0.0, 1e9);
+    EXPECT_GE(t, last - 1e-9) << h;
+    largestStep = std::max(largestStep, t - last);
+    last = t;
+  }
+  EXPECT_NEAR(last, 1.0, 1e-12);  // above the band
+  EXPECT_LT(largestStep, 0.1);
+  std::printf("level transmittance: a hard top jumps %.3f within 2 cm; a 100 m band's largest 0.1 m step %.3f\n", jump,
+              largestStep);
+  // The sunlit top seen from above: the band is lit as the layer (two-stream in optical depth),
+  // and looking down from inside it the luminance runs between the layer's and what is above.
+  const double down = -0.2;
+  const double inBand = throughFogLuminance(soft, 0.0, 260.0, down, 1300.0);
+  const double aboveBand = throughFogLuminance(soft, 0.0, 400.0, down, 2000.0);
+  EXPECT_NEAR(inBand / aboveBand, 1.0, 0.05);  // the same sea, seen from in or over its band
+}
+
 TEST(FogLayer, HazeBelowTheTablesKeepsKoschmiederAtTheGround) {
   // 2 km: the tables at 10 km and a layer with the rest, 3.912/2 - 3.912/10 per km.
   EXPECT_EQ(tablesVisibilityKm(2.0), kTablesVisibilityKm);
@@ -136,6 +218,9 @@ TEST(FogLayer, BadValuesAreRefusedByName) {
     EXPECT_NE(std::string(e.what()).find("bottom_m = -5"), std::string::npos) << e.what();
   }
   EXPECT_NO_THROW(validate({0.0, 0.0, 0.0}));  // no layer
+  sky::FogSpec negativeBand{0.0, 100.0, 0.4};
+  negativeBand.transitionM = -10.0;
+  EXPECT_THROW(validate(negativeBand), std::invalid_argument);
 }
 
 }  // namespace

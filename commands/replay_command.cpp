@@ -7,7 +7,7 @@
 #include "render/output_file.h"
 #include "node/config/sky_data.h"
 #include "node/common/stop_signal.h"
-#include "physics/atmosphere/precompute_control.h"
+#include "physics/atmosphere/precompute/precompute_control.h"
 
 #include <poll.h>
 #include <unistd.h>

@@ -6,7 +6,7 @@
 #include "node/config/sky_data.h"
 #include "node/frame/state_dump.h"
 #include "node/common/stop_signal.h"
-#include "physics/atmosphere/precompute_control.h"
+#include "physics/atmosphere/precompute/precompute_control.h"
 
 #include <spdlog/spdlog.h>
 

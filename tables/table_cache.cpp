@@ -16,7 +16,7 @@
 #include <unistd.h>
 
 #include "tables/parameter_hash.h"
-#include "physics/atmosphere/precompute.h"
+#include "physics/atmosphere/precompute/precompute.h"
 
 namespace skyig::atmosphere {
 

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "physics/atmosphere/model.h"
-#include "physics/atmosphere/precompute_control.h"
+#include "physics/atmosphere/precompute/precompute_control.h"
 
 namespace skyig::atmosphere {
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "physics/atmosphere/precompute.h"
+#include "physics/atmosphere/precompute/precompute.h"
 #include "physics/spectrum/spectrum.h"
 
 namespace skyig::atmosphere {

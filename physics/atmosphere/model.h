@@ -16,7 +16,7 @@
 #include <optional>
 #include <vector>
 
-#include "physics/atmosphere/precompute.h"
+#include "physics/atmosphere/precompute/precompute.h"
 #include "physics/spectrum/spectrum.h"
 
 namespace skyig::atmosphere {

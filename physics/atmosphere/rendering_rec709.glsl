@@ -1,6 +1,6 @@
 // Sky radiance from tables already converted to linear Rec.709 (cd/m^2 per unit phase
 // function): the sum over all wavelength groups of each group's C* and C_M times the 3 x 4
-// block of the spectral-to-Rec.709 matrix (physics/atmosphere/rec709_tables.h). Exact for the
+// block of the spectral-to-Rec.709 matrix (physics/atmosphere/precompute/rec709_tables.h). Exact for the
 // sky, because both phase functions are the same at every wavelength (paper eq. 2 and 4 with
 // a grey g), so phase and colour conversion commute; one table pair for any number of
 // wavelengths, which is what keeps the GPU tables within budget.
@@ -27,7 +27,7 @@ vec3 skyRec709(IN(AtmosphereParameters) atm, IN(sampler3D) scattering_rec709,
   return vec3(rgb.x, rgb.y, rgb.z);
 }
 
-// ---- The renderer's packed tables (physics/atmosphere/rec709_tables.h, PackedRec709Tables) ----
+// ---- The renderer's packed tables (physics/atmosphere/precompute/rec709_tables.h, PackedRec709Tables) ----
 // scattering_packed: C*.rgb and C_M.b (alpha); single_mie_rg: C_M.rg; both in Rec.709 times
 // REC709_TABLE_SCALE (half floats). transmittance_xyz: the optical depth tau_c = -ln T_c of the
 // sun-weighted CIE XYZ transmittance T_c = sum_i w_c(i) E_sun(i) T(i) / sum_i w_c(i) E_sun(i)

@@ -2,7 +2,7 @@
 
 #include "ephemeris/night_irradiance.h"
 #include "physics/spectrum/spectral_data.h"
-#include "physics/atmosphere/rec709_tables.h"
+#include "physics/atmosphere/precompute/rec709_tables.h"
 #include "physics/spectrum/spectrum.h"
 #include "physics/atmosphere/physical_camera.h"
 #include "physics/common/common_physics.h"

@@ -2,7 +2,7 @@
 // and against the same shader code evaluated in double precision on the CPU.
 #include "physics/analytic/analytic_sky.h"
 #include "physics/atmosphere/conditions.h"
-#include "physics/atmosphere/rec709_tables.h"
+#include "physics/atmosphere/precompute/rec709_tables.h"
 #include "tables/table_cache.h"
 #include "render/passes/sky/physical_sky_pass.h"
 #include "render/gl/gl_context.h"

@@ -17,7 +17,7 @@
 #include "physics/atmosphere/conditions.h"
 #include "tables/parameter_hash.h"
 #include "tables/visibility_blend.h"
-#include "physics/atmosphere/precompute.h"
+#include "physics/atmosphere/precompute/precompute.h"
 #include "tables/updater.h"
 #include "shared_models.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // The atmosphere's parameters as GLSL uniforms, for the sky pass and the GPU precompute alike.
-#include "physics/atmosphere/precompute.h"
+#include "physics/atmosphere/precompute/precompute.h"
 
 #include <glad/gl.h>
 

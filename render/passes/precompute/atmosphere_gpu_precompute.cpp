@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "physics/atmosphere/orders_tail.h"
-#include "physics/atmosphere/precompute.h"
+#include "physics/atmosphere/precompute/orders_tail.h"
+#include "physics/atmosphere/precompute/precompute.h"
 #include "render/gl/egl_context.h"
 #include "render/gl/gl_context.h"
 #include "render/passes/common/atmosphere_uniforms.h"

@@ -1,7 +1,7 @@
 #pragma once
 // The precomputation of the physical atmosphere on the GPU (Bruneton & Neyret 2008, algorithm
 // 4.1) with the compute passes of render/passes/precompute/precompute_*.comp: the same steps as the
-// CPU reference (physics/atmosphere/precompute.cpp), in float, for every group of four
+// CPU reference (physics/atmosphere/precompute/precompute.cpp), in float, for every group of four
 // wavelengths of a ModelConfig. The tables are read back into GroupTables, so the result is an
 // ordinary AtmosphereModel (cache, probe and renderer take it unchanged).
 #include <functional>
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "physics/atmosphere/model.h"
-#include "physics/atmosphere/precompute_control.h"
+#include "physics/atmosphere/precompute/precompute_control.h"
 
 namespace skyig::render {
 

@@ -1,11 +1,11 @@
 #pragma once
 // The GPU side of the physical atmosphere: a model's tables folded into linear Rec.709 at half
-// float (physics/atmosphere/rec709_tables.h; 12.9 MB at the default size) and the sky pass that
+// float (physics/atmosphere/precompute/rec709_tables.h; 12.9 MB at the default size) and the sky pass that
 // renders from them (render/passes/sky/physical_sky.frag). A new model is uploaded a few
 // scattering slices per frame into a second texture set while the current one is drawn, then
 // swapped in: a frame never waits for a whole table set.
 #include "physics/atmosphere/model.h"
-#include "physics/atmosphere/rec709_tables.h"
+#include "physics/atmosphere/precompute/rec709_tables.h"
 #include "render/passes/common/atmosphere_uniforms.h"
 #include "render/gl/gl_program.h"
 #include "render/passes/tone/folded_tone.h"

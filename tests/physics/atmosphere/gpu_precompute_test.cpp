@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "physics/atmosphere/precompute.h"
+#include "physics/atmosphere/precompute/precompute.h"
 #include "shared_models.h"
 
 namespace skyig::atmosphere {

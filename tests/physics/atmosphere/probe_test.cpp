@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "physics/atmosphere/probe.h"
-#include "physics/atmosphere/rec709_tables.h"
+#include "physics/atmosphere/precompute/rec709_tables.h"
 #include "shared_models.h"
 
 namespace skyig::atmosphere {

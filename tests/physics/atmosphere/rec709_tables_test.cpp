@@ -1,4 +1,4 @@
-// The renderer's packed Rec.709 tables (physics/atmosphere/rec709_tables.h) against the
+// The renderer's packed Rec.709 tables (physics/atmosphere/precompute/rec709_tables.h) against the
 // spectral CPU model: the folded sky is exact up to half-float rounding; light that crosses
 // the air is attenuated by a sun-weighted XYZ transmittance, exact for the sun's own spectrum
 // and an approximation for the ground's (bounded here, figures in docs/atmosphere.md).
@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "physics/atmosphere/rec709_tables.h"
+#include "physics/atmosphere/precompute/rec709_tables.h"
 #include "shared_models.h"
 #include "physics/common/units.h"
 

@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "reference_integrator.h"
-#include "physics/atmosphere/precompute.h"
+#include "physics/atmosphere/precompute/precompute.h"
 
 namespace skyig::atmosphere {
 namespace {

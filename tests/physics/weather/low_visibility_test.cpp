@@ -14,7 +14,7 @@
 
 #include "physics/atmosphere/conditions.h"
 #include "physics/atmosphere/extinction_profile.h"
-#include "physics/atmosphere/rec709_tables.h"
+#include "physics/atmosphere/precompute/rec709_tables.h"
 #include "physics/common/units.h"
 #include "sky/fog_state.h"
 #include "tests/physics/atmosphere/shared_models.h"

@@ -12,7 +12,7 @@
 #include <glm/vec4.hpp>
 
 #include "physics/atmosphere/atmosphere_physics.h"
-#include "physics/atmosphere/tables.h"
+#include "physics/atmosphere/precompute/tables.h"
 
 namespace skyig::atmosphere {
 

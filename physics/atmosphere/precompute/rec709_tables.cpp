@@ -1,4 +1,4 @@
-#include "physics/atmosphere/rec709_tables.h"
+#include "physics/atmosphere/precompute/rec709_tables.h"
 
 #include <glm/gtc/packing.hpp>
 

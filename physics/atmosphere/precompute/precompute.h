@@ -7,8 +7,8 @@
 #include <functional>
 
 #include "physics/atmosphere/medium.h"
-#include "physics/atmosphere/precompute_control.h"
-#include "physics/atmosphere/tables.h"
+#include "physics/atmosphere/precompute/precompute_control.h"
+#include "physics/atmosphere/precompute/tables.h"
 #include "physics/atmosphere/atmosphere_physics.h"
 
 namespace skyig::atmosphere {

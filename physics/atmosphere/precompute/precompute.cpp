@@ -1,6 +1,6 @@
-#include "physics/atmosphere/precompute.h"
+#include "physics/atmosphere/precompute/precompute.h"
 
-#include "physics/atmosphere/orders_tail.h"
+#include "physics/atmosphere/precompute/orders_tail.h"
 
 #include <algorithm>
 #include <atomic>

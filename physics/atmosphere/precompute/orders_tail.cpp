@@ -1,4 +1,4 @@
-#include "physics/atmosphere/orders_tail.h"
+#include "physics/atmosphere/precompute/orders_tail.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "physics/atmosphere/tables.h"
+#include "physics/atmosphere/precompute/tables.h"
 
 #include <sstream>
 #include <stdexcept>

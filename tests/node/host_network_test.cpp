@@ -404,6 +404,23 @@ void sendWeather(UdpSocket& host, const sockaddr_in& to, std::uint32_t frame, co
   ASSERT_TRUE(host.sendTo(bytes, to));
 }
 
+// A node's receiver and sky worker on loopback, and the host that sends them Weather Control. The
+// analytic sky: the state carries the host's weather whatever model draws it.
+struct WeatherLink {
+  NodeConfig config = parseNodeConfig("[sky]\nmodel = \"preetham\"\n[[channel]]\nname = \"front\"\n", "weather.toml");
+  NodeStats workerStats;
+  SkyWorker worker{config, nullptr, workerStats};
+  Receiver node;
+  UdpSocket host{{"127.0.0.1", 0}};
+  std::uint32_t frames = 0;
+  // `w` as the next host frame (CIGI 3.3 or 4.0), taken by the node; the sky state built then.
+  std::optional<skyig::sky::SkyState> send(const cigi::WeatherControl& w, int cigiVersion = 3) {
+    sendWeather(host, node.address(), ++frames, w, cigiVersion);
+    if (!node.handled(frames)) return std::nullopt;
+    return worker.step(node.latest.get().get(), Clock::now(), /*force=*/true);
+  }
+};
+
 }  // namespace
 
 // CIGI Weather Control, layer 0 (ground fog), global scope, over loopback: its base, thickness
@@ -411,12 +428,7 @@ void sendWeather(UdpSocket& host, const sockaddr_in& to, std::uint32_t frame, co
 // NaN thickness or a negative band is refused and counted and the layer stays; the host's
 // Weather Enable off removes it.
 TEST(CigiWeatherControl, GroundFogReachesTheSkyStateAndGoesAgain) {
-  // The analytic sky: the state carries the host's weather whatever model draws it.
-  const NodeConfig config = parseNodeConfig("[sky]\nmodel = \"preetham\"\n[[channel]]\nname = \"front\"\n", "fog.toml");
-  NodeStats workerStats;
-  SkyWorker worker(config, nullptr, workerStats);
-  Receiver node;
-  UdpSocket host({"127.0.0.1", 0});
+  WeatherLink link;
   cigi::WeatherControl fog;
   fog.layerId = 0;
   fog.weatherEnable = true;
@@ -424,40 +436,34 @@ TEST(CigiWeatherControl, GroundFogReachesTheSkyStateAndGoesAgain) {
   fog.baseElevationM = 20.0f;
   fog.thicknessM = 180.0f;
   fog.visibilityRangeM = 400.0f;
-  sendWeather(host, node.address(), 1, fog);
-  ASSERT_TRUE(node.handled(1));
-  auto state = worker.step(node.latest.get().get(), Clock::now(), /*force=*/true);
+  auto state = link.send(fog);
   ASSERT_TRUE(state);
   EXPECT_EQ(state->conditions.fog, (skyig::sky::FogSpec{20.0, 200.0, 0.4}));
-  EXPECT_EQ(node.latest.get()->state.visibilityM, HostState{}.visibilityM);  // a layer's, not the global's
+  EXPECT_EQ(link.node.latest.get()->state.visibilityM, HostState{}.visibilityM);  // a layer's, not the global's
 
   cigi::WeatherControl bad = fog;
   bad.thicknessM = std::nanf("");
-  sendWeather(host, node.address(), 2, bad);
-  ASSERT_TRUE(node.handled(2));
-  EXPECT_EQ(node.stats.rejectedValues.load(), 1u);
-  state = worker.step(node.latest.get().get(), Clock::now(), true);
+  state = link.send(bad);
+  ASSERT_TRUE(state);
+  EXPECT_EQ(link.node.stats.rejectedValues.load(), 1u);
   EXPECT_EQ(state->conditions.fog, (skyig::sky::FogSpec{20.0, 200.0, 0.4}));
 
   // Its transition band softens the top; a negative band is refused and counted.
   cigi::WeatherControl banded = fog;
   banded.transitionBandM = 60.0f;
-  sendWeather(host, node.address(), 3, banded);
-  ASSERT_TRUE(node.handled(3));
-  state = worker.step(node.latest.get().get(), Clock::now(), true);
+  state = link.send(banded);
+  ASSERT_TRUE(state);
   EXPECT_EQ(state->conditions.fog.transitionM, 60.0);
   banded.transitionBandM = -5.0f;
-  sendWeather(host, node.address(), 4, banded);
-  ASSERT_TRUE(node.handled(4));
-  EXPECT_EQ(node.stats.rejectedValues.load(), 2u);
-  state = worker.step(node.latest.get().get(), Clock::now(), true);
+  state = link.send(banded);
+  ASSERT_TRUE(state);
+  EXPECT_EQ(link.node.stats.rejectedValues.load(), 2u);
   EXPECT_EQ(state->conditions.fog.transitionM, 60.0);
 
   cigi::WeatherControl off = fog;
   off.weatherEnable = false;
-  sendWeather(host, node.address(), 5, off);
-  ASSERT_TRUE(node.handled(5));
-  state = worker.step(node.latest.get().get(), Clock::now(), true);
+  state = link.send(off);
+  ASSERT_TRUE(state);
   EXPECT_EQ(state->conditions.fog.visibilityKm, 0.0);
 }
 
@@ -466,20 +472,14 @@ TEST(CigiWeatherControl, GroundFogReachesTheSkyStateAndGoesAgain) {
 // sky (4.0) joins it in the one precipitation layer the sky draws, tinting it; a coverage of
 // 150% is refused and counted; Weather Enable off removes each.
 TEST(CigiWeatherControl, PrecipitationLayersReachTheSkyStateIn33And40) {
-  const NodeConfig config = parseNodeConfig("[sky]\nmodel = \"preetham\"\n[[channel]]\nname = \"front\"\n", "rain.toml");
-  NodeStats workerStats;
-  SkyWorker worker(config, nullptr, workerStats);
-  Receiver node;
-  UdpSocket host({"127.0.0.1", 0});
+  WeatherLink link;
   cigi::WeatherControl rain;
   rain.layerId = 4;
   rain.weatherEnable = true;
   rain.severity = 3;
   rain.coveragePct = 100.0f;
   rain.thicknessM = 1500.0f;
-  sendWeather(host, node.address(), 1, rain);
-  ASSERT_TRUE(node.handled(1));
-  auto state = worker.step(node.latest.get().get(), Clock::now(), /*force=*/true);
+  auto state = link.send(rain);
   ASSERT_TRUE(state);
   const skyig::sky::FogSpec heavyRain = state->conditions.precipitation;
   EXPECT_NEAR(heavyRain.visibilityKm, skyig::weather::rainVisibilityKm(10.0), 1e-9);
@@ -492,32 +492,30 @@ TEST(CigiWeatherControl, PrecipitationLayersReachTheSkyStateIn33And40) {
   dust.visibilityRangeM = 800.0f;
   dust.coveragePct = 50.0f;
   dust.thicknessM = 1500.0f;
-  sendWeather(host, node.address(), 2, dust, 4);
-  ASSERT_TRUE(node.handled(2));
-  EXPECT_EQ(node.latest.get()->state.cigiMajorVersion, 4);
-  state = worker.step(node.latest.get().get(), Clock::now(), true);
+  state = link.send(dust, 4);
+  ASSERT_TRUE(state);
+  EXPECT_EQ(link.node.latest.get()->state.cigiMajorVersion, 4);
   const skyig::sky::FogSpec both = state->conditions.precipitation;
   EXPECT_NEAR(3.912 / both.visibilityKm, 3.912 / heavyRain.visibilityKm + 3.912 / 1.6, 1e-9);
   EXPECT_LT(both.albedo[2], both.albedo[0]);
 
   cigi::WeatherControl bad = dust;
   bad.coveragePct = 150.0f;
-  sendWeather(host, node.address(), 3, bad, 4);
-  ASSERT_TRUE(node.handled(3));
-  EXPECT_EQ(node.stats.rejectedValues.load(), 1u);
-  EXPECT_EQ(worker.step(node.latest.get().get(), Clock::now(), true)->conditions.precipitation, both);
+  state = link.send(bad, 4);
+  ASSERT_TRUE(state);
+  EXPECT_EQ(link.node.stats.rejectedValues.load(), 1u);
+  EXPECT_EQ(state->conditions.precipitation, both);
 
   cigi::WeatherControl rainOff = rain;
   rainOff.weatherEnable = false;
-  sendWeather(host, node.address(), 4, rainOff);
-  ASSERT_TRUE(node.handled(4));
-  state = worker.step(node.latest.get().get(), Clock::now(), true);
+  state = link.send(rainOff);
+  ASSERT_TRUE(state);
   EXPECT_NEAR(state->conditions.precipitation.visibilityKm, 1.6, 1e-9);  // the dust alone
   cigi::WeatherControl dustOff = dust;
   dustOff.weatherEnable = false;
-  sendWeather(host, node.address(), 5, dustOff, 4);
-  ASSERT_TRUE(node.handled(5));
-  EXPECT_EQ(worker.step(node.latest.get().get(), Clock::now(), true)->conditions.precipitation.visibilityKm, 0.0);
+  state = link.send(dustOff, 4);
+  ASSERT_TRUE(state);
+  EXPECT_EQ(state->conditions.precipitation.visibilityKm, 0.0);
 }
 
 // `skyig host` sends Weather Control (layer 0, global) only when its weather is scripted or a fog

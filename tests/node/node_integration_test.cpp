@@ -144,6 +144,19 @@ class NodeIntegration : public ::testing::Test {
     }
   }
 
+  // A node on `port` flown the path's first 2 s at 30 Hz (`extra`: the host's flags), then
+  // stopped: it ran without error, and its dump follows the path in more than 60 frames.
+  void flyAndCheckTheDump(NodeRun& node, std::uint16_t port, const std::string& extra = "") {
+    ASSERT_TRUE(node.waitUntilRendering());
+    fly(port, 2.0, extra);
+    ASSERT_TRUE(waitForFrames(node.stats.frames, 3));
+    node.stop();
+    ASSERT_TRUE(node.error.empty()) << node.error;
+    int withHost = 0;
+    expectDumpFollowsPath(readStateDump(dir_ / "dump.jsonl"), withHost);
+    EXPECT_GT(withHost, 60);
+  }
+
   fs::path dir_;
 };
 
@@ -152,14 +165,7 @@ class NodeIntegration : public ::testing::Test {
 TEST_F(NodeIntegration, HostToHeadlessNodeDumpsTheFlownPath) {
   const std::uint16_t port = freeLoopbackPort();
   NodeRun node(smallNode(port, dir_ / "dump.jsonl"));
-  ASSERT_TRUE(node.waitUntilRendering());
-  fly(port, 2.0);
-  ASSERT_TRUE(waitForFrames(node.stats.frames, 3));
-  node.stop();
-  ASSERT_TRUE(node.error.empty()) << node.error;
-  int withHost = 0;
-  expectDumpFollowsPath(readStateDump(dir_ / "dump.jsonl"), withHost);
-  EXPECT_GT(withHost, 60);
+  flyAndCheckTheDump(node, port);
   EXPECT_EQ(node.stats.malformedDatagrams.load(), 0u);
   EXPECT_EQ(node.stats.datagrams.load(), 61u);  // 2 s at 30 Hz, frames 0..60
   // The host's date and time reached the sky: the dump's clock runs from 19:00:00.
@@ -170,14 +176,7 @@ TEST_F(NodeIntegration, HostToHeadlessNodeDumpsTheFlownPath) {
 TEST_F(NodeIntegration, LossAndReorderingDoNotBreakIt) {
   const std::uint16_t port = freeLoopbackPort();
   NodeRun node(smallNode(port, dir_ / "dump.jsonl"));
-  ASSERT_TRUE(node.waitUntilRendering());
-  fly(port, 2.0, "--drop-every 10 --swap-pairs");
-  ASSERT_TRUE(waitForFrames(node.stats.frames, 3));
-  node.stop();
-  ASSERT_TRUE(node.error.empty()) << node.error;
-  int withHost = 0;
-  expectDumpFollowsPath(readStateDump(dir_ / "dump.jsonl"), withHost);
-  EXPECT_GT(withHost, 60);
+  flyAndCheckTheDump(node, port, "--drop-every 10 --swap-pairs");
   EXPECT_GT(node.stats.staleMessages.load(), 10u);  // the late half of each swapped pair
 }
 

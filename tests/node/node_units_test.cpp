@@ -26,6 +26,24 @@ using namespace std::chrono_literals;
 
 namespace {
 double secondsOf(const std::optional<skyig::ephemeris::UtcTime>& t) { return t ? t->secondsOfDay : -1.0; }
+
+// An IG Control of host frame `frame` stamped `ticks` (10 us each).
+cigi::IgControl igControl(std::uint32_t frame, std::uint32_t ticks) {
+  cigi::IgControl ig;
+  ig.hostFrameNumber = frame;
+  ig.timestamp = ticks;
+  ig.timestampValid = true;
+  return ig;
+}
+
+// A Celestial Sphere Control of midsummer's day 2026 at hour:minute.
+cigi::CelestialSphereControl midsummerAt(int hour, int minute) {
+  cigi::CelestialSphereControl cs;
+  cs.date = *cigi::composeDate({2026, 6, 21});
+  cs.hour = static_cast<std::uint8_t>(hour);
+  cs.minute = static_cast<std::uint8_t>(minute);
+  return cs;
+}
 }  // namespace
 
 // Hour and minute only: the clock starts at the stated minute, runs smoothly, never leaves
@@ -112,15 +130,8 @@ TEST(CigiState, TwoNodesCountTheHostsTimeToTheBit) {
   const Clock::time_point bootA{std::chrono::seconds(37)}, bootB{std::chrono::seconds(400000)};
   for (std::uint32_t k = 0; k < 300; ++k) {
     cigi::DecodedMessage m;
-    cigi::IgControl ig;
-    ig.hostFrameNumber = k;
-    ig.timestamp = k * 3333 + (k % 3 == 0 ? 1 : 0);  // 30 Hz, a jittering host clock
-    ig.timestampValid = true;
-    cigi::CelestialSphereControl cs;
-    cs.date = *cigi::composeDate({2026, 6, 21});
-    cs.hour = 19;
-    cs.minute = static_cast<std::uint8_t>(30 + k / 1800);
-    m.packets = {ig, cs};
+    m.packets = {igControl(k, k * 3333 + (k % 3 == 0 ? 1 : 0)),  // 30 Hz, a jittering host clock
+                 midsummerAt(19, static_cast<int>(30 + k / 1800))};
     const auto delay = std::chrono::microseconds(k * 33333 + (k * 7919) % 2000);  // network jitter
     a.apply(m, bootA + delay);
     b.apply(m, bootB + delay + std::chrono::microseconds(k % 5 * 100));
@@ -136,14 +147,8 @@ TEST(CigiState, TwoNodesCountTheHostsTimeToTheBit) {
 TEST(CigiState, CelestialDateAndViewsApply) {
   CigiStateTracker t;
   cigi::DecodedMessage m;
-  cigi::IgControl ig;
-  ig.hostFrameNumber = 5;
-  ig.timestamp = 100000;  // 1 s
-  ig.timestampValid = true;
-  cigi::CelestialSphereControl cs;
-  cs.date = *cigi::composeDate({2026, 6, 21});
-  cs.hour = 19;
-  cs.minute = 30;
+  const cigi::IgControl ig = igControl(5, 100000);  // 1 s
+  cigi::CelestialSphereControl cs = midsummerAt(19, 30);
   cigi::ViewDefinition vd;
   vd.viewId = 1;
   vd.leftEnable = vd.rightEnable = true;
@@ -218,21 +223,13 @@ TEST(CigiState, OneEdgeMovedPastTheOtherIsRefused) {
 TEST(CigiState, AMessageWithABadValueIsRefusedWhole) {
   CigiStateTracker t;
   auto message = [](std::uint32_t frame, std::uint32_t ticks, double latitude, double rollDeg) {
-    cigi::IgControl ig;
-    ig.hostFrameNumber = frame;
-    ig.timestamp = ticks;
-    ig.timestampValid = true;
     cigi::EntityControl e;
     e.latitudeDeg = latitude;
     e.longitudeDeg = 11.0;
     e.altitudeM = 600.0;
     e.rollDeg = static_cast<float>(rollDeg);
-    cigi::CelestialSphereControl cs;
-    cs.date = *cigi::composeDate({2026, 6, 21});
-    cs.hour = 19;
-    cs.minute = 30;
     cigi::DecodedMessage m;
-    m.packets = {ig, e, cs};
+    m.packets = {igControl(frame, ticks), e, midsummerAt(19, 30)};
     return m;
   };
   const auto t0 = Clock::now();
@@ -317,14 +314,8 @@ TEST(HostWeather, HoldsEachStepAndNamesBadLines) {
 // Control timestamps (at their 4.0 offset), and the node will answer in 4.0. The same
 // statement in 3.3 gives the minute only.
 TEST(CigiState, Cigi4SecondsAndTimestampSetTheClockAndTheReplyVersion) {
-  cigi::IgControl ig;
-  ig.hostFrameNumber = 7;
-  ig.timestamp = 100000;  // 1 s
-  ig.timestampValid = true;
-  cigi::CelestialSphereControl cs;
-  cs.date = *cigi::composeDate({2026, 6, 21});
-  cs.hour = 19;
-  cs.minute = 30;
+  cigi::IgControl ig = igControl(7, 100000);  // 1 s
+  cigi::CelestialSphereControl cs = midsummerAt(19, 30);
   cs.seconds = 42.25f;
   auto through = [](bool v4, const std::vector<cigi::Packet>& packets) {  // the bytes as sent, decoded
     std::vector<std::uint8_t> bytes;

@@ -8,6 +8,7 @@
 #include "render/gl/gl_context.h"
 #include "render/image_io.h"
 #include "render/sky_renderer.h"
+#include "tests/render/shared_renderer_test.h"
 #include "render/texture_readback.h"
 #include "render/passes/night/night_diffuse_pass.h"
 #include "render/passes/tone/tone_pass.h"
@@ -41,16 +42,8 @@ namespace {
 using skyig::kDeg;
 constexpr int kW = 160, kH = 120;
 
-class GlRender : public ::testing::Test {
+class GlRender : public skyig::render::testing::SharedRendererTest {
  protected:
-  static void SetUpTestSuite() {
-    context_ = createHeadlessContext().release();
-    renderer_ = new SkyRenderer();
-  }
-  static void TearDownTestSuite() {
-    delete renderer_;
-    delete context_;
-  }
 
   static ChannelConfig channel(double pitchUp = 0.0, Frustum f = Frustum{40, 40, 30, 30}) {
     ChannelConfig c;
@@ -95,8 +88,6 @@ class GlRender : public ::testing::Test {
     return {p[0], p[1], p[2]};
   }
 
-  static inline GlContext* context_ = nullptr;
-  static inline SkyRenderer* renderer_ = nullptr;
 };
 
 double blueness(const glm::dvec3& c) { return c.b / (c.r + c.g + c.b); }

@@ -5,6 +5,7 @@
 #include "render/gl/render_target.h"
 #include "render/passes/goggle/goggle_pass.h"
 #include "render/sky_renderer.h"
+#include "tests/render/shared_renderer_test.h"
 #include "render/glsl/uniforms.h"
 #include "physics/goggle/goggle_physics.h"
 #include "sky/night_probe.h"
@@ -276,19 +277,7 @@ SkyState alpsMoonless(double extraSeconds = 0.0) {
 
 }  // namespace
 
-class GoggleChannelGl : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    context_ = createHeadlessContext().release();
-    renderer_ = new SkyRenderer();
-  }
-  static void TearDownTestSuite() {
-    delete renderer_;
-    delete context_;
-  }
-  static inline GlContext* context_ = nullptr;
-  static inline SkyRenderer* renderer_ = nullptr;
-};
+class GoggleChannelGl : public skyig::render::testing::SharedRendererTest {};
 
 // One model for the eye and the goggle: a goggle channel's image is, pixel by pixel, the NVIS
 // radiance `skyig probe` reports for the same view (the sum of its lights but the stars, which

@@ -6,6 +6,7 @@
 #include "calibration/png_map.h"
 #include "calibration/region_camera.h"
 
+#include <glm/glm.hpp>
 #include <tinyxml2.h>
 
 #include <cmath>
@@ -198,6 +199,54 @@ MpcdiDescription readMpcdi(const std::string& path) {
   return parseMpcdiXml(archive.xml(), archive.describe(archive.xmlName()));
 }
 
+namespace {
+
+// What a warp's nodes show of the region's image. NaN marks a node that shows nothing, by
+// design; a warp none of whose nodes lands on the image (NaN, infinite or 3e38 everywhere), or
+// all of whose nodes land on one point (the floats of a PFM read in the wrong byte order are
+// ~1e-40 or ~1e30), is a damaged file, not a calibration. A node within half an image of it
+// counts (a blend's margin).
+struct WarpCoverage {
+  std::size_t onImage = 0;
+  glm::dvec2 low{std::numeric_limits<double>::infinity()}, high{-std::numeric_limits<double>::infinity()};
+  void add(const glm::dvec2& uv) {
+    if (uv.x < -0.5 || uv.x > 1.5 || uv.y < -0.5 || uv.y > 1.5) return;
+    ++onImage;
+    low = glm::min(low, uv);
+    high = glm::max(high, uv);
+  }
+  void check(const std::string& name, std::size_t nodes, std::vector<std::string>& warnings) const {
+    if (onImage == 0)
+      throw CalibrationError(name + ": none of the warp's " + std::to_string(nodes) +
+                             " nodes lands on the image (NaN, infinite or far outside at every node): a damaged file");
+    if (onImage > 1 && glm::all(glm::lessThan(high - low, glm::dvec2(1e-6))))
+      throw CalibrationError(name + ": every node of the warp lands on one point (" + std::to_string(low.x) + ", " +
+                             std::to_string(low.y) + "): a damaged file, or floats read in the wrong byte order "
+                             "(a PFM's negative scale means little-endian)");
+    if (2 * onImage < nodes)
+      warnings.push_back(name + ": " + std::to_string(nodes - onImage) + " of the warp's " + std::to_string(nodes) +
+                         " nodes show nothing of the image");
+  }
+};
+
+// A warp's coordinates are image fractions or metres: a file most of whose non-zero values lie
+// beyond 1e-10..1e10 in magnitude holds no warp. Floats read in the wrong byte order look so:
+// a swapped float's exponent comes from the original's low mantissa bits, spread over the range.
+void checkMagnitudes(const FloatMap& raw, const std::string& name) {
+  std::size_t nonZero = 0, implausible = 0;
+  for (const float v : raw.values) {
+    if (!std::isfinite(v) || v == 0.0f) continue;
+    ++nonZero;
+    if (std::abs(v) < 1e-10f || std::abs(v) > 1e10f) ++implausible;
+  }
+  if (2 * implausible > nonZero)
+    throw CalibrationError(name + ": " + std::to_string(implausible) + " of its " + std::to_string(nonZero) +
+                           " non-zero values lie outside 1e-10..1e10 in magnitude: not a warp (floats in the wrong "
+                           "byte order? a PFM's negative scale means little-endian)");
+}
+
+}  // namespace
+
 ProjectorCalibration readMpcdiRegion(const MpcdiArchive& archive, const MpcdiDescription& d, const std::string& id,
                                      WarpValues values) {
   const MpcdiRegion* region = d.find(id);
@@ -215,24 +264,32 @@ ProjectorCalibration readMpcdiRegion(const MpcdiArchive& archive, const MpcdiDes
   p.camera = region->camera;
   p.cameraGiven = region->hasFrustum;
 
+  // What a region can need, checked before a file is read or a map decoded: a hostile file (a
+  // PNG whose header says 60000 x 60000, a zip member that inflates to gigabytes, a padded PFM)
+  // is refused by its size, not after the memory is gone.
+  const std::uint64_t pixels = static_cast<std::uint64_t>(p.width) * static_cast<std::uint64_t>(p.height);
+  const std::uint64_t maxPfmBytes = 4096 + pixels * 3 * sizeof(float);
+  const std::uint64_t maxPngBytes = (std::uint64_t{1} << 20) + pixels * 8 + static_cast<std::uint64_t>(p.height);
   const std::string warpName = archive.describe(region->warp.path);
-  const FloatMap raw = readPfm(archive.read(region->warp.path), warpName);
+  const FloatMap raw = readPfm(archive.read(region->warp.path, maxPfmBytes, "a warp of region \"" + id + "\""), warpName);
   if (raw.width < 2 || raw.height < 2 || raw.width > p.width || raw.height > p.height)
     throw CalibrationError(warpName + ": a " + std::to_string(raw.width) + "x" + std::to_string(raw.height) +
                            " warp does not fit region \"" + id + "\" of " + std::to_string(p.width) + "x" +
                            std::to_string(p.height) + " pixels (at least 2x2, at most the region's resolution)");
+  checkMagnitudes(raw, warpName);
   const bool points = d.profile == "a3" || d.profile == "sl";
   if (points && raw.channels != 3)
     throw CalibrationError(warpName + ": profile " + d.profile + " needs 3D points (a PF file of 3 channels), this has 1");
   FloatMap distortion;
   if (!region->distortion.path.empty()) {
     const std::string name = archive.describe(region->distortion.path);
-    distortion = readPfm(archive.read(region->distortion.path), name);
+    distortion = readPfm(archive.read(region->distortion.path, maxPfmBytes, "a distortion map of region \"" + id + "\""), name);
     if (distortion.width != raw.width || distortion.height != raw.height || distortion.channels != 3)
       throw CalibrationError(name + ": the distortion map must match the warp (" + std::to_string(raw.width) + "x" +
                              std::to_string(raw.height) + ", PF), it is " + std::to_string(distortion.width) + "x" +
                              std::to_string(distortion.height) + "x" + std::to_string(distortion.channels));
   }
+  WarpCoverage shown;
   p.warp.width = raw.width;
   p.warp.height = raw.height;
   p.warp.channels = 2;
@@ -261,12 +318,15 @@ ProjectorCalibration readMpcdiRegion(const MpcdiArchive& archive, const MpcdiDes
       if (!(std::abs(uv.x) <= 1e6 && std::abs(uv.y) <= 1e6)) continue;
       p.warp.at(x, y, 0) = static_cast<float>(uv.x);
       p.warp.at(x, y, 1) = static_cast<float>(uv.y);
+      shown.add(uv);
     }
+  shown.check(warpName, static_cast<std::size_t>(raw.width) * static_cast<std::size_t>(raw.height), p.warnings);
 
   const auto blendMap = [&](const MpcdiFileRef& ref, const char* what) {
     if (ref.path.empty()) return FloatMap{};
     const std::string name = archive.describe(ref.path);
-    FloatMap m = readPngMap(archive.read(ref.path), name);
+    FloatMap m = readPngMap(archive.read(ref.path, maxPngBytes, std::string("a 16-bit RGBA ") + what + " of region \"" + id + "\""),
+                            name, p.width, p.height);
     if (m.width < 2 || m.height < 2 || m.width > p.width || m.height > p.height)
       throw CalibrationError(name + ": a " + std::to_string(m.width) + "x" + std::to_string(m.height) + " " + what +
                              " does not fit region \"" + id + "\" of " + std::to_string(p.width) + "x" +

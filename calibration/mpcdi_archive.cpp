@@ -88,24 +88,31 @@ std::string MpcdiArchive::describe(const std::string& member) const {
   return zip_ ? path_ + ":" + member : (fs::path(folder_) / member).string();
 }
 
-std::vector<std::uint8_t> MpcdiArchive::read(const std::string& member) const {
+std::vector<std::uint8_t> MpcdiArchive::read(const std::string& member, std::uint64_t maxBytes,
+                                             const std::string& what) const {
   if (member.empty()) throw CalibrationError(path_ + ": an empty file name");
   // The XML names files inside the calibration: an absolute path or one that climbs out of it
   // would read whatever file the name points at.
   const fs::path relative(member);
   if (relative.is_absolute() || std::any_of(relative.begin(), relative.end(), [](const fs::path& part) { return part == ".."; }))
     throw CalibrationError(describe(member) + ": a path outside the calibration (named by " + xmlName_ + ")");
+  const auto tooLarge = [&](std::uint64_t size) {
+    return CalibrationError(describe(member) + ": " + std::to_string(size) + " bytes, more than the " +
+                            std::to_string(maxBytes) + " " + what + " can need");
+  };
   if (!zip_) {
     std::error_code ec;
     const fs::path p = fs::path(folder_) / member;
     if (!fs::is_regular_file(p, ec)) throw CalibrationError(describe(member) + ": no such file (named by " + xmlName_ + ")");
+    const std::uintmax_t size = fs::file_size(p, ec);
+    if (!ec && size > maxBytes) throw tooLarge(size);
     return slurp(p);
   }
   const auto z = openZip(path_);
   zip_stat_t st;
   if (zip_stat(z.get(), member.c_str(), ZIP_FL_NOCASE, &st) != 0 || !(st.valid & ZIP_STAT_SIZE))
     throw CalibrationError(describe(member) + ": not in the archive (named by " + xmlName_ + ")");
-  if (st.size > (std::uint64_t{1} << 31)) throw CalibrationError(describe(member) + ": larger than 2 GiB");
+  if (st.size > maxBytes) throw tooLarge(st.size);
   zip_file_t* f = zip_fopen(z.get(), member.c_str(), ZIP_FL_NOCASE);
   if (!f) throw CalibrationError(describe(member) + ": cannot be opened in the archive");
   std::vector<std::uint8_t> bytes(static_cast<std::size_t>(st.size));

@@ -9,6 +9,9 @@
 
 namespace skyig::calibration {
 
+// The largest mpcdi.xml read: the XML is kilobytes a region, so 16 MiB is thousands of regions.
+inline constexpr std::uint64_t kMaxMpcdiXmlBytes = std::uint64_t{16} << 20;
+
 class MpcdiArchive {
  public:
   // `path`: a zip archive, a folder holding mpcdi.xml, or an XML file (its files are found in
@@ -19,11 +22,13 @@ class MpcdiArchive {
   // "dome.mpcdi:r1/warp.pfm", for messages.
   std::string describe(const std::string& member) const;
   // The XML's bytes.
-  std::vector<std::uint8_t> xml() const { return read(xmlName_); }
+  std::vector<std::uint8_t> xml() const { return read(xmlName_, kMaxMpcdiXmlBytes, "an MPCDI XML"); }
   const std::string& xmlName() const { return xmlName_; }
   // A member named by the XML (a path relative to the archive's root or the XML's folder).
-  // Throws CalibrationError naming the archive and the member when it is not there.
-  std::vector<std::uint8_t> read(const std::string& member) const;
+  // Throws CalibrationError naming the archive and the member when it is not there, or when it
+  // holds more than maxBytes, the most `what` can need (checked before a byte is read: a file by
+  // its size, a zip member by the size the archive states, and no more than that is inflated).
+  std::vector<std::uint8_t> read(const std::string& member, std::uint64_t maxBytes, const std::string& what) const;
 
  private:
   std::string path_;

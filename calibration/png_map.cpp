@@ -39,8 +39,21 @@ void writeBytes(png_structp png, png_bytep data, png_size_t count) {
 
 }  // namespace
 
-FloatMap readPngMap(const std::vector<std::uint8_t>& bytes, const std::string& name) {
+FloatMap readPngMap(const std::vector<std::uint8_t>& bytes, const std::string& name, int maxWidth, int maxHeight) {
   if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0) throw CalibrationError(name + ": not a PNG file");
+  // The size in the header (the first chunk, IHDR: width and height big-endian at bytes 16 and
+  // 20), before libpng allocates anything for it.
+  if (bytes.size() >= 24 && std::memcmp(bytes.data() + 12, "IHDR", 4) == 0) {
+    const auto be32 = [&](std::size_t at) {
+      return std::uint64_t{bytes[at]} << 24 | std::uint64_t{bytes[at + 1]} << 16 | std::uint64_t{bytes[at + 2]} << 8 |
+             std::uint64_t{bytes[at + 3]};
+    };
+    const std::uint64_t w = be32(16), h = be32(20);
+    if (w > static_cast<std::uint64_t>(maxWidth) || h > static_cast<std::uint64_t>(maxHeight))
+      throw CalibrationError(name + ": its header says " + std::to_string(w) + "x" + std::to_string(h) +
+                             " pixels, larger than the " + std::to_string(maxWidth) + "x" + std::to_string(maxHeight) +
+                             " it can cover (nothing decoded)");
+  }
   std::string error;
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &error, fail, warn);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
@@ -57,6 +70,9 @@ FloatMap readPngMap(const std::vector<std::uint8_t>& bytes, const std::string& n
     throw CalibrationError(name + ": PNG: " + error);
   }
   png_set_read_fn(png, &reader, readBytes);
+  // libpng refuses a larger header itself, and keeps what ancillary chunks may allocate small.
+  png_set_user_limits(png, static_cast<png_uint_32>(std::max(maxWidth, 1)), static_cast<png_uint_32>(std::max(maxHeight, 1)));
+  png_set_chunk_malloc_max(png, 8u << 20);
   png_read_info(png, info);
   png_set_expand(png);  // palette and low-bit grey to 8 bits
   png_set_strip_alpha(png);

@@ -10,8 +10,10 @@
 
 namespace skyig::calibration {
 
-// Throws CalibrationError naming `name` when the bytes are not a PNG libpng can decode.
-FloatMap readPngMap(const std::vector<std::uint8_t>& bytes, const std::string& name);
+// Throws CalibrationError naming `name` when the bytes are not a PNG libpng can decode, or when
+// its header says it is wider than maxWidth or taller than maxHeight (checked before a pixel is
+// decoded or allocated).
+FloatMap readPngMap(const std::vector<std::uint8_t>& bytes, const std::string& name, int maxWidth, int maxHeight);
 
 // Values clamped to [0, 1], 16-bit grey PNG bytes.
 std::vector<std::uint8_t> writePngMap16(const FloatMap& map);

@@ -107,7 +107,7 @@ TEST(MpcdiWriter, TheXmlNamesEveryRegionWithItsFrustumAndFiles) {
   }
   EXPECT_EQ(filesets, 5);
   // The alpha PNG holds alpha^(1/2.2): a half-lit pixel is stored brighter than half.
-  const FloatMap stored = readPngMap(toBytes(zipEntry(bytes, "left_alpha.png")), "left_alpha.png");
+  const FloatMap stored = readPngMap(toBytes(zipEntry(bytes, "left_alpha.png")), "left_alpha.png", 1 << 14, 1 << 14);
   const FloatMap& alpha = cals[0].alpha;
   bool sawBlend = false;
   for (std::size_t k = 0; k < alpha.values.size(); ++k)

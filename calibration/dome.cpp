@@ -21,42 +21,6 @@ std::string projectorName(const DomeProjector& p, std::size_t index) {
   return p.name.empty() ? "projector " + std::to_string(index + 1) : "projector '" + p.name + "'";
 }
 
-// The region camera: looking along the mean direction of the footprint samples, rolled like the
-// projector, its half-angles the samples' extremes plus the margin.
-RegionCamera coverFootprint(const std::vector<glm::dvec3>& directions, const glm::dvec3& projectorRight,
-                            double marginDeg, const std::string& name) {
-  glm::dvec3 sum(0.0);
-  for (const auto& d : directions) sum += d;
-  const glm::dvec3 forward = glm::normalize(sum);
-  glm::dvec3 right = projectorRight - glm::dot(projectorRight, forward) * forward;
-  if (glm::length(right) < 1e-6) right = glm::dvec3(0.0, 1.0, 0.0) - forward.y * forward;
-  right = glm::normalize(right);
-  const glm::dvec3 down = glm::cross(forward, right);
-  // R = Rz(yaw) Ry(pitch) Rx(roll) (sky/camera.cpp), columns forward, right, down.
-  RegionCamera camera;
-  camera.offset.pitchDeg = std::asin(std::clamp(-forward.z, -1.0, 1.0)) / kDeg;
-  camera.offset.yawDeg = std::atan2(forward.y, forward.x) / kDeg;
-  camera.offset.rollDeg = std::atan2(right.z, down.z) / kDeg;
-  // Measure the extremes in the frame the sky's camera math builds from those angles.
-  const glm::dmat3 bodyToEye = glm::transpose(eyeToBody(camera.offset));
-  double left = 0.0, rightDeg = 0.0, up = 0.0, downDeg = 0.0;
-  for (const auto& d : directions) {
-    const glm::dvec3 c = bodyToEye * d;
-    if (c.x <= 0.0) throw CalibrationError(name + ": its footprint is wider than 180 degrees as seen from the eye");
-    const double h = std::atan2(c.y, c.x) / kDeg, v = std::atan2(-c.z, c.x) / kDeg;
-    left = std::max(left, -h);
-    rightDeg = std::max(rightDeg, h);
-    up = std::max(up, v);
-    downDeg = std::max(downDeg, -v);
-  }
-  camera.frustum = {left + marginDeg, rightDeg + marginDeg, downDeg + marginDeg, up + marginDeg};
-  for (double a : {camera.frustum.leftDeg, camera.frustum.rightDeg, camera.frustum.downDeg, camera.frustum.upDeg})
-    if (!(a > 0.0 && a <= 89.0))
-      throw CalibrationError(name + ": its footprint needs a frustum half-angle of " + std::to_string(a) +
-                             " degrees as seen from the eye; a region camera covers at most 89");
-  return camera;
-}
-
 }  // namespace
 
 int warpGridSamples(int pixels, int step) { return pixels <= 1 ? 1 : (pixels - 1 + step - 1) / step + 1; }
@@ -306,7 +270,7 @@ std::vector<ProjectorCalibration> generateDome(const Dome& dome, DomeSummary* su
     const WarpGrid grid = traceWarpGrid(geometry, p, pr, dome.warpStep);
     const std::vector<glm::dvec3> lit = footprint(geometry, p, pr, grid);
     if (lit.empty()) throw CalibrationError(projectorName(pr, p) + ": none of its pixels meets the dome");
-    cal.camera = coverFootprint(lit, glm::normalize(geometry.ndcToBody(p)[0]), dome.marginDeg, projectorName(pr, p));
+    cal.camera = cameraCovering(lit, glm::normalize(geometry.ndcToBody(p)[0]), dome.marginDeg, projectorName(pr, p));
     cal.warp = warpOf(cal.camera, grid);
     cal.alpha = {pr.width, pr.height, 1, std::vector<float>(static_cast<std::size_t>(pr.width) * static_cast<std::size_t>(pr.height), 0.0f)};
     lightCount[p].assign(cal.alpha.values.size(), 0);

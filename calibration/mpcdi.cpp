@@ -117,6 +117,31 @@ std::string MpcdiDescription::regionIds() const {
   return ids.empty() ? "none" : ids;
 }
 
+namespace {
+
+// A <fileset>'s files and the alpha map's embedded gamma, into its region.
+void readFileSet(const Where& ws, const XMLElement* s, MpcdiRegion& region, std::vector<std::string>& warnings) {
+  region.warp = fileRef(ws, s, "geometryWarpFile");
+  region.alpha = fileRef(ws, s, "alphaMap");
+  region.beta = fileRef(ws, s, "betaMap");
+  region.distortion = fileRef(ws, s, "distortionMap");
+  const XMLElement* a = s->FirstChildElement("alphaMap");
+  if (!a) return;
+  region.alphaGammaEmbedded = number(ws.in(a), a, "gammaEmbedded", false, 1.0);
+  if (region.alphaGammaEmbedded == 0.0) {
+    // The MPCDI SDK writes 0 for a member never set, and its own reader ignores the value.
+    const XMLElement* g = a->FirstChildElement("gammaEmbedded");
+    warnings.push_back(ws.in(a).file + ":" + std::to_string(g->GetLineNum()) + ": region \"" + region.id +
+                       "\": <gammaEmbedded> 0 read as not given (no gamma in the alpha map)");
+    region.alphaGammaEmbedded = 1.0;
+  }
+  if (region.alphaGammaEmbedded < 0.1 || region.alphaGammaEmbedded > 10.0)
+    fail(ws.in(a), a->FirstChildElement("gammaEmbedded"),
+         "<gammaEmbedded> " + std::to_string(region.alphaGammaEmbedded) + " is not a gamma from 0.1 to 10");
+}
+
+}  // namespace
+
 MpcdiDescription parseMpcdiXml(const std::vector<std::uint8_t>& xml, const std::string& name) {
   tinyxml2::XMLDocument doc;
   if (doc.Parse(reinterpret_cast<const char*>(xml.data()), xml.size()) != tinyxml2::XML_SUCCESS)
@@ -130,6 +155,9 @@ MpcdiDescription parseMpcdiXml(const std::vector<std::uint8_t>& xml, const std::
   if (d.profile != "2d" && d.profile != "3d" && d.profile != "a3" && d.profile != "sl")
     fail({name, ""}, root, "<MPCDI profile=\"" + d.profile + "\">: expected the profile 2d, 3d, a3 or sl");
   const bool needsFrustum = d.profile != "2d";
+  // a3 and sl warps hold the screen's points: without a frustum the camera that covers them is
+  // made from them (readMpcdiRegion), as the reference library's a3 example needs.
+  const bool pointsProfile = d.profile == "a3" || d.profile == "sl";
   const XMLElement* display = root->FirstChildElement("display");
   if (!display) fail(top, root, "<display> missing");
   for (const XMLElement* b = display->FirstChildElement("buffer"); b; b = b->NextSiblingElement("buffer")) {
@@ -144,21 +172,29 @@ MpcdiDescription parseMpcdiXml(const std::vector<std::uint8_t>& xml, const std::
       region.line = r->GetLineNum();
       const Where wr = wb.in(r, "id=\"" + region.id + "\"");
       if (d.find(region.id)) fail(wr, r, "a second region with this id");
-      region.xResolution = resolution(wr, r, "xResolution");
-      region.yResolution = resolution(wr, r, "yResolution");
-      if (const XMLElement* f = r->FirstChildElement("frustum")) {
-        region.camera = readFrustum(wr.in(f), f);
-        region.hasFrustum = true;
-      } else if (needsFrustum) {
-        fail(wr, r, "<frustum> missing: profile " + d.profile + " renders each region through its frustum");
-      }
-      if (const XMLElement* c = r->FirstChildElement("coordinateFrame")) {
-        const Where wc = wr.in(c);
-        region.position = {number(wc, c, "posx", true), number(wc, c, "posy", true), number(wc, c, "posz", true)};
-        region.yawAxis = unitVector(wc, c, "yaw");
-        region.pitchAxis = unitVector(wc, c, "pitch");
-        region.rollAxis = unitVector(wc, c, "roll");
-        region.hasFrame = true;
+      // A region's own values: a problem here is this region's, not its neighbours'.
+      try {
+        region.xResolution = resolution(wr, r, "xResolution");
+        region.yResolution = resolution(wr, r, "yResolution");
+        if (const XMLElement* f = r->FirstChildElement("frustum")) {
+          region.camera = readFrustum(wr.in(f), f);
+          region.hasFrustum = true;
+        } else if (needsFrustum && !pointsProfile) {
+          fail(wr, r, "<frustum> missing: profile " + d.profile + " renders each region through its frustum");
+        } else if (needsFrustum) {
+          d.warnings.push_back(wr.file + ":" + std::to_string(region.line) + ": region \"" + region.id +
+                               "\": no <frustum>: its camera is made to cover the region's points");
+        }
+        if (const XMLElement* c = r->FirstChildElement("coordinateFrame")) {
+          const Where wc = wr.in(c);
+          region.position = {number(wc, c, "posx", true), number(wc, c, "posy", true), number(wc, c, "posz", true)};
+          region.yawAxis = unitVector(wc, c, "yaw");
+          region.pitchAxis = unitVector(wc, c, "pitch");
+          region.rollAxis = unitVector(wc, c, "roll");
+          region.hasFrame = true;
+        }
+      } catch (const CalibrationError& e) {
+        region.error = e.what();
       }
       d.regions.push_back(region);
     }
@@ -172,22 +208,10 @@ MpcdiDescription parseMpcdiXml(const std::vector<std::uint8_t>& xml, const std::
       for (auto& r : d.regions)
         if (regionId && r.id == regionId) region = &r;
       if (!region) fail(ws, s, "names no region of the display (there are: " + d.regionIds() + ")");
-      region->warp = fileRef(ws, s, "geometryWarpFile");
-      region->alpha = fileRef(ws, s, "alphaMap");
-      region->beta = fileRef(ws, s, "betaMap");
-      region->distortion = fileRef(ws, s, "distortionMap");
-      if (const XMLElement* a = s->FirstChildElement("alphaMap")) {
-        region->alphaGammaEmbedded = number(ws.in(a), a, "gammaEmbedded", false, 1.0);
-        if (region->alphaGammaEmbedded == 0.0) {
-          // The MPCDI SDK writes 0 for a member never set, and its own reader ignores the value.
-          const XMLElement* g = a->FirstChildElement("gammaEmbedded");
-          d.warnings.push_back(ws.in(a).file + ":" + std::to_string(g->GetLineNum()) + ": region \"" + region->id +
-                               "\": <gammaEmbedded> 0 read as not given (no gamma in the alpha map)");
-          region->alphaGammaEmbedded = 1.0;
-        }
-        if (region->alphaGammaEmbedded < 0.1 || region->alphaGammaEmbedded > 10.0)
-          fail(ws.in(a), a->FirstChildElement("gammaEmbedded"),
-               "<gammaEmbedded> " + std::to_string(region->alphaGammaEmbedded) + " is not a gamma from 0.1 to 10");
+      try {  // a bad file set refuses its own region only
+        readFileSet(ws, s, *region, d.warnings);
+      } catch (const CalibrationError& e) {
+        if (region->error.empty()) region->error = e.what();
       }
     }
   }
@@ -245,6 +269,26 @@ void checkMagnitudes(const FloatMap& raw, const std::string& name) {
                            "byte order? a PFM's negative scale means little-endian)");
 }
 
+// The camera of an a3 or sl region the file gives no frustum for: it covers the warp's points
+// as the eye sees them, 1 degree of margin, its right along the warp's rows (the projector's
+// raster), as `skyig dome` makes its regions' cameras (cameraCovering).
+template <class BodyPoint>
+RegionCamera cameraOfPoints(const FloatMap& raw, const BodyPoint& bodyPoint, const std::string& name) {
+  std::vector<glm::dvec3> directions;
+  glm::dvec3 along(0.0);
+  for (int y = 0; y < raw.height; ++y)
+    for (int x = 0; x < raw.width; ++x) {
+      const glm::dvec3 b = bodyPoint(x, y);
+      if (!(glm::length(b) > 0.0) || !std::isfinite(glm::length(b))) continue;
+      directions.push_back(glm::normalize(b));
+      if (x + 1 < raw.width) {
+        const glm::dvec3 next = bodyPoint(x + 1, y);
+        if (std::isfinite(glm::length(next))) along += next - b;
+      }
+    }
+  return cameraCovering(directions, along, 1.0, name + " (a region without a <frustum>)");
+}
+
 }  // namespace
 
 ProjectorCalibration readMpcdiRegion(const MpcdiArchive& archive, const MpcdiDescription& d, const std::string& id,
@@ -252,6 +296,7 @@ ProjectorCalibration readMpcdiRegion(const MpcdiArchive& archive, const MpcdiDes
   const MpcdiRegion* region = d.find(id);
   const std::string xml = archive.describe(archive.xmlName());
   if (!region) throw CalibrationError(xml + ": no region \"" + id + "\" (the file has: " + d.regionIds() + ")");
+  if (!region->error.empty()) throw CalibrationError(region->error);
   const std::string at = xml + ":" + std::to_string(region->line) + ": region \"" + id + "\": ";
   if (region->warp.path.empty()) throw CalibrationError(at + "no <fileset> with a <geometryWarpFile> for it");
   ProjectorCalibration p;
@@ -262,7 +307,6 @@ ProjectorCalibration readMpcdiRegion(const MpcdiArchive& archive, const MpcdiDes
   p.width = region->xResolution;
   p.height = region->yResolution;
   p.camera = region->camera;
-  p.cameraGiven = region->hasFrustum;
 
   // What a region can need, checked before a file is read or a map decoded: a hostile file (a
   // PNG whose header says 60000 x 60000, a zip member that inflates to gigabytes, a padded PFM)
@@ -296,14 +340,20 @@ ProjectorCalibration readMpcdiRegion(const MpcdiArchive& archive, const MpcdiDes
   p.warp.values.assign(static_cast<std::size_t>(raw.width) * static_cast<std::size_t>(raw.height) * 2,
                        std::numeric_limits<float>::quiet_NaN());
   const glm::dvec3 eye = d.profile == "a3" ? region->position : glm::dvec3(0.0);
+  // A node's point in the body frame (x forward, y right, z down), seen from the eye.
+  const auto bodyPoint = [&](int x, int y) {
+    const glm::dvec3 q = glm::dvec3(raw.at(x, y, 0), raw.at(x, y, 1), raw.at(x, y, 2)) - eye;
+    return glm::dvec3(glm::dot(q, region->rollAxis), glm::dot(q, region->pitchAxis), glm::dot(q, region->yawAxis));
+  };
+  if (points && !region->hasFrustum) p.camera = cameraOfPoints(raw, bodyPoint, warpName);
+  p.cameraGiven = region->hasFrustum;
   for (int y = 0; y < raw.height; ++y)
     for (int x = 0; x < raw.width; ++x) {
       glm::dvec2 uv;
       if (points) {
-        const glm::dvec3 q = glm::dvec3(raw.at(x, y, 0), raw.at(x, y, 1), raw.at(x, y, 2)) - eye;
-        if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z)) continue;
-        const glm::dvec3 body(glm::dot(q, region->rollAxis), glm::dot(q, region->pitchAxis), glm::dot(q, region->yawAxis));
-        const auto seen = uvOfDirection(region->camera, body);
+        const glm::dvec3 body = bodyPoint(x, y);
+        if (!std::isfinite(body.x) || !std::isfinite(body.y) || !std::isfinite(body.z)) continue;
+        const auto seen = uvOfDirection(p.camera, body);
         if (!seen) continue;  // behind the eye: nothing to show
         uv = *seen;
       } else {

@@ -61,6 +61,9 @@ struct MpcdiRegion {
   glm::dvec3 rollAxis{0.0, 0.0, -1.0};
   MpcdiFileRef warp, alpha, beta, distortion;
   double alphaGammaEmbedded = 1.0;
+  // What is wrong with this region alone (its resolution, frustum, frame or file set), "FILE:LINE:
+  // ...": loading it throws this, while the file's other regions load.
+  std::string error;
 };
 
 struct MpcdiDescription {

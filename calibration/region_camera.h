@@ -9,6 +9,8 @@
 #include <glm/glm.hpp>
 
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace skyig::calibration {
 
@@ -25,5 +27,12 @@ glm::dvec3 directionOfUv(const RegionCamera& camera, const glm::dvec2& uv);
 // Where `bodyDirection` falls in the image of `camera`; nullopt when it points behind the
 // camera. A direction outside the frustum gives u or v outside [0, 1].
 std::optional<glm::dvec2> uvOfDirection(const RegionCamera& camera, const glm::dvec3& bodyDirection);
+
+// The camera that covers body-frame `directions` (a projector's footprint on the screen, seen
+// from the eye): looking along their mean, rolled so that its right is `rightHint` (the
+// projector's raster's right), its half-angles their extremes plus marginDeg. Throws
+// CalibrationError naming `name` when they span 180 degrees or more, or a half-angle over 89.
+RegionCamera cameraCovering(const std::vector<glm::dvec3>& directions, const glm::dvec3& rightHint, double marginDeg,
+                            const std::string& name);
 
 }  // namespace skyig::calibration

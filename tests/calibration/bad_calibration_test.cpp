@@ -160,6 +160,37 @@ TEST_F(BadCalibration, MalformedXmlSaysWhere) {
   EXPECT_TRUE(std::regex_search(error(), std::regex(R"(mpcdi\.xml:\d+: malformed XML)")));
 }
 
+// A region's own problem (its file set's gamma, its frustum) refuses that region only: a channel
+// naming another region of the same file loads.
+TEST_F(BadCalibration, ABadRegionRefusesOnlyItself) {
+  const auto regionFrom = xml_.find("<region id=\"p1\""), regionTo = xml_.find("</region>") + 9;
+  const std::string p1 = xml_.substr(regionFrom, regionTo - regionFrom);
+  std::string p2 = p1;
+  p2.replace(p2.find("id=\"p1\""), 7, "id=\"p2\"");
+  const auto setFrom = xml_.find("<fileset region=\"p1\">"), setTo = xml_.find("</fileset>") + 10;
+  std::string set2 = xml_.substr(setFrom, setTo - setFrom);
+  set2.replace(set2.find("region=\"p1\""), 11, "region=\"p2\"");
+  const auto gamma = set2.find("<gammaEmbedded>");
+  ASSERT_NE(gamma, std::string::npos);
+  set2.replace(gamma, set2.find("</gammaEmbedded>") - gamma, "<gammaEmbedded>50");
+  std::string text = xml_;
+  text.insert(text.find("</fileset>") + 10, set2);
+  text.insert(text.find("</region>") + 9, p2);
+  std::ofstream(dir_ / "mpcdi.xml") << text;
+  EXPECT_NO_THROW(loadProjector(mpcdiSource(dir_.string(), "p1", WarpValues::Offset)));
+  const std::string e = error("p2");
+  EXPECT_NE(e.find("<gammaEmbedded> 50.000000 is not a gamma from 0.1 to 10"), std::string::npos) << e;
+  // A frustum of region p2 turned inside out: p1 still loads.
+  std::string badFrustum = text;
+  const auto p2At = badFrustum.find("id=\"p2\"");
+  const auto right = badFrustum.find("<rightAngle>25.0</rightAngle>", p2At);
+  ASSERT_NE(right, std::string::npos);
+  badFrustum.replace(right, 29, "<rightAngle>-35.0</rightAngle>");
+  std::ofstream(dir_ / "mpcdi.xml") << badFrustum;
+  EXPECT_NO_THROW(loadProjector(mpcdiSource(dir_.string(), "p1", WarpValues::Offset)));
+  EXPECT_NE(error("p2").find("rightAngle -35.000000 is not to the right of leftAngle"), std::string::npos);
+}
+
 TEST_F(BadCalibration, AFileSetForNoRegionIsRefused) {
   writeXml("<fileset region=\"p1\">", "<fileset region=\"p2\">");
   EXPECT_NE(error().find("names no region of the display (there are: p1)"), std::string::npos);

@@ -8,7 +8,15 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+#include <zip.h>
+
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <numbers>
 #include <string>
 
@@ -80,6 +88,75 @@ TEST(Mpcdi, OffsetWarpValuesInAFolderGiveTheSameDirections) {
 TEST(Mpcdi, PointsOfAnAdvancedProfileAreSeenFromItsEye) {
   const ProjectorCalibration p = loadProjector(mpcdiSource(kData + "points_a3.mpcdi", "p1", WarpValues::Absolute));
   expectFixtureWarp(p, 1e-5);  // float points 3 m away: ~1e-7 rad
+}
+
+namespace {
+
+// points_a3.mpcdi rewritten with its mpcdi.xml's text from `from` to `to`, at `path`.
+void rewriteA3Fixture(const std::string& path, const std::string& from, const std::string& to) {
+  int error = 0;
+  zip_t* in = zip_open((kData + "points_a3.mpcdi").c_str(), ZIP_RDONLY, &error);
+  ASSERT_NE(in, nullptr);
+  zip_t* out = zip_open(path.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
+  ASSERT_NE(out, nullptr);
+  for (zip_int64_t i = 0; i < zip_get_num_entries(in, 0); ++i) {
+    const std::string name = zip_get_name(in, static_cast<zip_uint64_t>(i), 0);
+    zip_stat_t st;
+    zip_stat_index(in, static_cast<zip_uint64_t>(i), 0, &st);
+    std::string bytes(static_cast<std::size_t>(st.size), '\0');
+    zip_file_t* f = zip_fopen_index(in, static_cast<zip_uint64_t>(i), 0);
+    zip_fread(f, bytes.data(), st.size);
+    zip_fclose(f);
+    if (name == "mpcdi.xml") {
+      const auto at = bytes.find(from);
+      ASSERT_NE(at, std::string::npos) << from;
+      bytes.replace(at, from.size(), to);
+    }
+    char* copy = static_cast<char*>(std::malloc(bytes.size()));
+    std::memcpy(copy, bytes.data(), bytes.size());
+    ASSERT_GE(zip_file_add(out, name.c_str(), zip_source_buffer(out, copy, bytes.size(), 1), ZIP_FL_OVERWRITE), 0);
+  }
+  zip_discard(in);
+  ASSERT_EQ(zip_close(out), 0);
+}
+
+}  // namespace
+
+// The reference library's a3 example has no <frustum>: the region's camera is then made to cover
+// its points (as skyig dome makes its regions'), and every node shows the same direction it
+// shows through the file's own frustum, within the image (1 degree of margin).
+TEST(Mpcdi, AnA3RegionWithoutAFrustumGetsACameraCoveringItsPoints) {
+  const std::string path = (std::filesystem::temp_directory_path() / ("skyig_a3_" + std::to_string(::getpid()) + ".mpcdi")).string();
+  const std::string xml = [] {
+    std::string frustum = "<frustum><yaw>10.0</yaw><pitch>-5.0</pitch><roll>2.0</roll><leftAngle>-30.0</leftAngle>"
+                          "<rightAngle>25.0</rightAngle><downAngle>-15.0</downAngle><upAngle>20.0</upAngle></frustum>";
+    return frustum;
+  }();
+  rewriteA3Fixture(path, xml, "");
+  const ProjectorCalibration given = loadProjector(mpcdiSource(kData + "points_a3.mpcdi", "p1", WarpValues::Absolute));
+  const ProjectorCalibration made = loadProjector(mpcdiSource(path, "p1", WarpValues::Absolute));
+  std::filesystem::remove(path);
+  EXPECT_FALSE(made.cameraGiven);
+  ASSERT_EQ(made.warp.width, given.warp.width);
+  ASSERT_EQ(made.warp.height, given.warp.height);
+  double worst = 0.0, lowest = 1.0, highest = 0.0;
+  for (int y = 0; y < made.warp.height; ++y)
+    for (int x = 0; x < made.warp.width; ++x) {
+      const glm::dvec2 a(given.warp.at(x, y, 0), given.warp.at(x, y, 1)), b(made.warp.at(x, y, 0), made.warp.at(x, y, 1));
+      if (std::isnan(a.x)) continue;
+      ASSERT_FALSE(std::isnan(b.x)) << x << "," << y;
+      const glm::dvec3 da = directionOfUv(given.camera, a), db = directionOfUv(made.camera, b);
+      worst = std::max(worst, std::acos(std::clamp(glm::dot(da, db), -1.0, 1.0)));
+      lowest = std::min({lowest, b.x, b.y});
+      highest = std::max({highest, b.x, b.y});
+    }
+  EXPECT_LT(worst, 1e-5);  // radians
+  EXPECT_GT(lowest, 0.0);
+  EXPECT_LT(highest, 1.0);
+  std::printf("a3 without a frustum: camera yaw %.2f pitch %.2f roll %.2f, half-angles %.2f %.2f %.2f %.2f deg; "
+              "nodes within u, v [%.3f, %.3f]\n", made.camera.offset.yawDeg, made.camera.offset.pitchDeg,
+              made.camera.offset.rollDeg, made.camera.frustum.leftDeg, made.camera.frustum.rightDeg,
+              made.camera.frustum.downDeg, made.camera.frustum.upDeg, lowest, highest);
 }
 
 TEST(Mpcdi, TheAlphaMapsEmbeddedGammaIsTakenOut) {

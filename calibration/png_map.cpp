@@ -88,13 +88,9 @@ FloatMap readPngMap(const std::vector<std::uint8_t>& bytes, const std::string& n
     rows[static_cast<std::size_t>(y)] = reinterpret_cast<png_bytep>(pixels.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(map.width) * static_cast<std::size_t>(channels));
   png_read_image(png, rows.data());
   png_destroy_read_struct(&png, &info, nullptr);
-  map.channels = 1;
-  map.values.resize(static_cast<std::size_t>(map.width) * static_cast<std::size_t>(map.height));
-  for (std::size_t i = 0; i < map.values.size(); ++i) {
-    double sum = 0.0;
-    for (int c = 0; c < channels; ++c) sum += pixels[i * static_cast<std::size_t>(channels) + static_cast<std::size_t>(c)];
-    map.values[i] = static_cast<float>(sum / channels / 65535.0);
-  }
+  map.channels = channels;  // 1 (grey) or 3 (RGB: each colour blends with its own component)
+  map.values.resize(pixels.size());
+  for (std::size_t i = 0; i < pixels.size(); ++i) map.values[i] = static_cast<float>(pixels[i] / 65535.0);
   return map;
 }
 

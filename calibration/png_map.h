@@ -1,7 +1,8 @@
 #pragma once
-// The blend maps of MPCDI files are PNG images, 8 or 16 bits, grey or RGB: read into a
-// one-channel FloatMap in [0, 1] (RGB maps averaged: skyig blends light, not colour), and written
-// as 16-bit grey by the MPCDI writer.
+// The blend maps of MPCDI files are PNG images, 8 or 16 bits, grey or RGB: read into a FloatMap
+// in [0, 1] of one channel (grey) or three (RGB, MPCDI's componentDepth 3: each colour of the
+// projector blends with its own component; an alpha channel is dropped), and written as 16-bit
+// grey by the MPCDI writer.
 #include "calibration/projector.h"
 
 #include <cstdint>

@@ -18,9 +18,11 @@ Float blendedDisplayValue(Float n, Float alpha, Float beta, Float gamma) {
   return pow(clamp(lOut, 0.0, 1.0), 1.0 / gamma);
 }
 
-vec3 blendedDisplayValues(IN(vec3) n, Float alpha, Float beta, Float gamma) {
-  return vec3(blendedDisplayValue(n.x, alpha, beta, gamma), blendedDisplayValue(n.y, alpha, beta, gamma),
-              blendedDisplayValue(n.z, alpha, beta, gamma));
+// Each colour by its own weight and lift: an MPCDI alpha or beta map may hold one component
+// (grey, the same for R, G and B) or three (componentDepth 3, one a colour channel).
+vec3 blendedDisplayValues(IN(vec3) n, IN(vec3) alpha, IN(vec3) beta, Float gamma) {
+  return vec3(blendedDisplayValue(n.x, alpha.x, beta.x, gamma), blendedDisplayValue(n.y, alpha.y, beta.y, gamma),
+              blendedDisplayValue(n.z, alpha.z, beta.z, gamma));
 }
 
 #endif

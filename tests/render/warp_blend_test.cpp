@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -211,6 +212,32 @@ TEST_F(WarpBlend, ProjectorPixelsAreTheCpuBlend) {
         EXPECT_NEAR(images[static_cast<std::size_t>(p)].rgba[(static_cast<std::size_t>(y) * kProjector + x) * 4], expected, 1.5)
             << "projector " << p << " pixel " << x << "," << y;
     }
+}
+
+// An alpha map of three components (MPCDI componentDepth 3): each colour of the projector blends
+// with its own, red by 1, green by 0.5, blue by 0.2, and its light too.
+TEST_F(WarpBlend, AThreeComponentAlphaBlendsEachColourByItsOwn) {
+  auto c = sideBySide(0, false);
+  const std::array<float, 3> weights{1.0f, 0.5f, 0.2f};
+  c->alpha = {c->width, c->height, 3, {}};
+  for (int i = 0; i < c->width * c->height; ++i) c->alpha.values.insert(c->alpha.values.end(), weights.begin(), weights.end());
+  const float n = 0.6f;
+  const GLuint display = uniformTexture(GL_RGBA16F, kScreen, kRows, n);
+  const GLuint hdr = uniformTexture(GL_RGBA32F, kScreen, kRows, 5000.0f);
+  const ProjectorMaps maps(*c);
+  pass_->draw(maps, display, hdr, kGamma, 1.0);
+  const DisplayImage image = readDisplayTexture(pass_->displayTexture(), pass_->width(), pass_->height());
+  const HdrImage light = readFloatTexture(pass_->lightTexture(), pass_->width(), pass_->height());
+  const GLuint textures[] = {display, hdr};
+  glDeleteTextures(2, textures);
+  for (int ch = 0; ch < 3; ++ch) {
+    const double expected = 255.0 * shader::blendedDisplayValue(n, weights[static_cast<std::size_t>(ch)], 0.0, kGamma);
+    for (int x = 0; x < kProjector; x += 17)
+      EXPECT_NEAR(image.rgba[(static_cast<std::size_t>(kRows / 2) * kProjector + x) * 4 + ch], expected, 1.5)
+          << "channel " << ch << " pixel " << x;
+    EXPECT_NEAR(light.rgba[(static_cast<std::size_t>(kRows / 2) * kProjector + 40) * 4 + ch],
+                5000.0 * static_cast<double>(weights[static_cast<std::size_t>(ch)]), 1.0);
+  }
 }
 
 // Where the warp has NaN the projector sends nothing: black, not even the black-level lift,

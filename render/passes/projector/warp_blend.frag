@@ -43,8 +43,9 @@ void main() {
     return;
   }
   vec2 st = vec2(uv.x, 1.0 - uv.y);  // the channel's GL rows start at the bottom
-  float alpha = clamp(texture(alphaMap, mapCoord(alphaMap, pixel)).r, 0.0, 1.0);
-  float beta = clamp(texture(betaMap, mapCoord(betaMap, pixel)).r, 0.0, 1.0);
+  // One component maps are read as grey (their texture swizzles red into green and blue).
+  vec3 alpha = clamp(texture(alphaMap, mapCoord(alphaMap, pixel)).rgb, 0.0, 1.0);
+  vec3 beta = clamp(texture(betaMap, mapCoord(betaMap, pixel)).rgb, 0.0, 1.0);
   vec3 n = blendedDisplayValues(texture(channelDisplay, st).rgb, alpha, beta, blend.x);
   outDisplay = vec4(clamp(n + ditherLsb(gl_FragCoord.xy, blend.y), 0.0, 1.0), 1.0);
   outLight = vec4(texture(channelHdr, st).rgb * alpha, 1.0);

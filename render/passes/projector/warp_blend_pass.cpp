@@ -38,11 +38,20 @@ GLuint makeTexture(GLenum internalFormat, GLenum format, int width, int height, 
   return texture;
 }
 
-// A one-channel map, or a 1 by 1 texture of `fallback` where the calibration has none.
-GLuint makeScalarMap(const FloatMap& map, float fallback, const char* what, const std::string& source) {
-  if (map.empty()) return makeTexture(GL_R32F, GL_RED, 1, 1, &fallback);
-  checkMap(map, 1, what, source);
-  return makeTexture(GL_R32F, GL_RED, map.width, map.height, map.values.data());
+// A blend map of one component (grey: its red swizzled into green and blue, so the shader reads
+// every map as RGB) or three (one a colour channel), or a 1 by 1 grey texture of `fallback`
+// where the calibration has none.
+GLuint makeBlendMap(const FloatMap& map, float fallback, const char* what, const std::string& source) {
+  if (!map.empty() && map.channels == 3) {
+    checkMap(map, 3, what, source);
+    return makeTexture(GL_RGB32F, GL_RGB, map.width, map.height, map.values.data());
+  }
+  if (!map.empty()) checkMap(map, 1, what, source);
+  const GLuint texture = map.empty() ? makeTexture(GL_R32F, GL_RED, 1, 1, &fallback)
+                                     : makeTexture(GL_R32F, GL_RED, map.width, map.height, map.values.data());
+  const GLint grey[] = {GL_RED, GL_RED, GL_RED, GL_ONE};
+  glTextureParameteriv(texture, GL_TEXTURE_SWIZZLE_RGBA, grey);
+  return texture;
 }
 
 }  // namespace
@@ -61,8 +70,8 @@ ProjectorMaps::ProjectorMaps(const skyig::calibration::ProjectorCalibration& c) 
     warp[3 * i + 2] = mapped ? 1.0f : 0.0f;
   }
   warp_ = makeTexture(GL_RGB32F, GL_RGB, c.warp.width, c.warp.height, warp.data());
-  alpha_ = makeScalarMap(c.alpha, 1.0f, "alpha", c.source);
-  beta_ = makeScalarMap(c.beta, 0.0f, "beta", c.source);
+  alpha_ = makeBlendMap(c.alpha, 1.0f, "alpha", c.source);
+  beta_ = makeBlendMap(c.beta, 0.0f, "beta", c.source);
 }
 
 ProjectorMaps::~ProjectorMaps() {

@@ -1,5 +1,6 @@
 #include "node/host/host_session.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace skyig::services {
@@ -69,6 +70,17 @@ void HostSessions::start(const Sender& from, const cigi::IgControl& ig, Clock::t
   lastFrame_ = ig.hostFrameNumber;
   lastHeard_ = arrival;
   lastMode_ = ig.igMode;
+  intervalS_ = 0.0;
+}
+
+// A restarted process counts its frames from about 0 while the old stream is far on, or enters
+// Reset/Standby; or the followed port has fallen silent for 1.5 of its intervals (one missed
+// frame and a half: the next datagram of the other port after the followed host stopped).
+bool HostSessions::otherPortTakesOver(const cigi::IgControl& ig, double silentS) const {
+  if (silentS > settings_.sessionGapS) return true;
+  if (intervalS_ > 0.0 && silentS > std::max(1.5 * intervalS_, 0.02)) return true;
+  if (ig.igMode == cigi::IgMode::resetStandby) return true;
+  return ig.hostFrameNumber <= settings_.staleFrames && lastFrame_ > 2 * settings_.staleFrames;
 }
 
 SessionDecision HostSessions::admit(const Sender& from, const cigi::IgControl& ig, Clock::time_point arrival) {
@@ -84,16 +96,21 @@ SessionDecision HostSessions::admit(const Sender& from, const cigi::IgControl& i
   };
   if (!active_) return restart(SessionReason::first);
   if (!sameAddress) return restart(SessionReason::newAddress);
+  if (from.port != host_.port) {
+    if (!otherPortTakesOver(ig, silentS)) return {Admission::otherPort};
+    return restart(SessionReason::newPort);
+  }
   // Entering Reset/Standby (a host held in it keeps one session: no session per datagram).
   const bool entersReset = ig.igMode == cigi::IgMode::resetStandby && lastMode_ != cigi::IgMode::resetStandby;
   lastMode_ = ig.igMode;
   if (entersReset) return restart(SessionReason::resetMode);
-  if (from.port != host_.port) return restart(SessionReason::newPort);
   if (silentS > settings_.sessionGapS) return restart(SessionReason::gap);
   // Frame numbers in serial-number order (they wrap at 2^32), within a bounded window.
   const std::int64_t step = static_cast<std::int32_t>(ig.hostFrameNumber - lastFrame_);
   const auto window = static_cast<std::int64_t>(settings_.staleFrames);
   if (step < -window || step > window) return restart(SessionReason::frameJump);
+  // The interval between the followed host's datagrams, smoothed over about ten of them.
+  intervalS_ = intervalS_ > 0.0 ? 0.9 * intervalS_ + 0.1 * silentS : silentS;
   lastHeard_ = arrival;
   if (step < 0) return {Admission::stale};
   lastFrame_ = ig.hostFrameNumber;

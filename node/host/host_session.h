@@ -1,11 +1,15 @@
 #pragma once
 // Who drives the node, and when a host's stream starts again (pure: no sockets are opened, no
-// threads). A CIGI host is followed one session at a time: one sender address, whose frame
-// numbers run on from one datagram to the next. A restarted host (another source port, a frame
-// number that does not run on, a silence, or IG Control's Reset/Standby mode) starts a new
-// session at once, so a restart is followed within one host
-// frame; reordering is dropped only inside a session and a bounded window. A sender outside
-// `host.allowed`, or another address while the followed host is alive, changes nothing.
+// threads). A CIGI host is followed one session at a time: one sender address and port, whose
+// frame numbers run on from one datagram to the next. A restarted host (a frame number that does
+// not run on, a silence, or IG Control's Reset/Standby mode) starts a new session at once, so a
+// restart is followed within one host frame; reordering is dropped only inside a session and a
+// bounded window. Another source port on the followed address takes over only as a restarted
+// process would: its frame numbers starting again while the followed stream is well under way,
+// Reset/Standby, or the followed port gone silent for one and a half of its frame intervals;
+// otherwise it is a second host beside the live one (an old process still sending, a test tool)
+// and changes nothing. A sender outside `host.allowed`, or another address while the followed
+// host is alive, changes nothing either.
 #include "protocol/cigi/packets.h"
 #include "node/host/host_state.h"
 #include "node/host/sender.h"
@@ -62,6 +66,7 @@ enum class Admission : std::uint8_t {
   stale,       // an older frame of the current session (reordered): drop
   notAllowed,  // the sender is outside host.allowed: drop
   otherHost,   // another address while the followed host is alive: drop
+  otherPort,   // another port of the followed address, not a restart of it: drop
 };
 
 struct SessionDecision {
@@ -93,6 +98,9 @@ class HostSessions {
   std::uint32_t lastFrame_ = 0;    // newest frame applied in this session
   protocol::cigi::IgMode lastMode_ = protocol::cigi::IgMode::operate;
   Clock::time_point lastHeard_{};  // last datagram of the followed host, stale ones included
+  double intervalS_ = 0.0;         // the followed host's datagram interval, smoothed (0: not yet known)
+  // Whether a datagram from another port of the followed address starts a new session.
+  bool otherPortTakesOver(const protocol::cigi::IgControl& ig, double silentS) const;
 };
 
 }  // namespace skyig::services

@@ -67,14 +67,18 @@ void CigiReceiver::handle(std::span<const std::uint8_t> datagram, const Sender& 
       stats_.staleMessages.fetch_add(1, std::memory_order_relaxed);
       return;  // nothing newer to publish
     case Admission::notAllowed:
-    case Admission::otherHost: {
+    case Admission::otherHost:
+    case Admission::otherPort: {
       const bool outside = d.admission == Admission::notAllowed;
       (outside ? stats_.notAllowedDatagrams : stats_.otherHostDatagrams).fetch_add(1, std::memory_order_relaxed);
+      const std::string why =
+          outside ? std::string("not in host.allowed")
+          : d.admission == Admission::otherHost
+              ? "following the host at " + sessions_.host().toString()
+              : "a second sender on the followed host's address, which is sending from " + sessions_.host().toString() +
+                    " (a restarted host would count its frames again or enter Reset/Standby)";
       if (std::uint64_t heldBack = 0; foreignWarnings_.allow(arrival, &heldBack))
-        spdlog::warn("ignoring CIGI from {}: {}{}", from.toString(),
-                     outside ? std::string("not in host.allowed")
-                             : "following the host at " + sessions_.host().toString(),
-                     heldBackSuffix(heldBack));
+        spdlog::warn("ignoring CIGI from {}: {}{}", from.toString(), why, heldBackSuffix(heldBack));
       return;
     }
     case Admission::newSession:

@@ -120,6 +120,38 @@ TEST(HostSessions, FrameNumberFarBehindOrAheadIsARestart) {
   EXPECT_EQ(s.sessions(), 4u);
 }
 
+// Two host processes on one address (a test tool beside the real host, an old process still
+// sending), both counting from frame 0 at 30 Hz, 1 ms apart, for 10 s: the node follows the first
+// and only it, in one session, the other's 300 datagrams counted and dropped. When the first falls
+// silent, the second takes over at its next datagram but one: within one host frame of the
+// first's missing frame.
+TEST(HostSessions, ASecondHostOnTheSameAddressDoesNotFlipThePicture) {
+  HostSessions s;
+  const Sender first = address("10.0.0.5", 40000), second = address("10.0.0.5", 40001);
+  const auto t0 = Clock::now();
+  int applied = 0, ignored = 0;
+  for (std::uint32_t n = 0; n < 300; ++n) {
+    const auto t = t0 + std::chrono::microseconds(33333 * n);
+    const SessionDecision a = s.admit(first, frame(n), t);
+    applied += a.admission == Admission::apply || a.admission == Admission::newSession;
+    const SessionDecision b = s.admit(second, frame(n), t + 1ms);
+    ignored += b.admission == Admission::otherPort;
+  }
+  EXPECT_EQ(applied, 300);
+  EXPECT_EQ(ignored, 300);
+  EXPECT_EQ(s.sessions(), 1u);
+  EXPECT_EQ(s.host().port, 40000);
+  // The first stops after frame 299 (its frame 300 would come at 10.000 s); the second goes on.
+  const auto t300 = t0 + std::chrono::microseconds(33333 * 300);
+  EXPECT_EQ(s.admit(second, frame(300), t300 + 1ms).admission, Admission::otherPort);  // 34 ms of silence
+  const SessionDecision takeover = s.admit(second, frame(301), t300 + 1ms + 33333us);  // 67 ms: two intervals
+  EXPECT_EQ(takeover.admission, Admission::newSession);
+  EXPECT_EQ(takeover.reason, SessionReason::newPort);
+  EXPECT_EQ(s.host().port, 40001);
+  // And the first, should it come back, is now the second host beside a live one.
+  EXPECT_EQ(s.admit(first, frame(302), t300 + 1ms + 66666us).admission, Admission::otherPort);
+}
+
 TEST(HostSessions, NewPortSilenceAndResetStartSessions) {
   HostSessions s;
   auto t = Clock::now();

@@ -18,6 +18,7 @@
 #include "commands/serve_command.h"
 #include "node/transport/udp_socket.h"
 #include "node/config/node_config.h"
+#include "node/common/stop_signal.h"
 
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
@@ -27,6 +28,9 @@
 
 int main(int argc, char** argv) {
   using namespace skyig::services;
+  // Held until the command that stops on them handles them (node/common/stop_signal.h): a SIGINT
+  // 20 ms after start stops a node cleanly instead of killing it.
+  holdStopSignals();
   CLI::App app{"skyig — physically based sky image generator for flight simulation"};
   app.require_subcommand(0, 1);
   // Options of the program (--log-level) are accepted after the subcommand too: the
@@ -61,6 +65,11 @@ int main(int argc, char** argv) {
       // A node says how it started (configuration, channels, transports, renderer) by default.
       if (logLevelOption->count() == 0 && app.got_subcommand("serve")) logLevel = "info";
       spdlog::set_level(spdlog::level::from_str(logLevel));
+      // The commands that run until stopped release the signals when they handle them; the
+      // others end by them, as any program does.
+      bool stopsOnSignal = false;
+      for (const char* name : {"serve", "replay", "record", "precompute"}) stopsOnSignal = stopsOnSignal || app.got_subcommand(name);
+      if (!stopsOnSignal) releaseStopSignals();
     });
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

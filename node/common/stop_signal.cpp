@@ -31,6 +31,26 @@ extern "C" void onStopSignal(int signo) {
 
 }  // namespace
 
+namespace {
+sigset_t stopSignals() {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  return set;
+}
+}  // namespace
+
+void holdStopSignals() {
+  const sigset_t set = stopSignals();
+  ::pthread_sigmask(SIG_BLOCK, &set, nullptr);
+}
+
+void releaseStopSignals() {
+  const sigset_t set = stopSignals();
+  ::pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
+}
+
 StopOnSignal::StopOnSignal() {
   gStop = false;
   gSignal = 0;
@@ -44,6 +64,7 @@ StopOnSignal::StopOnSignal() {
   action.sa_flags = 0;  // no SA_RESTART: a blocking call returns EINTR and its loop sees the flag
   ::sigaction(SIGINT, &action, &gPreviousInt);
   ::sigaction(SIGTERM, &action, &gPreviousTerm);
+  releaseStopSignals();  // one held since the start is handled now
 }
 
 StopOnSignal::~StopOnSignal() {

@@ -8,9 +8,18 @@
 
 namespace skyig::services {
 
+// SIGINT and SIGTERM held (blocked in the calling thread, and in every thread it starts) from
+// the first line of main until a StopOnSignal handles them: a signal that arrives while the
+// program loads its configuration is then a request to stop, not a kill. releaseStopSignals()
+// lets them through again (a held one is delivered at once), for commands that do not stop on a
+// signal (they end by it, as any program).
+void holdStopSignals();
+void releaseStopSignals();
+
 class StopOnSignal {
  public:
-  // Clears the flag and installs the handlers; one instance at a time.
+  // Clears the flag, installs the handlers and releases the signals held since the start; one
+  // instance at a time.
   StopOnSignal();
   // Restores the handlers that were there before.
   ~StopOnSignal();

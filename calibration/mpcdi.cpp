@@ -346,7 +346,9 @@ ProjectorCalibration readMpcdiRegion(const MpcdiArchive& archive, const MpcdiDes
     return glm::dvec3(glm::dot(q, region->rollAxis), glm::dot(q, region->pitchAxis), glm::dot(q, region->yawAxis));
   };
   if (points && !region->hasFrustum) p.camera = cameraOfPoints(raw, bodyPoint, warpName);
-  p.cameraGiven = region->hasFrustum;
+  // The warp's image coordinates are the camera's: the file's frustum, or the one made for its
+  // points; a 2d region without one is drawn through the channel's own.
+  p.cameraGiven = region->hasFrustum || points;
   for (int y = 0; y < raw.height; ++y)
     for (int x = 0; x < raw.width; ++x) {
       glm::dvec2 uv;

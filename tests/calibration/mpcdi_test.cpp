@@ -8,15 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-#include <zip.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <filesystem>
 #include <numbers>
 #include <string>
 
@@ -90,53 +84,18 @@ TEST(Mpcdi, PointsOfAnAdvancedProfileAreSeenFromItsEye) {
   expectFixtureWarp(p, 1e-5);  // float points 3 m away: ~1e-7 rad
 }
 
-namespace {
-
-// points_a3.mpcdi rewritten with its mpcdi.xml's text from `from` to `to`, at `path`.
-void rewriteA3Fixture(const std::string& path, const std::string& from, const std::string& to) {
-  int error = 0;
-  zip_t* in = zip_open((kData + "points_a3.mpcdi").c_str(), ZIP_RDONLY, &error);
-  ASSERT_NE(in, nullptr);
-  zip_t* out = zip_open(path.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
-  ASSERT_NE(out, nullptr);
-  for (zip_int64_t i = 0; i < zip_get_num_entries(in, 0); ++i) {
-    const std::string name = zip_get_name(in, static_cast<zip_uint64_t>(i), 0);
-    zip_stat_t st;
-    zip_stat_index(in, static_cast<zip_uint64_t>(i), 0, &st);
-    std::string bytes(static_cast<std::size_t>(st.size), '\0');
-    zip_file_t* f = zip_fopen_index(in, static_cast<zip_uint64_t>(i), 0);
-    zip_fread(f, bytes.data(), st.size);
-    zip_fclose(f);
-    if (name == "mpcdi.xml") {
-      const auto at = bytes.find(from);
-      ASSERT_NE(at, std::string::npos) << from;
-      bytes.replace(at, from.size(), to);
-    }
-    char* copy = static_cast<char*>(std::malloc(bytes.size()));
-    std::memcpy(copy, bytes.data(), bytes.size());
-    ASSERT_GE(zip_file_add(out, name.c_str(), zip_source_buffer(out, copy, bytes.size(), 1), ZIP_FL_OVERWRITE), 0);
-  }
-  zip_discard(in);
-  ASSERT_EQ(zip_close(out), 0);
-}
-
-}  // namespace
-
 // The reference library's a3 example has no <frustum>: the region's camera is then made to cover
 // its points (as skyig dome makes its regions'), and every node shows the same direction it
-// shows through the file's own frustum, within the image (1 degree of margin).
+// shows through points_a3's own frustum (the same points), within the image (1 degree of margin).
+// The fixture is in the SDK's conventions (tests/data/calibration/make_fixtures.py), its
+// gammaEmbedded 0 read as not given, with a warning.
 TEST(Mpcdi, AnA3RegionWithoutAFrustumGetsACameraCoveringItsPoints) {
-  const std::string path = (std::filesystem::temp_directory_path() / ("skyig_a3_" + std::to_string(::getpid()) + ".mpcdi")).string();
-  const std::string xml = [] {
-    std::string frustum = "<frustum><yaw>10.0</yaw><pitch>-5.0</pitch><roll>2.0</roll><leftAngle>-30.0</leftAngle>"
-                          "<rightAngle>25.0</rightAngle><downAngle>-15.0</downAngle><upAngle>20.0</upAngle></frustum>";
-    return frustum;
-  }();
-  rewriteA3Fixture(path, xml, "");
   const ProjectorCalibration given = loadProjector(mpcdiSource(kData + "points_a3.mpcdi", "p1", WarpValues::Absolute));
-  const ProjectorCalibration made = loadProjector(mpcdiSource(path, "p1", WarpValues::Absolute));
-  std::filesystem::remove(path);
-  EXPECT_FALSE(made.cameraGiven);
+  const ProjectorCalibration made = loadProjector(mpcdiSource(kData + "sdk_a3.mpcdi", "r1", WarpValues::Absolute));
+  EXPECT_TRUE(made.cameraGiven);  // the renderer draws the region through the camera its warp was mapped with
+  ASSERT_EQ(made.warnings.size(), 2u);
+  EXPECT_NE(made.warnings[0].find("no <frustum>: its camera is made to cover the region's points"), std::string::npos);
+  EXPECT_NE(made.warnings[1].find("<gammaEmbedded> 0 read as not given"), std::string::npos);
   ASSERT_EQ(made.warp.width, given.warp.width);
   ASSERT_EQ(made.warp.height, given.warp.height);
   double worst = 0.0, lowest = 1.0, highest = 0.0;
@@ -157,6 +116,51 @@ TEST(Mpcdi, AnA3RegionWithoutAFrustumGetsACameraCoveringItsPoints) {
               "nodes within u, v [%.3f, %.3f]\n", made.camera.offset.yawDeg, made.camera.offset.pitchDeg,
               made.camera.offset.rollDeg, made.camera.frustum.leftDeg, made.camera.frustum.rightDeg,
               made.camera.frustum.downDeg, made.camera.frustum.upDeg, lowest, highest);
+}
+
+// Each profile as VESA's reference library writes it (tests/data/calibration/make_fixtures.py:
+// Xresolution, files at the zip's root, the SDK's frustum order and PFM header): 2d without a
+// camera, 3d and sl with the file's frustum as the region's camera, three sl regions each with
+// its own, and every warp the fixtures' uv().
+TEST(Mpcdi, EveryProfileAsTheReferenceLibraryWritesItLoads) {
+  const ProjectorCalibration flat = loadProjector(mpcdiSource(kData + "sdk_2d.mpcdi", "r1", WarpValues::Absolute));
+  EXPECT_FALSE(flat.cameraGiven);
+  EXPECT_EQ(flat.width, 64);
+  expectFixtureWarp(flat, 1e-6);
+  auto expectFrustum = [](const ProjectorCalibration& p, double yawDeg) {
+    ASSERT_TRUE(p.cameraGiven) << p.source;
+    EXPECT_DOUBLE_EQ(p.camera.offset.yawDeg, yawDeg) << p.source;
+    EXPECT_DOUBLE_EQ(p.camera.offset.pitchDeg, -5.0);
+    EXPECT_DOUBLE_EQ(p.camera.offset.rollDeg, 2.0);
+    EXPECT_DOUBLE_EQ(p.camera.frustum.leftDeg, 30.0);
+    EXPECT_DOUBLE_EQ(p.camera.frustum.rightDeg, 25.0);
+    EXPECT_DOUBLE_EQ(p.camera.frustum.downDeg, 15.0);
+    EXPECT_DOUBLE_EQ(p.camera.frustum.upDeg, 20.0);
+  };
+  const ProjectorCalibration simulation = loadProjector(mpcdiSource(kData + "sdk_3d.mpcdi", "r1", WarpValues::Absolute));
+  expectFrustum(simulation, 10.0);
+  expectFixtureWarp(simulation, 1e-6);
+  const ProjectorCalibration lamp = loadProjector(mpcdiSource(kData + "sdk_sl.mpcdi", "r1", WarpValues::Absolute));
+  expectFrustum(lamp, 10.0);
+  expectFixtureWarp(lamp, 1e-5);
+  for (const auto& [region, yaw] : {std::pair{"r1", -40.0}, std::pair{"r2", 10.0}, std::pair{"r3", 60.0}}) {
+    const ProjectorCalibration p = loadProjector(mpcdiSource(kData + "sdk_sl_three.mpcdi", region, WarpValues::Absolute));
+    expectFrustum(p, yaw);
+    expectFixtureWarp(p, 1e-5);
+  }
+}
+
+// The 3d fixture's alpha map holds three components (componentDepth 3): each colour keeps its
+// own weight, green and blue 0.8 and 0.6 of red in light, the embedded gamma taken out of each.
+TEST(Mpcdi, AThreeComponentAlphaMapKeepsEachColoursWeight) {
+  const ProjectorCalibration p = loadProjector(mpcdiSource(kData + "sdk_3d.mpcdi", "r1", WarpValues::Absolute));
+  ASSERT_EQ(p.alpha.channels, 3);
+  ASSERT_EQ(p.alpha.width, 16);
+  for (int i = 0; i < 16; ++i) {
+    EXPECT_NEAR(p.alpha.at(i, 3, 0), fixtureAlpha(i / 15.0), 2e-4) << i;
+    EXPECT_NEAR(p.alpha.at(i, 3, 1), 0.8 * fixtureAlpha(i / 15.0), 2e-4) << i;
+    EXPECT_NEAR(p.alpha.at(i, 3, 2), 0.6 * fixtureAlpha(i / 15.0), 2e-4) << i;
+  }
 }
 
 TEST(Mpcdi, TheAlphaMapsEmbeddedGammaIsTakenOut) {

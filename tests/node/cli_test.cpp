@@ -668,6 +668,33 @@ TEST_F(Cli, RenderProjectorWritesWhatTheProjectorIsSent) {
       << sized.err;
 }
 
+// Every MPCDI profile as VESA's reference library writes it renders for its projector, and the
+// EXR's camera is the one the file gives: the region's frustum for 3d and sl (the second of
+// three sl regions too), the channel's own for 2d, and for an a3 region without a frustum the
+// camera made to cover its points.
+TEST_F(Cli, EveryReferenceLibraryProfileRendersThroughItsRegionsCamera) {
+  struct Case {
+    const char* file;
+    const char* region;
+    double yawDeg, leftDeg;  // the EXR's channel yaw and left half-angle
+  };
+  for (const Case& k : {Case{"sdk_2d.mpcdi", "r1", 0.0, 30.0}, Case{"sdk_3d.mpcdi", "r1", 10.0, 30.0},
+                        Case{"sdk_sl.mpcdi", "r1", 10.0, 30.0}, Case{"sdk_sl_three.mpcdi", "r2", 10.0, 30.0},
+                        Case{"sdk_a3.mpcdi", "r1", 8.0, 26.7}}) {
+    SCOPED_TRACE(k.file);
+    const fs::path cfg = write("sdk.toml", std::string("[[channel]]\nname = \"p\"\n[channel.projector]\nmpcdi = \"") +
+                                               SKYIG_SOURCE_DIR + "/tests/data/calibration/" + k.file +
+                                               "\"\nregion = \"" + k.region + "\"\nwarp_values = \"absolute\"\n");
+    const Result r = run("render --config " + cfg.string() + " --sky-model preetham --projector --exr " +
+                         (dir_ / "p.exr").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto exr = skyig::render::readExr((dir_ / "p.exr").string());
+    EXPECT_EQ(exr.image.width, 64);
+    EXPECT_NEAR(std::get<double>(exr.attributes.at("skyig:channel_yaw_deg")), k.yawDeg, 0.01);
+    EXPECT_NEAR(std::get<double>(exr.attributes.at("skyig:frustum_left_deg")), k.leftDeg, 0.01);
+  }
+}
+
 // The example configuration of a projector dome works as its comment says: `skyig dome` writes
 // the calibration beside it, and every one of its five channels renders for its projector.
 TEST_F(Cli, TheProjectorDomeExampleRendersWithAGeneratedDome) {

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 using namespace skyig;
@@ -100,6 +101,20 @@ class WarpBlend : public ::testing::Test {
     delete renderer_;
     delete pass_;
     delete context_;
+  }
+
+  // One projector's 8-bit image and light for a uniform channel image of display value n and
+  // `light` cd/m^2.
+  static std::pair<DisplayImage, HdrImage> projectOne(const ProjectorCalibration& c, float n, float light) {
+    const GLuint display = uniformTexture(GL_RGBA16F, kScreen, kRows, n);
+    const GLuint hdr = uniformTexture(GL_RGBA32F, kScreen, kRows, light);
+    const ProjectorMaps maps(c);
+    pass_->draw(maps, display, hdr, kGamma, 1.0);
+    std::pair<DisplayImage, HdrImage> out{readDisplayTexture(pass_->displayTexture(), pass_->width(), pass_->height()),
+                                          readFloatTexture(pass_->lightTexture(), pass_->width(), pass_->height())};
+    const GLuint textures[] = {display, hdr};
+    glDeleteTextures(2, textures);
+    return out;
   }
 
   // Both projectors' 8-bit images for a uniform channel image of display value n (and HDR
@@ -222,14 +237,7 @@ TEST_F(WarpBlend, AThreeComponentAlphaBlendsEachColourByItsOwn) {
   c->alpha = {c->width, c->height, 3, {}};
   for (int i = 0; i < c->width * c->height; ++i) c->alpha.values.insert(c->alpha.values.end(), weights.begin(), weights.end());
   const float n = 0.6f;
-  const GLuint display = uniformTexture(GL_RGBA16F, kScreen, kRows, n);
-  const GLuint hdr = uniformTexture(GL_RGBA32F, kScreen, kRows, 5000.0f);
-  const ProjectorMaps maps(*c);
-  pass_->draw(maps, display, hdr, kGamma, 1.0);
-  const DisplayImage image = readDisplayTexture(pass_->displayTexture(), pass_->width(), pass_->height());
-  const HdrImage light = readFloatTexture(pass_->lightTexture(), pass_->width(), pass_->height());
-  const GLuint textures[] = {display, hdr};
-  glDeleteTextures(2, textures);
+  const auto [image, light] = projectOne(*c, n, 5000.0f);
   for (int ch = 0; ch < 3; ++ch) {
     const double expected = 255.0 * shader::blendedDisplayValue(n, weights[static_cast<std::size_t>(ch)], 0.0, kGamma);
     for (int x = 0; x < kProjector; x += 17)
@@ -247,14 +255,7 @@ TEST_F(WarpBlend, UnmappedPixelsAreBlack) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   for (int y = 0; y < 10; ++y)
     for (int x = 0; x < 30; ++x) c->warp.at(x, y, 0) = c->warp.at(x, y, 1) = nan;
-  const GLuint display = uniformTexture(GL_RGBA16F, kScreen, kRows, 0.7f);
-  const GLuint hdr = uniformTexture(GL_RGBA32F, kScreen, kRows, 5000.0f);
-  const ProjectorMaps maps(*c);
-  pass_->draw(maps, display, hdr, kGamma, 1.0);
-  const DisplayImage image = readDisplayTexture(pass_->displayTexture(), pass_->width(), pass_->height());
-  const HdrImage light = readFloatTexture(pass_->lightTexture(), pass_->width(), pass_->height());
-  const GLuint textures[] = {display, hdr};
-  glDeleteTextures(2, textures);
+  const auto [image, light] = projectOne(*c, 0.7f, 5000.0f);
   for (int y = 0; y < kRows; ++y)
     for (int x = 0; x < 40; ++x) {
       const std::uint8_t* px = &image.rgba[(static_cast<std::size_t>(y) * kProjector + x) * 4];

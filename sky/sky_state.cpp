@@ -85,8 +85,10 @@ std::shared_ptr<const night::StarField> starFieldOf(const SkyState& s) {
 
 
 // The sun's illuminance at the eye after the atmosphere (the model's direct irradiance at normal
-// incidence, or the analytic sky's disc radiance times its solid angle) and the moon's (its
-// irradiance above the atmosphere times the transmittance along its apparent direction).
+// incidence, through the weather's layers as the disc is seen through them; or the analytic
+// sky's disc radiance times its solid angle) and the moon's (its irradiance above the atmosphere
+// times the transmittance along its apparent direction, the layers in it). Behind a fog the
+// sun's veil fades with the disc: no halo round a sun the fog hides.
 eye::GlareSources glareSources(const SkyState& s) {
   eye::GlareSources g{};
   eye::GlareSource& sun = g[0];
@@ -96,7 +98,8 @@ eye::GlareSources glareSources(const SkyState& s) {
     const glm::dvec3 airless = enuDirection(s.sunAzimuth, s.sunAltitude);
     const glm::dvec3 camera = atmosphere::physicalCamera(model, s.observer.heightM);
     sun.angularRadiusRad = model.parameters(0).sun_angular_radius;
-    sun.rec709Lux = glm::max(model.converter().toRec709(model.sunIrradiance(camera, airless, airless)), glm::dvec3(0.0));
+    sun.rec709Lux = glm::max(model.converter().toRec709(model.sunIrradiance(camera, airless, airless)), glm::dvec3(0.0)) *
+                    fogTransmittanceToSpace(s.fog, model, s.observer.heightM, s.sunApparentAltitude);
   } else if (s.conditions.model != SkyModel::Physical) {
     sun.angularRadiusRad = std::acos(std::clamp(s.sky.params.cosSunRadius, -1.0, 1.0));
     // The analytic models keep the disc's radiance below the horizon; the earth hides it.

@@ -17,6 +17,7 @@
 #include "physics/atmosphere/precompute/rec709_tables.h"
 #include "physics/common/units.h"
 #include "sky/fog_state.h"
+#include "sky/sky_state.h"
 #include "tests/physics/atmosphere/shared_models.h"
 
 namespace skyig::weather {
@@ -181,6 +182,26 @@ TEST(FogAtNight, WhatComesFromBeyondTheAirIsDimmedByTheLayer) {
   EXPECT_NEAR(dimmed.rec709(zenith).g / clear.rec709(zenith).g, std::exp(-3.912 * 170.0 / 400.0), 1e-5);
   EXPECT_LT(dimmed.rec709(2.0 * kDeg).g, 1e-12);
   EXPECT_EQ(sky::fogTransmittanceToSpace(sky::FogState{}, model, h, zenith), 1.0);
+}
+
+// The sun's glare (the veil the eye sees round it) comes through the fog as its disc does: at
+// 30 m in a 200 m fog of 400 m, the sun 30 deg up, 340 m of fog to it, exp(-3.912 x 340 / 400)
+// = 3.6% of the clear air's; before, the veil kept the clear air's and a halo stood round a sun
+// the fog hid.
+TEST(FogAndTheSun, TheSunsGlareComesThroughTheFogAsItsDiscDoes) {
+  auto model = std::make_shared<const AtmosphereModel>(atmosphere::testing::cachedModel(tablesConfig(40.0)));
+  sky::ObserverState o;
+  o.heightM = 30.0;
+  sky::SkyConditions c;
+  c.model = sky::SkyModel::Physical;
+  c.atmosphere = model;
+  const sky::SkyState clear = sky::buildSkyState(o, c, sky::SunOverride{180.0, 30.0});
+  c.fog = {0.0, 200.0, 0.4};
+  const sky::SkyState foggy = sky::buildSkyState(o, c, sky::SunOverride{180.0, 30.0});
+  const double ratio = foggy.glare[0].rec709Lux.g / clear.glare[0].rec709Lux.g;
+  EXPECT_NEAR(ratio, sky::fogTransmittanceToSpace(foggy.fog, *model, o.heightM, foggy.sunApparentAltitude), 1e-12);
+  EXPECT_NEAR(ratio, std::exp(-3.912 * 170.0 / 400.0 / std::sin(foggy.sunApparentAltitude)), 1e-3 * ratio);
+  EXPECT_LT(ratio, 0.04);
 }
 
 }  // namespace

@@ -5,10 +5,12 @@
 #include "physics/atmosphere/conditions.h"
 #include "physics/atmosphere/probe.h"
 #include "physics/weather/fog_layer.h"
+#include "sky/client_light.h"
 #include "sky/night_probe.h"
 #include "sky/sky_state.h"
 #include "node/config/node_tables.h"
 #include "node/config/sky_data.h"
+#include "physics/common/units.h"
 #include "skyig/sky.h"
 
 #include <cstdio>
@@ -43,6 +45,29 @@ atmosphere::ProbeView parseView(const std::string& text, const std::string& wher
   if (std::sscanf(text.c_str(), "%lf,%lf%c", &z, &a, &extra) != 2 || !(z >= 0.0 && z <= 180.0) || !std::isfinite(a))
     throw ConfigError(where + ": expected ZENITH,AZIMUTH in degrees (zenith 0..180), got \"" + text + "\"");
   return {z, a};
+}
+
+// The weather's layers over the tables, as the node draws them: the haze below the tables'
+// visibility (nodeHaze), the configuration's ground fog and precipitation ([weather]).
+void addWeatherLayers(sky::SkyConditions& sky, const NodeConfig& node) {
+  sky.haze = nodeHaze(node, node.atmosphere.visibilityKm.value_or(0.0));
+  sky.fog = node.sky.fog;
+  sky.precipitation = node.sky.precipitation;
+}
+
+// Each view's sky or ground, lit by the sun and the moon, through the weather's layers: what the
+// frame shows there (sky/client_light.h, clientSkyRadiance, the composition of the sky pass),
+// beside the tables' figures, which leave the layers out.
+void addThroughLayers(nlohmann::json& out, const sky::SkyState& state, const atmosphere::AtmosphereModel& model,
+                      const std::vector<atmosphere::ProbeView>& views) {
+  if (!state.fog.any()) return;
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    const double z = views[i].zenithDeg * kDeg, a = views[i].azimuthDeg * kDeg;
+    const glm::dvec3 view(std::sin(z) * std::sin(a), std::sin(z) * std::cos(a), std::cos(z));
+    const glm::dvec3 rgb = sky::clientSkyRadiance(state, &model, view);
+    out["views"][i]["through_layers"] = {{"rgb_cd_m2", {rgb.r, rgb.g, rgb.b}},
+                                         {"luminance_cd_m2", 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b}};
+  }
 }
 
 // `--light`: the light a host embedding skyig gets, through the public API (skyig::Sky): the
@@ -120,23 +145,33 @@ int run(const ProbeCli& cli) {
   atmosphere::Conditions conditions;
   if (cli.humidityPct) conditions.relativeHumidity = *cli.humidityPct / 100.0;
   const auto model = loadNodeAtmosphere(node, conditions);
-  // Below the tables' lowest visibility the node draws the rest as a fog layer, which the
-  // probe's figures (the tables') do not include: say so rather than report clearer air.
-  if (const double km = node.atmosphere.visibilityKm.value_or(0.0); km > 0.0 && km < weather::kTablesVisibilityKm)
-    std::fprintf(stderr,
-                 "probe: visibility %.3g km is below the tables' %.3g km: these are the %.3g km tables' figures, "
-                 "without the haze layer the node draws over them (docs/atmosphere.md, \"Low visibility\")\n",
-                 km, weather::kTablesVisibilityKm, weather::kTablesVisibilityKm);
-  if (!place) {
-    std::printf("%s\n", probeJson(atmosphere::probe(*model, request)).dump(2).c_str());
-    return 0;
-  }
   sky::SkyConditions sky;
   sky.model = sky::SkyModel::Physical;
   sky.atmosphere = model;
+  addWeatherLayers(sky, node);
+  // Below the tables' lowest visibility the node draws the rest as a haze layer: the tables'
+  // figures leave it out, each view's through_layers has it.
+  if (const double km = node.atmosphere.visibilityKm.value_or(0.0); km > 0.0 && km < weather::kTablesVisibilityKm)
+    std::fprintf(stderr,
+                 "probe: visibility %.3g km is below the tables' %.3g km: the sky, ground and irradiance figures are "
+                 "the %.3g km tables', each view's through_layers adds the haze layer the node draws over them "
+                 "(docs/atmosphere.md, \"Low visibility\")\n",
+                 km, weather::kTablesVisibilityKm, weather::kTablesVisibilityKm);
+  if (!place) {
+    nlohmann::json out = probeJson(atmosphere::probe(*model, request));
+    sky::ObserverState observer;
+    observer.heightM = request.altitudeM;
+    const sky::SkyState state =
+        sky::buildSkyState(observer, sky, sky::SunOverride{request.sunAzimuthDeg, 90.0 - request.sunZenithDeg});
+    addThroughLayers(out, state, *model, request.views);
+    std::printf("%s\n", out.dump(2).c_str());
+    return 0;
+  }
   sky.starCatalogue = loadConfiguredStarCatalogue(cli.starCatalogue, place->utc);
   const sky::SkyState state = sky::buildSkyState(*place, sky);
-  std::printf("%s\n", nightProbeJson(sky::nightProbe(*model, state, request)).dump(2).c_str());
+  nlohmann::json out = nightProbeJson(sky::nightProbe(*model, state, request));
+  addThroughLayers(out, state, *model, request.views);
+  std::printf("%s\n", out.dump(2).c_str());
   return 0;
 }
 

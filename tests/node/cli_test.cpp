@@ -637,6 +637,44 @@ TEST_F(Cli, ProbeAndRenderShareTheTablesAndTheGroundAlbedo) {
   EXPECT_NEAR(render, probe, 0.05 * probe);
 }
 
+// Below the tables' 10 km the node draws the rest of the haze as a layer over them; the probe's
+// through_layers is that composition on the CPU (sky/client_light.h), the frame's on the GPU from
+// the sky pass's table: at a visibility of 2 km, 500 m up, the ground 30 degrees down and the sky
+// 5 degrees up agree within 5%, where the tables' own figures miss the layer by far.
+TEST_F(Cli, ProbeBelowTenKilometresComposesTheHazeAsTheFrameDoes) {
+  const fs::path cache = dir_ / "cache";
+  const fs::path config = write("haze.toml", "[sky]\natmosphere_tables = \"small\"\nground_albedo = 0.3\n"
+                                             "atmosphere_cache = \"" + cache.string() + "\"\n[[channel]]\nname = \"front\"\n"
+                                             "width = 33\nheight = 25\nup = 2\ndown = 2\nleft = 2\nright = 2\n");
+  struct View {
+    double pitchDeg;
+    const char* probeView;
+  };
+  for (const View& v : {View{-30.0, "120,0"}, View{5.0, "85,0"}}) {
+    SCOPED_TRACE(v.probeView);
+    const Result rendered = run("render --config " + config.string() + " --visibility 2 --alt 500 --sun-azimuth 180 "
+                                "--sun-elevation 30 --yaw 0 --pitch " + std::to_string(v.pitchDeg) + " --exr " +
+                                (dir_ / "haze.exr").string());
+    ASSERT_EQ(rendered.exitCode, 0) << rendered.err;
+    const Result probed = run("probe --config " + config.string() + " --visibility 2 --alt 500 --sun-zenith 60 "
+                              "--sun-azimuth 180 --view " + v.probeView);
+    ASSERT_EQ(probed.exitCode, 0) << probed.err;
+    EXPECT_NE(probed.err.find("through_layers adds the haze layer"), std::string::npos) << probed.err;
+    const auto view = nlohmann::json::parse(probed.out)["views"][0];
+    ASSERT_TRUE(view.contains("through_layers")) << probed.out;
+    const double layered = view["through_layers"]["luminance_cd_m2"].get<double>();
+    const double tables = view["sky"]["luminance_cd_m2"].get<double>() +
+                          (view["ground"].is_null() ? 0.0 : view["ground"]["luminance_cd_m2"].get<double>());
+    const auto image = skyig::render::readExr((dir_ / "haze.exr").string()).image;
+    const auto rgb = image.pixel(16, 12);
+    const double render = 0.2126 * double{rgb[0]} + 0.7152 * double{rgb[1]} + 0.0722 * double{rgb[2]};
+    std::printf("2 km haze, pitch %+.0f deg: render %.1f, probe through the layers %.1f, the tables alone %.1f cd/m^2\n",
+                v.pitchDeg, render, layered, tables);
+    EXPECT_NEAR(render, layered, 0.05 * layered);
+    EXPECT_GT(std::abs(tables - render), 0.1 * render);  // the layer matters: the tables alone would not do
+  }
+}
+
 // A channel with a [channel.projector]: `render --projector` writes the image sent to the
 // projector and the light it adds, at the projector's resolution (the channel's size defaults
 // to it), the EXR naming the calibration.

@@ -49,7 +49,12 @@ FogState makeFogState(const atmosphere::AtmosphereModel& model, const SkyConditi
     out.sunlit[i] = weather::makeFogLayer(specs[i], ground, albedo, sunlit.total());
     const double lux = shader::rec709Luminance(sunlit.total());
     out.sunShare[i] = lux > 0.0 ? shader::rec709Luminance(sunlit.direct) / lux : 0.0;
-    if (moonlightScale != glm::dvec3(0.0)) out.moonIrradiance[i] = irradianceAt(model, top, moon).total() * moonlightScale;
+    if (moonlightScale != glm::dvec3(0.0)) {
+      const TopLight moonlit = irradianceAt(model, top, moon);
+      out.moonIrradiance[i] = moonlit.total() * moonlightScale;
+      const double moonLux = shader::rec709Luminance(moonlit.total());
+      out.moonShare[i] = moonLux > 0.0 ? shader::rec709Luminance(moonlit.direct) / moonLux : 0.0;
+    }
   }
   return out;
 }

@@ -16,6 +16,7 @@ struct FogState {
   weather::FogLayers sunlit{};                                      // lit at the top by the sun and its sky
   std::array<glm::dvec3, weather::kFogLayerCount> moonIrradiance{};  // the moon's share at each top (Rec.709 lux)
   std::array<double, weather::kFogLayerCount> sunShare{};            // of the sunlit top's lux, the direct sun's
+  std::array<double, weather::kFogLayerCount> moonShare{};           // of the moonlit top's lux, the direct moon's
   bool any() const;
 };
 

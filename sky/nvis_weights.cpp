@@ -110,15 +110,23 @@ NvisWeights nvisWeights(SpectralBand band, const SkyState& state, const glm::dve
                      state.conditions.atmosphere->parameters(0).bottom_radius;
     const glm::dvec3 view = glm::length(viewEnu) > 0.0 ? glm::normalize(viewEnu) : glm::dvec3(0.0, 1.0, 0.0);
     const double replaced = 1.0 - weather::fogAlong(layers, h, view.z).a;
-    double depth = 0.0, sunShare = 0.0;
+    double depth = 0.0, sunShare = 0.0, moonShare = 0.0;
     for (std::size_t i = 0; i < layers.size(); ++i) {
       const double tau = shader::fogColumnDepth(layers[i]);
       depth += tau;
       sunShare += tau * state.fog.sunShare[i];
+      moonShare += tau * state.fog.moonShare[i];
     }
-    if (depth > 0.0) sunShare /= depth;
-    const double fogLight = sunShare * w.sunDisc + (1.0 - sunShare) * w.sunlitSky;
-    w.sunlitSky += replaced * (fogLight - w.sunlitSky);
+    if (depth > 0.0) {
+      sunShare /= depth;
+      moonShare /= depth;
+    }
+    // The fog lit by the sun, and by the moon, is lit by their direct light and their skies' in
+    // those shares (grey droplets keep the spectrum of what lights them).
+    const double sunFogLight = sunShare * w.sunDisc + (1.0 - sunShare) * w.sunlitSky;
+    const double moonFogLight = moonShare * w.moon + (1.0 - moonShare) * w.moonlitSky;
+    w.sunlitSky += replaced * (sunFogLight - w.sunlitSky);
+    w.moonlitSky += replaced * (moonFogLight - w.moonlitSky);
   }
   return w;
 }

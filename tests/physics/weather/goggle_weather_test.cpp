@@ -76,5 +76,37 @@ TEST(GoggleWeather, TheGoggleSeesFartherInHazeAndWeighsTheFogAsItsLight) {
   EXPECT_EQ(inFog.sunDisc, inClear.sunDisc);
 }
 
+// The same under a full moon (2026-06-29, 23:00Z, the sun 20 deg down): inside the fog the
+// moonlit sky's weight lies between the clear moonlit sky's and the moonlight's, by the moon's
+// share of the moonlight on the fog's top (before, it kept the clear sky's: the goggle saw the
+// moonlit fog with the spectrum of a blue moonlit sky).
+TEST(GoggleWeather, TheMoonlitFogWeighsAsTheMoonlightThatLightsIt) {
+  atmosphere::ModelConfig config = atmosphere::testing::oneGroupConfig();
+  const auto model = std::make_shared<const atmosphere::AtmosphereModel>(atmosphere::testing::cachedModel(config));
+  SkyConditions conditions;
+  conditions.model = SkyModel::Physical;
+  conditions.atmosphere = model;
+  conditions.fog = {0.0, 200.0, 0.4};
+  ObserverState o;
+  o.utc = {2026, 6, 29, 23.0 * 3600.0};
+  o.heightM = 30.0;
+  const SkyState foggy = buildSkyState(o, conditions);
+  ASSERT_NE(foggy.moonlightScale, glm::dvec3(0.0)) << "the moon is up";
+  SkyState clear = foggy;
+  clear.fog = FogState{};
+  const glm::dvec3 level(0.0, 1.0, 0.0);
+  const NvisWeights inFog = nvisWeights(SpectralBand::NvisClassA, foggy, level);
+  const NvisWeights inClear = nvisWeights(SpectralBand::NvisClassA, clear, level);
+  const double share = foggy.fog.moonShare[1];
+  ASSERT_GT(share, 0.3);
+  ASSERT_LT(share, 1.0);
+  const double expected = share * inClear.moon + (1.0 - share) * inClear.moonlitSky;  // the level view is all fog
+  std::printf("class A moonlit sky's weight: clear %.4g, in fog %.4g (the moon's share of the fog's light %.2f, the "
+              "moon's weight %.4g)\n",
+              inClear.moonlitSky, inFog.moonlitSky, share, inClear.moon);
+  EXPECT_NEAR(inFog.moonlitSky, expected, 1e-6 * expected);
+  EXPECT_NE(inFog.moonlitSky, inClear.moonlitSky);
+}
+
 }  // namespace
 }  // namespace skyig::sky

@@ -172,7 +172,8 @@ bool SkyRenderer::drawSky(const skyig::sky::SkyState& state, const skyig::sky::C
     // a goggle, which sees far fainter light than the eye.
     physical_->setFog(skyig::sky::isGoggle(channel)
                           ? skyig::sky::goggleFogLayers(state.fog, skyig::sky::nvisClassOf(channel.band))
-                          : sky::drawnFogLayers(state.fog));
+                          : sky::drawnFogLayers(state.fog),
+                      skyig::sky::fogTableFor(state.fog, channel.band), state.fog.tables.heightM);
     return physical_->draw(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
                            skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection,
                            state.shown.moonlitSky || skyig::sky::isGoggle(channel) ? state.moonlightScale

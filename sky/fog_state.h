@@ -2,8 +2,11 @@
 // The fog layers of a sky state (physics/weather/fog_layer.h) lit by its sun and moon: what the
 // sky pass composes over the clear air and the eye's view sphere weighs.
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <array>
+#include <memory>
+#include <vector>
 
 #include "physics/atmosphere/model.h"
 #include "physics/common/sky_conditions.h"
@@ -11,12 +14,23 @@
 
 namespace skyig::sky {
 
+// The sky pass's tables of the layers along every view (physics/weather/fog_table.h) for the
+// state's eye, made with the state (on the node's worker) instead of on the render thread, where
+// each channel's renderer would make its own every frame the eye's height changes: for the eye
+// (drawnFogLayers) and for the goggles of class A and B (their haze thinner: goggleFogLayers, the
+// eye's own table where there is no haze to thin).
+struct FogTables {
+  double heightM = -1.0;  // the eye above the ground they are for (physicalCamera's)
+  std::shared_ptr<const std::vector<glm::vec4>> eye, nvisA, nvisB;
+};
+
 // The haze below the tables' visibility, the ground fog, the precipitation; extinction 0: none.
 struct FogState {
   weather::FogLayers sunlit{};                                      // lit at the top by the sun and its sky
   std::array<glm::dvec3, weather::kFogLayerCount> moonIrradiance{};  // the moon's share at each top (Rec.709 lux)
   std::array<double, weather::kFogLayerCount> sunShare{};            // of the sunlit top's lux, the direct sun's
   std::array<double, weather::kFogLayerCount> moonShare{};           // of the moonlit top's lux, the direct moon's
+  FogTables tables;  // when any(); a state made without them (a test's, the warm-up's) has none
   bool any() const;
 };
 

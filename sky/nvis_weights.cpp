@@ -68,6 +68,11 @@ weather::FogLayers goggleFogLayers(const FogState& fog, nvis::NvisClass nvisClas
   return layers;
 }
 
+std::shared_ptr<const std::vector<glm::vec4>> fogTableFor(const FogState& fog, SpectralBand band) {
+  if (band == SpectralBand::Visible) return fog.tables.eye;
+  return band == SpectralBand::NvisClassA ? fog.tables.nvisA : fog.tables.nvisB;
+}
+
 nvis::NvisClass nvisClassOf(SpectralBand band) {
   if (band == SpectralBand::Visible) throw std::invalid_argument("nvisClassOf: the visible band has no NVIS class");
   return band == SpectralBand::NvisClassA ? nvis::NvisClass::A : nvis::NvisClass::B;

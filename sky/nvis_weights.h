@@ -56,6 +56,10 @@ double nvisHazeExtinctionScale(nvis::NvisClass nvisClass);
 // and dust as the eye's (droplets, drops and grains far larger than the wavelength: grey).
 weather::FogLayers goggleFogLayers(const FogState& fog, nvis::NvisClass nvisClass);
 
+// The state's precomputed table (FogTables) for a channel of `band`: the eye's, or its goggle
+// class's; null where the state has none.
+std::shared_ptr<const std::vector<glm::vec4>> fogTableFor(const FogState& fog, SpectralBand band);
+
 // The NVIS irradiance per lux of a blackbody of `temperatureK` above the atmosphere (the stars'
 // weight: each star's own, from the temperature it keeps), interpolated in a table of
 // log-spaced temperatures from 1500 K to 50000 K (clamped beyond) that is within 0.1% of the

@@ -11,9 +11,12 @@
 #include "physics/atmosphere/physical_camera.h"
 #include "physics/physics.h"  // SUN_ANGULAR_RADIUS
 #include "physics/common/units.h"
+#include "physics/weather/fog_table.h"
+#include "sky/nvis_weights.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -83,6 +86,24 @@ std::shared_ptr<const night::StarField> starFieldOf(const SkyState& s) {
       night::buildStarField(c.starCatalogue.get(), s.ephemeris ? *s.ephemeris : *own, *s.extinction, options));
 }
 
+
+// The sky pass's tables for the eye and the goggles (sky/fog_state.h, FogTables), at the height
+// the renderer computes them for: the physical camera's above the ground.
+FogTables fogTablesOf(const FogState& fog, const atmosphere::AtmosphereModel& model, double observerHeightM) {
+  FogTables t;
+  t.heightM = glm::length(atmosphere::physicalCamera(model, observerHeightM)) - model.parameters(0).bottom_radius;
+  const weather::FogLayers eye = drawnFogLayers(fog);
+  t.eye = std::make_shared<const std::vector<glm::vec4>>(weather::fogTable(eye, t.heightM));
+  auto goggle = [&](nvis::NvisClass c) {
+    const weather::FogLayers layers = goggleFogLayers(fog, c);
+    return std::memcmp(&layers, &eye, sizeof layers) == 0
+               ? t.eye
+               : std::make_shared<const std::vector<glm::vec4>>(weather::fogTable(layers, t.heightM));
+  };
+  t.nvisA = goggle(nvis::NvisClass::A);
+  t.nvisB = goggle(nvis::NvisClass::B);
+  return t;
+}
 
 // The sun's illuminance at the eye after the atmosphere (the model's direct irradiance at normal
 // incidence, through the weather's layers as the disc is seen through them; or the analytic
@@ -233,8 +254,10 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
     auto throughFog = [&](double e) {
       return fogTransmittanceToSpace(s.fog, *s.conditions.atmosphere, observer.heightM, e);
     };
-    if (s.fog.any())
+    if (s.fog.any()) {
       s.extinction = std::make_shared<const atmosphere::ExtinctionProfile>(s.extinction->dimmedBy(throughFog));
+      s.fog.tables = fogTablesOf(s.fog, *s.conditions.atmosphere, observer.heightM);
+    }
   }
   s.starField = starFieldOf(s);
   if (s.ephemeris) {

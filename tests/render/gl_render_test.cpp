@@ -17,6 +17,8 @@
 
 #include "tests/physics/night/star_test_support.h"
 #include "physics/common/units.h"
+#include "physics/weather/fog_table.h"
+#include "sky/nvis_weights.h"
 
 #include <gtest/gtest.h>
 #include <png.h>
@@ -977,4 +979,39 @@ TEST_F(GlRender, NightLayerShowsTheNightsLightOfEveryPixel) {
   EXPECT_LT(groundP99, 0.01);
   EXPECT_LT(horizonWorst, 0.02);
   EXPECT_LT(aboveBandP99, 0.002);
+}
+
+// The weather's table is made with the sky state (on the node's worker), not by each channel's
+// renderer on the render thread: the state's tables are the weather's own at the renderer's eye
+// height, the eye's and each goggle class's (apart where there is haze to thin), the frame drawn
+// from them is the frame the pass's own table gives to the bit, and the pass does draw from the
+// state's (a state carrying another fog's table draws another frame).
+TEST_F(GlRender, TheFogTableMadeWithTheStateDrawsTheFrameTheRenderThreadWould) {
+  SkyConditions c = physicalConditions(smallModel());
+  c.fog = {0.0, 200.0, 0.4};
+  c.haze = weather::hazeBelowTables(2.0, 1200.0);
+  const SkyState s = state(270.0, 120.0, 40.0, c);
+  const FogTables& t = s.fog.tables;
+  ASSERT_TRUE(t.eye && t.nvisA && t.nvisB);
+  const double h = glm::length(atmosphere::physicalCamera(*c.atmosphere, s.observer.heightM)) -
+                   c.atmosphere->parameters(0).bottom_radius;
+  EXPECT_EQ(t.heightM, h);
+  EXPECT_EQ(*t.eye, weather::fogTable(drawnFogLayers(s.fog), h));
+  EXPECT_EQ(*t.nvisB, weather::fogTable(goggleFogLayers(s.fog, nvis::NvisClass::B), h));
+  EXPECT_NE(*t.nvisA, *t.eye);  // the haze thinner in the goggle's band
+
+  const ChannelConfig ch = channel(-2.0);
+  renderer_->draw(s, ch);
+  const HdrImage fromState = renderer_->readHdr();
+  SkyState own = s;
+  own.fog.tables = FogTables{};
+  renderer_->draw(own, ch);
+  EXPECT_EQ(renderer_->readHdr().rgba, fromState.rgba);
+
+  SkyConditions thicker = c;
+  thicker.fog.visibilityKm = 0.1;
+  SkyState mixed = s;
+  mixed.fog.tables = state(270.0, 120.0, 40.0, thicker).fog.tables;
+  renderer_->draw(mixed, ch);
+  EXPECT_NE(renderer_->readHdr().rgba, fromState.rgba);
 }

@@ -7,6 +7,11 @@
 
 #include "physics/weather/fog_layer.h"
 
+#include <glm/vec4.hpp>
+
+#include <memory>
+#include <vector>
+
 namespace skyig::render {
 
 class FogTableTexture {
@@ -16,13 +21,18 @@ class FogTableTexture {
   FogTableTexture(const FogTableTexture&) = delete;
   FogTableTexture& operator=(const FogTableTexture&) = delete;
 
-  // The table of `layers` for an eye heightM above the ground, bound to `unit`.
-  void use(const weather::FogLayers& layers, double heightM, GLuint unit);
+  // The table of `layers` for an eye heightM above the ground, bound to `unit`: `precomputed`
+  // (made with the sky state for those layers at that height) uploaded when it is not the one
+  // already there; without it, made here whenever the layers or the height change.
+  void use(const weather::FogLayers& layers, double heightM, GLuint unit,
+           const std::shared_ptr<const std::vector<glm::vec4>>& precomputed = nullptr);
 
  private:
+  void upload(const std::vector<glm::vec4>& table);
   GLuint id_ = 0;
   weather::FogLayers layers_{};
   double heightM_ = -1.0;
+  std::shared_ptr<const std::vector<glm::vec4>> uploaded_;  // held: its address cannot be reused meanwhile
 };
 
 }  // namespace skyig::render

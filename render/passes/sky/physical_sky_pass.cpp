@@ -416,7 +416,10 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   }
   // The camera inside the atmosphere (every IG frame): what every pixel shares, in double, once.
   const Frame f = frameInside(camera, sunDirection, moonDirection, moonlightScale, sunRefraction, night, sunlit);
-  if (base.fog) fogTable_->use(fog_, glm::length(camera) - current_.model->parameters(0).bottom_radius, SKYIG_UNIT_FOG_TABLE);
+  if (base.fog) {
+    const double h = glm::length(camera) - current_.model->parameters(0).bottom_radius;
+    fogTable_->use(fog_, h, SKYIG_UNIT_FOG_TABLE, h == fogPrecomputedHeightM_ ? fogPrecomputed_ : nullptr);
+  }
   const GLint target = drawSlices(f);
   if (reference_) {  // the frozen reference: everything in one program, the moon a uniform branch
     prepare(*reference_, f);

@@ -65,8 +65,15 @@ class PhysicalSkyPass {
             const NightLayer& night = {}, bool sunlit = true);
 
   // The fog layers the next draw() composes over the sky (sky/fog_state.h, drawnFogLayers); none
-  // (extinction 0) until set.
-  void setFog(const weather::FogLayers& layers) { fog_ = layers; }
+  // (extinction 0) until set. `table`: their table for an eye tableHeightM above the ground,
+  // made with the state (sky/fog_state.h, FogTables), used when the draw's eye is at that
+  // height; else (null, another height) the pass makes it.
+  void setFog(const weather::FogLayers& layers, std::shared_ptr<const std::vector<glm::vec4>> table = nullptr,
+              double tableHeightM = -1.0) {
+    fog_ = layers;
+    fogPrecomputed_ = std::move(table);
+    fogPrecomputedHeightM_ = tableHeightM;
+  }
 
   // What a draw() does to the pass's own state, without drawing: the pending model's next
   // slices uploaded (swapped in once complete). A replay that skips the frames it does not
@@ -172,6 +179,8 @@ class PhysicalSkyPass {
   std::unique_ptr<Pending> pending_;
   std::size_t lastUploadBytes_ = 0;
   weather::FogLayers fog_{};
+  std::shared_ptr<const std::vector<glm::vec4>> fogPrecomputed_;
+  double fogPrecomputedHeightM_ = -1.0;
   std::unique_ptr<FogTableTexture> fogTable_ = std::make_unique<FogTableTexture>();
   double lastUploadSeconds_ = 0.0;
 };

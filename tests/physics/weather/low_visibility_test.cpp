@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <vector>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -202,6 +204,35 @@ TEST(FogAndTheSun, TheSunsGlareComesThroughTheFogAsItsDiscDoes) {
   EXPECT_NEAR(ratio, sky::fogTransmittanceToSpace(foggy.fog, *model, o.heightM, foggy.sunApparentAltitude), 1e-12);
   EXPECT_NEAR(ratio, std::exp(-3.912 * 170.0 / 400.0 / std::sin(foggy.sunApparentAltitude)), 1e-3 * ratio);
   EXPECT_LT(ratio, 0.04);
+}
+
+// The sky pass's fog tables are made with the state (sky/fog_state.h, FogTables): the eye's and
+// the two goggle classes', each 2048 views. What that adds to a state, on the worker (printed
+// for docs/performance.md; the render thread no longer makes them).
+TEST(FogTables, AreMadeWithTheStateAtTheRenderersHeight) {
+  auto model = std::make_shared<const AtmosphereModel>(atmosphere::testing::cachedModel(tablesConfig(10.0)));
+  sky::ObserverState o;
+  o.heightM = 300.0;
+  sky::SkyConditions c;
+  c.model = sky::SkyModel::Physical;
+  c.atmosphere = model;
+  auto medianMs = [&](const sky::SkyConditions& conditions) {
+    std::vector<double> ms;
+    sky::SkyStateCaches caches;
+    for (int i = 0; i < 9; ++i) {
+      const auto start = std::chrono::steady_clock::now();
+      const sky::SkyState s = sky::buildSkyState(o, conditions, sky::SunOverride{180.0, 30.0}, &caches);
+      ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+      EXPECT_EQ(s.fog.any(), s.fog.tables.eye != nullptr);
+    }
+    std::sort(ms.begin(), ms.end());
+    return ms[ms.size() / 2];
+  };
+  const double clear = medianMs(c);
+  c.fog = {0.0, 200.0, 0.4};
+  c.haze = hazeBelowTables(2.0, 1200.0);
+  const double foggy = medianMs(c);
+  std::printf("a sky state: clear air %.2f ms, with a haze layer and a fog (their three tables) %.2f ms\n", clear, foggy);
 }
 
 }  // namespace

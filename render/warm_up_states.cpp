@@ -26,6 +26,7 @@ auto programKey(const skyig::sky::SkyState& s) {
 skyig::sky::SkyState underFog(skyig::sky::SkyState s) {
   const double ground = s.conditions.atmosphere->parameters(0).bottom_radius;
   s.fog.sunlit[1] = weather::makeFogLayer({0.0, 200.0, 0.4}, ground, 0.2, glm::dvec3(1.0));
+  s.fog.tables = {};  // the state's own tables are for its own layers: the pass makes this one's
   return s;
 }
 

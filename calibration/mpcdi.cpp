@@ -227,8 +227,8 @@ namespace {
 
 // What a warp's nodes show of the region's image. NaN marks a node that shows nothing, by
 // design; a warp none of whose nodes lands on the image (NaN, infinite or 3e38 everywhere), or
-// all of whose nodes land on one point (the floats of a PFM read in the wrong byte order are
-// ~1e-40 or ~1e30), is a damaged file, not a calibration. A node within half an image of it
+// all of whose nodes land on one point (absolute values read in the wrong byte order can all
+// become tiny floats: every node at the image's corner), is a damaged file, not a calibration. A node within half an image of it
 // counts (a blend's margin).
 struct WarpCoverage {
   std::size_t onImage = 0;

@@ -1,8 +1,7 @@
 #include "render/warm_up_states.h"
 
-#include "physics/weather/fog_layer.h"
-
 #include "physics/common/units.h"
+#include "physics/weather/fog_layer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -59,9 +59,10 @@ rm -f "$out/dump.jsonl" "$out/stats.json"
   --stats-json "$out/stats.json" --log-interval 10 > "$out/node.log" 2>&1 &
 node=$!
 trap 'kill $node 2>/dev/null || true' EXIT
-# Serving once the channel is announced (the tables are loaded or built first).
-for _ in $(seq 1 600); do grep -q "channel front:" "$out/node.log" && break; sleep 1; done
-grep -q "channel front:" "$out/node.log" || { echo "weather-minute.sh: the node did not start; $out/node.log:" >&2; tail "$out/node.log" >&2; exit 1; }
+# Serving once its programs are compiled, just before its first frame: its tables are built or
+# loaded by then (a fresh cache builds them first; the channel is announced before that).
+for _ in $(seq 1 600); do grep -q "compiled in" "$out/node.log" && break; sleep 1; done
+grep -q "compiled in" "$out/node.log" || { echo "weather-minute.sh: the node did not start serving; $out/node.log:" >&2; tail "$out/node.log" >&2; exit 1; }
 "$skyig" host --path "$here/config/circuit.csv" --loop --rate "$rate" --duration $(( 2 * minute )) \
   --start-utc 2026-06-21T09:00:00Z --weather "$out/weather.csv" --to "127.0.0.1:$port" > "$out/host.log" 2>&1
 rss_kb=$(awk '/VmRSS/ { print $2 }' "/proc/$node/status")

@@ -282,8 +282,9 @@ class FrameLoop {
 
   // Compiled in the frame that first needs them, a light's or a weather's programs cost that
   // frame a second on llvmpipe: so before the first frame the node draws, nothing shown, the
-  // states of its day (render/warm_up_states.h). A stop asked for meanwhile ends it between two
-  // draws.
+  // states of its day (render/warm_up_states.h), and each state again with every channel's goggle
+  // switched (on for an eye channel, off for a goggle one), as a host's Sensor Control may switch
+  // it. A stop asked for meanwhile ends it between two draws.
   void warmUp(DisplayOutputs& display, const NodeChannels& nc, const std::atomic<bool>& externalStop) {
     const auto start = Clock::now();
     const std::shared_ptr<const BuiltSky> built = sky_.get();
@@ -291,11 +292,16 @@ class FrameLoop {
     for (const auto& c : nc.channels) displays.push_back(c.display);
     const std::vector<sky::SkyState> states = render::warmUpStates(built->state, displays);
     const sky::Attitude attitude = worker_.poseAt(built->host.get(), start, nc.channels).attitude;
-    for (const sky::SkyState& s : states)
+    std::vector<sky::ChannelConfig> switched = nc.channels;
+    for (sky::ChannelConfig& c : switched) c.band = sky::isGoggle(c) ? sky::SpectralBand::Visible : c.goggle.nvisClass;
+    for (const sky::SkyState& s : states) {
       for (const sky::Attitude& a : render::warmUpAttitudes(s, attitude)) {
         if (externalStop) return;
         display.warmUp(s, a, nc.channels);
       }
+      if (externalStop) return;
+      display.warmUp(s, attitude, switched);
+    }
     spdlog::info("the programs of {} lights and weathers of the day compiled in {:.0f} ms", states.size(),
                  1000.0 * std::chrono::duration<double>(Clock::now() - start).count());
   }

@@ -187,9 +187,9 @@ void logChannels(const NodeOptions& opt, const NodeChannels& nc, const DisplayOu
 // sky, answers the host with Start of Frame, and dumps the state.
 class FrameLoop {
  public:
-  FrameLoop(const NodeOptions& opt, NodeStats& stats, Latest<BuiltSky>& sky, const SkyWorker& worker, UdpSocket& udp,
-            Clock::time_point start)
-      : opt_(opt), stats_(stats), sky_(sky), worker_(worker), udp_(udp), start_(start),
+  FrameLoop(const NodeOptions& opt, NodeStats& stats, Latest<BuiltSky>& sky, Latest<HostSnapshot>& host,
+            const SkyWorker& worker, UdpSocket& udp, Clock::time_point start)
+      : opt_(opt), stats_(stats), sky_(sky), host_(host), worker_(worker), udp_(udp), start_(start),
         period_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / opt.frameRateHz))),
         next_(Clock::now()),
         dump_(opt.dumpStatePath.empty() ? nullptr : std::make_unique<StateDump>(opt.dumpStatePath)) {}
@@ -223,7 +223,7 @@ class FrameLoop {
       time(snapshot, frameStart, frameEnd, display.lastChannelGpuSeconds());
       if (!firstStart_) firstStart_ = frameStart;
       lastEnd_ = frameEnd;
-      sendStartOfFrame(frame, snapshot, frameEnd);
+      sendStartOfFrame(frame, snapshot, frameStart, frameEnd);
       if (dump_)
         dump_->write(frame, snapshot, built->state, pose, std::chrono::duration<double>(frameEnd - frameStart).count(),
                      display.lastChannelGpuSeconds());
@@ -330,12 +330,19 @@ class FrameLoop {
   // host's address on the reply port while it is alive: only an allowed sender that won a
   // session is answered, and one datagram from a spoofed source gets at most a session gap's
   // worth of frames, never a stream.
-  void sendStartOfFrame(std::uint64_t frame, const HostSnapshot* snapshot, Clock::time_point frameEnd) {
+  // The host is alive if its latest datagram (the receiver's, not the one the frame shows, which
+  // the worker may still be catching up on) came within a session gap of the frame's start: a
+  // frame that takes longer than the gap to draw (a slow node) still answers, as the CIGI ICD
+  // asks of every frame in asynchronous mode; judged at the frame's end by the state shown, a
+  // node slower than the gap never answered.
+  void sendStartOfFrame(std::uint64_t frame, const HostSnapshot* snapshot, Clock::time_point frameStart,
+                        Clock::time_point frameEnd) {
     std::optional<sockaddr_in> to;
+    const std::shared_ptr<const HostSnapshot> latest = host_.get();
     if (opt_.replyTo) to = toSockaddr(*opt_.replyTo);
-    else if (snapshot && snapshot->sender &&
-             frameEnd - snapshot->state.received <= std::chrono::duration<double>(opt_.config.host.session.sessionGapS))
-      to = toSockaddr(Sender{snapshot->sender->address, opt_.replyPort});
+    else if (latest && latest->sender &&
+             frameStart - latest->state.received <= std::chrono::duration<double>(opt_.config.host.session.sessionGapS))
+      to = toSockaddr(Sender{latest->sender->address, opt_.replyPort});
     if (!to) return;
     protocol::cigi::StartOfFrame s;
     s.igFrameNumber = static_cast<std::uint32_t>(frame);
@@ -354,6 +361,7 @@ class FrameLoop {
   const NodeOptions& opt_;
   NodeStats& stats_;
   Latest<BuiltSky>& sky_;
+  Latest<HostSnapshot>& host_;  // the receiver's latest: whether the host is alive
   const SkyWorker& worker_;
   UdpSocket& udp_;
   const Clock::time_point start_;
@@ -411,7 +419,7 @@ int runNode(const NodeOptions& opt, NodeStats& stats, const std::atomic<bool>& e
     threads.start([&] { workerLoop(opt, stats, host, sky, worker, stop); });
     DisplayOutputs display(opt.headless, opt.config.nodeName, channels.channels, channels.projectors);
     logChannels(opt, channels, display);
-    FrameLoop loop(opt, stats, sky, worker, udp, start);
+    FrameLoop loop(opt, stats, sky, host, worker, udp, start);
     loop.run(channels, display, externalStop);
     servedS = loop.servedSeconds();
   }  // the threads are joined here

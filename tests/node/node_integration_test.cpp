@@ -209,6 +209,42 @@ TEST_F(NodeIntegration, StartOfFrameGoesBackToTheHost) {
   node.stop();
 }
 
+// A node whose frames take longer to draw than the session gap still answers every frame it
+// draws while its host speaks: the host is judged alive at the frame's start. Here a 20 ms gap
+// and 1280 x 960 frames (tens of milliseconds on llvmpipe) with the host sending every 2 ms:
+// before, the node judged at the frame's end and sent no Start of Frame at all.
+TEST_F(NodeIntegration, AFrameSlowerThanTheSessionGapStillAnswersTheHost) {
+  UdpSocket host({"127.0.0.1", 0});
+  const std::uint16_t port = freeLoopbackPort();
+  NodeOptions o = smallNode(port, dir_ / "dump.jsonl");
+  o.replyPort = host.localEndpoint().port;
+  o.config.channels.front().width = 1280;
+  o.config.channels.front().height = 960;
+  o.config.host.session.sessionGapS = 0.02;
+  NodeRun node(o);
+  ASSERT_TRUE(node.waitUntilRendering());
+  std::atomic<bool> sending{true};
+  std::thread sender([&] {
+    for (std::uint32_t n = 1; sending; ++n) {
+      host.sendTo(igControlOnly(n, skyig::protocol::ByteOrder::big), toSockaddr({"127.0.0.1", port}));
+      std::this_thread::sleep_for(2ms);
+    }
+  });
+  ASSERT_TRUE(waitUntil([&] { return node.stats.datagrams.load() > 10; }));
+  const std::uint64_t framesBefore = node.stats.frames.load(), sentBefore = node.stats.startOfFrameSent.load();
+  ASSERT_TRUE(waitForFrames(node.stats.frames, framesBefore + 20));
+  const std::uint64_t frames = node.stats.frames.load() - framesBefore;
+  const std::uint64_t sent = node.stats.startOfFrameSent.load() - sentBefore;
+  sending = false;
+  sender.join();
+  const double frameMs = node.stats.frameTime.summary().value("p50_us", 0.0) / 1000.0;
+  node.stop();
+  std::printf("frames of %.0f ms (p50) against a 20 ms session gap: %llu Start of Frames for %llu frames\n", frameMs,
+              static_cast<unsigned long long>(sent), static_cast<unsigned long long>(frames));
+  ASSERT_GT(frameMs, 20.0) << "the frames must be slower than the gap for this to show anything";
+  EXPECT_GE(2 * sent, frames);
+}
+
 // Start of Frame answers only the followed host: a sender outside host.allowed (here a spoofed
 // 127.0.0.2 listening on the reply port) gets nothing however long the node runs, and is
 // counted; the allowed host that then speaks is answered on its own address.

@@ -16,6 +16,18 @@
 namespace skyig::sky {
 namespace {
 
+// Inside a fog, the level view all fog: a sky's weight in fog is that of the light on the fog's
+// top, the direct light's and its sky's in their shares (`share` the direct one's).
+void expectTheFogWeighsAsItsLight(const char* what, double share, double directWeight, double clearSky, double inFog) {
+  ASSERT_GT(share, 0.3);
+  ASSERT_LT(share, 1.0);
+  const double expected = share * directWeight + (1.0 - share) * clearSky;
+  std::printf("%s: clear %.4g, in fog %.4g (the direct light's share of the fog's light %.2f, its weight %.4g)\n", what,
+              clearSky, inFog, share, directWeight);
+  EXPECT_NEAR(inFog, expected, 1e-6 * expected);
+  EXPECT_NE(inFog, clearSky);
+}
+
 // The class's response-weighted mean wavelength gives the haze's extinction ratio: class B's
 // filter cuts further into the red, so it sees through haze better than class A, and both better
 // than the eye (ratio below 1).
@@ -64,14 +76,8 @@ TEST(GoggleWeather, TheGoggleSeesFartherInHazeAndWeighsTheFogAsItsLight) {
   const NvisWeights inFog = nvisWeights(SpectralBand::NvisClassB, foggy, level);
   const NvisWeights inClear = nvisWeights(SpectralBand::NvisClassB, clear, level);
   EXPECT_EQ(goggleFogLayers(foggy.fog, nvis::NvisClass::B)[1].extinction, drawnFogLayers(foggy.fog)[1].extinction);
-  const double share = foggy.fog.sunShare[1];
-  ASSERT_GT(share, 0.3);
-  ASSERT_LT(share, 1.0);
-  const double expected = share * inClear.sunDisc + (1.0 - share) * inClear.sunlitSky;  // the level view is all fog
-  std::printf("class B sunlit sky's weight: clear %.4g, in fog %.4g (the sun's share of the fog's light %.2f, the "
-              "sun's weight %.4g)\n",
-              inClear.sunlitSky, inFog.sunlitSky, share, inClear.sunDisc);
-  EXPECT_NEAR(inFog.sunlitSky, expected, 1e-6 * expected);
+  expectTheFogWeighsAsItsLight("class B sunlit sky's weight", foggy.fog.sunShare[1], inClear.sunDisc,
+                               inClear.sunlitSky, inFog.sunlitSky);
   EXPECT_GT(inFog.sunlitSky, inClear.sunlitSky);
   EXPECT_EQ(inFog.sunDisc, inClear.sunDisc);
 }
@@ -97,15 +103,8 @@ TEST(GoggleWeather, TheMoonlitFogWeighsAsTheMoonlightThatLightsIt) {
   const glm::dvec3 level(0.0, 1.0, 0.0);
   const NvisWeights inFog = nvisWeights(SpectralBand::NvisClassA, foggy, level);
   const NvisWeights inClear = nvisWeights(SpectralBand::NvisClassA, clear, level);
-  const double share = foggy.fog.moonShare[1];
-  ASSERT_GT(share, 0.3);
-  ASSERT_LT(share, 1.0);
-  const double expected = share * inClear.moon + (1.0 - share) * inClear.moonlitSky;  // the level view is all fog
-  std::printf("class A moonlit sky's weight: clear %.4g, in fog %.4g (the moon's share of the fog's light %.2f, the "
-              "moon's weight %.4g)\n",
-              inClear.moonlitSky, inFog.moonlitSky, share, inClear.moon);
-  EXPECT_NEAR(inFog.moonlitSky, expected, 1e-6 * expected);
-  EXPECT_NE(inFog.moonlitSky, inClear.moonlitSky);
+  expectTheFogWeighsAsItsLight("class A moonlit sky's weight", foggy.fog.moonShare[1], inClear.moon,
+                               inClear.moonlitSky, inFog.moonlitSky);
 }
 
 }  // namespace

@@ -186,22 +186,32 @@ TEST(FogAtNight, WhatComesFromBeyondTheAirIsDimmedByTheLayer) {
   EXPECT_EQ(sky::fogTransmittanceToSpace(sky::FogState{}, model, h, zenith), 1.0);
 }
 
+// The physical sky over `visibilityKm` tables (the test cache's) for an eye heightM up.
+sky::SkyConditions physicalSky(double visibilityKm) {
+  sky::SkyConditions c;
+  c.model = sky::SkyModel::Physical;
+  c.atmosphere = std::make_shared<const AtmosphereModel>(atmosphere::testing::cachedModel(tablesConfig(visibilityKm)));
+  return c;
+}
+sky::ObserverState eyeAt(double heightM) {
+  sky::ObserverState o;
+  o.heightM = heightM;
+  return o;
+}
+
 // The sun's glare (the veil the eye sees round it) comes through the fog as its disc does: at
 // 30 m in a 200 m fog of 400 m, the sun 30 deg up, 340 m of fog to it, exp(-3.912 x 340 / 400)
 // = 3.6% of the clear air's; before, the veil kept the clear air's and a halo stood round a sun
 // the fog hid.
 TEST(FogAndTheSun, TheSunsGlareComesThroughTheFogAsItsDiscDoes) {
-  auto model = std::make_shared<const AtmosphereModel>(atmosphere::testing::cachedModel(tablesConfig(40.0)));
-  sky::ObserverState o;
-  o.heightM = 30.0;
-  sky::SkyConditions c;
-  c.model = sky::SkyModel::Physical;
-  c.atmosphere = model;
+  sky::SkyConditions c = physicalSky(40.0);
+  const AtmosphereModel& model = *c.atmosphere;
+  const sky::ObserverState o = eyeAt(30.0);
   const sky::SkyState clear = sky::buildSkyState(o, c, sky::SunOverride{180.0, 30.0});
   c.fog = {0.0, 200.0, 0.4};
   const sky::SkyState foggy = sky::buildSkyState(o, c, sky::SunOverride{180.0, 30.0});
   const double ratio = foggy.glare[0].rec709Lux.g / clear.glare[0].rec709Lux.g;
-  EXPECT_NEAR(ratio, sky::fogTransmittanceToSpace(foggy.fog, *model, o.heightM, foggy.sunApparentAltitude), 1e-12);
+  EXPECT_NEAR(ratio, sky::fogTransmittanceToSpace(foggy.fog, model, o.heightM, foggy.sunApparentAltitude), 1e-12);
   EXPECT_NEAR(ratio, std::exp(-3.912 * 170.0 / 400.0 / std::sin(foggy.sunApparentAltitude)), 1e-3 * ratio);
   EXPECT_LT(ratio, 0.04);
 }
@@ -210,12 +220,8 @@ TEST(FogAndTheSun, TheSunsGlareComesThroughTheFogAsItsDiscDoes) {
 // the two goggle classes', each 2048 views. What that adds to a state, on the worker (printed
 // for docs/performance.md; the render thread no longer makes them).
 TEST(FogTables, AreMadeWithTheStateAtTheRenderersHeight) {
-  auto model = std::make_shared<const AtmosphereModel>(atmosphere::testing::cachedModel(tablesConfig(10.0)));
-  sky::ObserverState o;
-  o.heightM = 300.0;
-  sky::SkyConditions c;
-  c.model = sky::SkyModel::Physical;
-  c.atmosphere = model;
+  sky::SkyConditions c = physicalSky(10.0);
+  const sky::ObserverState o = eyeAt(300.0);
   auto medianMs = [&](const sky::SkyConditions& conditions) {
     std::vector<double> ms;
     sky::SkyStateCaches caches;

@@ -1,5 +1,7 @@
 #include "tables/updater.h"
 
+#include "tables/background_priority.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -132,6 +134,7 @@ std::shared_ptr<const AtmosphereModel> AtmosphereUpdater::blend(const BlendJob& 
 }
 
 void AtmosphereUpdater::runBlends() {
+  lowerThisThreadToBackground();  // a blend takes what the frames leave (tables/background_priority.h)
   std::unique_lock<std::mutex> lock(mutex_);
   while (true) {
     blendWake_.wait(lock, [this] { return stop_ || blendJob_.has_value(); });
@@ -216,6 +219,7 @@ void AtmosphereUpdater::waitForBlend() {
 }
 
 void AtmosphereUpdater::run() {
+  lowerThisThreadToBackground();  // builds and cache reads take what the frames leave (tables/background_priority.h)
   std::unique_lock<std::mutex> lock(mutex_);
   while (true) {
     wake_.wait(lock, [this] { return stop_ || pending_.has_value() || !stepsToBuild_.empty(); });

@@ -19,6 +19,7 @@
 #include "tables/visibility_blend.h"
 #include "physics/atmosphere/precompute/precompute.h"
 #include "tables/updater.h"
+#include "tables/background_priority.h"
 #include "shared_models.h"
 
 namespace skyig::atmosphere {
@@ -95,6 +96,32 @@ TEST(AtmosphereUpdater, UsesItsBuilderForTablesMissingFromTheCache) {
   std::vector<GroupTables> expected = precomputeTablesOnCpu(tinyConfig(0.1));
   roundTablesToFloat(expected);
   EXPECT_TRUE(updater.current()->tables(0).scattering.texels == expected[0].scattering.texels);
+}
+
+// A build the host asked for runs at the lowest CPU priority, and so does every thread it starts:
+// a renderer sharing the cores keeps them. The initial model, built before the first frame on the
+// caller's thread, is not lowered.
+TEST(AtmosphereUpdater, BuildsForTheHostRunAtTheLowestPriorityAndSoDoTheirThreads) {
+  const auto dir = testing::testCacheDirectory() / "updater-priority";
+  std::filesystem::remove_all(dir);
+  std::atomic<int> initialNice{-100}, buildNice{-100}, childNice{-100};
+  const TableBuilder recording = [&](const ModelConfig& c, const PrecomputeControl& control) {
+    if (initialNice == -100) {
+      initialNice = thisThreadNice();
+    } else {
+      buildNice = thisThreadNice();
+      std::thread([&] { childNice = thisThreadNice(); }).join();
+    }
+    return precomputeTablesOnCpu(c, control);
+  };
+  const int callerNice = thisThreadNice();
+  AtmosphereUpdater updater(tinyConfig(0.1), dir, recording);
+  updater.request(tinyConfig(0.3));
+  updater.waitIdle();
+  EXPECT_EQ(initialNice.load(), callerNice);
+  EXPECT_EQ(buildNice.load(), kBackgroundNice);
+  EXPECT_EQ(childNice.load(), kBackgroundNice);
+  EXPECT_EQ(thisThreadNice(), callerNice) << "the caller's own thread keeps its priority";
 }
 
 // At most one precompute per interval: a second distinct config waits (the last model serves

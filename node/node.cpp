@@ -10,6 +10,7 @@
 #include "node/transport/cigi_receiver.h"
 #include "node/frame/frame_files.h"
 #include "node/frame/frame_timing.h"
+#include "node/frame/degradation.h"
 #include "node/frame/frame_metadata.h"
 #include "node/config/projector_channel.h"
 #include "node/frame/sky_worker.h"
@@ -18,6 +19,7 @@
 #include "node/common/systemd_notify.h"
 #include "node/common/warning_throttle.h"
 
+#include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
 #include <cmath>
@@ -191,7 +193,7 @@ class FrameLoop {
             const SkyWorker& worker, UdpSocket& udp, Clock::time_point start)
       : opt_(opt), stats_(stats), sky_(sky), host_(host), worker_(worker), udp_(udp), start_(start),
         period_(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / opt.frameRateHz))),
-        next_(Clock::now()),
+        next_(Clock::now()), degrade_(opt.config.degrade),
         dump_(opt.dumpStatePath.empty() ? nullptr : std::make_unique<StateDump>(opt.dumpStatePath)) {}
 
   void run(const NodeChannels& nc, DisplayOutputs& display, const std::atomic<bool>& externalStop) {
@@ -201,6 +203,7 @@ class FrameLoop {
     stats_.channelGpuTime.setChannels(names);
     stats_.targetPeriodUs = 1e6 / opt_.frameRateHz;
     timing_.emplace(names, 1.0 / opt_.frameRateHz);
+    logDegradation();
     warmUp(display, nc, externalStop);
     lastLog_ = Clock::now();
     for (std::uint64_t frame = 0; !externalStop && (opt_.frames == 0 || frame < opt_.frames); ++frame) {
@@ -208,6 +211,7 @@ class FrameLoop {
       const std::shared_ptr<const BuiltSky> built = sky_.get();
       hostVersionShown_ = built->hostVersion;
       const HostSnapshot* snapshot = built->host.get();
+      if (snapshot) lastHostFrameShown_ = snapshot->state.hostFrame;
       const auto frameStart = Clock::now();
       // The state as the worker built it, seen with the attitude and views of this frame's
       // instant predicted from the same host snapshot. In synchronous mode that instant is the
@@ -216,11 +220,13 @@ class FrameLoop {
       // judder.
       const Clock::time_point poseTime =
           opt_.synchronous && snapshot && snapshot->state.updates > 0 ? snapshot->state.received : frameStart;
-      const FramePose pose = worker_.poseAt(snapshot, poseTime, nc.channels);
+      FramePose pose = worker_.poseAt(snapshot, poseTime, nc.channels);
+      scaleChannels(pose.channels);
       draw(display, frame, *built, pose);
       const auto frameEnd = Clock::now();
       count(snapshot, frameStart, frameEnd);
       time(snapshot, frameStart, frameEnd, display.lastChannelGpuSeconds());
+      followBudget(frameStart, frameEnd, display);
       if (!firstStart_) firstStart_ = frameStart;
       lastEnd_ = frameEnd;
       sendStartOfFrame(frame, snapshot, frameStart, frameEnd);
@@ -246,11 +252,53 @@ class FrameLoop {
           Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(opt_.syncTimeoutS));
       while (sky_.get()->hostVersion == hostVersionShown_ && Clock::now() < deadline && !externalStop)
         std::this_thread::sleep_for(50us);
-      if (sky_.get()->hostVersion == hostVersionShown_) stats_.syncTimeouts.fetch_add(1, std::memory_order_relaxed);
+      if (sky_.get()->hostVersion == hostVersionShown_ && !externalStop) {
+        stats_.syncTimeouts.fetch_add(1, std::memory_order_relaxed);
+        // The IG never leaves a lock-step host guessing: it says that it drew on without it.
+        if (std::uint64_t heldBack = 0; syncWait_.allow(Clock::now(), &heldBack))
+          spdlog::warn("synchronous: no new host frame within {:.0f} ms of host frame {}; drawing on with the last "
+                       "one{}", 1e3 * opt_.syncTimeoutS, lastHostFrameShown_,
+                       heldBack ? fmt::format(" ({} more such frames since the last warning)", heldBack) : "");
+      }
     } else if (opt_.headless) {
       std::this_thread::sleep_until(next_);
       next_ = std::max(next_ + period_, Clock::now() - period_);
     }
+  }
+
+  void logDegradation() const {
+    const DegradationSettings& d = opt_.config.degrade;
+    if (!d.enabled) return;
+    spdlog::info("degradation on: after {} frames in a row over {:.1f} ms, every channel drawn at {} of its size in "
+                 "turn; back up after {} frames that fit {:.0f}% of the period at the level above",
+                 d.overFrames, 1e3 / opt_.frameRateHz, fmt::join(d.scales, ", then "), d.releaseFrames,
+                 100.0 * d.releaseHeadroom);
+  }
+
+  // While degraded (node/frame/degradation.h) every channel is drawn at the level's scale of its
+  // size, its frustum kept: one scale for the whole node, so no seam between its channels.
+  void scaleChannels(std::vector<sky::ChannelConfig>& channels) const {
+    const double scale = degrade_.scale();
+    if (scale >= 1.0) return;
+    for (sky::ChannelConfig& c : channels) {
+      c.width = std::max(1, static_cast<int>(std::lround(c.width * scale)));
+      c.height = std::max(1, static_cast<int>(std::lround(c.height * scale)));
+    }
+  }
+
+  // The frame's work against the period: the larger of its channels' GPU time and its time less
+  // the presentation (a window's swap waits for the vertical blank, which is not work).
+  void followBudget(Clock::time_point frameStart, Clock::time_point frameEnd, const DisplayOutputs& display) {
+    double gpuS = 0.0;
+    for (double s : display.lastChannelGpuSeconds()) gpuS += s;
+    const double workS =
+        std::max(gpuS, std::chrono::duration<double>(frameEnd - frameStart).count() - display.lastPresentSeconds());
+    const int change = degrade_.add(workS, 1.0 / opt_.frameRateHz);
+    if (change == 0) return;
+    (change > 0 ? stats_.resolutionDrops : stats_.resolutionRestores).fetch_add(1, std::memory_order_relaxed);
+    stats_.resolutionScale = degrade_.scale();
+    if (change > 0) spdlog::warn("cannot hold {:.0f} Hz: {}", opt_.frameRateHz, degrade_.lastReason());
+    else spdlog::info("headroom at {:.0f} Hz: {}", opt_.frameRateHz, degrade_.lastReason());
   }
 
   // Every channel drawn; with --save-frames, every saveEvery-th frame's files written too.
@@ -367,8 +415,11 @@ class FrameLoop {
   const Clock::time_point start_;
   const Clock::duration period_;
   Clock::time_point next_;
+  DegradationPolicy degrade_;
   std::unique_ptr<StateDump> dump_;
   std::uint64_t hostVersionShown_ = 0;
+  std::uint32_t lastHostFrameShown_ = 0;
+  WarningThrottle syncWait_;
   Clock::time_point lastArrivalShown_{};
   std::optional<FrameTimingWindow> timing_;
   std::optional<Clock::time_point> previousStart_;

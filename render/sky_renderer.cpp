@@ -371,8 +371,11 @@ void SkyRenderer::presentToDefaultFramebuffer(int windowWidth, int windowHeight)
                            windowWidth, windowHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     return;
   }
+  // A channel drawn at its window's size is copied; one drawn smaller (a node that degrades) is
+  // stretched with bilinear filtering, not blocks.
+  const bool sameSize = display_->width() == windowWidth && display_->height() == windowHeight;
   glBlitNamedFramebuffer(display_->framebuffer(), 0, 0, 0, display_->width(), display_->height(), 0, 0,
-                         windowWidth, windowHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+                         windowWidth, windowHeight, GL_COLOR_BUFFER_BIT, sameSize ? GL_NEAREST : GL_LINEAR);
 }
 
 HdrImage SkyRenderer::readHdr() const { return readFloatTexture(hdr_->texture(), hdr_->width(), hdr_->height()); }

@@ -263,6 +263,30 @@ void readHost(TableReader& r, HostLink& h) {
   r.rejectUnknownKeys();
 }
 
+// [degrade]: when a node that cannot hold its frame rate lowers its channels' resolution.
+void readDegrade(TableReader& r, DegradationSettings& d) {
+  d.enabled = r.boolean("enabled", d.enabled);
+  d.overFrames = r.integer("over_frames", d.overFrames, 1, 100000);
+  d.releaseFrames = r.integer("release_frames", d.releaseFrames, 1, 100000);
+  d.releaseHeadroom = r.number("release_headroom", d.releaseHeadroom, 0.05, 0.95);
+  if (const toml::node* n = r.find("scales")) {
+    const toml::array* list = n->as_array();
+    if (!list || list->empty()) r.fail(n, "scales", "expected a list of scales below 1, descending, e.g. [0.75, 0.5]");
+    d.scales.clear();
+    for (const toml::node& item : *list) {
+      const std::optional<double> s = item.value<double>();
+      if (!s) r.fail(&item, "scales", "expected numbers, e.g. [0.75, 0.5]");
+      d.scales.push_back(*s);
+    }
+    try {
+      d.validate();
+    } catch (const std::invalid_argument& e) {
+      r.fail(n, "scales", e.what());
+    }
+  }
+  r.rejectUnknownKeys();
+}
+
 void readCanIdentifiers(TableReader& r, protocol::canaerospace::IdentifierMap& m) {
   auto id = [&](const char* key, std::uint32_t& v) {
     v = static_cast<std::uint32_t>(r.integer(key, static_cast<int>(v), 0, 2047));  // 11-bit identifiers
@@ -434,6 +458,10 @@ NodeConfig parseNodeConfig(const std::string& text, const std::string& sourceNam
   if (const toml::table* t = subTable(r, "host")) {
     TableReader h(*t, "host.", sourceName);
     readHost(h, config.host);
+  }
+  if (const toml::table* t = subTable(r, "degrade")) {
+    TableReader d(*t, "degrade.", sourceName);
+    readDegrade(d, config.degrade);
   }
   if (const toml::table* t = subTable(r, "can_identifiers")) {
     TableReader c(*t, "can_identifiers.", sourceName);

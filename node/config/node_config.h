@@ -11,6 +11,7 @@
 #include "physics/atmosphere/conditions.h"
 #include "physics/atmosphere/medium.h"
 #include "node/common/config_error.h"
+#include "node/config/degradation_settings.h"
 #include "tables/settings.h"
 #include "sky/sky_state.h"
 
@@ -76,6 +77,9 @@ struct NodeConfig {
   // [eye] adaptation = "temporal": the pilot's eye adapts in time on the host's clock
   // (physics/eye/adaptation.h); "instant": adapted at once to every scene (single-frame renders).
   bool temporalAdaptation = true;
+  // [degrade]: a lower internal resolution while the node cannot hold its frame rate
+  // (node/frame/degradation.h); `skyig serve` only.
+  DegradationSettings degrade;
 
   // The channels node `name` renders: those assigned to it, and those assigned to none.
   std::vector<sky::ChannelConfig> channelsOf(const std::string& name) const;

@@ -35,6 +35,7 @@ DisplayOutputs::DisplayOutputs(bool headless, const std::string& nodeName,
       x += w.width;
     }
     windows_.push_back(std::make_unique<render::GlfwWindowContext>(w));
+    windowSizes_.push_back({w.width, w.height});
     titles_.push_back(w.title);
     renderers_.push_back(std::make_unique<render::SkyRenderer>());  // VAOs and FBOs are per context
   }
@@ -119,9 +120,8 @@ void DisplayOutputs::draw(const sky::SkyState& state, const sky::Attitude& attit
     windows_[i]->makeCurrent();
     drawChannel(*renderers_[i], state, attitude, channels[i], i);
     if (drawn) drawn(*renderers_[i], channels[i], projectors_[i].get());
-    const bool projected = projectors_[i] != nullptr;
-    renderers_[i]->presentToDefaultFramebuffer(projected ? projectors_[i]->width : channels[i].width,
-                                               projected ? projectors_[i]->height : channels[i].height);
+    // The window's own size: a channel drawn smaller (node/frame/degradation.h) is stretched to it.
+    renderers_[i]->presentToDefaultFramebuffer(windowSizes_[i][0], windowSizes_[i][1]);
     ready[i] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     glFlush();
   }

@@ -43,7 +43,8 @@ class DisplayOutputs {
   using DrawnCallback =
       std::function<void(const render::SkyRenderer&, const sky::ChannelConfig&, const calibration::ProjectorCalibration*)>;
   // Draws every channel; `drawn` sees each channel's renderer right after its frame (to save it).
-  // `channels` are the constructor's, each seen for this frame (same order and sizes).
+  // `channels` are the constructor's, each seen for this frame (same order; a channel may be
+  // drawn smaller than its window, which then shows it stretched).
   void draw(const sky::SkyState& state, const sky::Attitude& attitude, const std::vector<sky::ChannelConfig>& channels,
             const DrawnCallback& drawn = {});
 
@@ -75,6 +76,7 @@ class DisplayOutputs {
   std::unique_ptr<render::GlContext> context_;
   std::vector<std::unique_ptr<render::GlfwWindowContext>> windows_;
   std::vector<std::string> titles_;
+  std::vector<std::array<int, 2>> windowSizes_;  // each window's width and height
   std::vector<std::unique_ptr<render::SkyRenderer>> renderers_;
   std::vector<Projector> projectors_;  // one per channel (null: plain)
   std::size_t swapGroupMembers_ = 0;

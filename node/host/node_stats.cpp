@@ -125,7 +125,10 @@ nlohmann::json NodeStats::toJson() const {
                   {"frames_over_period", framesOverPeriod.load()},
                   {"frame_interval", frameInterval.summary()},
                   {"channel_gpu", channelGpuTime.summary()},
-                  {"shown_host_age", shownHostAge.summary()}}},
+                  {"shown_host_age", shownHostAge.summary()},
+                  {"resolution_scale", resolutionScale.load()},
+                  {"resolution_drops", resolutionDrops.load()},
+                  {"resolution_restores", resolutionRestores.load()}}},
   };
 }
 

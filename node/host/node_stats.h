@@ -87,6 +87,11 @@ struct NodeStats {
   std::atomic<std::uint64_t> framesOverPeriod{0};
   LatencyRing frameInterval;
   LatencyRing shownHostAge;
+  // The degradation policy (node/frame/degradation.h): the scale the channels are drawn at now
+  // (1: full resolution) and the level changes down and up so far.
+  std::atomic<double> resolutionScale{1.0};
+  std::atomic<std::uint64_t> resolutionDrops{0};
+  std::atomic<std::uint64_t> resolutionRestores{0};
   ChannelTimes channelGpuTime;
 
   nlohmann::json toJson() const;

@@ -57,6 +57,11 @@ TEST(NodeConfig, DocumentedDefaultsEqualBuiltInDefaults) {
     EXPECT_EQ(file.host.session.allowed[i].toString(), builtIn.host.session.allowed[i].toString());
   EXPECT_EQ(file.host.session.sessionGapS, builtIn.host.session.sessionGapS);
   EXPECT_EQ(file.host.session.staleFrames, builtIn.host.session.staleFrames);
+  EXPECT_EQ(file.degrade.enabled, builtIn.degrade.enabled);
+  EXPECT_EQ(file.degrade.overFrames, builtIn.degrade.overFrames);
+  EXPECT_EQ(file.degrade.scales, builtIn.degrade.scales);
+  EXPECT_EQ(file.degrade.releaseHeadroom, builtIn.degrade.releaseHeadroom);
+  EXPECT_EQ(file.degrade.releaseFrames, builtIn.degrade.releaseFrames);
   EXPECT_EQ(file.canIdentifiers.bodyPitch, builtIn.canIdentifiers.bodyPitch);
   EXPECT_EQ(file.canIdentifiers.heading, builtIn.canIdentifiers.heading);
   EXPECT_EQ(file.canIdentifiers.latitude, builtIn.canIdentifiers.latitude);
@@ -175,6 +180,21 @@ TEST(NodeConfig, HostSectionErrors) {
   ASSERT_EQ(c.host.session.allowed.size(), 2u);
   EXPECT_EQ(c.host.session.allowed[1].toString(), "10.9.0.0/16");
   EXPECT_EQ(c.host.replyTo, "192.168.7.20:8005");
+}
+
+TEST(NodeConfig, DegradeSectionIsReadAndItsBadValuesNamed) {
+  const NodeConfig c =
+      parseNodeConfig("[degrade]\nenabled = true\nover_frames = 10\nscales = [0.8, 0.6, 0.4]\n", "ok.toml");
+  EXPECT_TRUE(c.degrade.enabled);
+  EXPECT_EQ(c.degrade.overFrames, 10);
+  EXPECT_EQ(c.degrade.scales, (std::vector<double>{0.8, 0.6, 0.4}));
+  EXPECT_EQ(errorOf("[degrade]\nscales = [0.5, 0.75]\n"),
+            "bad.toml:2: degrade.scales: scales: 0.75 is not from 0.25 up to and below the level above's 0.5");
+  EXPECT_EQ(errorOf("[degrade]\nscales = []\n"),
+            "bad.toml:2: degrade.scales: expected a list of scales below 1, descending, e.g. [0.75, 0.5]");
+  EXPECT_EQ(errorOf("[degrade]\nrelease_headroom = 1.5\n"),
+            "bad.toml:2: degrade.release_headroom: expected a number in [0.05, 0.95], got 1.5");
+  EXPECT_EQ(errorOf("[degrade]\nlevels = 3\n").find("bad.toml:2: degrade.levels"), 0u);
 }
 
 TEST(NodeConfig, MissingFile) {

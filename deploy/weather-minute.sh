@@ -8,10 +8,14 @@
 # that shows it, the tables built meanwhile, and the node's memory and table cache.
 #
 # Usage: deploy/weather-minute.sh [--skyig PATH] [--out DIR] [--size WxH] [--rate HZ] [--minute S]
+#                                 [--weather CSV] [--build-interval S]
 #   --skyig PATH   default build/bin/skyig
 #   --out DIR      results, logs and the table cache (default weather-minute-out/)
 #   --size WxH     the channel (default 640x400); --rate the node's and host's rate (default 30)
 #   --minute S     the length of each half (default 60; the showers are cut or held to it)
+#   --weather CSV  the second half's weather instead of config/showers.csv (the host's --weather
+#                  columns, its times from 0), e.g. one visibility the cache lacks: a table build
+#   --build-interval S  the node's atmosphere_build_interval (default the configuration's, 60 s)
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 skyig="$here/build/bin/skyig"
@@ -19,6 +23,8 @@ out="$here/weather-minute-out"
 size="640x400"
 rate=30
 minute=60
+weather="$here/config/showers.csv"
+build_interval=""
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --skyig) skyig="$2"; shift 2 ;;
@@ -26,6 +32,8 @@ while [[ $# -gt 0 ]]; do
     --size) size="$2"; shift 2 ;;
     --rate) rate="$2"; shift 2 ;;
     --minute) minute="$2"; shift 2 ;;
+    --weather) weather="$2"; shift 2 ;;
+    --build-interval) build_interval="atmosphere_build_interval = $2"; shift 2 ;;
     *) echo "weather-minute.sh: unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -39,6 +47,7 @@ cat > "$out/node.toml" <<TOML
 [sky]
 model = "physical"
 atmosphere_tables = "medium"
+$build_interval
 [host]
 listen = "127.0.0.1:$port"
 [[channel]]
@@ -50,7 +59,7 @@ TOML
 {
   echo "time_s, visibility_m, humidity_pct, fog_visibility_m, fog_top_m, precipitation, severity, precipitation_visibility_m, precipitation_top_m"
   echo "0, 20000, 50, 0, 0, none, 0, 0, 1500"
-  grep -v '^#' "$here/config/showers.csv" | tail -n +2 | awk -F, -v m="$minute" '$1 + 0 < m { $1 = $1 + m; print }' OFS=,
+  grep -v '^#' "$weather" | tail -n +2 | awk -F, -v m="$minute" '$1 + 0 < m { $1 = $1 + m; print }' OFS=,
 } > "$out/weather.csv"
 
 export XDG_CACHE_HOME="$out/cache"

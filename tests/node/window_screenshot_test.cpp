@@ -6,12 +6,17 @@
 #include "render/gl/swap_group.h"
 #include "calibration/load.h"
 #include "node/frame/display_outputs.h"
+#include "node/node.h"
+#include "node/transport/udp_socket.h"
+#include "protocol/cigi/encoder.h"
 #include "tests/node/window_ring.h"
 #include "tests/virtual_x.h"
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <bit>
+#include <thread>
 #include <cstdlib>
 #include <map>
 #include <optional>
@@ -216,6 +221,94 @@ TEST_F(WindowScreenshots, ProjectorWindowsShowWhatTheProjectorsAreSent) {
 
 // A channel with `monitor` is fullscreen on that monitor: Xvfb's one monitor, 1024x256, shows the
 // channel's frame over the whole screen; a name no monitor has is refused before anything renders.
+// A node that cannot hold its rate draws its channels smaller (node/frame/degradation.h): each
+// window still shows its whole channel, stretched, not a quarter of it in a corner: against the
+// full-size headless frame, the mean difference is that of a bilinear upsample.
+TEST_F(WindowScreenshots, AChannelDrawnAtHalfSizeFillsItsWindow) {
+  ASSERT_FALSE(gX->display().empty()) << "Xvfb did not start (deploy/setup.sh installs it)";
+  const std::vector<sky::ChannelConfig> channels = ring(2);
+  sky::ObserverState observer;
+  observer.attitude = {20.0, 3.0, 0.0};
+  const sky::SkyState state = sky::buildSkyState(observer, sky::SkyConditions{}, sky::SunOverride{60.0, 8.0});
+  std::map<std::string, render::DisplayImage> full;
+  {
+    services::DisplayOutputs headless(true, "test", channels);
+    headless.draw(state, observer.attitude, channels,
+                  [&](const render::SkyRenderer& r, const sky::ChannelConfig& c, const calibration::ProjectorCalibration*) { full[c.name] = r.readDisplay(); });
+  }
+  std::vector<sky::ChannelConfig> half = channels;
+  for (auto& c : half) {
+    c.width /= 2;
+    c.height /= 2;
+  }
+  services::DisplayOutputs windows(false, "test", channels);
+  XScreenshots x;
+  ASSERT_TRUE(x.open());
+  for (int frame = 0; frame < 3; ++frame) windows.draw(state, observer.attitude, half);
+  for (std::size_t i = 0; i < channels.size(); ++i) {
+    const sky::ChannelConfig& c = channels[i];
+    const auto shown = x.grab(windows.windowTitles()[i], c.width, c.height);
+    ASSERT_TRUE(shown);
+    const render::DisplayImage& want = full.at(c.name);
+    double sum = 0.0, corner = 0.0;
+    for (int y = 0; y < c.height; ++y)
+      for (int px = 0; px < c.width; ++px)
+        for (int k = 0; k < 3; ++k) {
+          const int a = (*shown)[(static_cast<std::size_t>(y) * c.width + px) * 3 + k];
+          sum += std::abs(a - want.rgba[(static_cast<std::size_t>(y) * c.width + px) * 4 + k]);
+          if (y < c.height / 2 && px >= c.width / 2) corner += a;  // the top right: empty if not stretched
+        }
+    const double mean = sum / (c.width * c.height * 3.0);
+    std::printf("%s at half size in its window: mean difference %.2f codes from the full-size frame\n", c.name.c_str(), mean);
+    EXPECT_LT(mean, 3.0) << c.name;
+    EXPECT_GT(corner / (c.width * c.height * 3 / 4.0), 20.0) << c.name << ": the window's top right is dark";
+  }
+}
+
+// A slow windowed dome (three windows, every frame over a 1 ms period) still answers the host
+// with a Start of Frame for every frame it draws, as the CIGI ICD asks in asynchronous mode.
+TEST_F(WindowScreenshots, ASlowWindowedNodeSendsAStartOfFrameForEveryFrame) {
+  ASSERT_FALSE(gX->display().empty()) << "Xvfb did not start (deploy/setup.sh installs it)";
+  services::UdpSocket host({"127.0.0.1", 0});
+  services::NodeOptions o;
+  o.config.sky.model = sky::SkyModel::Preetham;
+  o.config.channels = ring(3);
+  o.config.channelNodes = {"", "", ""};
+  o.config.channelProjectors = {{}, {}, {}};
+  o.listen = {"127.0.0.1", services::UdpSocket({"127.0.0.1", 0}).localEndpoint().port};  // a free port
+  o.replyPort = host.localEndpoint().port;
+  o.headless = false;
+  o.frames = 30;
+  o.frameRateHz = 1000.0;
+  o.logIntervalS = 0.0;
+  std::atomic<bool> hostStop{false};
+  std::thread hostThread([&] {  // 30 Hz of IG Control, from before the node listens until it is done
+    const sockaddr_in to = services::toSockaddr(o.listen);
+    for (std::uint32_t frame = 1; !hostStop; ++frame) {
+      protocol::cigi::IgControl ig;
+      ig.hostFrameNumber = frame;
+      const protocol::cigi::Packet packets[] = {ig};
+      std::vector<std::uint8_t> bytes;
+      if (protocol::cigi::encodeMessage(packets, protocol::ByteOrder::big, bytes).empty()) host.sendTo(bytes, to);
+      std::this_thread::sleep_for(std::chrono::milliseconds(33));
+    }
+  });
+  services::NodeStats stats;
+  std::atomic<bool> stop{false};
+  int code = -1;
+  try {
+    code = services::runNode(o, stats, stop);
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << e.what();
+  }
+  hostStop = true;
+  hostThread.join();
+  EXPECT_EQ(code, 0);
+  EXPECT_EQ(stats.frames.load(), 30u);
+  EXPECT_EQ(stats.startOfFrameSent.load(), stats.frames.load()) << "frames over the period: " << stats.framesOverPeriod.load();
+  EXPECT_GT(stats.framesOverPeriod.load(), 0u) << "the node was meant to be slow";
+}
+
 TEST_F(WindowScreenshots, ChannelWithAMonitorIsFullscreenOnIt) {
   ASSERT_FALSE(gX->display().empty()) << "Xvfb did not start (deploy/setup.sh installs it)";
   const std::vector<std::string> monitors = render::monitorNames();

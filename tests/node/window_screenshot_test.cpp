@@ -113,6 +113,16 @@ class WindowScreenshots : public ::testing::TestWithParam<int> {
   }
 };
 
+// The headless frames of `channels` (what `skyig render` and --save-frames write), by name.
+std::map<std::string, render::DisplayImage> headlessFrames(const std::vector<sky::ChannelConfig>& channels,
+                                                           const sky::SkyState& state, const sky::Attitude& attitude) {
+  std::map<std::string, render::DisplayImage> frames;
+  services::DisplayOutputs headless(true, "test", channels);
+  headless.draw(state, attitude, channels,
+                [&](const render::SkyRenderer& r, const sky::ChannelConfig& c, const calibration::ProjectorCalibration*) { frames[c.name] = r.readDisplay(); });
+  return frames;
+}
+
 TEST_P(WindowScreenshots, EveryWindowShowsTheHeadlessFrameOfItsChannel) {
   ASSERT_FALSE(gX->display().empty()) << "Xvfb did not start (deploy/setup.sh installs it)";
   const std::vector<sky::ChannelConfig> channels = ring(GetParam());
@@ -120,13 +130,7 @@ TEST_P(WindowScreenshots, EveryWindowShowsTheHeadlessFrameOfItsChannel) {
   observer.attitude = {20.0, 3.0, 0.0};
   const sky::SkyState state = sky::buildSkyState(observer, sky::SkyConditions{}, sky::SunOverride{60.0, 8.0});
 
-  // The headless frames first (what `skyig render` and --save-frames write).
-  std::map<std::string, render::DisplayImage> expected;
-  {
-    services::DisplayOutputs headless(true, "test", channels);
-    headless.draw(state, observer.attitude, channels,
-                  [&](const render::SkyRenderer& r, const sky::ChannelConfig& c, const calibration::ProjectorCalibration*) { expected[c.name] = r.readDisplay(); });
-  }
+  const std::map<std::string, render::DisplayImage> expected = headlessFrames(channels, state, observer.attitude);
 
   services::DisplayOutputs windows(false, "test", channels);
   const std::vector<std::string> titles = windows.windowTitles();
@@ -230,12 +234,7 @@ TEST_F(WindowScreenshots, AChannelDrawnAtHalfSizeFillsItsWindow) {
   sky::ObserverState observer;
   observer.attitude = {20.0, 3.0, 0.0};
   const sky::SkyState state = sky::buildSkyState(observer, sky::SkyConditions{}, sky::SunOverride{60.0, 8.0});
-  std::map<std::string, render::DisplayImage> full;
-  {
-    services::DisplayOutputs headless(true, "test", channels);
-    headless.draw(state, observer.attitude, channels,
-                  [&](const render::SkyRenderer& r, const sky::ChannelConfig& c, const calibration::ProjectorCalibration*) { full[c.name] = r.readDisplay(); });
-  }
+  const std::map<std::string, render::DisplayImage> full = headlessFrames(channels, state, observer.attitude);
   std::vector<sky::ChannelConfig> half = channels;
   for (auto& c : half) {
     c.width /= 2;

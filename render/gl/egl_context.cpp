@@ -10,7 +10,6 @@
 #include <glad/gl.h>
 
 #include <cstdio>
-#include <string>
 #include <vector>
 
 namespace skyig::render {
@@ -55,8 +54,7 @@ class EglContext final : public GlContext {
       previousRead_ = eglGetCurrentSurface(EGL_READ);
     }
     std::string platform;
-    display_ = worker_ ? openWorkerDisplay(platform, ownsDisplay_) : openDisplay(platform);
-    if (!worker_) ownsDisplay_ = true;
+    display_ = openDisplay(platform);
     EGLint major = 0, minor = 0;
     if (!eglInitialize(display_, &major, &minor))
       throw GlContextError("eglInitialize failed: " + eglErrorName(eglGetError()) +
@@ -82,9 +80,11 @@ class EglContext final : public GlContext {
   ~EglContext() override {
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-    if (ownsDisplay_) eglTerminate(display_);
-    if (worker_ && previousContext_ != EGL_NO_CONTEXT)
+    if (!worker_) {
+      eglTerminate(display_);
+    } else if (previousContext_ != EGL_NO_CONTEXT) {
       eglMakeCurrent(previousDisplay_, previousDraw_, previousRead_, previousContext_);
+    }
   }
 
   void makeCurrent() override {
@@ -131,37 +131,7 @@ class EglContext final : public GlContext {
                          "platform is available (install libegl-mesa0 and libgl1-mesa-dri)");
   }
 
-  // A worker on Mesa's software device takes a surfaceless display of its own: its own llvmpipe
-  // screen, whose rasterizer and compute threads eglInitialize starts from the worker's thread,
-  // so they run at its priority (tables/background_priority.h) rather than sharing the render
-  // thread's screen and its threads; terminated with the context, it is made again by the next
-  // worker on that worker's thread. On a hardware device the worker shares the device's display.
-  static EGLDisplay openWorkerDisplay(std::string& platform, bool& owns) {
-    EGLDisplay d = openDisplay(platform);
-    owns = false;
-    if (!onSoftwareDevice(d)) return d;
-    auto getPlatformDisplay = eglProc<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
-    EGLDisplay own = getPlatformDisplay ? getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr)
-                                        : EGL_NO_DISPLAY;
-    if (own == EGL_NO_DISPLAY || own == d) return d;
-    platform = "EGL surfaceless, the worker's own";
-    owns = true;
-    return own;
-  }
-
-  // Whether `d` (initialised) is Mesa's software device (EGL_MESA_device_software).
-  static bool onSoftwareDevice(EGLDisplay d) {
-    auto queryDisplayAttrib = eglProc<PFNEGLQUERYDISPLAYATTRIBEXTPROC>("eglQueryDisplayAttribEXT");
-    auto queryDeviceString = eglProc<PFNEGLQUERYDEVICESTRINGEXTPROC>("eglQueryDeviceStringEXT");
-    EGLAttrib device = 0;
-    if (!queryDisplayAttrib || !queryDeviceString || !queryDisplayAttrib(d, EGL_DEVICE_EXT, &device) || device == 0)
-      return false;
-    const char* extensions = queryDeviceString(reinterpret_cast<EGLDeviceEXT>(device), EGL_EXTENSIONS);
-    return extensions && std::string(extensions).find("EGL_MESA_device_software") != std::string::npos;
-  }
-
   bool worker_ = false;
-  bool ownsDisplay_ = false;  // terminated with the context: not shared with a render thread
   EGLDisplay previousDisplay_ = EGL_NO_DISPLAY;
   EGLContext previousContext_ = EGL_NO_CONTEXT;
   EGLSurface previousDraw_ = EGL_NO_SURFACE;

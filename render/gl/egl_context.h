@@ -1,10 +1,8 @@
 #pragma once
 // A headless OpenGL 4.5 context for work off the render thread (the GPU precompute of the
 // atmosphere): like createHeadlessContext (render/gl/gl_context.h), but it restores whatever
-// context the calling thread had current when it is destroyed, and leaves a hardware device's
-// EGL display initialised, since a render thread's context may live on the same display. On
-// Mesa's software device it takes a surfaceless display of its own instead (its own llvmpipe
-// threads, started from the calling thread and so at its priority), terminated with it.
+// context the calling thread had current when it is destroyed, and leaves the EGL display
+// initialised, since a render thread's context may live on the same display.
 #include <memory>
 
 #include "render/gl/gl_context.h"

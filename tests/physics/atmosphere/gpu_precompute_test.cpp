@@ -5,7 +5,6 @@
 #include <glad/gl.h>
 
 #include "render/passes/precompute/atmosphere_gpu_precompute.h"
-#include "render/gl/egl_context.h"
 #include "render/gl/gl_context.h"
 #include "render/gl/gl_program.h"
 #include "render/passes/sky/physical_sky_pass.h"
@@ -13,19 +12,11 @@
 
 #include <gtest/gtest.h>
 
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <thread>
 #include <chrono>
 #include <cstdlib>
 #include <cstdio>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -124,61 +115,6 @@ std::unique_ptr<render::GlContext> makeContext() {
   }
 }
 
-
-// Threads of this process named llvmpipe-N (Mesa's rasterizer threads) with nice value `nice`.
-int llvmpipeThreadsAtNice(int nice) {
-  int n = 0;
-  for (const auto& task : std::filesystem::directory_iterator("/proc/self/task")) {
-    std::string comm, stat;
-    std::getline(std::ifstream(task.path() / "comm"), comm);
-    std::getline(std::ifstream(task.path() / "stat"), stat);
-    const std::size_t close = stat.rfind(')');  // after the name: state is field 3, nice field 19
-    std::istringstream fields(stat.substr(close + 2));
-    std::string field;
-    for (int i = 3; i <= 19 && fields >> field; ++i) {}
-    if (comm.rfind("llvmpipe-", 0) == 0 && std::stoi(field) == nice) ++n;
-  }
-  return n;
-}
-
-// A worker context (the GPU precompute's, on a background thread at nice 19) on Mesa's software
-// device has an EGL display of its own: its llvmpipe threads are started from the worker's
-// thread and so run at its priority, not sharing the render thread's; ending it (eglTerminate of
-// its own display) leaves the render thread's context drawing.
-TEST(AtmosphereGpu, AWorkerOnTheSoftwareDeviceRunsItsOwnThreadsAtItsPriority) {
-  const auto gl = makeContext();
-  if (!gl) GTEST_SKIP() << "no OpenGL 4.5 context through EGL";
-  const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  if (renderer.find("llvmpipe") == std::string::npos) GTEST_SKIP() << "not Mesa's software device: " << renderer;
-  std::string platform;
-  int ownThreads = -1;
-  std::thread worker([&] {
-    ::setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 19);
-    const auto context = render::createWorkerHeadlessContext();
-    platform = context->info().platform;
-    ownThreads = llvmpipeThreadsAtNice(19);
-  });
-  worker.join();
-  EXPECT_NE(platform.find("own"), std::string::npos) << platform;
-  EXPECT_GE(ownThreads, 1) << "no llvmpipe thread at the worker's nice 19";
-  EXPECT_EQ(llvmpipeThreadsAtNice(19), 0) << "its threads end with its display";
-  // The render thread's context still draws.
-  GLuint fbo = 0, texture = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-  glTextureStorage2D(texture, 1, GL_RGBA8, 4, 4);
-  glCreateFramebuffers(1, &fbo);
-  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, texture, 0);
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-  glClearColor(1.0f, 0.5f, 0.0f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
-  unsigned char rgba[4] = {};
-  glReadPixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-  EXPECT_EQ(rgba[0], 255);
-  EXPECT_EQ(rgba[1], 128);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glDeleteFramebuffers(1, &fbo);
-  glDeleteTextures(1, &texture);
-}
 
 TEST(AtmosphereGpu, ComputePassesMatchTheCpuReferenceAndRepeat) {
   const auto gl = makeContext();

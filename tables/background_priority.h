@@ -1,11 +1,18 @@
 #pragma once
-// The tables' background threads (the updater's builds and blends) run at the lowest CPU
-// priority, and so does every thread they start: the blends of two cached visibility steps, the
-// cache's reads and writes and a CPU precompute take what the frames leave of the processor.
-// Linux keeps a nice value per thread and a new thread inherits it (setpriority(2) on a thread
-// id, sched(7)). Not covered: a GPU precompute on llvmpipe dispatches its compute shaders to
-// Mesa's compute threads, which belong to the process's one EGL display and so keep the
-// renderer's priority (docs/performance.md, "Table builds beside the frames").
+// The tables' builds for the host's air (the precompute of tables the cache lacks) run at the
+// lowest CPU priority, so that where the renderer and a build share the processor the frame keeps
+// its cores and the build takes what the frames leave. Only the build: the cache's reads and the
+// blend of two cached visibility steps, which show the host's change at once, keep the normal
+// priority. Linux keeps a nice value per thread and a new thread inherits it (setpriority(2) on
+// a thread id, sched(7)); an unprivileged process cannot raise it again, so a build runs on a
+// thread of its own that is lowered for its whole life. Not covered: a GPU precompute on llvmpipe
+// dispatches its compute shaders to Mesa's compute threads of the process's one EGL display, at
+// the renderer's priority (docs/performance.md, "Table builds beside the frames").
+#include <exception>
+#include <optional>
+#include <thread>
+#include <utility>
+
 namespace skyig::atmosphere {
 
 inline constexpr int kBackgroundNice = 19;
@@ -16,5 +23,23 @@ int lowerThisThreadToBackground();
 
 // The calling thread's nice value.
 int thisThreadNice();
+
+// `work()` run on a thread of its own lowered to kBackgroundNice, joined: its result, or its
+// exception rethrown here.
+template <typename F>
+auto runAtBackgroundPriority(F&& work) -> decltype(work()) {
+  std::optional<decltype(work())> result;
+  std::exception_ptr error;
+  std::thread([&] {
+    lowerThisThreadToBackground();
+    try {
+      result.emplace(work());
+    } catch (...) {
+      error = std::current_exception();
+    }
+  }).join();
+  if (error) std::rethrow_exception(error);
+  return std::move(*result);
+}
 
 }  // namespace skyig::atmosphere

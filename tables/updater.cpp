@@ -21,6 +21,9 @@ AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial,
                                      std::shared_ptr<const AtmosphereModel> loaded)
     : cacheDirectory_(std::move(cacheDirectory)),
       builder_(builder ? std::move(builder) : TableBuilder(precomputeTablesOnCpu)),
+      backgroundBuilder_([this](const ModelConfig& c, const PrecomputeControl& control) {
+        return runAtBackgroundPriority([&] { return builder_(c, control); });
+      }),
       limits_(limits),
       stopFlag_(stop),
       stepsDirectory_(std::move(steps.directory)) {
@@ -134,7 +137,6 @@ std::shared_ptr<const AtmosphereModel> AtmosphereUpdater::blend(const BlendJob& 
 }
 
 void AtmosphereUpdater::runBlends() {
-  lowerThisThreadToBackground();  // a blend takes what the frames leave (tables/background_priority.h)
   std::unique_lock<std::mutex> lock(mutex_);
   while (true) {
     blendWake_.wait(lock, [this] { return stop_ || blendJob_.has_value(); });
@@ -219,7 +221,6 @@ void AtmosphereUpdater::waitForBlend() {
 }
 
 void AtmosphereUpdater::run() {
-  lowerThisThreadToBackground();  // builds and cache reads take what the frames leave (tables/background_priority.h)
   std::unique_lock<std::mutex> lock(mutex_);
   while (true) {
     wake_.wait(lock, [this] { return stop_ || pending_.has_value() || !stepsToBuild_.empty(); });
@@ -260,7 +261,7 @@ void AtmosphereUpdater::run() {
     CacheResult cache{CacheOutcome::kLoaded, "", {}, ""};
     try {
       model = std::make_shared<const AtmosphereModel>(
-          loadOrPrecompute(config, directory, &cache, builder_, &directory == &cacheDirectory_ ? limits_.maxCacheBytes : 0,
+          loadOrPrecompute(config, directory, &cache, backgroundBuilder_, &directory == &cacheDirectory_ ? limits_.maxCacheBytes : 0,
                            {CancelToken(&cancel_, stopFlag_), {}}));
     } catch (const Cancelled&) {
       // stopping: nothing to report
@@ -297,7 +298,7 @@ void AtmosphereUpdater::buildStep(std::unique_lock<std::mutex>& lock) {
   try {
     CacheResult cache{CacheOutcome::kLoaded, "", {}, ""};
     // Nothing kept in memory: a blend reads the steps it needs.
-    (void)loadOrPrecompute(steps_[i], stepsDirectory_, &cache, builder_, 0, {CancelToken(&yield_, stopFlag_), {}});
+    (void)loadOrPrecompute(steps_[i], stepsDirectory_, &cache, backgroundBuilder_, 0, {CancelToken(&yield_, stopFlag_), {}});
     noteCacheWrite(cache);
     built = cache.outcome != CacheOutcome::kLoaded && cache.writeError.empty();
     failed = !cache.writeError.empty();  // a step is only worth its cached file

@@ -125,6 +125,9 @@ class AtmosphereUpdater {
 
   const std::filesystem::path cacheDirectory_;
   const TableBuilder builder_;
+  // builder_ on a thread of its own at the lowest CPU priority (tables/background_priority.h):
+  // the builds for requests and steps; the initial model is built with builder_ itself.
+  const TableBuilder backgroundBuilder_;
   const UpdaterLimits limits_;
   std::atomic<bool> cancel_{false};  // set by the destructor
   const std::atomic<bool>* stopFlag_;

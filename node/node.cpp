@@ -226,7 +226,7 @@ class FrameLoop {
       const auto frameEnd = Clock::now();
       count(snapshot, frameStart, frameEnd);
       time(snapshot, frameStart, frameEnd, display.lastChannelGpuSeconds());
-      followBudget(frameStart, frameEnd, display);
+      if (!savesFiles(frame)) followBudget(frameStart, frameEnd, display);  // writing files is not the frame's work
       if (!firstStart_) firstStart_ = frameStart;
       lastEnd_ = frameEnd;
       sendStartOfFrame(frame, snapshot, frameStart, frameEnd);
@@ -269,8 +269,8 @@ class FrameLoop {
   void logDegradation() const {
     const DegradationSettings& d = opt_.config.degrade;
     if (!d.enabled) return;
-    spdlog::info("degradation on: after {} frames in a row over {:.1f} ms, every channel drawn at {} of its size in "
-                 "turn; back up after {} frames that fit {:.0f}% of the period at the level above",
+    spdlog::info("degradation on: after {} frames in a row over {:.1f} ms, every channel drawn at {} of its size; "
+                 "back up after {} frames that fit {:.0f}% of the period at the level above",
                  d.overFrames, 1e3 / opt_.frameRateHz, fmt::join(d.scales, ", then "), d.releaseFrames,
                  100.0 * d.releaseHeadroom);
   }
@@ -301,9 +301,13 @@ class FrameLoop {
     else spdlog::info("headroom at {:.0f} Hz: {}", opt_.frameRateHz, degrade_.lastReason());
   }
 
+  bool savesFiles(std::uint64_t frame) const {
+    return !opt_.saveFramesDir.empty() && frame % std::max<std::uint64_t>(opt_.saveEvery, 1) == 0;
+  }
+
   // Every channel drawn; with --save-frames, every saveEvery-th frame's files written too.
   void draw(DisplayOutputs& display, std::uint64_t frame, const BuiltSky& built, const FramePose& pose) {
-    if (opt_.saveFramesDir.empty() || frame % std::max<std::uint64_t>(opt_.saveEvery, 1) != 0) {
+    if (!savesFiles(frame)) {
       display.draw(built.state, pose.attitude, pose.channels);
       return;
     }

@@ -1,5 +1,7 @@
 #pragma once
 // What the sky depends on besides the sun: the model and the state of the air and ground.
+#include "physics/common/cloud_layer.h"
+
 #include <array>
 #include <memory>
 #include <string>
@@ -63,6 +65,9 @@ struct SkyConditions {
   FogSpec haze;
   FogSpec fog;
   FogSpec precipitation;
+  // The host's cloud layers (CIGI Weather Control layers 1-3, [[weather.cloud]], render --cloud):
+  // carried with the state and recorded (state dump, EXR header); not drawn yet.
+  CloudLayers clouds{};
 };
 
 }  // namespace skyig::sky

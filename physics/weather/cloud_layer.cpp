@@ -1,0 +1,104 @@
+#include "physics/weather/cloud_layer.h"
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <vector>
+
+namespace skyig::weather {
+
+namespace {
+using sky::CloudType;
+constexpr std::array<std::string_view, 10> kNames = {"altocumulus", "altostratus",   "cirrocumulus", "cirrostratus",
+                                                     "cirrus",      "cumulonimbus",  "cumulus",      "nimbostratus",
+                                                     "stratocumulus", "stratus"};
+
+void require(bool ok, const char* what, double value) {
+  if (ok) return;
+  char text[96];
+  std::snprintf(text, sizeof text, "cloud layer: %s %g is out of range", what, value);
+  throw std::invalid_argument(text);
+}
+}  // namespace
+
+CloudFamily familyOf(CloudType type) {
+  switch (type) {
+    case CloudType::Cumulus:
+    case CloudType::Cumulonimbus: return CloudFamily::Cumuliform;
+    case CloudType::Cirrus:
+    case CloudType::Cirrostratus:
+    case CloudType::Cirrocumulus: return CloudFamily::Cirriform;
+    default: return CloudFamily::Stratiform;
+  }
+}
+
+std::string_view toString(CloudType type) { return kNames[static_cast<std::size_t>(type) - 1]; }
+
+std::optional<CloudType> parseCloudType(std::string_view name) {
+  for (std::size_t i = 0; i < kNames.size(); ++i)
+    if (kNames[i] == name) return static_cast<CloudType>(i + 1);
+  return std::nullopt;
+}
+
+std::optional<CloudType> cloudTypeOfCigi(int value) {
+  if (value < 1 || value > 10) return std::nullopt;
+  return static_cast<CloudType>(value);
+}
+
+void validate(const sky::CloudLayer& l) {
+  if (!l.enabled) return;
+  require(std::isfinite(l.baseM), "base", l.baseM);
+  require(std::isfinite(l.thicknessM) && l.thicknessM > 0.0, "thickness", l.thicknessM);
+  require(l.coveragePct >= 0.0 && l.coveragePct <= 100.0, "coverage", l.coveragePct);
+  require(l.transitionM >= 0.0 && std::isfinite(l.transitionM), "transition band", l.transitionM);
+  require(l.topTransitionM >= 0.0 && std::isfinite(l.topTransitionM), "top transition band", l.topTransitionM);
+  require(l.severity >= 0 && l.severity <= 5, "severity", l.severity);
+  require(l.visibilityM >= 0.0 && std::isfinite(l.visibilityM), "visibility", l.visibilityM);
+  require(l.scudFrequencyPct >= 0.0 && l.scudFrequencyPct <= 100.0, "scud frequency", l.scudFrequencyPct);
+  require(l.topScudFrequencyPct >= 0.0 && l.topScudFrequencyPct <= 100.0, "top scud frequency", l.topScudFrequencyPct);
+  require(l.windSpeedMps >= 0.0 && l.windSpeedMps <= 150.0, "wind speed", l.windSpeedMps);
+  require(std::isfinite(l.windFromDeg), "wind direction", l.windFromDeg);
+  require(static_cast<int>(l.type) >= 1 && static_cast<int>(l.type) <= 10, "type", static_cast<int>(l.type));
+}
+
+sky::CloudLayer parseCloudSpec(std::string_view spec) {
+  std::vector<std::string> parts(1);
+  for (char c : spec) {
+    if (c == ':') parts.emplace_back();
+    else parts.back() += c;
+  }
+  const std::string quoted = "\"" + std::string(spec) + "\"";
+  if (parts.size() < 3 || parts.size() > 4)
+    throw std::invalid_argument(quoted + " is not TYPE:BASE:THICKNESS[:COVERAGE], e.g. stratus:300:400:100");
+  sky::CloudLayer l;
+  l.enabled = true;
+  const std::optional<CloudType> type = parseCloudType(parts[0]);
+  if (!type) throw std::invalid_argument(quoted + ": \"" + parts[0] + "\" is not a cloud type (stratus, cumulus, cirrus, ...)");
+  l.type = *type;
+  auto number = [&](const std::string& text, const char* what) {
+    std::size_t used = 0;
+    double v = 0.0;
+    try {
+      v = std::stod(text, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != text.size()) throw std::invalid_argument(quoted + ": " + what + " \"" + text + "\" is not a number");
+    return v;
+  };
+  l.baseM = number(parts[1], "the base");
+  l.thicknessM = number(parts[2], "the thickness");
+  l.coveragePct = parts.size() == 4 ? number(parts[3], "the coverage") : 100.0;
+  validate(l);
+  return l;
+}
+
+std::string describe(const sky::CloudLayer& l) {
+  if (!l.enabled) return "off";
+  char text[96];
+  std::snprintf(text, sizeof text, " base %.0f m, %.0f m thick, %.0f %% cover", l.baseM, l.thicknessM, l.coveragePct);
+  return std::string(toString(l.type)) + text;
+}
+
+}  // namespace skyig::weather

@@ -1,0 +1,68 @@
+// Cloud layers as a host gives them (physics/weather/cloud_layer.h): CIGI's ten types in the
+// WMO's three families, their names both ways, and the values a layer cannot be drawn with.
+#include "physics/weather/cloud_layer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace {
+
+using skyig::sky::CloudLayer;
+using skyig::sky::CloudType;
+using namespace skyig::weather;
+
+TEST(CloudLayer, CigisTenTypesFallInTheAtlassThreeFamilies) {
+  int stratiform = 0, cumuliform = 0, cirriform = 0;
+  for (int v = 1; v <= 10; ++v) {
+    const auto type = cloudTypeOfCigi(v);
+    ASSERT_TRUE(type) << v;
+    EXPECT_EQ(parseCloudType(toString(*type)), type) << toString(*type);
+    switch (familyOf(*type)) {
+      case CloudFamily::Stratiform: ++stratiform; break;
+      case CloudFamily::Cumuliform: ++cumuliform; break;
+      case CloudFamily::Cirriform: ++cirriform; break;
+    }
+  }
+  EXPECT_EQ(stratiform, 5);  // stratus, nimbostratus, altostratus, stratocumulus; altocumulus
+  EXPECT_EQ(cumuliform, 2);  // cumulus, cumulonimbus
+  EXPECT_EQ(cirriform, 3);   // cirrus, cirrostratus, cirrocumulus
+  EXPECT_EQ(familyOf(CloudType::Cumulonimbus), CloudFamily::Cumuliform);
+  EXPECT_EQ(familyOf(CloudType::Cirrostratus), CloudFamily::Cirriform);
+  EXPECT_EQ(toString(CloudType::Stratus), "stratus");  // CIGI's value 10
+  EXPECT_FALSE(cloudTypeOfCigi(0)) << "none";
+  EXPECT_FALSE(cloudTypeOfCigi(11)) << "other";
+  EXPECT_FALSE(parseCloudType("fog"));
+}
+
+TEST(CloudLayer, ValuesALayerCannotBeDrawnWithAreRefusedByName) {
+  CloudLayer deck;
+  deck.enabled = true;
+  deck.baseM = 300.0;
+  deck.thicknessM = 400.0;
+  deck.coveragePct = 100.0;
+  EXPECT_NO_THROW(validate(deck));
+  auto refusal = [&](auto spoil) {
+    CloudLayer bad = deck;
+    spoil(bad);
+    try {
+      validate(bad);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(refusal([](CloudLayer& l) { l.baseM = std::nan(""); }).find("base"), std::string::npos);
+  EXPECT_NE(refusal([](CloudLayer& l) { l.thicknessM = 0.0; }).find("thickness"), std::string::npos);
+  EXPECT_NE(refusal([](CloudLayer& l) { l.coveragePct = 100.5; }).find("coverage"), std::string::npos);
+  EXPECT_NE(refusal([](CloudLayer& l) { l.severity = 6; }).find("severity"), std::string::npos);
+  EXPECT_NE(refusal([](CloudLayer& l) { l.windSpeedMps = -1.0; }).find("wind speed"), std::string::npos);
+  CloudLayer off;
+  off.thicknessM = std::nan("");
+  EXPECT_NO_THROW(validate(off)) << "a layer that is off is never drawn";
+  EXPECT_EQ(describe(deck), "stratus base 300 m, 400 m thick, 100 % cover");
+  EXPECT_EQ(describe(off), "off");
+}
+
+}  // namespace

@@ -1,5 +1,7 @@
 #include "node/frame/frame_metadata.h"
 
+#include "physics/weather/cloud_layer.h"
+
 #include "node/common/version.h"
 #include "sky/camera.h"
 #include "physics/goggle/nvis_response.h"
@@ -94,6 +96,10 @@ render::ImageAttributes frameAttributes(const sky::SkyState& s, const sky::Attit
     a["skyig:precipitation_albedo_rgb"] = std::to_string(p.albedo[0]) + " " + std::to_string(p.albedo[1]) + " " +
                                           std::to_string(p.albedo[2]);
   }
+  // The host's or the configuration's cloud layers (carried, not drawn yet): "stratus base 300 m,
+  // 400 m thick, 100 % cover" or "off".
+  for (std::size_t i = 0; i < sky::kCloudLayers; ++i)
+    a["skyig:cloud_layer_" + std::to_string(i + 1)] = weather::describe(s.conditions.clouds[i]);
   if (sky::isGoggle(c)) {
     // A goggle's image is its NVIS radiance (render/sky_renderer.h), drawn with the goggle's
     // frustum (sky::goggleFrustum).

@@ -1,6 +1,7 @@
 #include "node/frame/sky_worker.h"
 #include "physics/common/units.h"
 #include "node/config/node_tables.h"
+#include "physics/weather/cloud_layer.h"
 #include "physics/weather/precipitation.h"
 
 #include <spdlog/spdlog.h>
@@ -91,6 +92,16 @@ sky::SkyState SkyWorker::scene(const HostSnapshot* host, Clock::time_point t) {
     for (const auto& layer : host->state.precipitation)
       if (layer) sent[n++] = *layer;
     if (n > 0) c.precipitation = weather::combinedLayers(std::span(sent.data(), n));
+    // Its cloud layers (layers 1-3), each over the configuration's once the host sent it.
+    for (std::size_t i = 0; i < sky::kCloudLayers; ++i)
+      if (host->state.clouds[i]) c.clouds[i] = *host->state.clouds[i];
+  }
+  // Each cloud layer once as it changes: what the node was given, and that it is not drawn yet.
+  for (std::size_t i = 0; i < sky::kCloudLayers; ++i) {
+    if (c.clouds[i] == loggedClouds_[i]) continue;
+    spdlog::info("cloud layer {}: {} (recorded with the frames; skyig draws no cloud layer yet)", i + 1,
+                 weather::describe(c.clouds[i]));
+    loggedClouds_[i] = c.clouds[i];
   }
   return sky::buildSkyState(observerAt(host, t), c, std::nullopt, &caches_);
 }

@@ -92,6 +92,7 @@ class SkyWorker {
   double lastHostVisibilityM_;
   std::uint64_t generation_ = 0;   // the updater's initial model is the configuration's
   sky::SkyStateCaches caches_;
+  sky::CloudLayers loggedClouds_{};  // the cloud layers last logged (logClouds)
   std::vector<sky::DisplayParams> displays_;  // of the node's channels: their tone curves
   sky::eye::EyeAdaptation eye_;
   std::optional<Clock::time_point> lastBuild_;

@@ -1,6 +1,7 @@
 #include "node/frame/state_dump.h"
 
 #include "tables/parameter_hash.h"
+#include "physics/weather/cloud_layer.h"
 #include "physics/weather/precipitation.h"
 
 #include "render/output_file.h"
@@ -31,6 +32,22 @@ nlohmann::json fogJson(const sky::FogSpec& f) {
           {"transition_m", f.transitionM}, {"asymmetry", f.asymmetry}, {"albedo", f.albedo}};
 }
 
+nlohmann::json cloudJson(const sky::CloudLayer& l) {
+  if (!l.enabled) return {{"enabled", false}};
+  return {{"enabled", true},           {"type", weather::toString(l.type)}, {"base_m", l.baseM},
+          {"thickness_m", l.thicknessM}, {"coverage_pct", l.coveragePct},   {"severity", l.severity},
+          {"visibility_m", l.visibilityM}, {"transition_m", l.transitionM}, {"top_transition_m", l.topTransitionM},
+          {"scud", l.scud},             {"scud_frequency_pct", l.scudFrequencyPct}, {"top_scud", l.topScud},
+          {"top_scud_frequency_pct", l.topScudFrequencyPct}, {"wind_speed_mps", l.windSpeedMps},
+          {"wind_from_deg", l.windFromDeg}};
+}
+
+nlohmann::json cloudsJson(const sky::CloudLayers& layers) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const sky::CloudLayer& l : layers) j.push_back(cloudJson(l));
+  return j;
+}
+
 nlohmann::json hostJson(const HostState& h) {
   nlohmann::json j = {{"visibility_m", h.visibilityM}, {"humidity_pct", h.humidityPct}, {"pressure_hpa", h.pressureHpa},
                       {"temperature_c", h.temperatureC}, {"star_field_intensity", h.starFieldIntensity}};
@@ -42,6 +59,8 @@ nlohmann::json hostJson(const HostState& h) {
   for (std::size_t i = 0; i < h.precipitation.size(); ++i)
     if (h.precipitation[i])
       j["precipitation"][std::string(weather::toString(static_cast<weather::Precipitation>(i)))] = fogJson(*h.precipitation[i]);
+  for (std::size_t i = 0; i < h.clouds.size(); ++i)
+    if (h.clouds[i]) j["clouds"][std::to_string(i + 1)] = cloudJson(*h.clouds[i]);
   return j;
 }
 
@@ -94,6 +113,7 @@ void StateDump::write(std::uint64_t igFrame, const HostSnapshot* host, const sky
                            : nlohmann::json(nullptr)},
         {"haze", fogJson(used.conditions.haze)}, {"fog", fogJson(used.conditions.fog)},
         {"precipitation", fogJson(used.conditions.precipitation)},
+        {"clouds", cloudsJson(used.conditions.clouds)},
         {"adaptation_cd_m2", used.worldAdaptationLuminance}, {"scene_cd_m2", used.sceneLuminance},
         {"adaptation_gain", used.adaptationGain},
         {"views", views}}},

@@ -1,5 +1,7 @@
 #include "node/host/cigi_state.h"
 
+#include "physics/weather/cloud_layer.h"
+
 #include "protocol/cigi/date.h"
 
 #include <algorithm>
@@ -95,6 +97,42 @@ Applied precipitationFrom(weather::Precipitation kind, const cigi::WeatherContro
   } catch (const std::invalid_argument&) {
     return kRejected;
   }
+  return kChanged;
+}
+
+// Weather Control layers 1-3, global: the cloud layer as the host gives it, from its base
+// elevation (MSL, the model's ground) up through the thickness; refused whole for a bad value or
+// an unknown type (CIGI's 0 "none" with the layer enabled, or 11-15 "other").
+Applied cloudFrom(const cigi::WeatherControl& p, bool cigi4, HostState& state) {
+  std::optional<sky::CloudLayer>& slot = state.clouds[p.layerId - 1u];
+  sky::CloudLayer l;
+  l.enabled = p.weatherEnable;
+  if (!l.enabled) {
+    slot = l;
+    return kChanged;
+  }
+  const std::optional<sky::CloudType> type = weather::cloudTypeOfCigi(p.cloudType);
+  if (!type) return kRejected;
+  l.type = *type;
+  l.baseM = p.baseElevationM;
+  l.thicknessM = p.thicknessM;
+  l.transitionM = p.transitionBandM;
+  l.topTransitionM = static_cast<double>(cigi4 ? p.topTransitionBandM : p.transitionBandM);
+  l.coveragePct = p.coveragePct;
+  l.severity = p.severity;
+  l.visibilityM = p.visibilityRangeM;
+  l.scud = p.scudEnable;
+  l.scudFrequencyPct = p.scudFrequencyPct;
+  l.topScud = cigi4 && p.topScudEnable;
+  l.topScudFrequencyPct = cigi4 ? static_cast<double>(p.topScudFrequencyPct) : 0.0;
+  l.windSpeedMps = p.horizontalWindSpeedMps;
+  l.windFromDeg = p.windDirectionDeg;
+  try {
+    weather::validate(l);
+  } catch (const std::invalid_argument&) {
+    return kRejected;
+  }
+  slot = l;
   return kChanged;
 }
 
@@ -196,7 +234,7 @@ CigiStateTracker::Applied CigiStateTracker::on(const cigi::AtmosphereControl& p,
   return kChanged;
 }
 
-CigiStateTracker::Applied CigiStateTracker::on(const cigi::WeatherControl& p, const cigi::DecodedMessage&,
+CigiStateTracker::Applied CigiStateTracker::on(const cigi::WeatherControl& p, const cigi::DecodedMessage& m,
                                                 Clock::time_point) {
   if (p.scope != cigi::WeatherScope::global) return kIgnored;  // regions and entities: not yet
   if (p.layerId == 0) {  // ground fog: from its base elevation (MSL, the model's ground) up
@@ -217,8 +255,8 @@ CigiStateTracker::Applied CigiStateTracker::on(const cigi::WeatherControl& p, co
     return kChanged;
   }
   if (const auto kind = weather::precipitationOfLayer(p.layerId)) return precipitationFrom(*kind, p, state_);
-  // The cloud layers: their visibility and humidity as the global weather's (skyig renders no
-  // cloud layers yet).
+  if (p.layerId >= 1 && p.layerId <= sky::kCloudLayers) return cloudFrom(p, m.majorVersion == 4, state_);
+  // Layers 10 and up (defined by the IG): their visibility and humidity as the global weather's.
   if (!p.weatherEnable) return kIgnored;
   if (!std::isfinite(p.visibilityRangeM) || p.visibilityRangeM < 0.0f || p.humidityPct > 100) return kRejected;
   state_.visibilityM = p.visibilityRangeM;

@@ -92,6 +92,9 @@ struct HostState {
   // CIGI Weather Control, layers 4-9 (weather::Precipitation), global: unset until the host sends
   // one; a layer the host disabled has a visibility of 0.
   std::array<std::optional<sky::FogSpec>, weather::kPrecipitationKinds> precipitation;
+  // CIGI Weather Control, layers 1-3, global: unset until the host sends one (a layer the host
+  // disabled is not enabled()); a layer with a bad value is refused and the last good one kept.
+  std::array<std::optional<sky::CloudLayer>, sky::kCloudLayers> clouds;
   double temperatureC = ephemeris::kStandardTemperatureC;  // CIGI Atmosphere Control: refraction
   double pressureHpa = ephemeris::kStandardPressureHpa;
   // CIGI Celestial Sphere Control: star field intensity / 100, 0 while the field is disabled.

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <arpa/inet.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
@@ -467,6 +469,85 @@ TEST(CigiWeatherControl, GroundFogReachesTheSkyStateAndGoesAgain) {
   EXPECT_EQ(state->conditions.fog.visibilityKm, 0.0);
 }
 
+// CIGI Weather Control, layers 1-3 (cloud layers), global scope, over loopback in 3.3 and 4.0:
+// a stratus deck (layer 1) and a cirrus veil (layer 3, 4.0 with its top scud and top band)
+// reach the sky state as the host gave them, and the host's global visibility stays (a layer's
+// visibility is inside it); NaN, a coverage over 100, a negative thickness or an unknown type
+// ("other", 11) is refused and counted and the last good layer kept; Weather Enable off
+// removes it.
+TEST(CigiWeatherControl, CloudLayersReachTheSkyStateIn33And40) {
+  WeatherLink link;
+  cigi::WeatherControl deck;
+  deck.layerId = 1;
+  deck.weatherEnable = true;
+  deck.scope = cigi::WeatherScope::global;
+  deck.cloudType = 10;  // stratus
+  deck.baseElevationM = 300.0f;
+  deck.thicknessM = 400.0f;
+  deck.coveragePct = 100.0f;
+  deck.visibilityRangeM = 60.0f;
+  deck.transitionBandM = 30.0f;
+  deck.severity = 3;
+  deck.horizontalWindSpeedMps = 8.0f;
+  deck.windDirectionDeg = 270.0f;
+  auto state = link.send(deck);
+  ASSERT_TRUE(state);
+  const skyig::sky::CloudLayer& got = state->conditions.clouds[0];
+  EXPECT_TRUE(got.enabled);
+  EXPECT_EQ(got.type, skyig::sky::CloudType::Stratus);
+  EXPECT_EQ(got.baseM, 300.0);
+  EXPECT_EQ(got.thicknessM, 400.0);
+  EXPECT_EQ(got.coveragePct, 100.0);
+  EXPECT_EQ(got.visibilityM, 60.0);
+  EXPECT_EQ(got.transitionM, 30.0);
+  EXPECT_EQ(got.topTransitionM, 30.0) << "3.3 has one band for both edges";
+  EXPECT_EQ(got.severity, 3);
+  EXPECT_EQ(got.windSpeedMps, 8.0);
+  EXPECT_EQ(got.windFromDeg, 270.0);
+  EXPECT_EQ(link.node.latest.get()->state.visibilityM, HostState{}.visibilityM) << "inside the cloud, not the global";
+
+  cigi::WeatherControl veil;
+  veil.layerId = 3;
+  veil.weatherEnable = true;
+  veil.scope = cigi::WeatherScope::global;
+  veil.cloudType = 5;  // cirrus
+  veil.baseElevationM = 9000.0f;
+  veil.thicknessM = 800.0f;
+  veil.coveragePct = 40.0f;
+  veil.topScudEnable = true;
+  veil.topScudFrequencyPct = 20.0f;
+  veil.topTransitionBandM = 150.0f;
+  state = link.send(veil, 4);
+  ASSERT_TRUE(state);
+  EXPECT_EQ(state->conditions.clouds[2].type, skyig::sky::CloudType::Cirrus);
+  EXPECT_EQ(state->conditions.clouds[2].topTransitionM, 150.0);
+  EXPECT_TRUE(state->conditions.clouds[2].topScud);
+  EXPECT_EQ(state->conditions.clouds[2].topScudFrequencyPct, 20.0);
+  EXPECT_TRUE(state->conditions.clouds[0].enabled) << "layer 1 stays";
+
+  std::uint64_t rejected = link.node.stats.rejectedValues.load();
+  for (const auto& spoil : std::vector<std::function<void(cigi::WeatherControl&)>>{
+           [](cigi::WeatherControl& w) { w.baseElevationM = std::nanf(""); },
+           [](cigi::WeatherControl& w) { w.coveragePct = 150.0f; },
+           [](cigi::WeatherControl& w) { w.thicknessM = -10.0f; },
+           [](cigi::WeatherControl& w) { w.cloudType = 11; }}) {
+    cigi::WeatherControl bad = deck;
+    bad.baseElevationM = 1000.0f;  // would move the deck, were the message taken
+    spoil(bad);
+    state = link.send(bad);
+    ASSERT_TRUE(state);
+    EXPECT_EQ(link.node.stats.rejectedValues.load(), ++rejected);
+    EXPECT_EQ(state->conditions.clouds[0].baseM, 300.0) << "the last good deck kept";
+  }
+
+  cigi::WeatherControl off = deck;
+  off.weatherEnable = false;
+  state = link.send(off);
+  ASSERT_TRUE(state);
+  EXPECT_FALSE(state->conditions.clouds[0].enabled);
+  EXPECT_TRUE(state->conditions.clouds[2].enabled);
+}
+
 // CIGI Weather Control, layers 4-9, global scope, over loopback in 3.3 and 4.0: heavy rain with
 // no visibility of its own takes its severity's (10 mm/h: 2.5 km); a dust layer over half the
 // sky (4.0) joins it in the one precipitation layer the sky draws, tinting it; a coverage of
@@ -573,4 +654,19 @@ TEST(HostCommandWeather, GroundFogIsSentOnlyWhenAskedFor) {
     EXPECT_EQ(on, 1) << version;
     EXPECT_EQ(off, 5) << version;
   }
+  // A cloud layer (--cloud): Weather Control layer 1 with its type, base, thickness and cover,
+  // beside no other weather; a spec that is not one exits 2 naming it.
+  const cigi::DecodedMessage cloudy = firstDatagram("--cloud nimbostratus:250:1800:90");
+  ASSERT_TRUE(cloudy.ok());
+  const auto deck = fogOf(cloudy);
+  ASSERT_TRUE(deck.has_value());
+  EXPECT_EQ(deck->layerId, 1);
+  EXPECT_TRUE(deck->weatherEnable);
+  EXPECT_EQ(deck->cloudType, 8);  // nimbostratus
+  EXPECT_EQ(deck->baseElevationM, 250.0f);
+  EXPECT_EQ(deck->thicknessM, 1800.0f);
+  EXPECT_EQ(deck->coveragePct, 90.0f);
+  const std::string bad = std::string(SKYIG_EXECUTABLE) + " host --path " + SKYIG_SOURCE_DIR +
+                          "/config/circuit.csv --duration 0.01 --cloud haze:300:400 >/dev/null 2>&1";
+  EXPECT_EQ(WEXITSTATUS(std::system(bad.c_str())), 2);
 }

@@ -1,5 +1,7 @@
 #include "commands/common_options.h"
 
+#include "physics/weather/cloud_layer.h"
+
 #include "ephemeris/time.h"
 #include "physics/atmosphere/conditions.h"
 
@@ -43,6 +45,9 @@ void SkyOptions::add(CLI::App& c) {
       ->check(CLI::Range(1.0, 20000.0));
   c.add_option("--precipitation-coverage", precipitationCoveragePct, "The share of the sky it covers, percent (default 100)")
       ->check(CLI::Range(0.0, 100.0));
+  c.add_option("--cloud", cloud,
+               "Cloud layer 1 as TYPE:BASE:THICKNESS[:COVERAGE] (m above the ground, %), e.g. stratus:300:400:100; "
+               "recorded with the frame, not drawn yet");
   c.add_option("--sun-azimuth", sunAzimuth, "Override the sun's azimuth, degrees from north through east")
       ->check(CLI::Range(-360.0, 360.0));
   c.add_option("--sun-elevation", sunElevation, "Override the sun's true (airless) elevation, degrees; its disc is seen lifted by refraction")->check(CLI::Range(-90.0, 90.0));
@@ -89,6 +94,13 @@ NodeConfig SkyOptions::resolve() const {
     if (precipitationTopM) p.topM = *precipitationTopM;
     if (precipitationCoveragePct) p.coveragePct = *precipitationCoveragePct;
     config.sky.precipitation = weather::precipitationLayer(p);
+  }
+  if (cloud) {
+    try {
+      config.sky.clouds[0] = weather::parseCloudSpec(*cloud);
+    } catch (const std::invalid_argument& e) {
+      throw ConfigError(std::string("--cloud: ") + e.what());
+    }
   }
   return config;
 }

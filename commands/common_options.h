@@ -18,6 +18,8 @@ struct SkyOptions {
   std::optional<std::string> precipitation;
   std::optional<int> precipitationSeverity;
   std::optional<double> precipitationVisibilityKm, precipitationTopM, precipitationCoveragePct;
+  // Cloud layer 1 ([[weather.cloud]]): "TYPE:BASE:THICKNESS[:COVERAGE]" (carried, not drawn yet).
+  std::optional<std::string> cloud;
   std::optional<double> sunAzimuth, sunElevation;
   std::optional<std::string> utc, skyModel;
   std::optional<int> cieType;

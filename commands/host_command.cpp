@@ -7,6 +7,7 @@
 #include "node/host/host_weather.h"
 #include "node/config/node_config.h"
 #include "node/transport/udp_socket.h"
+#include "physics/weather/cloud_layer.h"
 
 #include <cmath>
 #include <algorithm>
@@ -39,6 +40,8 @@ struct HostOptions {
   std::optional<std::string> precipitation;  // Weather Control layers 4-9: a kind or "none"
   int precipitationSeverity = 2;
   std::string weatherFile;      // a weather script (node/host/host_weather.h) instead of the above
+  std::string cloudSpec;        // --cloud: Weather Control layer 1 every frame, TYPE:BASE:THICKNESS[:COVERAGE]
+  std::optional<sky::CloudLayer> cloud;  // cloudSpec parsed by run()
   // Weather Control only when asked for (a script, a fog or precipitation): without it the node
   // keeps the fog and precipitation of its own configuration.
   bool sendsWeather() const { return !weatherFile.empty() || fogVisibilityM.has_value() || precipitation.has_value(); }
@@ -65,6 +68,20 @@ ephemeris::UtcTime advance(const ephemeris::UtcTime& t, double seconds) {
     }
   }
   return u;
+}
+
+// Cloud layer 1 as Weather Control sends it (global scope, the base above the model's ground).
+cigi::WeatherControl cloudLayerPacket(const sky::CloudLayer& l) {
+  cigi::WeatherControl w;
+  w.layerId = 1;
+  w.scope = cigi::WeatherScope::global;
+  w.weatherEnable = l.enabled;
+  w.cloudType = static_cast<std::uint8_t>(l.type);
+  w.baseElevationM = static_cast<float>(l.baseM);
+  w.thicknessM = static_cast<float>(l.thicknessM);
+  w.coveragePct = static_cast<float>(l.coveragePct);
+  w.severity = static_cast<std::uint8_t>(l.severity);
+  return w;
 }
 
 std::vector<std::uint8_t> message(std::uint32_t frame, double pathTime, const HostPath& path, const ephemeris::UtcTime& utc,
@@ -129,6 +146,7 @@ std::vector<std::uint8_t> message(std::uint32_t frame, double pathTime, const Ho
       packets.push_back(layer);
     }
   }
+  if (o.cloud) packets.push_back(cloudLayerPacket(*o.cloud));
   const auto order = o.littleEndian ? protocol::ByteOrder::little : protocol::ByteOrder::big;
   std::vector<std::uint8_t> bytes;
   const std::string error = o.cigiVersion == 4 ? cigi::encodeMessage4(packets, order, bytes)
@@ -198,8 +216,15 @@ struct StartOfFrameLog {
   }
 };
 
-int run(const HostOptions& o) {
+int run(HostOptions o) {
   const HostPath path = HostPath::load(o.pathFile);
+  if (!o.cloudSpec.empty()) {
+    try {
+      o.cloud = weather::parseCloudSpec(o.cloudSpec);
+    } catch (const std::invalid_argument& e) {
+      throw ConfigError(std::string("--cloud: ") + e.what());
+    }
+  }
   WeatherStep constant;
   constant.visibilityM = o.visibilityM;
   constant.fogVisibilityM = o.fogVisibilityM.value_or(0.0);
@@ -314,6 +339,8 @@ void registerHostCommand(CLI::App& app, int& exitCode) {
                 "severity, precipitation_visibility_m, precipitation_top_m], each held until the next (e.g. "
                 "config/fog_lifting.csv, config/showers.csv); replaces --visibility, --fog-* and --precipitation*")
       ->check(CLI::ExistingFile);
+  c->add_option("--cloud", o->cloudSpec,
+                "Weather Control layer 1 every frame: TYPE:BASE:THICKNESS[:COVERAGE] (m, %), e.g. stratus:300:400:100");
   c->add_option("--drop-every", o->dropEvery, "Drop every Nth datagram (loss test)")->check(CLI::Range(0, 1000000));
   c->add_flag("--swap-pairs", o->swapPairs, "Send datagrams in swapped pairs (reordering test)");
   c->add_flag("--loop", o->loop, "Fly the path round and round for --duration");

@@ -1,5 +1,7 @@
 #include "node/config/node_config.h"
 
+#include "physics/weather/cloud_layer.h"
+
 #include "ephemeris/time.h"
 #include "node/transport/udp_socket.h"
 #include "physics/atmosphere/conditions.h"
@@ -110,8 +112,48 @@ const toml::table* subTable(TableReader& parent, const std::string& key) {
 // and precipitation or dust (physics/weather/precipitation.h, layers 4-9): precipitation ("none",
 // "rain", "snow", "sleet", "hail", "sand", "dust"), precipitation_severity (0-5),
 // precipitation_visibility_km (0: the severity's), precipitation_top_m, precipitation_coverage_pct.
+// [[weather.cloud]]: up to three cloud layers (CIGI Weather Control layers 1-3) until the host
+// sends its own.
+skyig::sky::CloudLayer readCloud(TableReader& r) {
+  skyig::sky::CloudLayer l;
+  l.enabled = r.boolean("enabled", true);
+  constexpr const char* kTypes =
+      "\"altocumulus\", \"altostratus\", \"cirrocumulus\", \"cirrostratus\", \"cirrus\", \"cumulonimbus\", "
+      "\"cumulus\", \"nimbostratus\", \"stratocumulus\" or \"stratus\"";
+  const std::string type = r.string("type", "stratus", kTypes);
+  const std::optional<skyig::sky::CloudType> parsed = skyig::weather::parseCloudType(type);
+  if (!parsed) r.fail(r.find("type"), "type", "expected " + std::string(kTypes) + ", got \"" + type + "\"");
+  l.type = *parsed;
+  l.baseM = r.number("base_m", 300.0, 0.0, 20000.0);
+  l.thicknessM = r.number("thickness_m", 400.0, 1.0, 20000.0);
+  l.coveragePct = r.number("coverage_pct", 100.0, 0.0, 100.0);
+  l.severity = r.integer("severity", 2, 0, 5);
+  l.visibilityM = r.number("visibility_m", 0.0, 0.0, 100000.0);
+  l.transitionM = r.number("transition_m", 0.0, 0.0, 20000.0);
+  l.topTransitionM = r.number("top_transition_m", l.transitionM, 0.0, 20000.0);
+  l.scud = r.boolean("scud", false);
+  l.scudFrequencyPct = r.number("scud_frequency_pct", 0.0, 0.0, 100.0);
+  l.windSpeedMps = r.number("wind_speed_mps", 0.0, 0.0, 150.0);
+  l.windFromDeg = r.number("wind_from_deg", 0.0, -360.0, 360.0);
+  r.rejectUnknownKeys();
+  return l;
+}
+
+void readClouds(TableReader& r, skyig::sky::CloudLayers& clouds) {
+  const toml::node* n = r.find("cloud");
+  if (!n) return;
+  const toml::array* list = n->as_array();
+  if (!list || !list->is_array_of_tables() || list->size() > skyig::sky::kCloudLayers)
+    r.fail(n, "cloud", "expected one to three [[weather.cloud]] tables (CIGI's cloud layers 1-3)");
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    TableReader c(*list->get(i)->as_table(), r.prefix() + "cloud[" + std::to_string(i) + "].", r.source());
+    clouds[i] = readCloud(c);
+  }
+}
+
 void readWeather(TableReader& r, skyig::sky::FogSpec& fog, skyig::weather::PrecipitationSettings& rain,
-                 skyig::sky::FogSpec& precipitation) {
+                 skyig::sky::FogSpec& precipitation, skyig::sky::CloudLayers& clouds) {
+  readClouds(r, clouds);
   fog.visibilityKm = r.number("fog_visibility_km", fog.visibilityKm, 0.0, atmosphere::kLargestVisibilityKm);
   fog.bottomM = r.number("fog_bottom_m", fog.bottomM, 0.0, 20000.0);
   fog.topM = r.number("fog_top_m", fog.topM, 0.0, 20000.0);
@@ -441,7 +483,7 @@ NodeConfig parseNodeConfig(const std::string& text, const std::string& sourceNam
   }
   if (const toml::table* t = subTable(r, "weather")) {
     TableReader w(*t, "weather.", sourceName);
-    readWeather(w, config.sky.fog, config.precipitation, config.sky.precipitation);
+    readWeather(w, config.sky.fog, config.precipitation, config.sky.precipitation, config.sky.clouds);
   }
   if (const toml::table* t = subTable(r, "observer")) {
     TableReader o(*t, "observer.", sourceName);

@@ -76,6 +76,20 @@ TEST_F(Cli, RendersAnAnalyticSkyWithOnlyAnOutput) {
   EXPECT_TRUE(fs::file_size(dir_ / "sky.png") > 100);
 }
 
+// `render --cloud` records the cloud layer with the frame (the EXR header names it; not drawn
+// yet), and a spec that is not one exits 2 naming the flag.
+TEST_F(Cli, ACloudLayerFromTheCommandLineIsRecordedWithTheFrame) {
+  const Result r = run("render --sky-model preetham --size 32x24 --cloud stratus:300:400 --exr " + (dir_ / "c.exr").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto exr = skyig::render::readExr((dir_ / "c.exr").string());
+  EXPECT_EQ(std::get<std::string>(exr.attributes.at("skyig:cloud_layer_1")), "stratus base 300 m, 400 m thick, 100 % cover");
+  EXPECT_EQ(std::get<std::string>(exr.attributes.at("skyig:cloud_layer_2")), "off");
+  const Result bad = run("render --sky-model preetham --size 32x24 --cloud stratus:300:-5 --exr " + (dir_ / "d.exr").string());
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("--cloud"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("thickness"), std::string::npos) << bad.err;
+}
+
 // Each of the dome's five EXRs, read back with OpenEXR, names its own channel, offset and
 // frustum (not the ownship's yaw five times), stores numbers as float/double/int attributes and
 // uses OpenEXR's standard latitude, longitude, altitude, capDate, utcOffset and worldToCamera.

@@ -182,6 +182,25 @@ TEST(NodeConfig, HostSectionErrors) {
   EXPECT_EQ(c.host.replyTo, "192.168.7.20:8005");
 }
 
+TEST(NodeConfig, CloudLayersAreReadAndTheirBadValuesNamed) {
+  const NodeConfig c = parseNodeConfig(
+      "[weather]\n[[weather.cloud]]\ntype = \"stratus\"\nbase_m = 300\nthickness_m = 400\n"
+      "[[weather.cloud]]\ntype = \"cirrus\"\nbase_m = 9000\nthickness_m = 500\ncoverage_pct = 40\n", "ok.toml");
+  EXPECT_TRUE(c.sky.clouds[0].enabled);
+  EXPECT_EQ(c.sky.clouds[0].type, skyig::sky::CloudType::Stratus);
+  EXPECT_EQ(c.sky.clouds[0].coveragePct, 100.0);
+  EXPECT_EQ(c.sky.clouds[1].type, skyig::sky::CloudType::Cirrus);
+  EXPECT_EQ(c.sky.clouds[1].baseM, 9000.0);
+  EXPECT_FALSE(c.sky.clouds[2].enabled);
+  EXPECT_FALSE(parseNodeConfig("", "empty").sky.clouds[0].enabled) << "no cloud by default";
+  EXPECT_EQ(errorOf("[weather]\n[[weather.cloud]]\ntype = \"fog\"\n").find(
+                "bad.toml:3: weather.cloud[0].type: expected \"altocumulus\""), 0u);
+  EXPECT_EQ(errorOf("[weather]\n[[weather.cloud]]\ncoverage_pct = 120\n"),
+            "bad.toml:3: weather.cloud[0].coverage_pct: expected a number in [0, 100], got 120");
+  EXPECT_EQ(errorOf("[weather]\n[[weather.cloud]]\n[[weather.cloud]]\n[[weather.cloud]]\n[[weather.cloud]]\n").find(
+                "bad.toml:"), 0u);
+}
+
 TEST(NodeConfig, DegradeSectionIsReadAndItsBadValuesNamed) {
   const NodeConfig c =
       parseNodeConfig("[degrade]\nenabled = true\nover_frames = 10\nscales = [0.8, 0.6, 0.4]\n", "ok.toml");

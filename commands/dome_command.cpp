@@ -1,5 +1,7 @@
 #include "commands/dome_command.h"
 
+#include "physics/common/parse_number.h"
+
 #include "calibration/calibration_error.h"
 #include "calibration/mpcdi_writer.h"
 #include "render/output_file.h"
@@ -27,16 +29,9 @@ std::vector<std::string> split(const std::string& text, char sep) {
 }
 
 double parseNumber(const std::string& word, const std::string& what, const std::string& whole) {
-  std::size_t used = 0;
-  double v = 0.0;
-  try {
-    v = std::stod(word, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != word.size() || !std::isfinite(v))
-    throw std::invalid_argument("--projector \"" + whole + "\": " + what + " \"" + word + "\" is not a number");
-  return v;
+  const std::optional<double> v = parseWholeNumber(word);
+  if (!v) throw std::invalid_argument("--projector \"" + whole + "\": " + what + " \"" + word + "\" is not a number");
+  return *v;
 }
 
 std::vector<double> parseNumbers(const std::string& word, std::size_t count, const std::string& what,

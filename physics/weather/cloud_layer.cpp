@@ -1,5 +1,7 @@
 #include "physics/weather/cloud_layer.h"
 
+#include "physics/common/parse_number.h"
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -77,15 +79,9 @@ sky::CloudLayer parseCloudSpec(std::string_view spec) {
   if (!type) throw std::invalid_argument(quoted + ": \"" + parts[0] + "\" is not a cloud type (stratus, cumulus, cirrus, ...)");
   l.type = *type;
   auto number = [&](const std::string& text, const char* what) {
-    std::size_t used = 0;
-    double v = 0.0;
-    try {
-      v = std::stod(text, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != text.size()) throw std::invalid_argument(quoted + ": " + what + " \"" + text + "\" is not a number");
-    return v;
+    const std::optional<double> v = parseWholeNumber(text);
+    if (!v) throw std::invalid_argument(quoted + ": " + what + " \"" + text + "\" is not a number");
+    return *v;
   };
   l.baseM = number(parts[1], "the base");
   l.thicknessM = number(parts[2], "the thickness");

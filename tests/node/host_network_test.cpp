@@ -477,14 +477,18 @@ TEST(CigiWeatherControl, GroundFogReachesTheSkyStateAndGoesAgain) {
 // removes it.
 TEST(CigiWeatherControl, CloudLayersReachTheSkyStateIn33And40) {
   WeatherLink link;
-  cigi::WeatherControl deck;
-  deck.layerId = 1;
-  deck.weatherEnable = true;
-  deck.scope = cigi::WeatherScope::global;
-  deck.cloudType = 10;  // stratus
-  deck.baseElevationM = 300.0f;
-  deck.thicknessM = 400.0f;
-  deck.coveragePct = 100.0f;
+  auto cloud = [](std::uint8_t layer, std::uint8_t type, float base, float thickness, float coverage) {
+    cigi::WeatherControl w;
+    w.layerId = layer;
+    w.weatherEnable = true;
+    w.scope = cigi::WeatherScope::global;
+    w.cloudType = type;
+    w.baseElevationM = base;
+    w.thicknessM = thickness;
+    w.coveragePct = coverage;
+    return w;
+  };
+  cigi::WeatherControl deck = cloud(1, 10, 300.0f, 400.0f, 100.0f);  // stratus
   deck.visibilityRangeM = 60.0f;
   deck.transitionBandM = 30.0f;
   deck.severity = 3;
@@ -506,14 +510,7 @@ TEST(CigiWeatherControl, CloudLayersReachTheSkyStateIn33And40) {
   EXPECT_EQ(got.windFromDeg, 270.0);
   EXPECT_EQ(link.node.latest.get()->state.visibilityM, HostState{}.visibilityM) << "inside the cloud, not the global";
 
-  cigi::WeatherControl veil;
-  veil.layerId = 3;
-  veil.weatherEnable = true;
-  veil.scope = cigi::WeatherScope::global;
-  veil.cloudType = 5;  // cirrus
-  veil.baseElevationM = 9000.0f;
-  veil.thicknessM = 800.0f;
-  veil.coveragePct = 40.0f;
+  cigi::WeatherControl veil = cloud(3, 5, 9000.0f, 800.0f, 40.0f);  // cirrus
   veil.topScudEnable = true;
   veil.topScudFrequencyPct = 20.0f;
   veil.topTransitionBandM = 150.0f;

@@ -37,12 +37,14 @@ TEST(CloudLayer, CigisTenTypesFallInTheAtlassThreeFamilies) {
 }
 
 TEST(CloudLayer, ValuesALayerCannotBeDrawnWithAreRefusedByName) {
-  CloudLayer deck;
-  deck.enabled = true;
-  deck.baseM = 300.0;
-  deck.thicknessM = 400.0;
-  deck.coveragePct = 100.0;
+  const CloudLayer deck = parseCloudSpec("stratus:300:400");  // coverage 100 when not given
+  EXPECT_TRUE(deck.enabled);
+  EXPECT_EQ(deck.coveragePct, 100.0);
   EXPECT_NO_THROW(validate(deck));
+  EXPECT_EQ(parseCloudSpec("cumulus:1200:1500:50").coveragePct, 50.0);
+  EXPECT_THROW(parseCloudSpec("stratus:300"), std::invalid_argument);
+  EXPECT_THROW(parseCloudSpec("stratus:300:4oo"), std::invalid_argument);
+  EXPECT_THROW(parseCloudSpec("stratus:300:400:150"), std::invalid_argument);
   auto refusal = [&](auto spoil) {
     CloudLayer bad = deck;
     spoil(bad);

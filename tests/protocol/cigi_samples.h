@@ -46,13 +46,21 @@ inline std::vector<Packet> everyPacketType() {
   er.sizeYM = 3000.0f;
   er.mergeTerrestrial = true;
   WeatherControl w;
-  w.layerId = 0;  // ground fog
+  w.layerId = 2;  // cloud layer 2: a stratocumulus deck
   w.humidityPct = 95;
   w.visibilityRangeM = 300.0f;
   w.weatherEnable = true;
-  w.cloudType = 15;
+  w.scudEnable = true;
+  w.cloudType = 9;
   w.severity = 5;
   w.scope = WeatherScope::entity;
+  w.scudFrequencyPct = 12.5f;
+  w.coveragePct = 62.5f;
+  w.baseElevationM = 1200.0f;
+  w.thicknessM = 450.0f;
+  w.transitionBandM = 75.0f;
+  w.horizontalWindSpeedMps = 8.5f;
+  w.windDirectionDeg = 250.0f;
   ViewControl vc;
   vc.viewId = 4;
   vc.groupId = 2;

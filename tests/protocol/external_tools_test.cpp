@@ -120,7 +120,10 @@ TEST(ExternalTools, TsharkDecodesSkyigCigiPcapWithTheValuesWritten) {
       "cigi.env_region_control.lat", "cigi.env_region_control.lon", "cigi.env_region_control.size_x",
       "cigi.env_region_control.merge_terrestrial", "cigi.weather_control.humidity",
       "cigi.weather_control.visibility_range", "cigi.weather_control.cloud_type", "cigi.weather_control.severity",
-      "cigi.weather_control.scope", "cigi.view_control.view_id", "cigi.view_control.group_id",
+      "cigi.weather_control.scope", "cigi.weather_control.layer_id", "cigi.weather_control.scud_enable",
+      "cigi.weather_control.scud_frequency", "cigi.weather_control.coverage", "cigi.weather_control.base_elevation",
+      "cigi.weather_control.thickness", "cigi.weather_control.transition_band", "cigi.weather_control.horiz_wind",
+      "cigi.weather_control.wind_direction", "cigi.view_control.view_id", "cigi.view_control.group_id",
       "cigi.view_control.yaw", "cigi.view_control.zoff", "cigi.view_def.view_id", "cigi.view_def.left",
       "cigi.view_def.right", "cigi.view_def.top", "cigi.view_def.bottom", "cigi.view_def.far",
       "cigi.view_def.mirror_mode", "cigi.view_def.projection_type", "cigi.sensor_control.view_id",
@@ -170,6 +173,16 @@ TEST(ExternalTools, TsharkDecodesSkyigCigiPcapWithTheValuesWritten) {
     EXPECT_EQ(num(h, "cigi.weather_control.cloud_type"), wc.cloudType);
     EXPECT_EQ(num(h, "cigi.weather_control.severity"), wc.severity);
     EXPECT_EQ(num(h, "cigi.weather_control.scope"), static_cast<int>(wc.scope));
+    // A cloud layer's own fields, as the node reads them (node/host/cigi_state.cpp).
+    EXPECT_EQ(num(h, "cigi.weather_control.layer_id"), wc.layerId);
+    EXPECT_EQ(num(h, "cigi.weather_control.scud_enable"), 1);
+    EXPECT_NEAR(num(h, "cigi.weather_control.scud_frequency"), wc.scudFrequencyPct, 1e-4);
+    EXPECT_NEAR(num(h, "cigi.weather_control.coverage"), wc.coveragePct, 1e-4);
+    EXPECT_NEAR(num(h, "cigi.weather_control.base_elevation"), wc.baseElevationM, 1e-3);
+    EXPECT_NEAR(num(h, "cigi.weather_control.thickness"), wc.thicknessM, 1e-3);
+    EXPECT_NEAR(num(h, "cigi.weather_control.transition_band"), wc.transitionBandM, 1e-3);
+    EXPECT_NEAR(num(h, "cigi.weather_control.horiz_wind"), wc.horizontalWindSpeedMps, 1e-4);
+    EXPECT_NEAR(num(h, "cigi.weather_control.wind_direction"), wc.windDirectionDeg, 1e-3);
     EXPECT_EQ(num(h, "cigi.view_control.view_id"), vc.viewId);
     EXPECT_EQ(num(h, "cigi.view_control.group_id"), vc.groupId);
     EXPECT_NEAR(num(h, "cigi.view_control.yaw"), vc.yawDeg, 1e-4);

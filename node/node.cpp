@@ -403,8 +403,11 @@ class FrameLoop {
     s.timestampValid = true;
     const protocol::cigi::Packet packets[] = {s};
     // In the host's CIGI version: a 4.0 host reads a 4.0 Start of Frame (its first packet tells
-    // a CIGI 4 message by its 16-bit size and id), a 3.x host a 3.3 one.
-    const bool cigi4 = snapshot && snapshot->state.cigiMajorVersion == 4;
+    // a CIGI 4 message by its 16-bit size and id), a 3.x host a 3.3 one. The version is the
+    // receiver's latest, so a frame drawn before the sky shows the host's first datagram answers
+    // in it too.
+    const HostSnapshot* version = latest ? latest.get() : snapshot;
+    const bool cigi4 = version && version->state.cigiMajorVersion == 4;
     const std::string error = cigi4 ? protocol::cigi::encodeMessage4(packets, protocol::ByteOrder::big, sof_)
                                     : protocol::cigi::encodeMessage(packets, protocol::ByteOrder::big, sof_);
     if (error.empty() && udp_.sendTo(sof_, *to)) stats_.startOfFrameSent.fetch_add(1, std::memory_order_relaxed);

@@ -152,19 +152,37 @@ FogEye fogEye(IN(FogLayer) fog, Float h) {
   FogEye eye;
   eye.looking_up = fog.top_irradiance * down / PI;
   eye.looking_down = fog.top_irradiance * up / PI;
+  // How deep the eye is, in the diffusion's own unit (the scaled optical depth (1 - g) tau) from
+  // the nearer boundary: the boundary's law gives way to the field inside.
+  eye.inside = 1.0 - exp(-(1.0 - fog.asymmetry) * min(tau_in, tau - tau_in));
+  eye.limb_darkening = fog.limb_darkening;
   return eye;
 }
 
-// Along a view of cosine mu_view to the vertical (up positive): the two mixed by the cosine.
+// The law a thick layer's boundary shines by, over the Lambertian's flux / pi: (1 + b mu) /
+// (1 + 2 b / 3), the same flux (its integral of mu over the hemisphere is the Lambertian's).
+Float fogLimbLaw(Float b, Float mu) { return (1.0 + b * mu) / (1.0 + 2.0 * b / 3.0); }
+
+// Along a view of cosine mu_view to the vertical (up positive): the two mixed by the cosine,
+// the field inside the layer. A deck's (limb darkening b > 0) boundary seen from outside shines
+// by fogLimbLaw instead, its base with the downward flux and its top with the upward one (Moon &
+// Spencer 1942: an overcast sky's L / L_z = (1 + 2 cos Z) / 3), and the eye going in passes from
+// the one to the other with its depth (FogEye.inside), so a climb through a base shows no step.
 vec3 fogRadiance(IN(FogEye) eye, Float mu_view) {
   Float up = 0.5 * (1.0 + mu_view);
-  return up * eye.looking_up + (1.0 - up) * eye.looking_down;
+  vec3 field = up * eye.looking_up + (1.0 - up) * eye.looking_down;
+  if (eye.limb_darkening <= 0.0) return field;
+  vec3 boundary = mu_view >= 0.0 ? eye.looking_up * fogLimbLaw(eye.limb_darkening, mu_view)
+                                 : eye.looking_down * fogLimbLaw(eye.limb_darkening, -mu_view);
+  return mix(boundary, field, eye.inside);
 }
 
 // throughFog with the eye's radiance already solved (fogEye at h): one solve for the many views of
 // one eye (the sky pass's table, fog_table.h).
+// A deck with gaps (gap > 0) lets that share of what lies behind through untouched: the expected
+// light over its field.
 vec3 throughFogSeen(IN(FogLayer) fog, IN(FogEye) eye, IN(vec3) behind, Float h, Float mu, Float d) {
-  Float t = exp(-fog.extinction * fogPathLength(fog, h, mu, d));
+  Float t = mix(exp(-fog.extinction * fogPathLength(fog, h, mu, d)), 1.0, fog.gap);
   return behind * t + fogRadiance(eye, mu) * (1.0 - t);
 }
 
@@ -178,9 +196,19 @@ vec3 throughFog(IN(FogLayer) fog, IN(vec3) behind, Float h, Float mu, Float d) {
   return throughFogSeen(fog, fogEye(fog, h), behind, h, mu, d);
 }
 
+// What a layer leaves of the light from above under it, over what reaches its top: the downward
+// flux at its bottom (fogFluxes, the ground's reflections included), its gaps letting the rest
+// through. Under a deck the ground and everything below it are lit by that share of its top's
+// light (physics/weather/fog_table.h composes it).
+Float fogShadeBelow(IN(FogLayer) fog) {
+  if (fog.extinction <= 0.0) return 1.0;
+  Float tau = fogColumnDepth(fog);
+  return mix(fogFluxes(tau, tau, fog.asymmetry, fog.ground_albedo).x, 1.0, fog.gap);
+}
+
 // The fog's transmittance along a ray (the sun's light to the eye, a surface's to the eye).
 Float fogTransmittance(IN(FogLayer) fog, Float h, Float mu, Float d) {
-  return fog.extinction > 0.0 ? exp(-fog.extinction * fogPathLength(fog, h, mu, d)) : 1.0;
+  return fog.extinction > 0.0 ? mix(exp(-fog.extinction * fogPathLength(fog, h, mu, d)), 1.0, fog.gap) : 1.0;
 }
 
 #endif

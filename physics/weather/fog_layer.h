@@ -23,8 +23,10 @@ using FogEye = shader::weather_types::FogEye;
 // The lowest visibility the tables are built for; below it the layer takes the rest.
 inline constexpr double kTablesVisibilityKm = 10.0;
 // The layers over the clear air: the haze below the tables' visibility, the ground fog, the
-// precipitation (sky/fog_state.h; the sky pass's fogLayers[]).
-inline constexpr std::size_t kFogLayerCount = 3;
+// precipitation (the weather's, kWeatherLayerCount), then the host's cloud decks
+// (physics/weather/cloud_deck.h; sky/fog_state.h).
+inline constexpr std::size_t kWeatherLayerCount = 3;
+inline constexpr std::size_t kFogLayerCount = kWeatherLayerCount + sky::kCloudLayers;
 using FogLayers = std::array<FogLayer, kFogLayerCount>;
 
 // The visibility the tables are built for: the host's, or kTablesVisibilityKm if it is lower.

@@ -15,6 +15,11 @@ struct FogLayer {
   vec3 top_irradiance;   // linear Rec.709 lux on a horizontal surface at the top, from above
   vec3 albedo;           // the particles' single-scattering albedo per Rec.709 channel (1: water)
   Float band_height;     // the transition band above the top and below a raised bottom, metres (0: a hard edge)
+  // A cloud deck's (physics/weather/cloud_deck.h; 0 for fog): the expected share of the sky it
+  // leaves clear (1 - coverage; the sky pass draws where, from the deck's field), and the b of the
+  // law (1 + b mu) its base and top shine by.
+  Float gap;
+  Float limb_darkening;
 };
 
 // A layer's own radiance at one eye's depth in it (fogEye), linear Rec.709 cd/m^2: looking straight
@@ -23,6 +28,8 @@ struct FogLayer {
 struct FogEye {
   vec3 looking_up;
   vec3 looking_down;
+  Float inside;          // 0 at the layer's boundary (or outside it), towards 1 deep in it
+  Float limb_darkening;  // the layer's
 };
 
 #endif

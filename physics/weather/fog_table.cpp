@@ -1,5 +1,6 @@
 #include "physics/weather/fog_table.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -17,13 +18,38 @@ double rayEnd(double R, double heightM, double mu) {
   return mu < 0.0 && discriminant >= 0.0 ? -b - std::sqrt(discriminant) : kBeyondTheLayers;
 }
 
-glm::dvec4 compose(const FogLayers& layers, const std::array<FogEye, kFogLayerCount>& eyes, double heightM, double mu) {
+// The layers in the order a view meets them, the farthest first (each composes over what lies
+// behind it), by their bottoms: looking up the highest is the farthest, looking down the lowest.
+// Layers with one bottom keep their order (the weather's three all stand on the ground), so they
+// compose as before the decks came; a deck the eye is in counts as beyond the ground's layers
+// looking up (they are mostly below it) and before them looking down.
+std::array<std::size_t, kFogLayerCount> farthestFirst(const FogLayers& layers, double mu) {
+  std::array<std::size_t, kFogLayerCount> order{};
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  const auto key = [&](std::size_t i) { return mu >= 0.0 ? layers[i].bottom_height : -layers[i].bottom_height; };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) > key(b); });
+  return order;
+}
+
+// d < 0: the whole ray (to the ground where it meets it).
+glm::dvec4 compose(const FogLayers& layers, const std::array<FogEye, kFogLayerCount>& eyes, double heightM, double mu,
+                   double segment) {
   glm::dvec3 light(0.0);
   double t = 1.0;
-  for (std::size_t i = 0; i < layers.size(); ++i) {
+  for (const std::size_t i : farthestFirst(layers, mu)) {
     const FogLayer& f = layers[i];
     if (f.extinction <= 0.0) continue;
-    const double d = rayEnd(f.planet_radius, heightM, mu);
+    const double d = segment >= 0.0 ? segment : rayEnd(f.planet_radius, heightM, mu);
+    // A view down to the ground from under a deck never meets it, and all it sees (the ground,
+    // the air and the layers below) is in its shade; one that grazes past the ground's horizon
+    // goes on up into it.
+    if (i >= kWeatherLayerCount && rayEnd(f.planet_radius, heightM, mu) < kBeyondTheLayers &&
+        heightM < f.bottom_height - shader::fogBottomBand(f)) {
+      const double shade = shader::fogShadeBelow(f);
+      light *= shade;
+      t *= shade;
+      continue;
+    }
     light = shader::throughFogSeen(f, eyes[i], light, heightM, mu, d);
     t *= shader::fogTransmittance(f, heightM, mu, d);
   }
@@ -40,7 +66,11 @@ std::array<FogEye, kFogLayerCount> eyesOf(const FogLayers& layers, double height
 }  // namespace
 
 glm::dvec4 fogAlong(const FogLayers& layers, double heightM, double mu) {
-  return compose(layers, eyesOf(layers, heightM), heightM, mu);
+  return compose(layers, eyesOf(layers, heightM), heightM, mu, -1.0);
+}
+
+glm::dvec4 fogAlong(const FogLayers& layers, double heightM, double mu, double d) {
+  return compose(layers, eyesOf(layers, heightM), heightM, mu, d);
 }
 
 std::vector<glm::vec4> fogTable(const FogLayers& layers, double heightM, int size) {
@@ -48,7 +78,7 @@ std::vector<glm::vec4> fogTable(const FogLayers& layers, double heightM, int siz
   std::vector<glm::vec4> table(static_cast<std::size_t>(size));
   for (int i = 0; i < size; ++i) {
     const double mu = shader::fogTableMu((i + 0.5) / size);
-    table[static_cast<std::size_t>(i)] = glm::vec4(compose(layers, eyes, heightM, mu));
+    table[static_cast<std::size_t>(i)] = glm::vec4(compose(layers, eyes, heightM, mu, -1.0));
   }
   return table;
 }

@@ -21,5 +21,9 @@ std::vector<glm::vec4> fogTable(const FogLayers& layers, double heightM, int siz
 
 // The same composition for one view: in-scattered light (rgb) and transmittance (a).
 glm::dvec4 fogAlong(const FogLayers& layers, double heightM, double mu);
+// The same for the first d metres of the view (a segment to a surface, d from the eye): every
+// composite of the layers (the sky pass's table, the eye's view sphere, the library's light and
+// aerial perspective) is this one.
+glm::dvec4 fogAlong(const FogLayers& layers, double heightM, double mu, double d);
 
 }  // namespace skyig::weather

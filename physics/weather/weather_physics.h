@@ -1,5 +1,5 @@
 #pragma once
-// The weather's layers (fog, mist, precipitation and their table) written once in GLSL and
+// The weather's layers (fog, mist, precipitation, cloud decks, their table and the clouds' field) written once in GLSL and
 // compiled here as C++ in double precision (physics/README.md), for physics/weather, the sky state
 // and the tests.
 #include "physics/common/glsl_cpp.h"
@@ -18,4 +18,6 @@ using namespace weather_types;
 #include "physics/common/color.glsl"
 #include "physics/weather/fog_layer.glsl"
 #include "physics/weather/fog_table.glsl"
+#include "physics/weather/cloud_cover.glsl"
+#include "physics/weather/cloud_sunlight.glsl"
 #include "physics/common/glsl_cpp_end.h"

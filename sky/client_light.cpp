@@ -1,5 +1,7 @@
 #include "sky/client_light.h"
 
+#include "physics/weather/fog_table.h"
+
 #include "physics/analytic/analytic_sky.h"
 #include "physics/atmosphere/physical_camera.h"
 #include "physics/atmosphere/probe.h"
@@ -57,7 +59,7 @@ ClientDirectLight physicalSun(const SkyState& s, const atmosphere::AtmosphereMod
   out.normalLux = model.converter().luminance(normal);
   out.colour = colourOf(model.converter().toRec709(normal));
   // Through the fog layers on the way to the sun (grey: the colour stays).
-  const double t = fogTransmittanceToSpace(s.fog, model, s.observer.heightM, std::asin(out.direction.z));
+  const double t = fogTransmittanceToSpaceAlong(s.fog, model, s.observer.heightM, out.direction);
   out.horizontalLux *= t;
   out.normalLux *= t;
   return out;
@@ -105,8 +107,8 @@ glm::dvec3 clientSkyRadiance(const SkyState& s, const atmosphere::AtmosphereMode
   // The moonlit sky (Jensen et al. 2001): the same sky lit from the moon, scaled per channel.
   if (luminance(s.moonlightScale) > 0.0) out += radiance(s.moonDirection) * s.moonlightScale;
   // Then the fog in front, as the sky pass composes it (physics/weather/fog_layer.glsl).
-  for (const weather::FogLayer& f : drawnFogLayers(s.fog)) out = shader::throughFog(f, out, r - bottom, view.z, d);
-  return out;
+  const glm::dvec4 fog = weather::fogAlong(drawnFogLayers(s.fog), r - bottom, view.z, d);
+  return out * fog.a + glm::dvec3(fog);
 }
 
 glm::dvec3 shIrradiance(const ShCoefficients& L, const glm::dvec3& n) {
@@ -173,10 +175,9 @@ ClientAerialPerspective clientAerialPerspective(const SkyState& s, const atmosph
   // surface, the air's light) dimmed, their own light added.
   const double h = glm::length(camera) - model.parameters(0).bottom_radius;
   const double d = glm::length(offsetEnu), mu = d > 0.0 ? offsetEnu.z / d : 1.0;
-  for (const weather::FogLayer& f : drawnFogLayers(s.fog)) {
-    out.inScattered = shader::throughFog(f, out.inScattered, h, mu, d);
-    out.transmittance *= shader::fogTransmittance(f, h, mu, d);
-  }
+  const glm::dvec4 fog = weather::fogAlong(drawnFogLayers(s.fog), h, mu, d);
+  out.inScattered = out.inScattered * fog.a + glm::dvec3(fog);
+  out.transmittance *= fog.a;
   return out;
 }
 

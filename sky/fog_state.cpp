@@ -1,6 +1,7 @@
 #include "sky/fog_state.h"
 
 #include "physics/atmosphere/physical_camera.h"
+#include "physics/weather/fog_table.h"
 
 #include <algorithm>
 #include <cmath>
@@ -35,18 +36,67 @@ bool FogState::any() const {
   return std::any_of(sunlit.begin(), sunlit.end(), [](const weather::FogLayer& f) { return f.extinction > 0.0; });
 }
 
+bool FogState::broken() const {
+  return std::any_of(cover.begin(), cover.end(), [](const weather::CloudCover& c) { return c.broken; });
+}
+
+weather::FogLayers clouded(const FogState& fog, weather::FogLayers layers) {
+  for (std::size_t k = 0; k < kCloudLayers; ++k)
+    if (fog.cover[k].broken) layers[weather::kWeatherLayerCount + k].gap = 0.0;
+  return layers;
+}
+
+weather::FogLayers withoutBrokenDecks(const FogState& fog, weather::FogLayers layers) {
+  for (std::size_t k = 0; k < kCloudLayers; ++k)
+    if (fog.cover[k].broken) layers[weather::kWeatherLayerCount + k].extinction = 0.0;
+  return layers;
+}
+
+double cloudFieldFactor(const FogState& fog, double heightM, const glm::dvec3& direction) {
+  double factor = 1.0;
+  for (std::size_t k = 0; k < kCloudLayers; ++k) {
+    const weather::CloudCover& c = fog.cover[k];
+    const weather::FogLayer& deck = fog.sunlit[weather::kWeatherLayerCount + k];
+    if (!c.broken || deck.extinction <= 0.0) continue;
+    const double d = shader::distanceToHeight(deck.planet_radius, heightM, direction.z, c.midHeightM);
+    if (d < 0.0) continue;
+    weather::FogLayer full = deck;
+    full.gap = 0.0;
+    const double through = shader::fogTransmittance(full, heightM, direction.z, 1e9);
+    const double expected = shader::fogTransmittance(deck, heightM, direction.z, 1e9);
+    const double share = weather::cloudShareAt(c, glm::dvec2(direction.x, direction.y) * d);
+    if (expected > 0.0) factor *= (1.0 - share * (1.0 - through)) / expected;
+  }
+  return factor;
+}
+
+std::array<weather::CloudCover, kCloudLayers> cloudCoversOf(const SkyConditions& conditions, double planetRadiusM,
+                                                            double latitudeDeg, double longitudeDeg, double timeS) {
+  std::array<weather::CloudCover, kCloudLayers> out{};
+  const glm::dvec2 eye = weather::cloudGroundPosition(latitudeDeg, longitudeDeg, planetRadiusM);
+  for (std::size_t k = 0; k < kCloudLayers; ++k)
+    if (conditions.clouds[k].enabled && conditions.clouds[k].coveragePct > 0.0)
+      out[k] = weather::cloudCoverOf(conditions.clouds[k], static_cast<int>(k), eye.x, eye.y, timeS);
+  return out;
+}
+
 FogState makeFogState(const atmosphere::AtmosphereModel& model, const SkyConditions& conditions,
                       const glm::dvec3& sun, const glm::dvec3& moon, const glm::dvec3& moonlightScale) {
   FogState out;
   const double ground = model.parameters(0).bottom_radius;
   const double albedo = model.config().medium.groundAlbedo;
-  const std::array<FogSpec, weather::kFogLayerCount> specs{conditions.haze, conditions.fog, conditions.precipitation};
-  for (std::size_t i = 0; i < specs.size(); ++i) {
-    weather::validate(specs[i]);
-    if (specs[i].visibilityKm == 0.0) continue;
-    const double top = ground + specs[i].topM;
+  const std::array<FogSpec, weather::kWeatherLayerCount> onTheGround{conditions.haze, conditions.fog, conditions.precipitation};
+  for (std::size_t i = 0; i < weather::kFogLayerCount; ++i) {
+    const bool deck = i >= weather::kWeatherLayerCount;
+    const CloudLayer* cloud = deck ? &conditions.clouds[i - weather::kWeatherLayerCount] : nullptr;
+    if (cloud && !(cloud->enabled && cloud->coveragePct > 0.0)) continue;
+    const FogSpec spec = cloud ? weather::deckSpec(*cloud) : onTheGround[i];
+    if (!cloud) weather::validate(spec);
+    if (spec.visibilityKm == 0.0) continue;
+    const double top = ground + spec.topM;
     const TopLight sunlit = irradianceAt(model, top, sun);
-    out.sunlit[i] = weather::makeFogLayer(specs[i], ground, albedo, sunlit.total());
+    out.sunlit[i] = cloud ? weather::makeCloudDeck(*cloud, ground, albedo, sunlit.total())
+                          : weather::makeFogLayer(spec, ground, albedo, sunlit.total());
     const double lux = shader::rec709Luminance(sunlit.total());
     out.sunShare[i] = lux > 0.0 ? shader::rec709Luminance(sunlit.direct) / lux : 0.0;
     if (moonlightScale != glm::dvec3(0.0)) {
@@ -56,6 +106,15 @@ FogState makeFogState(const atmosphere::AtmosphereModel& model, const SkyConditi
       out.moonShare[i] = moonLux > 0.0 ? shader::rec709Luminance(moonlit.direct) / moonLux : 0.0;
     }
   }
+  // The weather's layers under a deck are lit by what it lets through (fogShadeBelow).
+  for (std::size_t i = 0; i < weather::kWeatherLayerCount; ++i)
+    for (std::size_t k = weather::kWeatherLayerCount; k < weather::kFogLayerCount; ++k)
+      if (out.sunlit[i].extinction > 0.0 && out.sunlit[k].extinction > 0.0 &&
+          out.sunlit[k].bottom_height >= out.sunlit[i].top_height) {
+        const double shade = shader::fogShadeBelow(out.sunlit[k]);
+        out.sunlit[i].top_irradiance *= shade;
+        out.moonIrradiance[i] *= shade;
+      }
   return out;
 }
 
@@ -67,15 +126,22 @@ double fogTransmittanceToSpace(const FogState& fog, const atmosphere::Atmosphere
   return t;
 }
 
+double fogTransmittanceToSpaceAlong(const FogState& fog, const atmosphere::AtmosphereModel& model, double heightM,
+                                    const glm::dvec3& direction) {
+  const double t = fogTransmittanceToSpace(fog, model, heightM, std::asin(std::clamp(direction.z, -1.0, 1.0)));
+  if (!fog.broken()) return t;
+  const double h = glm::length(atmosphere::physicalCamera(model, heightM)) - model.parameters(0).bottom_radius;
+  return t * cloudFieldFactor(fog, h, direction);
+}
+
 weather::FogLayers drawnFogLayers(const FogState& fog) { return litBy(fog, 1.0, 1.0); }
 
 weather::FogLayers moonlitFogLayers(const FogState& fog) { return litBy(fog, 0.0, 1.0); }
 
 double throughFogLayers(const weather::FogLayers& layers, double behindCdM2, double h, double mu,
                         double d) {
-  double l = behindCdM2;
-  for (const weather::FogLayer& f : layers) l = weather::throughFogLuminance(f, l, h, mu, d);
-  return l;
+  const glm::dvec4 f = weather::fogAlong(layers, h, mu, d);
+  return behindCdM2 * f.a + shader::rec709Luminance(glm::dvec3(f));
 }
 
 }  // namespace skyig::sky

@@ -10,6 +10,7 @@
 
 #include "physics/atmosphere/model.h"
 #include "physics/common/sky_conditions.h"
+#include "physics/weather/cloud_deck.h"
 #include "physics/weather/fog_layer.h"
 
 namespace skyig::sky {
@@ -19,24 +20,35 @@ namespace skyig::sky {
 // each channel's renderer would make its own every frame the eye's height changes: for the eye
 // (drawnFogLayers) and for the goggles of class A and B (their haze thinner: goggleFogLayers, the
 // eye's own table where there is no haze to thin).
+// Where a deck is broken, each table comes twice: with its decks' gaps filled (cloud along every
+// view: eye, nvisA, nvisB) and with the broken decks taken out (clear*); the sky pass mixes the two
+// per pixel by the decks' field (physics/weather/cloud_cover.glsl). Without a broken deck the
+// clear ones are null.
 struct FogTables {
   double heightM = -1.0;  // the eye above the ground they are for (physicalCamera's)
   std::shared_ptr<const std::vector<glm::vec4>> eye, nvisA, nvisB;
+  std::shared_ptr<const std::vector<glm::vec4>> clearEye, clearNvisA, clearNvisB;
 };
 
-// The haze below the tables' visibility, the ground fog, the precipitation; extinction 0: none.
+// The haze below the tables' visibility, the ground fog, the precipitation, then the host's cloud
+// decks (physics/weather/cloud_deck.h); extinction 0: none.
 struct FogState {
   weather::FogLayers sunlit{};                                      // lit at the top by the sun and its sky
   std::array<glm::dvec3, weather::kFogLayerCount> moonIrradiance{};  // the moon's share at each top (Rec.709 lux)
   std::array<double, weather::kFogLayerCount> sunShare{};            // of the sunlit top's lux, the direct sun's
   std::array<double, weather::kFogLayerCount> moonShare{};           // of the moonlit top's lux, the direct moon's
   FogTables tables;  // when any(); a state made without them (a test's, the warm-up's) has none
+  // Each deck's field for this state's eye and instant (broken: where the sky pass draws it).
+  std::array<weather::CloudCover, sky::kCloudLayers> cover{};
   bool any() const;
+  bool broken() const;  // a deck with gaps: the sky pass draws its field
 };
 
-// The layers of `conditions` (haze, fog, precipitation) over `model`'s ground, lit at their tops
-// by the sun in `sun` (unit, the model's frame: up is +z at the camera) and the moon in `moon`
-// scaled by moonlightScale (linear Rec.709). Throws std::invalid_argument for a bad layer.
+// The layers of `conditions` (haze, fog, precipitation, the cloud decks) over `model`'s ground,
+// lit at their tops by the sun in `sun` (unit, the model's frame: up is +z at the camera) and the
+// moon in `moon` scaled by moonlightScale (linear Rec.709). Throws std::invalid_argument for a bad
+// layer. The decks' fields (cover) are the caller's: they need the eye's place and time
+// (cloudCoversOf).
 FogState makeFogState(const atmosphere::AtmosphereModel& model, const SkyConditions& conditions,
                       const glm::dvec3& sun, const glm::dvec3& moon, const glm::dvec3& moonlightScale);
 
@@ -44,6 +56,28 @@ FogState makeFogState(const atmosphere::AtmosphereModel& model, const SkyConditi
 // to space at elevation e (radians): what the stars, the moon and the night's light keep.
 double fogTransmittanceToSpace(const FogState& fog, const atmosphere::AtmosphereModel& model, double heightM,
                                double elevationRad);
+
+// The decks' fields for an eye at latitudeDeg, longitudeDeg at timeS seconds of the host's clock
+// (seconds since J2000, UTC).
+std::array<weather::CloudCover, sky::kCloudLayers> cloudCoversOf(const SkyConditions& conditions, double planetRadiusM,
+                                                                 double latitudeDeg, double longitudeDeg, double timeS);
+
+// The layers' transmittance to space along an ENU unit `direction` from an observer heightM above
+// the ground: fogTransmittanceToSpace with a broken deck's cloud or gap where the view crosses it
+// (cloudFieldFactor): the sun's and the moon's direct light, the discs' glare.
+double fogTransmittanceToSpaceAlong(const FogState& fog, const atmosphere::AtmosphereModel& model, double heightM,
+                                    const glm::dvec3& direction);
+
+// What reaches the eye heightM above the ground from beyond the broken decks along an ENU unit
+// `direction` (a star, a planet, the moon), over what their gaps let through on average (the
+// state's extinction profile, which weighs them by their coverage): 0 behind a cloud, over 1 in a
+// gap, as the sky pass's field has them there.
+double cloudFieldFactor(const FogState& fog, double heightM, const glm::dvec3& direction);
+
+// The layers with the broken decks' gaps filled (every view meets cloud) or with them taken out
+// (no view does): the two tables the sky pass mixes by the field.
+weather::FogLayers clouded(const FogState& fog, weather::FogLayers layers);
+weather::FogLayers withoutBrokenDecks(const FogState& fog, weather::FogLayers layers);
 
 // The layers as the sky pass draws them: each lit by the sun and the moon together.
 weather::FogLayers drawnFogLayers(const FogState& fog);

@@ -73,6 +73,11 @@ std::shared_ptr<const std::vector<glm::vec4>> fogTableFor(const FogState& fog, S
   return band == SpectralBand::NvisClassA ? fog.tables.nvisA : fog.tables.nvisB;
 }
 
+std::shared_ptr<const std::vector<glm::vec4>> clearFogTableFor(const FogState& fog, SpectralBand band) {
+  if (band == SpectralBand::Visible) return fog.tables.clearEye;
+  return band == SpectralBand::NvisClassA ? fog.tables.clearNvisA : fog.tables.clearNvisB;
+}
+
 nvis::NvisClass nvisClassOf(SpectralBand band) {
   if (band == SpectralBand::Visible) throw std::invalid_argument("nvisClassOf: the visible band has no NVIS class");
   return band == SpectralBand::NvisClassA ? nvis::NvisClass::A : nvis::NvisClass::B;

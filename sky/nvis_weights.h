@@ -59,6 +59,8 @@ weather::FogLayers goggleFogLayers(const FogState& fog, nvis::NvisClass nvisClas
 // The state's precomputed table (FogTables) for a channel of `band`: the eye's, or its goggle
 // class's; null where the state has none.
 std::shared_ptr<const std::vector<glm::vec4>> fogTableFor(const FogState& fog, SpectralBand band);
+// The same without the broken cloud decks (FogTables' clear*; null without one).
+std::shared_ptr<const std::vector<glm::vec4>> clearFogTableFor(const FogState& fog, SpectralBand band);
 
 // The NVIS irradiance per lux of a blackbody of `temperatureK` above the atmosphere (the stars'
 // weight: each star's own, from the temperature it keeps), interpolated in a table of

@@ -82,8 +82,20 @@ std::shared_ptr<const night::StarField> starFieldOf(const SkyState& s) {
   night::StarFieldOptions options;
   options.intensity = c.starFieldIntensity;
   options.timeS = s.observer.utc.secondsOfDay;
-  return std::make_shared<const night::StarField>(
-      night::buildStarField(c.starCatalogue.get(), s.ephemeris ? *s.ephemeris : *own, *s.extinction, options));
+  night::StarField field = night::buildStarField(c.starCatalogue.get(), s.ephemeris ? *s.ephemeris : *own, *s.extinction, options);
+  // Behind a broken deck's cloud a star is gone, in its gaps it shines (the extinction profile
+  // weighed the deck by its coverage alone): as the sky pass draws the field.
+  if (s.fog.broken() && s.conditions.atmosphere) {
+    const double h = glm::length(atmosphere::physicalCamera(*s.conditions.atmosphere, s.observer.heightM)) -
+                     s.conditions.atmosphere->parameters(0).bottom_radius;
+    for (std::vector<night::PointSource>* sources : {&field.stars, &field.planets})
+      for (night::PointSource& p : *sources) {
+        const double f = cloudFieldFactor(s.fog, h, p.direction);
+        p.rec709Lux *= f;
+        p.illuminanceLux *= f;
+      }
+  }
+  return std::make_shared<const night::StarField>(std::move(field));
 }
 
 
@@ -92,16 +104,25 @@ std::shared_ptr<const night::StarField> starFieldOf(const SkyState& s) {
 FogTables fogTablesOf(const FogState& fog, const atmosphere::AtmosphereModel& model, double observerHeightM) {
   FogTables t;
   t.heightM = glm::length(atmosphere::physicalCamera(model, observerHeightM)) - model.parameters(0).bottom_radius;
-  const weather::FogLayers eye = drawnFogLayers(fog);
-  t.eye = std::make_shared<const std::vector<glm::vec4>>(weather::fogTable(eye, t.heightM));
-  auto goggle = [&](nvis::NvisClass c) {
-    const weather::FogLayers layers = goggleFogLayers(fog, c);
-    return std::memcmp(&layers, &eye, sizeof layers) == 0
-               ? t.eye
+  // Where a deck is broken, the sky pass mixes the table with its gaps filled and the one without
+  // it by its field (FogTables); the CPU's own uses (the eye, the light) weigh the gaps instead.
+  const bool broken = fog.broken();
+  using Table = std::shared_ptr<const std::vector<glm::vec4>>;
+  auto tableOf = [&](const weather::FogLayers& layers, const weather::FogLayers& eye, const Table& eyeTable) {
+    return eyeTable && std::memcmp(&layers, &eye, sizeof layers) == 0
+               ? eyeTable
                : std::make_shared<const std::vector<glm::vec4>>(weather::fogTable(layers, t.heightM));
   };
-  t.nvisA = goggle(nvis::NvisClass::A);
-  t.nvisB = goggle(nvis::NvisClass::B);
+  const weather::FogLayers eye = clouded(fog, drawnFogLayers(fog));
+  t.eye = tableOf(eye, eye, nullptr);
+  t.nvisA = tableOf(clouded(fog, goggleFogLayers(fog, nvis::NvisClass::A)), eye, t.eye);
+  t.nvisB = tableOf(clouded(fog, goggleFogLayers(fog, nvis::NvisClass::B)), eye, t.eye);
+  if (broken) {
+    const weather::FogLayers clearEye = withoutBrokenDecks(fog, drawnFogLayers(fog));
+    t.clearEye = tableOf(clearEye, clearEye, nullptr);
+    t.clearNvisA = tableOf(withoutBrokenDecks(fog, goggleFogLayers(fog, nvis::NvisClass::A)), clearEye, t.clearEye);
+    t.clearNvisB = tableOf(withoutBrokenDecks(fog, goggleFogLayers(fog, nvis::NvisClass::B)), clearEye, t.clearEye);
+  }
   return t;
 }
 
@@ -120,7 +141,7 @@ eye::GlareSources glareSources(const SkyState& s) {
     const glm::dvec3 camera = atmosphere::physicalCamera(model, s.observer.heightM);
     sun.angularRadiusRad = model.parameters(0).sun_angular_radius;
     sun.rec709Lux = glm::max(model.converter().toRec709(model.sunIrradiance(camera, airless, airless)), glm::dvec3(0.0)) *
-                    fogTransmittanceToSpace(s.fog, model, s.observer.heightM, s.sunApparentAltitude);
+                    fogTransmittanceToSpaceAlong(s.fog, model, s.observer.heightM, sun.direction);
   } else if (s.conditions.model != SkyModel::Physical) {
     sun.angularRadiusRad = std::acos(std::clamp(s.sky.params.cosSunRadius, -1.0, 1.0));
     // The analytic models keep the disc's radiance below the horizon; the earth hides it.
@@ -250,6 +271,12 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
   if (s.conditions.model == SkyModel::Physical) {
     s.fog = makeFogState(*s.conditions.atmosphere, s.conditions,
                          enuDirection(s.sunAzimuth, s.sunAltitude), s.moonDirection, s.moonlightScale);
+    // The decks' fields on the host's clock: seconds since J2000 (UTC), so every node and a
+    // replay place them alike.
+    const double timeS = (ephemeris::julianDayAt0h(observer.utc.year, observer.utc.month, observer.utc.day) - 2451545.0) * 86400.0 +
+                         observer.utc.secondsOfDay;
+    s.fog.cover = cloudCoversOf(s.conditions, s.conditions.atmosphere->parameters(0).bottom_radius, observer.latitudeDeg,
+                                observer.longitudeDeg, timeS);
     // What comes from beyond the air (moon, planets, stars, the night's light) through the fog too.
     auto throughFog = [&](double e) {
       return fogTransmittanceToSpace(s.fog, *s.conditions.atmosphere, observer.heightM, e);
@@ -261,7 +288,18 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
   }
   s.starField = starFieldOf(s);
   if (s.ephemeris) {
-    s.moonDisc = std::make_shared<const night::MoonDisc>(night::makeMoonDisc(night::moonPlacement(*s.ephemeris), s.extinction));
+    night::MoonDisc moon = night::makeMoonDisc(night::moonPlacement(*s.ephemeris), s.extinction);
+    if (s.fog.broken() && s.conditions.atmosphere) {
+      // Behind a cloud of a broken deck, or in a gap: the disc, its light on the ground and its
+      // glare (what its irradiance lights) as the sky pass's field has it there.
+      const double h = glm::length(atmosphere::physicalCamera(*s.conditions.atmosphere, s.observer.heightM)) -
+                       s.conditions.atmosphere->parameters(0).bottom_radius;
+      const double f = cloudFieldFactor(s.fog, h, moon.centreSeen);
+      moon.sunlitScale *= f;
+      moon.earthshineScale *= f;
+      moon.irradianceRec709 *= f;
+    }
+    s.moonDisc = std::make_shared<const night::MoonDisc>(std::move(moon));
     const double albedo = s.conditions.atmosphere ? medium.groundAlbedo : s.conditions.groundAlbedo;
     const glm::dvec3 e = night::nightDiffuseIlluminance(*s.ephemeris, s.extinction) +
                          (s.starField ? night::horizontalIlluminance(*s.starField) : glm::dvec3(0.0));

@@ -170,10 +170,15 @@ bool SkyRenderer::drawSky(const skyig::sky::SkyState& state, const skyig::sky::C
     // share the planet, so the camera is the same. The moonlit sky, and the sun's own sky at
     // night, only where they change what the displays show (sky/shown_layers.h), and always in
     // a goggle, which sees far fainter light than the eye.
-    physical_->setFog(skyig::sky::isGoggle(channel)
-                          ? skyig::sky::goggleFogLayers(state.fog, skyig::sky::nvisClassOf(channel.band))
-                          : sky::drawnFogLayers(state.fog),
-                      skyig::sky::fogTableFor(state.fog, channel.band), state.fog.tables.heightM);
+    const weather::FogLayers drawn = skyig::sky::isGoggle(channel)
+                                         ? skyig::sky::goggleFogLayers(state.fog, skyig::sky::nvisClassOf(channel.band))
+                                         : sky::drawnFogLayers(state.fog);
+    // A broken deck: drawn where its field has cloud (the layers with its gaps filled, mixed per
+    // pixel with those without it).
+    physical_->setFog(sky::clouded(state.fog, drawn), skyig::sky::fogTableFor(state.fog, channel.band),
+                      state.fog.tables.heightM);
+    physical_->setCloudCover(state.fog.cover, sky::withoutBrokenDecks(state.fog, drawn),
+                             skyig::sky::clearFogTableFor(state.fog, channel.band));
     return physical_->draw(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
                            skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection,
                            state.shown.moonlitSky || skyig::sky::isGoggle(channel) ? state.moonlightScale

@@ -61,6 +61,8 @@
 // The weather's layers along this frame's views (render/passes/sky/fog_table_texture.h), read by
 // the physical sky pass when a layer is on (SKYIG_FOG).
 #define SKYIG_UNIT_FOG_TABLE 11
+// The same without the broken cloud decks, mixed with it by their field (SKYIG_CLOUD_COVER).
+#define SKYIG_UNIT_FOG_CLEAR_TABLE 12
 
 // The moon (render/passes/night/moon.frag, MoonPass). Kept apart from the sky pass's 0 to 7 as they always
 // were; nothing needs it (see above), and any GL 4.5 driver has far more units than 22.

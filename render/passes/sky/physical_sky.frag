@@ -58,6 +58,86 @@
 // along this frame's views by their cosine to the vertical: their own light (rgb) and the
 // transmittance of what lies behind them (a), composed on the CPU from physics/weather/fog_layer.glsl.
 layout(binding = SKYIG_UNIT_FOG_TABLE) uniform sampler1D fogTable;
+#ifdef SKYIG_CLOUD_COVER
+// A broken cloud deck: fogTable holds the layers with its gaps filled, this one without it; the
+// deck's field (physics/weather/cloud_cover.glsl, placed by the CPU: physics/weather/cloud_deck.h)
+// says how much of each the pixel's view meets, where the view crosses the deck's middle height.
+#include "physics/weather/cloud_cover.glsl"
+layout(binding = SKYIG_UNIT_FOG_CLEAR_TABLE) uniform sampler1D fogClearTable;
+uniform int cloudDeckCount;     // the broken decks, at most 3
+uniform vec4 cloudDeckShape[3]; // middle height above the ground (m), cell (m), threshold, softness
+uniform vec4 cloudDeckPlace[3]; // origin (cells), stretch across the wind, seed
+uniform vec4 cloudDeckAlong[3]; // the wind's direction (east, north), the coverage, the fade's start (m)
+uniform vec2 cloudEye;          // the eye above the ground (m), the ground's radius (m)
+
+// The share of cloud broken deck k has where the view crosses its middle height.
+float cloudShareOf(int k, vec3 view) {
+  float d = distanceToHeight(cloudEye.y, cloudEye.x, view.z, cloudDeckShape[k].x);
+  if (d < 0.0) return 0.0;
+  vec2 offset = view.xy * d;  // metres east and north where the view crosses the middle
+  vec2 along = cloudDeckAlong[k].xy;
+  vec2 p = cloudDeckPlace[k].xy + vec2(dot(offset, along), dot(offset, vec2(along.y, -along.x)) * cloudDeckPlace[k].z) /
+                                      cloudDeckShape[k].y;
+  float mask = cloudMask(p, int(cloudDeckPlace[k].w), cloudDeckShape[k].z, cloudDeckShape[k].w);
+  // Far off, where a cell shrinks below a few pixels, the field's mean (its coverage) instead
+  // of noise that would alias (cloudFadeWeight).
+  return mix(mask, cloudDeckAlong[k].z, cloudFadeWeight(d, cloudDeckAlong[k].w));
+}
+
+// The share of the view that meets a broken deck's cloud: the most of any deck's.
+float cloudShareAlong(vec3 view) {
+  float share = 0.0;
+  for (int k = 0; k < cloudDeckCount; ++k) share = max(share, cloudShareOf(k, view));
+  return share;
+}
+#endif
+#ifdef SKYIG_CLOUD_LIGHT
+// The sun's (and the moon's) light each deck the eye is outside of scatters once towards it
+// (physics/weather/cloud_sunlight.glsl), where the view meets the face it sees: its base from
+// under it, its top from over it. The light reaches that point through the air (the
+// transmittance table at the point, for the light's local elevation there: a low sun shines on a
+// distant base from below, reddened), and the eye through the air and the weather's layers
+// between (cloudLitSide.z, their vertical optical depth).
+#include "physics/weather/cloud_cover.glsl"
+#include "physics/weather/cloud_sunlight.glsl"
+#include "physics/weather/fog_layer.glsl"
+uniform int cloudLitCount;
+uniform vec4 cloudLit[3];      // the face's height (m), the deck's optical depth, asymmetry, its broken index (-1: whole)
+uniform vec4 cloudLitSide[3];  // 1: its base seen from under it, -1: its top from over it; its reflectance; the layers' depth between
+uniform vec2 cloudLitEye;      // the eye above the ground (m), the ground's radius (m)
+
+vec3 cloudSingleLight(vec3 view, vec3 light, vec3 scale) {
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < cloudLitCount; ++k) {
+    float d = distanceToHeight(cloudLitEye.y, cloudLitEye.x, view.z, cloudLit[k].x);
+    if (d < 0.0) continue;
+    vec3 p = camera + view * d;
+    float r_p = length(p);
+    vec3 n = (cloudLitSide[k].x > 0.0 ? -1.0 : 1.0) * (p / r_p);  // the face's outward normal
+    float mu = dot(-view, n);
+    float mu0 = dot(light, n);
+    if (mu <= 0.0 || mu0 == 0.0) continue;
+    vec4 t = transmittanceToSun(atm, transmittanceXyz, r_p, dot(p / r_p, light));
+    vec3 e = xyzToRec709Linear(solarIrradianceXyz * t.xyz) * scale;
+    float tau = cloudLit[k].y;
+    float g = cloudLit[k].z;
+    float cos_theta = dot(view, light);
+    float l = mu0 > 0.0 ? cloudSingleReflected(tau, g, mu0, mu, cos_theta)
+                        : cloudSingleTransmitted(tau, g, -mu0, mu, cos_theta);
+    // A base lit from below (a sun under the deck's horizon there) diffuses that light too: the
+    // two-stream's reflectance by the base's law; the table holds only the light from above.
+    if (mu0 > 0.0 && cloudLitSide[k].x > 0.0) l += cloudLitSide[k].y * mu0 / PI * fogLimbLaw(2.0, mu);
+    float share = 1.0;
+#ifdef SKYIG_CLOUD_COVER
+    if (cloudLit[k].w >= 0.0) share = cloudShareOf(int(cloudLit[k].w), view);
+#endif
+    float r = frameRadii.x;
+    vec4 ta = transmittanceAlongRay(atm, transmittanceXyz, r, clamp(dot(camera, view) / r, -1.0, 1.0), d, false);
+    sum += e * (l * share * ta.y * exp(-cloudLitSide[k].z / max(abs(view.z), 0.02)));
+  }
+  return sum;
+}
+#endif
 #endif
 #ifdef SKYIG_NIGHT_LAYER
 #include "render/glsl/frame_uniforms.h"
@@ -167,7 +247,20 @@ void main() {
   // through the fog already (the state's extinction profile, sky/sky_state.cpp).
 #ifdef SKYIG_FOG
   vec4 fog = texture(fogTable, fogTableU(view.z));
+#ifdef SKYIG_CLOUD_COVER
+  fog = mix(texture(fogClearTable, fogTableU(view.z)), fog, cloudShareAlong(view));
+#endif
   radiance = radiance * fog.a + fog.rgb;
+#ifdef SKYIG_CLOUD_LIGHT
+  vec3 single = vec3(0.0);
+#ifndef SKYIG_SUNLESS
+  single += bandRatio(band.y) * cloudSingleLight(view, sunDirectionP, vec3(1.0));
+#endif
+#ifdef SKYIG_MOONLIT
+  single += bandRatio(band.z) * cloudSingleLight(view, moonDirectionP, moonlightScale);
+#endif
+  radiance += max(inBand(single, lightWeights.x), vec3(0.0));
+#endif
 #endif
 #ifdef SKYIG_NIGHT_LAYER
   nightLayerHere = nightLayerAt(gl_FragCoord.xy);

@@ -52,7 +52,76 @@ PhysicalSkyPass::Program::Program(const char* vertex, const char* fragment, cons
       radii(glGetUniformLocation(program.id(), "frameRadii")),
       angles(glGetUniformLocation(program.id(), "frameAngles")),
       groundCap(glGetUniformLocation(program.id(), "groundCap")),
-      nightGround(glGetUniformLocation(program.id(), "nightGroundRadiance")) {}
+      nightGround(glGetUniformLocation(program.id(), "nightGroundRadiance")),
+      cloudCount(glGetUniformLocation(program.id(), "cloudDeckCount")),
+      cloudShape(glGetUniformLocation(program.id(), "cloudDeckShape")),
+      cloudPlace(glGetUniformLocation(program.id(), "cloudDeckPlace")),
+      cloudAlong(glGetUniformLocation(program.id(), "cloudDeckAlong")),
+      cloudEye(glGetUniformLocation(program.id(), "cloudEye")),
+      litCount(glGetUniformLocation(program.id(), "cloudLitCount")),
+      lit(glGetUniformLocation(program.id(), "cloudLit")),
+      litSide(glGetUniformLocation(program.id(), "cloudLitSide")),
+      litEye(glGetUniformLocation(program.id(), "cloudLitEye")) {}
+
+PhysicalSkyPass::LitDecks PhysicalSkyPass::litDecks(double heightM) const {
+  LitDecks out;
+  int broken = 0;
+  for (std::size_t k = 0; k < sky::kCloudLayers; ++k) {
+    const weather::FogLayer& deck = fog_[weather::kWeatherLayerCount + k];
+    const bool isBroken = cover_[k].broken && deck.extinction > 0.0;
+    const int brokenIndex = isBroken ? broken++ : -1;
+    if (deck.extinction <= 0.0) continue;
+    const double base = deck.bottom_height - shader::fogBottomBand(deck), top = deck.top_height + deck.band_height;
+    if (heightM >= base && heightM <= top) continue;  // inside: its field holds it
+    const bool under = heightM < base;
+    const double face = under ? base : top;
+    const double tau = shader::fogColumnDepth(deck);
+    double between = 0.0;  // the weather's layers between the eye and the face
+    for (std::size_t i = 0; i < weather::kWeatherLayerCount; ++i)
+      if (fog_[i].extinction > 0.0)
+        between += std::abs(shader::fogDepthAbove(fog_[i], std::min(heightM, face)) - shader::fogDepthAbove(fog_[i], std::max(heightM, face)));
+    out.lit[out.count] = glm::vec4(glm::dvec4(face, tau, deck.asymmetry, brokenIndex));
+    out.side[out.count] = glm::vec4(glm::dvec4(under ? 1.0 : -1.0, shader::fogSlabReflectance(tau, deck.asymmetry), between, 0.0));
+    ++out.count;
+  }
+  return out;
+}
+
+bool PhysicalSkyPass::cloudCovered() const {
+  for (std::size_t k = 0; k < cover_.size(); ++k)
+    if (cover_[k].broken && fog_[weather::kWeatherLayerCount + k].extinction > 0.0) return true;
+  return false;
+}
+
+// The broken decks' fields, packed for cloudShareAlong (render/passes/sky/physical_sky.frag).
+void PhysicalSkyPass::setCloudUniforms(const Program& program, double heightM) const {
+  const GLuint id = program.program.id();
+  const float bottom = static_cast<float>(current_.model->parameters(0).bottom_radius);
+  if (program.litCount >= 0) {
+    const LitDecks l = litDecks(heightM);
+    glProgramUniform1i(id, program.litCount, l.count);
+    glProgramUniform4fv(id, program.lit, l.count, &l.lit[0][0]);
+    glProgramUniform4fv(id, program.litSide, l.count, &l.side[0][0]);
+    glProgramUniform2f(id, program.litEye, static_cast<float>(heightM), bottom);
+  }
+  if (program.cloudCount < 0) return;
+  std::array<glm::vec4, sky::kCloudLayers> shape{}, place{}, along{};
+  int n = 0;
+  for (const weather::CloudCover& c : cover_) {
+    if (!c.broken) continue;
+    shape[n] = glm::vec4(glm::dvec4(c.midHeightM, c.cellM, c.threshold, c.softness));
+    place[n] = glm::vec4(glm::dvec4(c.origin, c.stretch, c.seed));
+    along[n] = glm::vec4(glm::dvec4(c.along, c.coverage, weather::kCloudFadeCells * c.cellM));
+    ++n;
+  }
+  const GLuint p = program.program.id();
+  glProgramUniform1i(p, program.cloudCount, n);
+  glProgramUniform4fv(p, program.cloudShape, n, &shape[0][0]);
+  glProgramUniform4fv(p, program.cloudPlace, n, &place[0][0]);
+  glProgramUniform4fv(p, program.cloudAlong, n, &along[0][0]);
+  glProgramUniform2f(p, program.cloudEye, static_cast<float>(heightM),
+                     static_cast<float>(current_.model->parameters(0).bottom_radius));
+}
 
 PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame, const char* insideFragment)
     : slicesPerFrame_(slicesPerFrame),
@@ -329,6 +398,7 @@ void PhysicalSkyPass::prepare(const Program& program, const Frame& f) const {
     glProgramUniform3fv(program.program.id(), program.moonScale, 1, &f3(f.moonlightScale)[0]);
   }
   if (f.night->texture) glProgramUniform3fv(program.program.id(), program.nightGround, 1, &f3(f.night->groundRadiance)[0]);
+  setCloudUniforms(program, glm::length(f.camera) - current_.model->parameters(0).bottom_radius);
   program.program.use();
 }
 
@@ -398,6 +468,8 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   base.sunless = !sunlit;
   // The weather's layers only when one is on: clear air pays nothing for them.
   base.fog = std::any_of(fog_.begin(), fog_.end(), [](const weather::FogLayer& l) { return l.extinction > 0.0; });
+  base.cloudCover = base.fog && cloudCovered();
+
   base.nightLayer = night.texture != 0;
   base.nightLayerCellPx = base.nightLayer ? night.cellPx : 0;
   base.tone = tone.defines;
@@ -409,6 +481,7 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   };
   stepUpload();
   if (!current_.model) throw std::logic_error("PhysicalSkyPass::draw before use()");
+  base.cloudLight = base.fog && litDecks(glm::length(camera) - current_.model->parameters(0).bottom_radius).count > 0;
   bindTables(night);
   if (glm::length(camera) > current_.model->parameters(0).top_radius) {
     drawFromSpace(camera, sunDirection, moonDirection, moonlightScale, sunRefraction);
@@ -419,6 +492,9 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   if (base.fog) {
     const double h = glm::length(camera) - current_.model->parameters(0).bottom_radius;
     fogTable_->use(fog_, h, SKYIG_UNIT_FOG_TABLE, h == fogPrecomputedHeightM_ ? fogPrecomputed_ : nullptr);
+    if (base.cloudCover)
+      fogClearTable_->use(fogClear_, h, SKYIG_UNIT_FOG_CLEAR_TABLE,
+                          h == fogPrecomputedHeightM_ ? fogClearPrecomputed_ : nullptr);
   }
   const GLint target = drawSlices(f);
   if (reference_) {  // the frozen reference: everything in one program, the moon a uniform branch

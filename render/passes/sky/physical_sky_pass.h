@@ -10,6 +10,7 @@
 #include "render/gl/gl_program.h"
 #include "render/passes/tone/folded_tone.h"
 #include "render/passes/common/night_layer.h"
+#include "physics/weather/cloud_deck.h"
 #include "render/passes/sky/fog_table_texture.h"
 #include "render/passes/sky/sky_variant.h"
 #include "physics/atmosphere/physical_camera.h"
@@ -75,6 +76,17 @@ class PhysicalSkyPass {
     fogPrecomputedHeightM_ = tableHeightM;
   }
 
+  // The cloud decks' fields (sky/fog_state.h, FogState::cover): where one is broken, setFog's
+  // layers have its gaps filled, `clear` (and its table for tableHeightM, when made with the
+  // state) is the same without it, and the next draw() mixes the two per pixel by the field
+  // (SKYIG_CLOUD_COVER). None broken (the default): setFog's layers alone.
+  void setCloudCover(const std::array<weather::CloudCover, sky::kCloudLayers>& cover, const weather::FogLayers& clear,
+                     std::shared_ptr<const std::vector<glm::vec4>> clearTable = nullptr) {
+    cover_ = cover;
+    fogClear_ = clear;
+    fogClearPrecomputed_ = std::move(clearTable);
+  }
+
   // What a draw() does to the pass's own state, without drawing: the pending model's next
   // slices uploaded (swapped in once complete). A replay that skips the frames it does not
   // write calls it for them, so its written frames show the tables a frame-by-frame run would.
@@ -123,7 +135,19 @@ class PhysicalSkyPass {
     Program(const char* vertex, const char* fragment, const std::string& defines = "");
     GlProgram program;
     GLint camera, sun, sunRefraction, moonOn, moonDirection, moonScale, radii, angles, groundCap, nightGround;
+    GLint cloudCount, cloudShape, cloudPlace, cloudAlong, cloudEye;  // SKYIG_CLOUD_COVER's
+    GLint litCount, lit, litSide, litEye;                            // SKYIG_CLOUD_LIGHT's
   };
+  bool cloudCovered() const;  // a broken deck among setFog's layers
+  // The decks the eye is outside of, for SKYIG_CLOUD_LIGHT (render/passes/sky/physical_sky.frag's
+  // cloudLit and cloudLitSide): the face each shows, its optical depth, asymmetry and index among
+  // the broken decks; which face, its reflectance, the weather layers' depth between it and the eye.
+  struct LitDecks {
+    int count = 0;
+    std::array<glm::vec4, sky::kCloudLayers> lit{}, side{};
+  };
+  LitDecks litDecks(double heightM) const;
+  void setCloudUniforms(const Program& program, double heightM) const;
   // The program of a variant, compiled the first time a frame needs it (a node uses a few of the
   // many); the HDR variants without the night layer or the tone are compiled with the pass.
   const Program& program(const SkyVariant& v);
@@ -182,6 +206,10 @@ class PhysicalSkyPass {
   std::shared_ptr<const std::vector<glm::vec4>> fogPrecomputed_;
   double fogPrecomputedHeightM_ = -1.0;
   std::unique_ptr<FogTableTexture> fogTable_ = std::make_unique<FogTableTexture>();
+  std::array<weather::CloudCover, sky::kCloudLayers> cover_{};
+  weather::FogLayers fogClear_{};
+  std::shared_ptr<const std::vector<glm::vec4>> fogClearPrecomputed_;
+  std::unique_ptr<FogTableTexture> fogClearTable_ = std::make_unique<FogTableTexture>();
   double lastUploadSeconds_ = 0.0;
 };
 

@@ -76,8 +76,8 @@ TEST_F(Cli, RendersAnAnalyticSkyWithOnlyAnOutput) {
   EXPECT_TRUE(fs::file_size(dir_ / "sky.png") > 100);
 }
 
-// `render --cloud` records the cloud layer with the frame (the EXR header names it; not drawn
-// yet), and a spec that is not one exits 2 naming the flag.
+// `render --cloud` records the cloud layer with the frame (the EXR header names it; the physical
+// sky draws it), and a spec that is not one exits 2 naming the flag.
 TEST_F(Cli, ACloudLayerFromTheCommandLineIsRecordedWithTheFrame) {
   const Result r = run("render --sky-model preetham --size 32x24 --cloud stratus:300:400 --exr " + (dir_ / "c.exr").string());
   ASSERT_EQ(r.exitCode, 0) << r.err;

@@ -222,22 +222,69 @@ TEST_F(DisplayLook, EveryFrameIsFiniteFromDayToSpace) {
 
 // Two channels sharing an edge map alike (one curve per state, not per channel's pixels): at
 // their common edge, in the twilight glow that crosses it, they differ by at most 2 codes on
-// average.
+// average; and under broken cumulus, whose field is fixed to the ground (not to a channel), the
+// same.
 TEST_F(DisplayLook, ChannelsSharingAnEdgeMatchThere) {
   const std::string channels =
       "[[channel]]\nname = \"a\"\nwidth = 160\nheight = 120\nleft = 30\nright = 30\ndown = 10\nup = 35\n"
       "[[channel]]\nname = \"b\"\nyaw = 60.0\nwidth = 160\nheight = 120\nleft = 30\nright = 30\ndown = 10\nup = 35\n";
-  ASSERT_EQ(run("--config " + config(channels).string() +
-                " --sun-azimuth 30 --sun-elevation -4 --yaw 0 --all-channels --png " + (dir_ / "e.png").string() +
-                " --exr " + (dir_ / "e.exr").string()),
-            0) << said();
-  const Frame a = read("e_a"), b = read("e_b");
-  double sum = 0.0;
-  for (int y = 0; y < a.height; ++y)
-    for (int k = 0; k < 3; ++k) sum += std::abs(a.code(a.width - 1, y)[k] - b.code(0, y)[k]);
-  const double mean = sum / (3.0 * a.height);
-  std::cout << "shared edge: mean difference " << mean << " codes\n";
-  EXPECT_LE(mean, 2.0);
+  for (const char* scene : {"--sun-azimuth 30 --sun-elevation -4", "--utc 2026-06-21T10:00:00Z --alt 2 --cloud cumulus:1200:800:50"}) {
+    ASSERT_EQ(run("--config " + config(channels).string() + " " + scene + " --yaw 0 --all-channels --png " +
+                  (dir_ / "e.png").string() + " --exr " + (dir_ / "e.exr").string()),
+              0) << said();
+    const Frame a = read("e_a"), b = read("e_b");
+    double sum = 0.0;
+    for (int y = 0; y < a.height; ++y)
+      for (int k = 0; k < 3; ++k) sum += std::abs(a.code(a.width - 1, y)[k] - b.code(0, y)[k]);
+    const double mean = sum / (3.0 * a.height);
+    std::cout << scene << ": shared edge mean difference " << mean << " codes\n";
+    EXPECT_LE(mean, 2.0) << scene;
+  }
+}
+
+// A stratus deck topped at 700 m seen from 3 km, the sun 15 deg up in the west: the deck towards
+// the sun is brighter than away from it (the droplets' forward scattering, a sea of cloud's glare
+// under a low sun), and its brightest pixel is in the channel's middle third, under the sun.
+TEST_F(DisplayLook, SeaOfCloudShinesTowardsTheSun) {
+  const std::string scene = "--sun-azimuth 270 --sun-elevation 15 --alt 3000 --pitch -12 --cloud stratus:300:400:100 ";
+  const Frame toward = render(scene + "--yaw 270"), away = render(scene + "--yaw 90");
+  // The deck fills the rows below the horizon of its top (1.5 deg down): the lower half.
+  auto deck = [](const Frame& f, int& brightestColumn) {
+    double sum = 0.0, best = -1.0;
+    for (int y = f.height / 2; y < f.height; ++y)
+      for (int x = 0; x < f.width; ++x) {
+        const double l = luminance(f.world(x, y));
+        sum += l;
+        if (l > best) best = l, brightestColumn = x;
+      }
+    return sum / (f.width * (f.height - f.height / 2));
+  };
+  int column = -1, ignored = -1;
+  const double lit = deck(toward, column), shaded = deck(away, ignored);
+  std::printf("sea of cloud from 3 km, sun 15 deg: %.0f cd/m^2 towards the sun, %.0f away; brightest at column %d of %d\n",
+              lit, shaded, column, toward.width);
+  EXPECT_GT(lit, 1.3 * shaded);
+  EXPECT_GT(column, toward.width / 3);
+  EXPECT_LT(column, 2 * toward.width / 3);
+}
+
+// An altostratus deck at 3 km, the sun set a degree ago: towards the sun it shines on the base
+// from below (it is under the base's own horizon there, and above the earth's limb seen from
+// 3 km) through the long path of air that reddens it, so the base there is redder than the base
+// away from the sun (lit by the blue sky through the deck alone).
+TEST_F(DisplayLook, SunsetLightsADecksBaseRedTowardsTheSun) {
+  const std::string scene = "--sun-azimuth 300 --sun-elevation -1 --alt 2 --pitch 12 --cloud altostratus:3000:800:100 ";
+  const Frame toward = render(scene + "--yaw 300"), away = render(scene + "--yaw 120");
+  auto redness = [](const Frame& f) {
+    glm::dvec3 sum(0.0);
+    const int horizon = static_cast<int>(horizonRow(12.0, 10.0, 35.0, f.height));
+    for (int y = 0; y < horizon - 4; ++y)
+      for (int x = 0; x < f.width; ++x) sum += f.world(x, y);
+    return sum.r / sum.b;
+  };
+  const double r = redness(toward), a = redness(away);
+  std::printf("sunset under altostratus: base red/blue %.2f towards the sun, %.2f away\n", r, a);
+  EXPECT_GT(r, 1.2 * a);
 }
 
 // A 200 m ground fog of 400 m visibility (render --fog-*), the sun 30 deg up behind the pilot's

@@ -1,6 +1,7 @@
 // Golden images of the look: the scenes a change of the sky, the eye or the display mapping
 // touches (noon, sunset, the sun 4, 9 and 15 deg down, a full moon rising, a moonless winter
-// night, 12 km looking 2 deg down, haze and fog, and two of them through night-vision goggles),
+// night, 12 km looking 2 deg down, haze and fog, cloud decks, and three of them through
+// night-vision goggles),
 // rendered by `skyig render` at 96x60 and compared with the
 // PNGs in tests/data/golden/ so that a reviewer sees a change of look as a failing test and a
 // changed PNG.
@@ -51,6 +52,14 @@ const Scene kScenes[] = {
     {"haze_1km", "--utc 2026-06-21T14:00:00Z --yaw 270 --alt 600 --pitch 3 --visibility 1"},
     {"fog_inside", "--utc 2026-06-21T09:00:00Z --yaw 270 --alt 30 --fog-visibility 0.4 --fog-top 200"},
     {"fog_above", "--utc 2026-06-21T09:00:00Z --yaw 270 --alt 500 --pitch -5 --fog-visibility 0.4 --fog-top 200"},
+    // Cloud decks (physics/weather/cloud_deck.h): a full stratus deck 300-700 m from under it and
+    // from 3 km above it (the sea of cloud), broken cumulus at 40 %, an altostratus deck at
+    // sunset, and a broken stratocumulus under the full moon through a class A goggle.
+    {"overcast_below", "--utc 2026-06-21T10:00:00Z --yaw 180 --alt 2 --pitch 20 --cloud stratus:300:400:100"},
+    {"sea_of_cloud", "--utc 2026-06-21T10:00:00Z --yaw 140 --alt 3000 --pitch -5 --cloud stratus:300:400:100"},
+    {"broken_cumulus", "--utc 2026-06-21T10:00:00Z --yaw 140 --alt 2 --pitch 20 --cloud cumulus:1200:800:40"},
+    {"sunset_deck", "--sun-azimuth 300 --sun-elevation -1 --yaw 300 --alt 2 --pitch 10 --cloud altostratus:3000:800:100"},
+    {"goggle_under_cloud", "--utc 2026-12-25T17:40:00Z --yaw 60 --pitch 15 --alt 2 --goggle A --cloud stratocumulus:1500:500:60"},
     // Night-vision goggles (class A, P43; class B, P45): the moon with its halo, and the
     // moonless night's stars and airglow through the tube's noise (its hash is the frame's
     // instant: the same on every run).

@@ -47,7 +47,7 @@ void SkyOptions::add(CLI::App& c) {
       ->check(CLI::Range(0.0, 100.0));
   c.add_option("--cloud", cloud,
                "Cloud layer 1 as TYPE:BASE:THICKNESS[:COVERAGE] (m above the ground, %), e.g. stratus:300:400:100; "
-               "recorded with the frame, not drawn yet");
+               "drawn and recorded with the frame");
   c.add_option("--sun-azimuth", sunAzimuth, "Override the sun's azimuth, degrees from north through east")
       ->check(CLI::Range(-360.0, 360.0));
   c.add_option("--sun-elevation", sunElevation, "Override the sun's true (airless) elevation, degrees; its disc is seen lifted by refraction")->check(CLI::Range(-90.0, 90.0));

@@ -96,10 +96,10 @@ sky::SkyState SkyWorker::scene(const HostSnapshot* host, Clock::time_point t) {
     for (std::size_t i = 0; i < sky::kCloudLayers; ++i)
       if (host->state.clouds[i]) c.clouds[i] = *host->state.clouds[i];
   }
-  // Each cloud layer once as it changes: what the node was given, and that it is not drawn yet.
+  // Each cloud layer once as it changes: what the node was given and draws.
   for (std::size_t i = 0; i < sky::kCloudLayers; ++i) {
     if (c.clouds[i] == loggedClouds_[i]) continue;
-    spdlog::info("cloud layer {}: {} (recorded with the frames; skyig draws no cloud layer yet)", i + 1,
+    spdlog::info("cloud layer {}: {}", i + 1,
                  weather::describe(c.clouds[i]));
     loggedClouds_[i] = c.clouds[i];
   }

@@ -66,7 +66,7 @@ struct SkyConditions {
   FogSpec fog;
   FogSpec precipitation;
   // The host's cloud layers (CIGI Weather Control layers 1-3, [[weather.cloud]], render --cloud):
-  // carried with the state and recorded (state dump, EXR header); not drawn yet.
+  // drawn as decks (physics/weather/cloud_deck.h) and recorded (state dump, EXR header).
   CloudLayers clouds{};
 };
 

@@ -1,6 +1,7 @@
 #include "render/warm_up_states.h"
 
 #include "physics/common/units.h"
+#include "physics/weather/cloud_deck.h"
 #include "physics/weather/fog_layer.h"
 
 #include <algorithm>
@@ -29,6 +30,22 @@ skyig::sky::SkyState underFog(skyig::sky::SkyState s) {
   return s;
 }
 
+// The same light under a broken stratocumulus deck at 1.5 km over that fog: the sky pass's cloud
+// variants (its field and its decks' single-scattered light).
+skyig::sky::SkyState underCloud(skyig::sky::SkyState s) {
+  s = underFog(std::move(s));
+  const double ground = s.conditions.atmosphere->parameters(0).bottom_radius;
+  skyig::sky::CloudLayer deck;
+  deck.enabled = true;
+  deck.type = skyig::sky::CloudType::Stratocumulus;
+  deck.baseM = 1500.0;
+  deck.thicknessM = 500.0;
+  deck.coveragePct = 50.0;
+  s.fog.sunlit[weather::kWeatherLayerCount] = weather::makeCloudDeck(deck, ground, 0.2, glm::dvec3(1.0));
+  s.fog.cover[0] = weather::cloudCoverOf(deck, 0, 0.0, 0.0, 0.0);
+  return s;
+}
+
 }  // namespace
 
 std::vector<skyig::sky::SkyState> warmUpStates(const skyig::sky::SkyState& first,
@@ -51,6 +68,7 @@ std::vector<skyig::sky::SkyState> warmUpStates(const skyig::sky::SkyState& first
   if (physical) {
     const std::size_t clear = states.size();
     for (std::size_t i = 0; i < clear; ++i) states.push_back(underFog(states[i]));
+    states.push_back(underCloud(states[0]));  // the first light's only: each costs its programs' compiles
   }
   return states;
 }

@@ -17,7 +17,8 @@ namespace skyig::render {
 // keeping each state whose shown layers (sky/shown_layers.h) or number of glare sources giving
 // light no earlier one had: the day with and without the moon up, the twilights, the night with
 // and without the moon as that day has them. Under the physical sky
-// each again with a ground fog (the weather's program). Each mapped for `displays`.
+// each again with a ground fog (the weather's program), and the first under a broken cloud deck
+// over that fog (the cloud programs). Each mapped for `displays`.
 std::vector<skyig::sky::SkyState> warmUpStates(const skyig::sky::SkyState& first,
                                                const std::vector<skyig::sky::DisplayParams>& displays);
 

@@ -15,20 +15,20 @@ Float cloudPhase(Float g, Float cos_theta) {
   return (1.0 - g * g) / (4.0 * PI * d * sqrt(d));
 }
 
-// Reflected by a layer of optical depth tau: the beam enters the face the eye sees at cosine mu0
-// to its normal, the eye sees it at mu (both positive):
-//   I / E = p(theta) mu0 / (mu0 + mu) [1 - exp(-tau (1 / mu0 + 1 / mu))].
-Float cloudSingleReflected(Float tau, Float g, Float mu0, Float mu, Float cos_theta) {
-  return cloudPhase(g, cos_theta) * mu0 / (mu0 + mu) * (1.0 - exp(-tau * (1.0 / mu0 + 1.0 / mu)));
-}
-
-// Transmitted through it, the beam entering the far face at mu0, the eye seeing the near one at mu:
-//   I / E = p(theta) mu0 / (mu0 - mu) [exp(-tau / mu0) - exp(-tau / mu)], which tends to
-//   p(theta) tau / mu exp(-tau / mu) as mu tends to mu0.
-Float cloudSingleTransmitted(Float tau, Float g, Float mu0, Float mu, Float cos_theta) {
-  Float p = cloudPhase(g, cos_theta);
-  if (abs(mu0 - mu) < 1e-4) return p * tau / mu * exp(-tau / mu);
-  return p * mu0 / (mu0 - mu) * (exp(-tau / mu0) - exp(-tau / mu));
+// A layer of optical depth tau seen at cosine mu (> 0) to the normal of the face the eye sees,
+// the beam at cosine mu0 to it: mu0 > 0 lights that face, and the layer reflects
+//   I / E = p(theta) mu0 / (mu0 + mu) [1 - exp(-tau (1 / mu0 + 1 / mu))];
+// mu0 < 0 lights the far face (entering it at a = -mu0), and the layer transmits
+//   I / E = p(theta) a / (a - mu) [exp(-tau / a) - exp(-tau / mu)],
+// which tends to p(theta) tau / mu exp(-tau / mu) as a tends to mu. Both from the same two
+// exponentials (llvmpipe runs both sides of a branch).
+Float cloudSingleScattered(Float tau, Float g, Float mu0, Float mu, Float cos_theta) {
+  Float a = abs(mu0);
+  Float e0 = exp(-tau / a);
+  Float e1 = exp(-tau / mu);
+  Float reflected = a / (a + mu) * (1.0 - e0 * e1);
+  Float transmitted = abs(a - mu) < 1e-4 ? tau / mu * e1 : a / (a - mu) * (e0 - e1);
+  return cloudPhase(g, cos_theta) * (mu0 > 0.0 ? reflected : transmitted);
 }
 
 #endif

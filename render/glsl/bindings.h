@@ -63,6 +63,9 @@
 #define SKYIG_UNIT_FOG_TABLE 11
 // The same without the broken cloud decks, mixed with it by their field (SKYIG_CLOUD_COVER).
 #define SKYIG_UNIT_FOG_CLEAR_TABLE 12
+// The decks' light tables (SKYIG_CLOUD_LIGHT, PhysicalSkyPass): the sun's light at each deck's
+// face by its local elevation, the air's transmittance from the eye to the face by the view's.
+#define SKYIG_UNIT_CLOUD_LIGHT_TABLE 13
 
 // The moon (render/passes/night/moon.frag, MoonPass). Kept apart from the sky pass's 0 to 7 as they always
 // were; nothing needs it (see above), and any GL 4.5 driver has far more units than 22.

@@ -84,20 +84,29 @@ float cloudShareOf(int k, vec3 view) {
   return mix(mask, cloudDeckAlong[k].z, cloudFadeWeight(d, cloudDeckAlong[k].w));
 }
 
+// Each broken deck's share along this pixel's view, evaluated once (the sky and the decks'
+// single-scattered light read it).
+float cloudShares[3];
 // The share of the view that meets a broken deck's cloud: the most of any deck's.
 float cloudShareAlong(vec3 view) {
   float share = 0.0;
-  for (int k = 0; k < cloudDeckCount; ++k) share = max(share, cloudShareOf(k, view));
+  for (int k = 0; k < cloudDeckCount; ++k) {
+    cloudShares[k] = cloudShareOf(k, view);
+    share = max(share, cloudShares[k]);
+  }
   return share;
 }
 #endif
 #ifdef SKYIG_CLOUD_LIGHT
 // The sun's (and the moon's) light each deck the eye is outside of scatters once towards it
 // (physics/weather/cloud_sunlight.glsl), where the view meets the face it sees: its base from
-// under it, its top from over it. The light reaches that point through the air (the
-// transmittance table at the point, for the light's local elevation there: a low sun shines on a
-// distant base from below, reddened), and the eye through the air and the weather's layers
-// between (cloudLitSide.z, their vertical optical depth).
+// under it, its top from over it. The light reaches that point through the air (for the light's
+// local elevation there: a low sun shines on a distant base from below, reddened), and the eye
+// through the air and the weather's layers between (cloudLitSide.z, their vertical optical
+// depth). The face is a sphere and the eye is on the vertical, so both transmittances are
+// functions of one cosine each: rows of a small table the CPU fills from the model
+// (PhysicalSkyPass::updateCloudLightTable), one read each instead of the transmittance table's
+// geometry per pixel (8 times the sky pass's cost on llvmpipe).
 #include "physics/weather/cloud_cover.glsl"
 #include "physics/weather/cloud_sunlight.glsl"
 #include "physics/weather/fog_layer.glsl"
@@ -105,6 +114,9 @@ uniform int cloudLitCount;
 uniform vec4 cloudLit[3];      // the face's height (m), the deck's optical depth, asymmetry, its broken index (-1: whole)
 uniform vec4 cloudLitSide[3];  // 1: its base seen from under it, -1: its top from over it; its reflectance; the layers' depth between
 uniform vec2 cloudLitEye;      // the eye above the ground (m), the ground's radius (m)
+// Rows k < 3: deck k's face lit by the sun, linear Rec.709 lux normal to it, by 0.5 (1 + mu_s);
+// rows 3 + k: the air's transmittance from the eye to it (r), by fogTableU of the view's cosine.
+layout(binding = SKYIG_UNIT_CLOUD_LIGHT_TABLE) uniform sampler2D cloudLightTable;
 
 vec3 cloudSingleLight(vec3 view, vec3 light, vec3 scale) {
   vec3 sum = vec3(0.0);
@@ -117,23 +129,21 @@ vec3 cloudSingleLight(vec3 view, vec3 light, vec3 scale) {
     float mu = dot(-view, n);
     float mu0 = dot(light, n);
     if (mu <= 0.0 || mu0 == 0.0) continue;
-    vec4 t = transmittanceToSun(atm, transmittanceXyz, r_p, dot(p / r_p, light));
-    vec3 e = xyzToRec709Linear(solarIrradianceXyz * t.xyz) * scale;
+    float row = (float(k) + 0.5) / 6.0;
+    vec3 e = texture(cloudLightTable, vec2(0.5 * (1.0 + dot(p / r_p, light)), row)).rgb * scale;
     float tau = cloudLit[k].y;
     float g = cloudLit[k].z;
     float cos_theta = dot(view, light);
-    float l = mu0 > 0.0 ? cloudSingleReflected(tau, g, mu0, mu, cos_theta)
-                        : cloudSingleTransmitted(tau, g, -mu0, mu, cos_theta);
+    float l = cloudSingleScattered(tau, g, mu0, mu, cos_theta);
     // A base lit from below (a sun under the deck's horizon there) diffuses that light too: the
     // two-stream's reflectance by the base's law; the table holds only the light from above.
     if (mu0 > 0.0 && cloudLitSide[k].x > 0.0) l += cloudLitSide[k].y * mu0 / PI * fogLimbLaw(2.0, mu);
     float share = 1.0;
 #ifdef SKYIG_CLOUD_COVER
-    if (cloudLit[k].w >= 0.0) share = cloudShareOf(int(cloudLit[k].w), view);
+    if (cloudLit[k].w >= 0.0) share = cloudShares[int(cloudLit[k].w)];  // cloudShareAlong's
 #endif
-    float r = frameRadii.x;
-    vec4 ta = transmittanceAlongRay(atm, transmittanceXyz, r, clamp(dot(camera, view) / r, -1.0, 1.0), d, false);
-    sum += e * (l * share * ta.y * exp(-cloudLitSide[k].z / max(abs(view.z), 0.02)));
+    float ta = texture(cloudLightTable, vec2(fogTableU(view.z), row + 0.5)).r;
+    sum += e * (l * share * ta * exp(-cloudLitSide[k].z / max(abs(view.z), 0.02)));
   }
   return sum;
 }

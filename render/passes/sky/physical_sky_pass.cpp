@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -93,6 +94,69 @@ bool PhysicalSkyPass::cloudCovered() const {
   return false;
 }
 
+namespace {
+constexpr int kCloudLightTableSize = 256;
+}  // namespace
+
+// The sun's light at each face by its cosine there, and the air's transmittance from the eye to
+// it by the view's (render/passes/sky/physical_sky.frag, cloudSingleLight), from the model the
+// frame draws: the sun's normal irradiance (the transmittance table, the disc's part above the
+// horizon), and the ratio of two transmittances to the top (Bruneton & Neyret 2008, section 4),
+// each weighted by the sun's spectrum into luminance.
+void PhysicalSkyPass::updateCloudLightTable(const LitDecks& lit, double heightM) {
+  const atmosphere::AtmosphereModel& model = *current_.model;
+  std::array<double, sky::kCloudLayers + 2> key{};
+  for (int k = 0; k < lit.count; ++k) key[static_cast<std::size_t>(k)] = lit.lit[static_cast<std::size_t>(k)].x;
+  key[sky::kCloudLayers] = heightM;
+  key[sky::kCloudLayers + 1] = static_cast<double>(reinterpret_cast<std::uintptr_t>(&model));
+  if (!cloudLightTable_) {
+    glCreateTextures(GL_TEXTURE_2D, 1, &cloudLightTable_);
+    glTextureStorage2D(cloudLightTable_, 1, GL_RGBA32F, kCloudLightTableSize, 6);
+    glTextureParameteri(cloudLightTable_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(cloudLightTable_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(cloudLightTable_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(cloudLightTable_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    cloudLightKey_.fill(-1.0);
+  }
+  if (key != cloudLightKey_) {
+    const double R = model.parameters(0).bottom_radius, r = R + heightM;
+    const atmosphere::Spectrum solar = model.solarRadiance();
+    const double solarY = model.converter().luminance(solar);
+    auto luminanceOf = [&](const atmosphere::Spectrum& t) {
+      atmosphere::Spectrum weighted(solar.size());
+      for (std::size_t i = 0; i < solar.size(); ++i) weighted[i] = solar[i] * t.at(i);
+      return solarY > 0.0 ? model.converter().luminance(weighted) / solarY : 0.0;
+    };
+    std::vector<glm::vec4> texels(static_cast<std::size_t>(kCloudLightTableSize) * 6, glm::vec4(0.0f));
+    for (int k = 0; k < lit.count; ++k) {
+      const double face = lit.lit[static_cast<std::size_t>(k)].x, rp = R + face;
+      for (int i = 0; i < kCloudLightTableSize; ++i) {
+        const double u = (i + 0.5) / kCloudLightTableSize;
+        const double muS = 2.0 * u - 1.0;
+        const glm::dvec3 point(0.0, 0.0, rp), sun(std::sqrt(std::max(1.0 - muS * muS, 0.0)), 0.0, muS);
+        const glm::dvec3 e = model.converter().toRec709(model.sunIrradiance(point, sun, sun));
+        texels[static_cast<std::size_t>(k * kCloudLightTableSize + i)] = glm::vec4(glm::dvec4(glm::max(e, glm::dvec3(0.0)), 1.0));
+        // The eye's view of cosine mu meets the face at p; up from under it the ray goes on to
+        // the top, down from over it the reversed ray does.
+        const double mu = shader::fogTableMu(u);
+        const double d = shader::distanceToHeight(R, heightM, mu, face);
+        double t = 0.0;
+        if (d >= 0.0) {
+          const double rP = std::sqrt(r * r + d * d + 2.0 * r * d * mu), muP = (r * mu + d) / rP;
+          const double eye = luminanceOf(face >= heightM ? model.transmittanceToTop(r, mu) : model.transmittanceToTop(rP, -muP));
+          const double far = luminanceOf(face >= heightM ? model.transmittanceToTop(rP, muP) : model.transmittanceToTop(r, -mu));
+          t = far > 0.0 ? std::clamp(eye / far, 0.0, 1.0) : 0.0;
+        }
+        texels[static_cast<std::size_t>((3 + k) * kCloudLightTableSize + i)] = glm::vec4(static_cast<float>(t));
+      }
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTextureSubImage2D(cloudLightTable_, 0, 0, 0, kCloudLightTableSize, 6, GL_RGBA, GL_FLOAT, texels.data());
+    cloudLightKey_ = key;
+  }
+  glBindTextureUnit(SKYIG_UNIT_CLOUD_LIGHT_TABLE, cloudLightTable_);
+}
+
 // The broken decks' fields, packed for cloudShareAlong (render/passes/sky/physical_sky.frag).
 void PhysicalSkyPass::setCloudUniforms(const Program& program, double heightM) const {
   const GLuint id = program.program.id();
@@ -146,6 +210,7 @@ PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame, const char* insideFragment)
 }
 
 PhysicalSkyPass::~PhysicalSkyPass() {
+  if (cloudLightTable_) glDeleteTextures(1, &cloudLightTable_);
   releaseSlices();
   releaseSet(current_);
   if (pending_) releaseSet(pending_->set);
@@ -495,6 +560,7 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
     if (base.cloudCover)
       fogClearTable_->use(fogClear_, h, SKYIG_UNIT_FOG_CLEAR_TABLE,
                           h == fogPrecomputedHeightM_ ? fogClearPrecomputed_ : nullptr);
+    if (base.cloudLight) updateCloudLightTable(litDecks(h), h);
   }
   const GLint target = drawSlices(f);
   if (reference_) {  // the frozen reference: everything in one program, the moon a uniform branch

@@ -147,6 +147,9 @@ class PhysicalSkyPass {
     std::array<glm::vec4, sky::kCloudLayers> lit{}, side{};
   };
   LitDecks litDecks(double heightM) const;
+  // The table SKYIG_CLOUD_LIGHT reads for the decks of `lit` seen from heightM, bound to its unit;
+  // remade when a face's height or the eye's changes.
+  void updateCloudLightTable(const LitDecks& lit, double heightM);
   void setCloudUniforms(const Program& program, double heightM) const;
   // The program of a variant, compiled the first time a frame needs it (a node uses a few of the
   // many); the HDR variants without the night layer or the tone are compiled with the pass.
@@ -210,6 +213,8 @@ class PhysicalSkyPass {
   weather::FogLayers fogClear_{};
   std::shared_ptr<const std::vector<glm::vec4>> fogClearPrecomputed_;
   std::unique_ptr<FogTableTexture> fogClearTable_ = std::make_unique<FogTableTexture>();
+  GLuint cloudLightTable_ = 0;  // kCloudLightTableSize x 6, RGBA32F, made at first use
+  std::array<double, sky::kCloudLayers + 2> cloudLightKey_{};  // faces, eye, model of what it holds
   double lastUploadSeconds_ = 0.0;
 };
 

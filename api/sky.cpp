@@ -6,11 +6,16 @@
 #include "api/sky_impl.h"
 #include "node/config/node_tables.h"
 #include "node/config/sky_data.h"
+#include "physics/analytic/analytic_sky.h"
+#include "physics/atmosphere/physical_camera.h"
+#include "physics/weather/cloud_layer.h"
 #include "sky/client_light.h"
+#include "sky/fog_state.h"
 #include "physics/common/units.h"
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 namespace skyig {
@@ -158,6 +163,47 @@ void Sky::update(const Observer& o, double hostSeconds, const Weather& weather) 
   } catch (const std::exception& e) {
     throw Error(std::string("skyig::Sky::update: ") + e.what());
   }
+}
+
+void Sky::setClouds(const std::array<CloudLayer, 3>& layers) {
+  (void)impl();  // throws for a moved-from Sky
+  Impl& m = *impl_;
+  std::array<std::optional<sky::CloudLayer>, sky::kCloudLayers> next{};
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    const CloudLayer& l = layers[i];
+    if (!l.enabled) continue;
+    const std::string which = "skyig::Sky::setClouds: layer " + std::to_string(i + 1) + ": ";
+    const std::optional<sky::CloudType> type = weather::parseCloudType(l.type);
+    if (!type) throw Error(which + "type \"" + l.type + "\" is not a cloud type (stratus, cumulus, cirrus, ...)");
+    sky::CloudLayer c;
+    c.enabled = true;
+    c.type = *type;
+    c.baseM = l.baseM;
+    c.thicknessM = l.thicknessM;
+    c.coveragePct = l.coveragePct;
+    c.windSpeedMps = l.windSpeedMps;
+    c.windFromDeg = l.windFromDeg;
+    try {
+      weather::validate(c);
+    } catch (const std::exception& e) {
+      throw Error(which + e.what());
+    }
+    next[i] = c;
+  }
+  m.host.state.clouds = next;
+}
+
+double Sky::sunThroughClouds(const Vec3& offsetEnuM) const {
+  const Impl& m = impl();
+  const auto* model = m.state.conditions.atmosphere.get();
+  if (!model || m.state.conditions.model != sky::SkyModel::Physical)
+    throw Error("skyig::Sky::sunThroughClouds needs the physical sky (Settings::model \"physical\")");
+  for (const double x : offsetEnuM)
+    if (!std::isfinite(x))
+      throw Error("skyig::Sky::sunThroughClouds: offset " + vectorText(offsetEnuM) + " m: expected finite metres");
+  const glm::dvec3 sun = sky::enuDirection(m.state.sunAzimuth, m.state.sunAltitude);
+  const double h = glm::length(atmosphere::physicalCamera(*model, m.state.observer.heightM)) - model->parameters(0).bottom_radius;
+  return sky::decksTransmittanceAlong(m.state.fog, h + offsetEnuM[2], {offsetEnuM[0], offsetEnuM[1]}, sun);
 }
 
 Light Sky::light() const {

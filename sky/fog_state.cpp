@@ -52,20 +52,40 @@ weather::FogLayers withoutBrokenDecks(const FogState& fog, weather::FogLayers la
   return layers;
 }
 
+namespace {
+
+// Deck k's transmittance along `direction` from a point heightM up, offsetM from the eye: where
+// its field puts cloud (the share at the ray's crossing of its middle height), its slab's.
+double deckTransmittanceAlong(const FogState& fog, std::size_t k, double heightM, const glm::dvec2& offsetM,
+                              const glm::dvec3& direction) {
+  const weather::CloudCover& c = fog.cover[k];
+  weather::FogLayer deck = fog.sunlit[weather::kWeatherLayerCount + k];
+  if (deck.extinction <= 0.0) return 1.0;
+  deck.gap = 0.0;
+  const double through = shader::fogTransmittance(deck, heightM, direction.z, 1e9);
+  if (!c.broken) return through;
+  const double d = shader::distanceToHeight(deck.planet_radius, heightM, direction.z, c.midHeightM);
+  if (d < 0.0) return 1.0;
+  const double share = weather::cloudShareAt(c, offsetM + glm::dvec2(direction.x, direction.y) * d);
+  return 1.0 - share * (1.0 - through);
+}
+
+}  // namespace
+
+double decksTransmittanceAlong(const FogState& fog, double heightM, const glm::dvec2& offsetM,
+                               const glm::dvec3& direction) {
+  double t = 1.0;
+  for (std::size_t k = 0; k < kCloudLayers; ++k) t *= deckTransmittanceAlong(fog, k, heightM, offsetM, direction);
+  return t;
+}
+
 double cloudFieldFactor(const FogState& fog, double heightM, const glm::dvec3& direction) {
   double factor = 1.0;
   for (std::size_t k = 0; k < kCloudLayers; ++k) {
-    const weather::CloudCover& c = fog.cover[k];
     const weather::FogLayer& deck = fog.sunlit[weather::kWeatherLayerCount + k];
-    if (!c.broken || deck.extinction <= 0.0) continue;
-    const double d = shader::distanceToHeight(deck.planet_radius, heightM, direction.z, c.midHeightM);
-    if (d < 0.0) continue;
-    weather::FogLayer full = deck;
-    full.gap = 0.0;
-    const double through = shader::fogTransmittance(full, heightM, direction.z, 1e9);
+    if (!fog.cover[k].broken || deck.extinction <= 0.0) continue;
     const double expected = shader::fogTransmittance(deck, heightM, direction.z, 1e9);
-    const double share = weather::cloudShareAt(c, glm::dvec2(direction.x, direction.y) * d);
-    if (expected > 0.0) factor *= (1.0 - share * (1.0 - through)) / expected;
+    if (expected > 0.0) factor *= deckTransmittanceAlong(fog, k, heightM, glm::dvec2(0.0), direction) / expected;
   }
   return factor;
 }

@@ -68,6 +68,13 @@ std::array<weather::CloudCover, sky::kCloudLayers> cloudCoversOf(const SkyCondit
 double fogTransmittanceToSpaceAlong(const FogState& fog, const atmosphere::AtmosphereModel& model, double heightM,
                                     const glm::dvec3& direction);
 
+// The cloud decks' transmittance along an ENU unit `direction` from a point heightM above the
+// ground, offsetM metres (east, north) from the state's eye: a whole deck's along the ray, a
+// broken one's where its field has cloud where the ray crosses its middle height (1 in a gap).
+// The sun's light on a terrain point under the clouds (skyig::Sky::sunThroughClouds).
+double decksTransmittanceAlong(const FogState& fog, double heightM, const glm::dvec2& offsetM,
+                               const glm::dvec3& direction);
+
 // What reaches the eye heightM above the ground from beyond the broken decks along an ENU unit
 // `direction` (a star, a planet, the moon), over what their gaps let through on average (the
 // state's extinction profile, which weighs them by their coverage): 0 behind a cloud, over 1 in a

@@ -266,3 +266,46 @@ TEST(SkyLibrary, AerialPerspectiveInFogKeepsKoschmiedersContrast) {
   EXPECT_NEAR(contrast, 0.02, 0.004);
   EXPECT_LT(sky.light().sun.horizontalLux, 0.01 * clear.sun.horizontalLux);  // 1.2 km of it overhead
 }
+
+// A host's cloud layers through the library (Sky::setClouds): under a full stratus deck the sun
+// is gone from the light and from every terrain point; under 50 % broken cumulus the terrain's
+// share in the clouds' shade (sunThroughClouds under a half) is about half, on a 200 m grid
+// 8 km square; a type the sky does not know is refused naming the layer, the last layers kept.
+TEST(SkyLibrary, CloudLayersShadeTheSunAndTheTerrain) {
+  skyig::Sky sky(smallPhysicalSky());
+  sky.update(at(11, 0, 10.0), 0.0);
+  const double clear = sky.light().sun.horizontalLux;
+  EXPECT_DOUBLE_EQ(sky.sunThroughClouds({0.0, 0.0, 0.0}), 1.0);
+  std::array<skyig::CloudLayer, 3> layers{};
+  layers[0].enabled = true;
+  layers[0].type = "stratus";
+  layers[0].baseM = 300.0;
+  layers[0].thicknessM = 400.0;
+  sky.setClouds(layers);
+  sky.update(at(11, 0, 10.0), 1.0);
+  EXPECT_LT(sky.light().sun.horizontalLux, 1e-6 * clear);
+  EXPECT_LT(sky.sunThroughClouds({1000.0, -2000.0, 0.0}), 1e-6);
+  layers[0].type = "cumulus";
+  layers[0].baseM = 1200.0;
+  layers[0].thicknessM = 800.0;
+  layers[0].coveragePct = 50.0;
+  sky.setClouds(layers);
+  sky.update(at(11, 0, 10.0), 2.0);
+  int shaded = 0, all = 0;
+  for (double x = -4000.0; x <= 4000.0; x += 200.0)
+    for (double y = -4000.0; y <= 4000.0; y += 200.0, ++all) shaded += sky.sunThroughClouds({x, y, 0.0}) < 0.5 ? 1 : 0;
+  std::printf("broken cumulus 50 %%: %.1f %% of the terrain in the clouds' shade\n", 100.0 * shaded / all);
+  EXPECT_NEAR(100.0 * shaded / all, 50.0, 15.0);
+  const double here = sky.sunThroughClouds({300.0, 700.0, 0.0});
+  layers[1] = layers[0];
+  layers[1].type = "fog bank";
+  try {
+    sky.setClouds(layers);
+    ADD_FAILURE() << "an unknown cloud type was taken";
+  } catch (const skyig::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("layer 2"), std::string::npos) << e.what();
+  }
+  sky.update(at(11, 0, 10.0), 2.0);
+  EXPECT_EQ(sky.sunThroughClouds({300.0, 700.0, 0.0}), here);  // the cumulus kept
+  EXPECT_EQ(sky.sunThroughClouds({0.0, 0.0, 5000.0}), 1.0);    // above the layer
+}

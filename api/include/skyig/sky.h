@@ -114,6 +114,20 @@ struct AerialPerspective {
   Vec3 inScattered{0.0, 0.0, 0.0};  // cd/m^2
 };
 
+// One of the host's cloud layers (CIGI Weather Control layers 1-3; docs/clouds.md): its type
+// ("altocumulus", "altostratus", "cirrocumulus", "cirrostratus", "cirrus", "cumulonimbus",
+// "cumulus", "nimbostratus", "stratocumulus", "stratus"), base and thickness in metres above the
+// ground, the share of the sky it covers, and the horizontal wind that moves it.
+struct CloudLayer {
+  bool enabled = false;
+  std::string type = "stratus";
+  double baseM = 0.0;
+  double thicknessM = 0.0;
+  double coveragePct = 100.0;
+  double windSpeedMps = 0.0;
+  double windFromDeg = 0.0;  // the direction it blows from, degrees from true north
+};
+
 // One Sky per observer (eye point); use it from one thread at a time. Its tables load once and
 // a background thread builds new ones when the weather asks for them.
 class SKYIG_API Sky {
@@ -136,8 +150,19 @@ class SKYIG_API Sky {
   // ...), keeping the last good frame.
   void update(const Observer& observer, double hostSeconds, const Weather& weather = {});
 
+  // The host's cloud layers from the next update() on; a layer not enabled keeps the
+  // configuration's ([[weather.cloud]]). Throws Error naming the layer and the value it cannot
+  // draw (an unknown type, a thickness not above 0, a coverage outside 0-100, NaN), keeping the
+  // layers it had.
+  void setClouds(const std::array<CloudLayer, 3>& layers);
+
   // The light of the last update (before any: the defaults' observer).
   Light light() const;
+  // The sun's direct light through the cloud layers at a point `offsetEnuM` metres from the
+  // observer (a terrain point: its cloud shadow), 0 to 1: 1 without clouds, the deck's
+  // transmittance along the sun's ray under a cloud, 1 in a broken deck's gap, as skyig draws
+  // them. Physical sky only: throws Error under an analytic one, and for a non-finite offset.
+  double sunThroughClouds(const Vec3& offsetEnuM) const;
   // Aerial perspective to a point `offsetEnuM` metres from the observer. Physical sky only:
   // throws Error under an analytic one, and for a non-finite offset.
   AerialPerspective aerialPerspective(const Vec3& offsetEnuM) const;

@@ -6,6 +6,7 @@
 #include "render/sky_renderer.h"
 #include "node/config/sky_data.h"
 #include "physics/common/units.h"
+#include "physics/weather/cloud_layer.h"
 #include "physics/weather/fog_layer.h"
 #include "physics/weather/precipitation.h"
 
@@ -117,11 +118,14 @@ struct Scenes {
   // The day in the worst weather the sky pass composes: all three layers at once, the camera
   // inside the haze and the dust (the absorbing layer's per-channel solution) and above the fog.
   sky::SkyState dayWeather;
+  // The day under a full stratus deck above the eye (800-1200 m), and under broken cumulus (50 %,
+  // 1200-2000 m): the sky pass's cloud variants (docs/clouds.md).
+  sky::SkyState dayOvercast, dayCumulus;
   const sky::SkyState& of(const Scene* s) const { return s == &kDay ? day : s == &kMoonlit ? moonlit : moonless; }
 };
 
 Scenes buildScenes(const NodeConfig& config) {
-  Scenes s{buildScene(config, kDay), buildScene(config, kMoonlit), buildScene(config, kMoonless), {}, {}, {}};
+  Scenes s{buildScene(config, kDay), buildScene(config, kMoonlit), buildScene(config, kMoonless), {}, {}, {}, {}, {}};
   s.dayForced = sky::buildSkyState(s.day.observer, config.sky,
                                    sky::SunOverride{s.day.sunAzimuth * kDegPerRad, s.day.sunAltitude * kDegPerRad});
   sky::mapForDisplays(s.dayForced, {config.channels.front().display});
@@ -133,6 +137,15 @@ Scenes buildScenes(const NodeConfig& config) {
   weather.precipitation = weather::precipitationLayer(weather::Precipitation::dust, 0.0, 1500.0, 0.0, 2, 1.0);
   s.dayWeather = sky::buildSkyState(s.day.observer, weather);
   sky::mapForDisplays(s.dayWeather, {config.channels.front().display});
+  auto underCloud = [&](const char* spec) {
+    sky::SkyConditions c = config.sky;
+    c.clouds[0] = weather::parseCloudSpec(spec);
+    sky::SkyState state = sky::buildSkyState(s.day.observer, c);
+    sky::mapForDisplays(state, {config.channels.front().display});
+    return state;
+  };
+  s.dayOvercast = underCloud("stratus:800:400:100");
+  s.dayCumulus = underCloud("cumulus:1200:800:50");
   return s;
 }
 
@@ -153,6 +166,10 @@ std::vector<Item> benchItems(Renderers& r, const Scenes& s, const sky::ChannelCo
       {"sky_pass_day", "sky pass", &kDay, [&] { r.live.drawSkyPass(s.day, channel); }, {}},
       {"sky_pass_weather_day", "sky pass under haze (2.5 km), a 200 m fog and a dust storm", &kDay,
        [&] { r.live.drawSkyPass(s.dayWeather, channel); }, {}},
+      {"sky_pass_overcast_day", "sky pass under a full stratus deck, 800-1200 m", &kDay,
+       [&] { r.live.drawSkyPass(s.dayOvercast, channel); }, {}},
+      {"sky_pass_cumulus_day", "sky pass under broken cumulus (50 %), 1200-2000 m", &kDay,
+       [&] { r.live.drawSkyPass(s.dayCumulus, channel); }, {}},
       {"sky_pass_mapped_day", "sky pass mapping its pixels, as in the frame", &kDay,
        [&] { r.live.drawMappedSkyPass(s.day, channel); }, {}},
       {"day_frame", "day frame (every pass + tone)", &kDay, [&] { r.live.draw(s.day, channel); }, {}},
@@ -175,6 +192,10 @@ const std::vector<Ratio>& benchRatios() {
        "reference_sky_pass_moonless_night"},
       {"day_frame_over_sky_pass", "day frame / sky pass", "day_frame", "sky_pass_day"},
       {"weather_sky_pass_over_sky_pass", "sky pass under haze, fog and dust / sky pass (clear)", "sky_pass_weather_day",
+       "sky_pass_day"},
+      {"overcast_sky_pass_over_sky_pass", "sky pass under a stratus deck / sky pass (clear)", "sky_pass_overcast_day",
+       "sky_pass_day"},
+      {"cumulus_sky_pass_over_sky_pass", "sky pass under broken cumulus / sky pass (clear)", "sky_pass_cumulus_day",
        "sky_pass_day"},
       {"day_frame_over_mapped_sky_pass", "day frame / sky pass mapping its pixels, as in the frame", "day_frame", "sky_pass_mapped_day"},
       {"day_frame_over_sun_forced_day_frame", "day frame / day frame with the sun forced", "day_frame",

@@ -42,7 +42,7 @@ class BenchCommand : public ::testing::Test {
 }  // namespace
 
 // Every ratio the benchmark names is there, as min <= median <= max, positive and finite, as are
-// the ten timed items; the scenes are what they say (a sunlit afternoon, a moonlit and a
+// the thirteen timed items; the scenes are what they say (a sunlit afternoon, a moonlit and a
 // moonless night); it ran llvmpipe on one thread since nothing said otherwise, and said what it
 // was doing on stderr.
 TEST_F(BenchCommand, RatiosPrintEveryNamedRatioAsJson) {
@@ -51,6 +51,7 @@ TEST_F(BenchCommand, RatiosPrintEveryNamedRatioAsJson) {
   const nlohmann::json j = nlohmann::json::parse(r.out);
   for (const char* key : {"sky_pass_over_reference", "sky_pass_over_reference_moonless_night", "day_frame_over_sky_pass",
                           "day_frame_over_mapped_sky_pass", "weather_sky_pass_over_sky_pass",
+                          "overcast_sky_pass_over_sky_pass", "cumulus_sky_pass_over_sky_pass",
                           "day_frame_over_sun_forced_day_frame", "day_frame_over_tone_over_every_pixel",
                           "moonlit_night_frame_over_day_frame", "moonless_night_frame_over_day_frame",
                           "bruneton_2017_estimate"}) {
@@ -66,7 +67,7 @@ TEST_F(BenchCommand, RatiosPrintEveryNamedRatioAsJson) {
   // The estimate is the sky pass's ratio times the reference's 0.38 to Bruneton's pass.
   EXPECT_NEAR(j["ratios"]["bruneton_2017_estimate"]["median"].get<double>(),
               0.38 * j["ratios"]["sky_pass_over_reference"]["median"].get<double>(), 1e-9);
-  ASSERT_EQ(j["ns_per_pixel"].size(), 11u);
+  ASSERT_EQ(j["ns_per_pixel"].size(), 13u);
   for (const auto& [key, s] : j["ns_per_pixel"].items()) {
     SCOPED_TRACE(key);
     EXPECT_EQ(s["rounds"].size(), 2u);

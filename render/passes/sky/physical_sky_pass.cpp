@@ -75,8 +75,13 @@ PhysicalSkyPass::LitDecks PhysicalSkyPass::litDecks(double heightM) const {
     const double base = deck.bottom_height - shader::fogBottomBand(deck), top = deck.top_height + deck.band_height;
     if (heightM >= base && heightM <= top) continue;  // inside: its field holds it
     const bool under = heightM < base;
-    const double face = under ? base : top;
     const double tau = shader::fogColumnDepth(deck);
+    // From under a thick deck its single-scattered light is only a low light's on its base from
+    // below (a light more than 3 deg up is over the base's horizon everywhere in view, and what it
+    // sends through is exp(-tau) of it): the frame pays nothing for an overcast day.
+    constexpr double kThickDeck = 20.0, kLowLight = 0.0523;  // sin 3 deg
+    if (under && tau > kThickDeck && cloudLightLowestZ_ > kLowLight) continue;
+    const double face = under ? base : top;
     double between = 0.0;  // the weather's layers between the eye and the face
     for (std::size_t i = 0; i < weather::kWeatherLayerCount; ++i)
       if (fog_[i].extinction > 0.0)
@@ -546,6 +551,7 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   };
   stepUpload();
   if (!current_.model) throw std::logic_error("PhysicalSkyPass::draw before use()");
+  cloudLightLowestZ_ = std::min(sunlit ? sunDirection.z : 1.0, base.moonlit ? moonDirection.z : 1.0);
   base.cloudLight = base.fog && litDecks(glm::length(camera) - current_.model->parameters(0).bottom_radius).count > 0;
   bindTables(night);
   if (glm::length(camera) > current_.model->parameters(0).top_radius) {

@@ -213,6 +213,7 @@ class PhysicalSkyPass {
   weather::FogLayers fogClear_{};
   std::shared_ptr<const std::vector<glm::vec4>> fogClearPrecomputed_;
   std::unique_ptr<FogTableTexture> fogClearTable_ = std::make_unique<FogTableTexture>();
+  double cloudLightLowestZ_ = 1.0;  // this frame's lowest light drawn, the sine of its elevation
   GLuint cloudLightTable_ = 0;  // kCloudLightTableSize x 6, RGBA32F, made at first use
   std::array<double, sky::kCloudLayers + 2> cloudLightKey_{};  // faces, eye, model of what it holds
   double lastUploadSeconds_ = 0.0;

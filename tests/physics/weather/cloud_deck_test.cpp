@@ -18,6 +18,7 @@
 #include "sky/fog_state.h"
 #include "sky/sky_state.h"
 #include "tests/physics/atmosphere/shared_models.h"
+#include "tests/physics/night/star_test_support.h"
 
 namespace skyig::weather {
 namespace {
@@ -205,6 +206,56 @@ TEST(CloudDeck, ExtinctionFromTheWaterContent) {
   st.visibilityM = 100.0;
   EXPECT_NEAR(cloudOptics(st).extinctionPerM, 3.912 / 100.0, 1e-9);
   EXPECT_LT(cloudOptics(layer(CloudType::Cirrus, 9000.0, 1000.0, 100.0)).extinctionPerM * 1000.0, 3.0);  // a thin veil
+}
+
+}  // namespace
+}  // namespace skyig::weather
+
+namespace skyig::weather {
+namespace {
+
+// A full-moon night (2026-01-03 21:00Z, the moon ~50 deg up) under a broken stratocumulus deck:
+// the moon's direct light on the ground is the clear night's times the deck's transmittance along
+// the moon's ray as the field has it there (0 behind a cloud, 1 in a gap), and each star's light
+// the same on its own ray: under the deck's cloud a star is gone, in a gap it is the clear
+// night's.
+TEST(CloudDeck, MoonAndStarsShowOnlyInTheGaps) {
+  auto nightUnder = [](const CloudLayer& deck) {
+    sky::ObserverState o;
+    o.latitudeDeg = 47.0;
+    o.longitudeDeg = 11.0;
+    o.heightM = 2.0;
+    o.utc = {2026, 1, 3, 21 * 3600.0};
+    sky::SkyConditions c;
+    c.model = sky::SkyModel::Physical;
+    c.atmosphere = model();
+    c.clouds[0] = deck;
+    c.starCatalogue = std::make_shared<const skyig::sky::night::StarCatalogue>(skyig::night_testing::catalogue(), o.utc);
+    return sky::buildSkyState(o, c);
+  };
+  const SkyState clear = nightUnder({}), under = nightUnder(layer(CloudType::Stratocumulus, 1500.0, 500.0, 50.0));
+  ASSERT_TRUE(clear.moonDisc && under.moonDisc);
+  const double through = sky::decksTransmittanceAlong(under.fog, 2.0, glm::dvec2(0.0), under.moonDirection);
+  const double moonClear = sky::clientLight(clear, model().get()).moon.horizontalLux;
+  const double moonUnder = sky::clientLight(under, model().get()).moon.horizontalLux;
+  ASSERT_GT(moonClear, 0.0);
+  std::printf("full moon under 50 %% stratocumulus: %.4f lux of %.4f (the deck lets %.3g through on its ray)\n", moonUnder,
+              moonClear, through);
+  EXPECT_NEAR(moonUnder / moonClear, through, 0.02);
+  ASSERT_TRUE(clear.starField && under.starField);
+  ASSERT_EQ(clear.starField->stars.size(), under.starField->stars.size());
+  int hidden = 0, shown = 0;
+  for (std::size_t i = 0; i < clear.starField->stars.size(); ++i) {
+    const double c = clear.starField->stars[i].illuminanceLux, u = under.starField->stars[i].illuminanceLux;
+    if (c <= 0.0) continue;
+    const double t = sky::decksTransmittanceAlong(under.fog, 2.0, glm::dvec2(0.0), under.starField->stars[i].direction);
+    EXPECT_NEAR(u / c, t, 0.02) << "star " << i;
+    hidden += t < 0.01;
+    shown += t > 0.99;
+  }
+  std::printf("stars: %d behind the deck's cloud, %d in its gaps\n", hidden, shown);
+  EXPECT_GT(hidden, 0);
+  EXPECT_GT(shown, 0);
 }
 
 }  // namespace

@@ -193,14 +193,25 @@ void Sky::setClouds(const std::array<CloudLayer, 3>& layers) {
   m.host.state.clouds = next;
 }
 
-double Sky::sunThroughClouds(const Vec3& offsetEnuM) const {
-  const Impl& m = impl();
+namespace {
+
+// The physical model of `m`'s state for a call about a point offsetEnuM from the observer;
+// throws Error naming `call` under an analytic sky or for a non-finite offset.
+const atmosphere::AtmosphereModel& modelForPoint(const Sky::Impl& m, const char* call, const Vec3& offsetEnuM) {
   const auto* model = m.state.conditions.atmosphere.get();
   if (!model || m.state.conditions.model != sky::SkyModel::Physical)
-    throw Error("skyig::Sky::sunThroughClouds needs the physical sky (Settings::model \"physical\")");
+    throw Error(std::string("skyig::Sky::") + call + " needs the physical sky (Settings::model \"physical\")");
   for (const double x : offsetEnuM)
     if (!std::isfinite(x))
-      throw Error("skyig::Sky::sunThroughClouds: offset " + vectorText(offsetEnuM) + " m: expected finite metres");
+      throw Error(std::string("skyig::Sky::") + call + ": offset " + vectorText(offsetEnuM) + " m: expected finite metres");
+  return *model;
+}
+
+}  // namespace
+
+double Sky::sunThroughClouds(const Vec3& offsetEnuM) const {
+  const Impl& m = impl();
+  const atmosphere::AtmosphereModel* model = &modelForPoint(m, "sunThroughClouds", offsetEnuM);
   const glm::dvec3 sun = sky::enuDirection(m.state.sunAzimuth, m.state.sunAltitude);
   const double h = glm::length(atmosphere::physicalCamera(*model, m.state.observer.heightM)) - model->parameters(0).bottom_radius;
   return sky::decksTransmittanceAlong(m.state.fog, h + offsetEnuM[2], {offsetEnuM[0], offsetEnuM[1]}, sun);
@@ -221,13 +232,8 @@ Light Sky::light() const {
 
 AerialPerspective Sky::aerialPerspective(const Vec3& offsetEnuM) const {
   const Impl& m = impl();
-  const auto* model = m.state.conditions.atmosphere.get();
-  if (!model || m.state.conditions.model != sky::SkyModel::Physical)
-    throw Error("skyig::Sky::aerialPerspective needs the physical sky (Settings::model \"physical\")");
-  for (const double x : offsetEnuM)
-    if (!std::isfinite(x))
-      throw Error("skyig::Sky::aerialPerspective: offset " + vectorText(offsetEnuM) + " m: expected finite metres");
-  const sky::ClientAerialPerspective a = sky::clientAerialPerspective(m.state, *model, toGlm(offsetEnuM));
+  const atmosphere::AtmosphereModel& model = modelForPoint(m, "aerialPerspective", offsetEnuM);
+  const sky::ClientAerialPerspective a = sky::clientAerialPerspective(m.state, model, toGlm(offsetEnuM));
   return {toVec3(a.transmittance), toVec3(a.inScattered)};
 }
 

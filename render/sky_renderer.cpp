@@ -179,6 +179,10 @@ bool SkyRenderer::drawSky(const skyig::sky::SkyState& state, const skyig::sky::C
                       state.fog.tables.heightM);
     physical_->setCloudCover(state.fog.cover, sky::withoutBrokenDecks(state.fog, drawn),
                              skyig::sky::clearFogTableFor(state.fog, channel.band));
+    physical_->setSunThroughFog(
+        state.fog.any() ? sky::fogTransmittanceToSpaceAlong(state.fog, *state.conditions.atmosphere, state.observer.heightM,
+                                                            sky::enuDirection(state.sunAzimuth, state.sunApparentAltitude))
+                        : 1.0);
     return physical_->draw(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM),
                            skyig::sky::enuDirection(state.sunAzimuth, state.sunAltitude), state.moonDirection,
                            state.shown.moonlitSky || skyig::sky::isGoggle(channel) ? state.moonlightScale

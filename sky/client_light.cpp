@@ -107,7 +107,7 @@ glm::dvec3 clientSkyRadiance(const SkyState& s, const atmosphere::AtmosphereMode
   // The moonlit sky (Jensen et al. 2001): the same sky lit from the moon, scaled per channel.
   if (luminance(s.moonlightScale) > 0.0) out += radiance(s.moonDirection) * s.moonlightScale;
   // Then the fog in front, as the sky pass composes it (physics/weather/fog_layer.glsl).
-  const glm::dvec4 fog = weather::fogAlong(drawnFogLayers(s.fog), r - bottom, view.z, d);
+  const glm::dvec4 fog = weather::fogAlong(drawnFogLayers(s.fog), r - bottom, view.z, d, airTransmittanceFrom(*model, r - bottom));
   return out * fog.a + glm::dvec3(fog);
 }
 
@@ -175,7 +175,7 @@ ClientAerialPerspective clientAerialPerspective(const SkyState& s, const atmosph
   // surface, the air's light) dimmed, their own light added.
   const double h = glm::length(camera) - model.parameters(0).bottom_radius;
   const double d = glm::length(offsetEnu), mu = d > 0.0 ? offsetEnu.z / d : 1.0;
-  const glm::dvec4 fog = weather::fogAlong(drawnFogLayers(s.fog), h, mu, d);
+  const glm::dvec4 fog = weather::fogAlong(drawnFogLayers(s.fog), h, mu, d, airTransmittanceFrom(model, h));
   out.inScattered = out.inScattered * fog.a + glm::dvec3(fog);
   out.transmittance *= fog.a;
   return out;

@@ -1,6 +1,7 @@
 #include "sky/fog_state.h"
 
 #include "physics/atmosphere/physical_camera.h"
+#include "physics/atmosphere/segment_transmittance.h"
 #include "physics/weather/fog_table.h"
 
 #include <algorithm>
@@ -158,9 +159,14 @@ weather::FogLayers drawnFogLayers(const FogState& fog) { return litBy(fog, 1.0, 
 
 weather::FogLayers moonlitFogLayers(const FogState& fog) { return litBy(fog, 0.0, 1.0); }
 
+weather::AirTransmittance airTransmittanceFrom(const atmosphere::AtmosphereModel& model, double heightM) {
+  const double r = model.parameters(0).bottom_radius + heightM;
+  return [&model, r](double mu, double d) { return atmosphere::luminanceTransmittance(model, r, mu, d); };
+}
+
 double throughFogLayers(const weather::FogLayers& layers, double behindCdM2, double h, double mu,
-                        double d) {
-  const glm::dvec4 f = weather::fogAlong(layers, h, mu, d);
+                        double d, const weather::AirTransmittance& air) {
+  const glm::dvec4 f = weather::fogAlong(layers, h, mu, d, air);
   return behindCdM2 * f.a + shader::rec709Luminance(glm::dvec3(f));
 }
 

@@ -12,6 +12,7 @@
 #include "physics/common/sky_conditions.h"
 #include "physics/weather/cloud_deck.h"
 #include "physics/weather/fog_layer.h"
+#include "physics/weather/fog_table.h"
 
 namespace skyig::sky {
 
@@ -93,8 +94,12 @@ weather::FogLayers drawnFogLayers(const FogState& fog);
 weather::FogLayers moonlitFogLayers(const FogState& fog);
 
 // What the eye h metres above the ground sees through every layer of `layers` along (mu, d) where
-// the clear air shows `behindCdM2` (luminances; the fog is grey).
+// the clear air shows `behindCdM2` (luminances; the fog is grey), the decks through `air`.
 double throughFogLayers(const weather::FogLayers& layers, double behindCdM2, double h, double mu,
-                        double d);
+                        double d, const weather::AirTransmittance& air = nullptr);
+
+// The clear air's transmittance from an eye heightM above `model`'s ground along a view (the
+// composites' `air`: physics/atmosphere/segment_transmittance.h).
+weather::AirTransmittance airTransmittanceFrom(const atmosphere::AtmosphereModel& model, double heightM);
 
 }  // namespace skyig::sky

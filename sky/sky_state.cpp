@@ -108,10 +108,11 @@ FogTables fogTablesOf(const FogState& fog, const atmosphere::AtmosphereModel& mo
   // it by its field (FogTables); the CPU's own uses (the eye, the light) weigh the gaps instead.
   const bool broken = fog.broken();
   using Table = std::shared_ptr<const std::vector<glm::vec4>>;
+  const weather::AirTransmittance air = airTransmittanceFrom(model, t.heightM);
   auto tableOf = [&](const weather::FogLayers& layers, const weather::FogLayers& eye, const Table& eyeTable) {
     return eyeTable && std::memcmp(&layers, &eye, sizeof layers) == 0
                ? eyeTable
-               : std::make_shared<const std::vector<glm::vec4>>(weather::fogTable(layers, t.heightM));
+               : std::make_shared<const std::vector<glm::vec4>>(weather::fogTable(layers, t.heightM, weather::kFogTableSize, air));
   };
   const weather::FogLayers eye = clouded(fog, drawnFogLayers(fog));
   t.eye = tableOf(eye, eye, nullptr);

@@ -51,6 +51,8 @@ ViewSphere viewSphere(const SkyState& s) {
   auto cells = std::make_shared<std::vector<ViewCellLight>>();
   cells->reserve(kMu * kPhi);
   const weather::FogLayers moonFog = moonlitFogLayers(s.fog);
+  const double fogHeight = model ? glm::length(camera) - model->parameters(0).bottom_radius : 0.0;
+  const weather::AirTransmittance air = model ? airTransmittanceFrom(*model, fogHeight) : nullptr;
   forEachEqualAreaCell(kMu, kPhi, [&](const glm::dvec3& view, double cell) {
     double sunlit = 0.0, moonlit = 0.0, own = 0.0;
     const double d = model ? groundDistance(*model, camera, view) : kFar;
@@ -64,9 +66,8 @@ ViewSphere viewSphere(const SkyState& s) {
     if (view.z < 0.0) own = shader::rec709Luminance(s.nightGroundRadiance);
     if (s.fog.any()) {  // the sky pass's composite (physics/weather/fog_layer.glsl), per light;
       // the night's own light came through the fog already (the state's extinction profile)
-      const double height = glm::length(camera) - model->parameters(0).bottom_radius;
-      sunlit = throughFogLayers(s.fog.sunlit, sunlit, height, view.z, d);
-      moonlit = throughFogLayers(moonFog, moonlit, height, view.z, d);
+      sunlit = throughFogLayers(s.fog.sunlit, sunlit, fogHeight, view.z, d, air);
+      moonlit = throughFogLayers(moonFog, moonlit, fogHeight, view.z, d, air);
     }
     const double l = sunlit + moonlit + own;
     cells->push_back({static_cast<float>(sunlit), static_cast<float>(moonlit), static_cast<float>(own)});

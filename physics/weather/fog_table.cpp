@@ -32,8 +32,18 @@ std::array<std::size_t, kFogLayerCount> farthestFirst(const FogLayers& layers, d
 }
 
 // d < 0: the whole ray (to the ground where it meets it).
+// The air's transmittance from the eye to where the view enters deck f (1 inside it, or without
+// `air`).
+double airBefore(const FogLayer& f, double heightM, double mu, const AirTransmittance& air) {
+  if (!air) return 1.0;
+  const double base = f.bottom_height - shader::fogBottomBand(f), top = f.top_height + f.band_height;
+  if (heightM >= base && heightM <= top) return 1.0;
+  const double d = shader::distanceToHeight(f.planet_radius, heightM, mu, heightM < base ? base : top);
+  return d > 0.0 ? air(mu, d) : 1.0;
+}
+
 glm::dvec4 compose(const FogLayers& layers, const std::array<FogEye, kFogLayerCount>& eyes, double heightM, double mu,
-                   double segment) {
+                   double segment, const AirTransmittance& air) {
   glm::dvec3 light(0.0);
   double t = 1.0;
   for (const std::size_t i : farthestFirst(layers, mu)) {
@@ -50,8 +60,20 @@ glm::dvec4 compose(const FogLayers& layers, const std::array<FogEye, kFogLayerCo
       t *= shade;
       continue;
     }
-    light = shader::throughFogSeen(f, eyes[i], light, heightM, mu, d);
-    t *= shader::fogTransmittance(f, heightM, mu, d);
+    const double through = shader::fogTransmittance(f, heightM, mu, d);
+    const double seen = i >= kWeatherLayerCount ? airBefore(f, heightM, mu, air) : 1.0;
+    if (seen == 1.0) {  // nothing in front (the weather's own layers are about the eye)
+      light = shader::throughFogSeen(f, eyes[i], light, heightM, mu, d);
+      t *= through;
+      continue;
+    }
+    // What of the clear air's light along the view stays: the deck's transmittance of what lies
+    // beyond it, and the air's own light in front of it, which under the deck is in its shade.
+    const bool under = heightM < f.bottom_height - shader::fogBottomBand(f);
+    const double front = (1.0 - seen) * (under ? shader::fogShadeBelow(f) : 1.0);
+    const double kept = front + seen * through;
+    light = light * kept + seen * shader::throughFogSeen(f, eyes[i], glm::dvec3(0.0), heightM, mu, d);
+    t *= kept;
   }
   return {light, t};
 }
@@ -65,20 +87,20 @@ std::array<FogEye, kFogLayerCount> eyesOf(const FogLayers& layers, double height
 
 }  // namespace
 
-glm::dvec4 fogAlong(const FogLayers& layers, double heightM, double mu) {
-  return compose(layers, eyesOf(layers, heightM), heightM, mu, -1.0);
+glm::dvec4 fogAlong(const FogLayers& layers, double heightM, double mu, const AirTransmittance& air) {
+  return compose(layers, eyesOf(layers, heightM), heightM, mu, -1.0, air);
 }
 
-glm::dvec4 fogAlong(const FogLayers& layers, double heightM, double mu, double d) {
-  return compose(layers, eyesOf(layers, heightM), heightM, mu, d);
+glm::dvec4 fogAlong(const FogLayers& layers, double heightM, double mu, double d, const AirTransmittance& air) {
+  return compose(layers, eyesOf(layers, heightM), heightM, mu, d, air);
 }
 
-std::vector<glm::vec4> fogTable(const FogLayers& layers, double heightM, int size) {
+std::vector<glm::vec4> fogTable(const FogLayers& layers, double heightM, int size, const AirTransmittance& air) {
   const std::array<FogEye, kFogLayerCount> eyes = eyesOf(layers, heightM);  // the slab solved once per layer
   std::vector<glm::vec4> table(static_cast<std::size_t>(size));
   for (int i = 0; i < size; ++i) {
     const double mu = shader::fogTableMu((i + 0.5) / size);
-    table[static_cast<std::size_t>(i)] = glm::vec4(compose(layers, eyes, heightM, mu, -1.0));
+    table[static_cast<std::size_t>(i)] = glm::vec4(compose(layers, eyes, heightM, mu, -1.0, air));
   }
   return table;
 }

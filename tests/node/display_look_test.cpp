@@ -359,3 +359,27 @@ TEST_F(DisplayLook, RainGreysAndDustBrownsTheFrame) {
               "(%.0f, %.0f, %.0f) cd/m^2, codes (%.0f, %.0f, %.0f)\n",
               r.r, r.g, r.b, rc.r, rc.g, rc.b, d.r, d.g, d.b, dc.r, dc.g, dc.b);
 }
+
+// Looking at the noon sun through a full stratus deck: no disc (the clear sky's frame has it at
+// over a million cd/m^2); the deck's brightest pixel is within twice its mean.
+TEST_F(DisplayLook, NoSunDiscThroughAnOvercast) {
+  const std::string scene = "--utc 2026-06-21T10:00:00Z --yaw 141 --pitch 50 --alt 2 ";
+  auto brightest = [](const Frame& f, double& mean) {
+    double best = 0.0, sum = 0.0;
+    for (int y = 0; y < f.height; ++y)
+      for (int x = 0; x < f.width; ++x) {
+        const double l = luminance(f.world(x, y));
+        best = std::max(best, l);
+        sum += l;
+      }
+    mean = sum / (f.width * f.height);
+    return best;
+  };
+  double clearMean = 0.0, overcastMean = 0.0;
+  const double clear = brightest(render(scene), clearMean);
+  const double overcast = brightest(render(scene + "--cloud stratus:300:400:100"), overcastMean);
+  std::printf("towards the noon sun: brightest %.3g cd/m^2 clear, %.3g under the deck (mean %.3g)\n", clear, overcast,
+              overcastMean);
+  EXPECT_GT(clear, 1e6);
+  EXPECT_LT(overcast, 2.0 * overcastMean);
+}

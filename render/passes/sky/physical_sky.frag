@@ -200,6 +200,15 @@ float frameUMu(float rmu, bool ground, out float d) {
   return 0.5 + 0.5 * textureCoordFromUnitRange((d - d_min) / (rho + H - d_min), atm.scattering_mu_size / 2.0);
 }
 
+// The sun's disc this pixel sees (SKYIG_SUN_DISC), kept apart from the sky so that the weather's
+// layers dim it by their own transmittance along the sun's ray (fogSunThrough) rather than by
+// the table's share of the clear air's light, which a deck seen through the air in front of it
+// keeps in part (physics/weather/fog_table.h).
+vec3 sunDiscHere = vec3(0.0);
+#ifdef SKYIG_FOG
+uniform float fogSunThrough;  // the layers' transmittance along the sun's apparent direction
+#endif
+
 // d: the distance the view ray goes on (to the ground, or out of the atmosphere).
 vec3 insideRec709(vec3 view, out float d) {
   float r = frameRadii.x;
@@ -238,9 +247,9 @@ vec3 insideRec709(vec3 view, out float d) {
   // refracted disc can fall in.
   if (!ground && nu >= frameAngles.z) {
     vec3 airless = unrefractView(view, sunRefraction);
-    rgb += bandRatio(band.y) * xyzToRec709Linear(packedRefractedSunDiscXyz(atm, transmittanceXyz, solarIrradianceXyz,
-                                                       limbDarkeningXyz, camera, view, airless,
-                                                       sunDirectionP));
+    sunDiscHere = bandRatio(band.y) * xyzToRec709Linear(packedRefractedSunDiscXyz(atm, transmittanceXyz, solarIrradianceXyz,
+                                                              limbDarkeningXyz, camera, view, airless,
+                                                              sunDirectionP));
   }
 #endif
   return rgb;
@@ -251,7 +260,11 @@ void main() {
   // weights' ratios to it (render/glsl/band.glsl).
   vec3 view = normalize(vViewRay);
   float d;
-  vec3 radiance = max(inBand(insideRec709(view, d), lightWeights.x), vec3(0.0));
+  vec3 radiance = inBand(insideRec709(view, d), lightWeights.x);
+  vec3 disc = inBand(sunDiscHere, lightWeights.x);
+#ifndef SKYIG_FOG
+  radiance = max(radiance + disc, vec3(0.0));  // summed before the clamp: a red disc keeps the sky's blue
+#endif
   // Fog and mist in front of the air's light (physics/weather/fog_layer.glsl); the camera is on
   // the model's +z axis, so view.z is the cosine to its vertical. The night's layer below came
   // through the fog already (the state's extinction profile, sky/sky_state.cpp).
@@ -260,7 +273,7 @@ void main() {
 #ifdef SKYIG_CLOUD_COVER
   fog = mix(texture(fogClearTable, fogTableU(view.z)), fog, cloudShareAlong(view));
 #endif
-  radiance = radiance * fog.a + fog.rgb;
+  radiance = max(radiance * fog.a + fog.rgb + disc * fogSunThrough, vec3(0.0));
 #ifdef SKYIG_CLOUD_LIGHT
   vec3 single = vec3(0.0);
 #ifndef SKYIG_SUNLESS

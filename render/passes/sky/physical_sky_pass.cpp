@@ -3,6 +3,7 @@
 #include "render/gl/gl_context.h"
 #include "render/glsl/bindings.h"
 #include "physics/atmosphere/atmosphere_physics.h"
+#include "physics/atmosphere/segment_transmittance.h"
 
 #include <algorithm>
 #include <chrono>
@@ -62,7 +63,8 @@ PhysicalSkyPass::Program::Program(const char* vertex, const char* fragment, cons
       litCount(glGetUniformLocation(program.id(), "cloudLitCount")),
       lit(glGetUniformLocation(program.id(), "cloudLit")),
       litSide(glGetUniformLocation(program.id(), "cloudLitSide")),
-      litEye(glGetUniformLocation(program.id(), "cloudLitEye")) {}
+      litEye(glGetUniformLocation(program.id(), "cloudLitEye")),
+      sunThrough(glGetUniformLocation(program.id(), "fogSunThrough")) {}
 
 PhysicalSkyPass::LitDecks PhysicalSkyPass::litDecks(double heightM) const {
   LitDecks out;
@@ -106,8 +108,7 @@ constexpr int kCloudLightTableSize = 256;
 // The sun's light at each face by its cosine there, and the air's transmittance from the eye to
 // it by the view's (render/passes/sky/physical_sky.frag, cloudSingleLight), from the model the
 // frame draws: the sun's normal irradiance (the transmittance table, the disc's part above the
-// horizon), and the ratio of two transmittances to the top (Bruneton & Neyret 2008, section 4),
-// each weighted by the sun's spectrum into luminance.
+// horizon), and the segment's transmittance (physics/atmosphere/segment_transmittance.h).
 void PhysicalSkyPass::updateCloudLightTable(const LitDecks& lit, double heightM) {
   const atmosphere::AtmosphereModel& model = *current_.model;
   std::array<double, sky::kCloudLayers + 2> key{};
@@ -125,13 +126,6 @@ void PhysicalSkyPass::updateCloudLightTable(const LitDecks& lit, double heightM)
   }
   if (key != cloudLightKey_) {
     const double R = model.parameters(0).bottom_radius, r = R + heightM;
-    const atmosphere::Spectrum solar = model.solarRadiance();
-    const double solarY = model.converter().luminance(solar);
-    auto luminanceOf = [&](const atmosphere::Spectrum& t) {
-      atmosphere::Spectrum weighted(solar.size());
-      for (std::size_t i = 0; i < solar.size(); ++i) weighted[i] = solar[i] * t.at(i);
-      return solarY > 0.0 ? model.converter().luminance(weighted) / solarY : 0.0;
-    };
     std::vector<glm::vec4> texels(static_cast<std::size_t>(kCloudLightTableSize) * 6, glm::vec4(0.0f));
     for (int k = 0; k < lit.count; ++k) {
       const double face = lit.lit[static_cast<std::size_t>(k)].x, rp = R + face;
@@ -141,17 +135,10 @@ void PhysicalSkyPass::updateCloudLightTable(const LitDecks& lit, double heightM)
         const glm::dvec3 point(0.0, 0.0, rp), sun(std::sqrt(std::max(1.0 - muS * muS, 0.0)), 0.0, muS);
         const glm::dvec3 e = model.converter().toRec709(model.sunIrradiance(point, sun, sun));
         texels[static_cast<std::size_t>(k * kCloudLightTableSize + i)] = glm::vec4(glm::dvec4(glm::max(e, glm::dvec3(0.0)), 1.0));
-        // The eye's view of cosine mu meets the face at p; up from under it the ray goes on to
-        // the top, down from over it the reversed ray does.
+        // The eye's view of cosine mu meets the face d metres on.
         const double mu = shader::fogTableMu(u);
         const double d = shader::distanceToHeight(R, heightM, mu, face);
-        double t = 0.0;
-        if (d >= 0.0) {
-          const double rP = std::sqrt(r * r + d * d + 2.0 * r * d * mu), muP = (r * mu + d) / rP;
-          const double eye = luminanceOf(face >= heightM ? model.transmittanceToTop(r, mu) : model.transmittanceToTop(rP, -muP));
-          const double far = luminanceOf(face >= heightM ? model.transmittanceToTop(rP, muP) : model.transmittanceToTop(r, -mu));
-          t = far > 0.0 ? std::clamp(eye / far, 0.0, 1.0) : 0.0;
-        }
+        const double t = d >= 0.0 ? atmosphere::luminanceTransmittance(model, r, mu, d) : 0.0;
         texels[static_cast<std::size_t>((3 + k) * kCloudLightTableSize + i)] = glm::vec4(static_cast<float>(t));
       }
     }
@@ -469,6 +456,7 @@ void PhysicalSkyPass::prepare(const Program& program, const Frame& f) const {
   }
   if (f.night->texture) glProgramUniform3fv(program.program.id(), program.nightGround, 1, &f3(f.night->groundRadiance)[0]);
   setCloudUniforms(program, glm::length(f.camera) - current_.model->parameters(0).bottom_radius);
+  if (program.sunThrough >= 0) glProgramUniform1f(program.program.id(), program.sunThrough, static_cast<float>(sunThroughFog_));
   program.program.use();
 }
 

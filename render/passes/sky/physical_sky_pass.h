@@ -80,6 +80,10 @@ class PhysicalSkyPass {
   // layers have its gaps filled, `clear` (and its table for tableHeightM, when made with the
   // state) is the same without it, and the next draw() mixes the two per pixel by the field
   // (SKYIG_CLOUD_COVER). None broken (the default): setFog's layers alone.
+  // The layers' transmittance along the sun's apparent direction, what its disc is dimmed by
+  // under them (sky/fog_state.h, fogTransmittanceToSpaceAlong); 1 until set.
+  void setSunThroughFog(double transmittance) { sunThroughFog_ = transmittance; }
+
   void setCloudCover(const std::array<weather::CloudCover, sky::kCloudLayers>& cover, const weather::FogLayers& clear,
                      std::shared_ptr<const std::vector<glm::vec4>> clearTable = nullptr) {
     cover_ = cover;
@@ -137,6 +141,7 @@ class PhysicalSkyPass {
     GLint camera, sun, sunRefraction, moonOn, moonDirection, moonScale, radii, angles, groundCap, nightGround;
     GLint cloudCount, cloudShape, cloudPlace, cloudAlong, cloudEye;  // SKYIG_CLOUD_COVER's
     GLint litCount, lit, litSide, litEye;                            // SKYIG_CLOUD_LIGHT's
+    GLint sunThrough;                                                // SKYIG_FOG's
   };
   bool cloudCovered() const;  // a broken deck among setFog's layers
   // The decks the eye is outside of, for SKYIG_CLOUD_LIGHT (render/passes/sky/physical_sky.frag's
@@ -213,7 +218,8 @@ class PhysicalSkyPass {
   weather::FogLayers fogClear_{};
   std::shared_ptr<const std::vector<glm::vec4>> fogClearPrecomputed_;
   std::unique_ptr<FogTableTexture> fogClearTable_ = std::make_unique<FogTableTexture>();
-  double cloudLightLowestZ_ = 1.0;  // this frame's lowest light drawn, the sine of its elevation
+  double cloudLightLowestZ_ = 1.0;
+  double sunThroughFog_ = 1.0;  // this frame's lowest light drawn, the sine of its elevation
   GLuint cloudLightTable_ = 0;  // kCloudLightTableSize x 6, RGBA32F, made at first use
   std::array<double, sky::kCloudLayers + 2> cloudLightKey_{};  // faces, eye, model of what it holds
   double lastUploadSeconds_ = 0.0;

@@ -113,7 +113,11 @@ void PhysicalSkyPass::updateCloudLightTable(const LitDecks& lit, double heightM)
   const atmosphere::AtmosphereModel& model = *current_.model;
   std::array<double, sky::kCloudLayers + 2> key{};
   for (int k = 0; k < lit.count; ++k) key[static_cast<std::size_t>(k)] = lit.lit[static_cast<std::size_t>(k)].x;
-  key[sky::kCloudLayers] = heightM;
+  // The eye's height to the metre: a climbing or descending eye would otherwise remake the table
+  // (768 spectral transmittances, on the render thread) every frame, for a change of the air's
+  // transmittance to the face under 1e-4 a metre.
+  const double eye = std::round(heightM);
+  key[sky::kCloudLayers] = eye;
   key[sky::kCloudLayers + 1] = static_cast<double>(reinterpret_cast<std::uintptr_t>(&model));
   if (!cloudLightTable_) {
     glCreateTextures(GL_TEXTURE_2D, 1, &cloudLightTable_);
@@ -125,7 +129,7 @@ void PhysicalSkyPass::updateCloudLightTable(const LitDecks& lit, double heightM)
     cloudLightKey_.fill(-1.0);
   }
   if (key != cloudLightKey_) {
-    const double R = model.parameters(0).bottom_radius, r = R + heightM;
+    const double R = model.parameters(0).bottom_radius, r = R + eye;
     std::vector<glm::vec4> texels(static_cast<std::size_t>(kCloudLightTableSize) * 6, glm::vec4(0.0f));
     for (int k = 0; k < lit.count; ++k) {
       const double face = lit.lit[static_cast<std::size_t>(k)].x, rp = R + face;
@@ -137,7 +141,7 @@ void PhysicalSkyPass::updateCloudLightTable(const LitDecks& lit, double heightM)
         texels[static_cast<std::size_t>(k * kCloudLightTableSize + i)] = glm::vec4(glm::dvec4(glm::max(e, glm::dvec3(0.0)), 1.0));
         // The eye's view of cosine mu meets the face d metres on.
         const double mu = shader::fogTableMu(u);
-        const double d = shader::distanceToHeight(R, heightM, mu, face);
+        const double d = shader::distanceToHeight(R, eye, mu, face);
         const double t = d >= 0.0 ? atmosphere::luminanceTransmittance(model, r, mu, d) : 0.0;
         texels[static_cast<std::size_t>((3 + k) * kCloudLightTableSize + i)] = glm::vec4(static_cast<float>(t));
       }

@@ -64,7 +64,6 @@ layout(binding = SKYIG_UNIT_FOG_TABLE) uniform sampler1D fogTable;
 // says how much of each the pixel's view meets, where the view crosses the deck's middle height.
 #include "physics/weather/cloud_cover.glsl"
 layout(binding = SKYIG_UNIT_FOG_CLEAR_TABLE) uniform sampler1D fogClearTable;
-uniform int cloudDeckCount;     // the broken decks, at most 3
 uniform vec4 cloudDeckShape[3]; // middle height above the ground (m), cell (m), threshold, softness
 uniform vec4 cloudDeckPlace[3]; // origin (cells), stretch across the wind, seed
 uniform vec4 cloudDeckAlong[3]; // the wind's direction (east, north), the coverage, the fade's start (m)
@@ -86,11 +85,14 @@ float cloudShareOf(int k, vec3 view) {
 
 // Each broken deck's share along this pixel's view, evaluated once (the sky and the decks'
 // single-scattered light read it).
-float cloudShares[3];
-// The share of the view that meets a broken deck's cloud: the most of any deck's.
+vec3 cloudShares = vec3(0.0);
+// The share of the view that meets a broken deck's cloud: the most of any deck's. The number of
+// broken decks is the variant's (SKYIG_CLOUD_COVER, 1-3), not a uniform: a loop of constant
+// length unrolls to constant indices, where a uniform count left llvmpipe a loop and a gather
+// per lane for every uniform it indexed (a third of a broken deck's cost in the sky pass).
 float cloudShareAlong(vec3 view) {
   float share = 0.0;
-  for (int k = 0; k < cloudDeckCount; ++k) {
+  for (int k = 0; k < SKYIG_CLOUD_COVER; ++k) {
     cloudShares[k] = cloudShareOf(k, view);
     share = max(share, cloudShares[k]);
   }
@@ -110,7 +112,6 @@ float cloudShareAlong(vec3 view) {
 #include "physics/weather/cloud_cover.glsl"
 #include "physics/weather/cloud_sunlight.glsl"
 #include "physics/weather/fog_layer.glsl"
-uniform int cloudLitCount;
 uniform vec4 cloudLit[3];      // the face's height (m), the deck's optical depth, asymmetry, its broken index (-1: whole)
 uniform vec4 cloudLitSide[3];  // 1: its base seen from under it, -1: its top from over it; its reflectance; the layers' depth between
 uniform vec2 cloudLitEye;      // the eye above the ground (m), the ground's radius (m)
@@ -120,7 +121,7 @@ layout(binding = SKYIG_UNIT_CLOUD_LIGHT_TABLE) uniform sampler2D cloudLightTable
 
 vec3 cloudSingleLight(vec3 view, vec3 light, vec3 scale) {
   vec3 sum = vec3(0.0);
-  for (int k = 0; k < cloudLitCount; ++k) {
+  for (int k = 0; k < SKYIG_CLOUD_LIGHT; ++k) {  // the lit decks, 1-3: the variant's (as SKYIG_CLOUD_COVER)
     float d = distanceToHeight(cloudLitEye.y, cloudLitEye.x, view.z, cloudLit[k].x);
     if (d < 0.0) continue;
     vec3 p = camera + view * d;
@@ -140,7 +141,7 @@ vec3 cloudSingleLight(vec3 view, vec3 light, vec3 scale) {
     if (mu0 > 0.0 && cloudLitSide[k].x > 0.0) l += cloudLitSide[k].y * mu0 / PI * fogLimbLaw(2.0, mu);
     float share = 1.0;
 #ifdef SKYIG_CLOUD_COVER
-    if (cloudLit[k].w >= 0.0) share = cloudShares[int(cloudLit[k].w)];  // cloudShareAlong's
+    if (cloudLit[k].w >= 0.0) share = dot(cloudShares, vec3(equal(vec3(cloudLit[k].w), vec3(0.0, 1.0, 2.0))));  // cloudShareAlong's
 #endif
     float ta = texture(cloudLightTable, vec2(fogTableU(view.z), row + 0.5)).r;
     sum += e * (l * share * ta * exp(-cloudLitSide[k].z / max(abs(view.z), 0.02)));

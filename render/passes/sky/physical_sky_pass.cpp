@@ -55,12 +55,10 @@ PhysicalSkyPass::Program::Program(const char* vertex, const char* fragment, cons
       angles(glGetUniformLocation(program.id(), "frameAngles")),
       groundCap(glGetUniformLocation(program.id(), "groundCap")),
       nightGround(glGetUniformLocation(program.id(), "nightGroundRadiance")),
-      cloudCount(glGetUniformLocation(program.id(), "cloudDeckCount")),
       cloudShape(glGetUniformLocation(program.id(), "cloudDeckShape")),
       cloudPlace(glGetUniformLocation(program.id(), "cloudDeckPlace")),
       cloudAlong(glGetUniformLocation(program.id(), "cloudDeckAlong")),
       cloudEye(glGetUniformLocation(program.id(), "cloudEye")),
-      litCount(glGetUniformLocation(program.id(), "cloudLitCount")),
       lit(glGetUniformLocation(program.id(), "cloudLit")),
       litSide(glGetUniformLocation(program.id(), "cloudLitSide")),
       litEye(glGetUniformLocation(program.id(), "cloudLitEye")),
@@ -95,10 +93,11 @@ PhysicalSkyPass::LitDecks PhysicalSkyPass::litDecks(double heightM) const {
   return out;
 }
 
-bool PhysicalSkyPass::cloudCovered() const {
+int PhysicalSkyPass::brokenDecks() const {
+  int n = 0;
   for (std::size_t k = 0; k < cover_.size(); ++k)
-    if (cover_[k].broken && fog_[weather::kWeatherLayerCount + k].extinction > 0.0) return true;
-  return false;
+    if (cover_[k].broken && fog_[weather::kWeatherLayerCount + k].extinction > 0.0) ++n;
+  return n;
 }
 
 namespace {
@@ -157,25 +156,24 @@ void PhysicalSkyPass::updateCloudLightTable(const LitDecks& lit, double heightM)
 void PhysicalSkyPass::setCloudUniforms(const Program& program, double heightM) const {
   const GLuint id = program.program.id();
   const float bottom = static_cast<float>(current_.model->parameters(0).bottom_radius);
-  if (program.litCount >= 0) {
+  if (program.lit >= 0) {
     const LitDecks l = litDecks(heightM);
-    glProgramUniform1i(id, program.litCount, l.count);
     glProgramUniform4fv(id, program.lit, l.count, &l.lit[0][0]);
     glProgramUniform4fv(id, program.litSide, l.count, &l.side[0][0]);
     glProgramUniform2f(id, program.litEye, static_cast<float>(heightM), bottom);
   }
-  if (program.cloudCount < 0) return;
+  if (program.cloudShape < 0) return;
   std::array<glm::vec4, sky::kCloudLayers> shape{}, place{}, along{};
   int n = 0;
-  for (const weather::CloudCover& c : cover_) {
-    if (!c.broken) continue;
+  for (std::size_t k = 0; k < cover_.size(); ++k) {
+    const weather::CloudCover& c = cover_[k];
+    if (!c.broken || fog_[weather::kWeatherLayerCount + k].extinction <= 0.0) continue;  // as brokenDecks()
     shape[n] = glm::vec4(glm::dvec4(c.midHeightM, c.cellM, c.threshold, c.softness));
     place[n] = glm::vec4(glm::dvec4(c.origin, c.stretch, c.seed));
     along[n] = glm::vec4(glm::dvec4(c.along, c.coverage, weather::kCloudFadeCells * c.cellM));
     ++n;
   }
   const GLuint p = program.program.id();
-  glProgramUniform1i(p, program.cloudCount, n);
   glProgramUniform4fv(p, program.cloudShape, n, &shape[0][0]);
   glProgramUniform4fv(p, program.cloudPlace, n, &place[0][0]);
   glProgramUniform4fv(p, program.cloudAlong, n, &along[0][0]);
@@ -530,7 +528,7 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   base.sunless = !sunlit;
   // The weather's layers only when one is on: clear air pays nothing for them.
   base.fog = std::any_of(fog_.begin(), fog_.end(), [](const weather::FogLayer& l) { return l.extinction > 0.0; });
-  base.cloudCover = base.fog && cloudCovered();
+  base.cloudCover = base.fog ? brokenDecks() : 0;
 
   base.nightLayer = night.texture != 0;
   base.nightLayerCellPx = base.nightLayer ? night.cellPx : 0;
@@ -544,7 +542,7 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   stepUpload();
   if (!current_.model) throw std::logic_error("PhysicalSkyPass::draw before use()");
   cloudLightLowestZ_ = std::min(sunlit ? sunDirection.z : 1.0, base.moonlit ? moonDirection.z : 1.0);
-  base.cloudLight = base.fog && litDecks(glm::length(camera) - current_.model->parameters(0).bottom_radius).count > 0;
+  base.cloudLight = base.fog ? litDecks(glm::length(camera) - current_.model->parameters(0).bottom_radius).count : 0;
   bindTables(night);
   if (glm::length(camera) > current_.model->parameters(0).top_radius) {
     drawFromSpace(camera, sunDirection, moonDirection, moonlightScale, sunRefraction);
@@ -555,10 +553,10 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   if (base.fog) {
     const double h = glm::length(camera) - current_.model->parameters(0).bottom_radius;
     fogTable_->use(fog_, h, SKYIG_UNIT_FOG_TABLE, h == fogPrecomputedHeightM_ ? fogPrecomputed_ : nullptr);
-    if (base.cloudCover)
+    if (base.cloudCover > 0)
       fogClearTable_->use(fogClear_, h, SKYIG_UNIT_FOG_CLEAR_TABLE,
                           h == fogPrecomputedHeightM_ ? fogClearPrecomputed_ : nullptr);
-    if (base.cloudLight) updateCloudLightTable(litDecks(h), h);
+    if (base.cloudLight > 0) updateCloudLightTable(litDecks(h), h);
   }
   const GLint target = drawSlices(f);
   if (reference_) {  // the frozen reference: everything in one program, the moon a uniform branch

@@ -139,11 +139,11 @@ class PhysicalSkyPass {
     Program(const char* vertex, const char* fragment, const std::string& defines = "");
     GlProgram program;
     GLint camera, sun, sunRefraction, moonOn, moonDirection, moonScale, radii, angles, groundCap, nightGround;
-    GLint cloudCount, cloudShape, cloudPlace, cloudAlong, cloudEye;  // SKYIG_CLOUD_COVER's
-    GLint litCount, lit, litSide, litEye;                            // SKYIG_CLOUD_LIGHT's
+    GLint cloudShape, cloudPlace, cloudAlong, cloudEye;  // SKYIG_CLOUD_COVER's
+    GLint lit, litSide, litEye;                          // SKYIG_CLOUD_LIGHT's
     GLint sunThrough;                                                // SKYIG_FOG's
   };
-  bool cloudCovered() const;  // a broken deck among setFog's layers
+  int brokenDecks() const;  // the broken decks among setFog's layers
   // The decks the eye is outside of, for SKYIG_CLOUD_LIGHT (render/passes/sky/physical_sky.frag's
   // cloudLit and cloudLitSide): the face each shows, its optical depth, asymmetry and index among
   // the broken decks; which face, its reflectance, the weather layers' depth between it and the eye.

@@ -24,8 +24,8 @@ struct SkyVariant {
   int nightLayerCellPx = 0;            // its cell, pixels (SKYIG_NIGHT_LAYER_CELL_PX)
   bool nightLayerTransmitted = false;  // SKYIG_NIGHT_LAYER_TRANSMITTED: the layer already dimmed
   bool fog = false;                    // SKYIG_FOG: the weather's layers composed (one of them is on)
-  bool cloudCover = false;             // SKYIG_CLOUD_COVER: with it, a broken deck's field per pixel
-  bool cloudLight = false;             // SKYIG_CLOUD_LIGHT: with it, the decks' single-scattered sun and moon
+  int cloudCover = 0;                  // SKYIG_CLOUD_COVER n: with it, the n broken decks' fields per pixel
+  int cloudLight = 0;                  // SKYIG_CLOUD_LIGHT n: with it, the n lit decks' single-scattered sun and moon
   std::string tone;                    // SKYIG_FOLD_TONE with the tone pass's defines; empty: HDR only
 
   // The #define lines, in the order the blocks are read.
@@ -38,8 +38,9 @@ struct SkyVariant {
     if (sunDisc) d += "#define SKYIG_SUN_DISC\n";
     if (sunless) d += "#define SKYIG_SUNLESS\n";
     if (fog) d += "#define SKYIG_FOG\n";
-    if (fog && cloudCover) d += "#define SKYIG_CLOUD_COVER\n";
-    if (fog && cloudLight) d += "#define SKYIG_CLOUD_LIGHT\n";
+    // The decks' counts are the variant's, not uniforms: their loops unroll (physical_sky.frag).
+    if (fog && cloudCover > 0) d += "#define SKYIG_CLOUD_COVER " + std::to_string(cloudCover) + "\n";
+    if (fog && cloudLight > 0) d += "#define SKYIG_CLOUD_LIGHT " + std::to_string(cloudLight) + "\n";
     if (nightLayer)
       d += "#define SKYIG_NIGHT_LAYER\n" + nightLayerCellDefine(nightLayerCellPx);
     if (!tone.empty()) d += "#define SKYIG_FOLD_TONE\n" + tone;

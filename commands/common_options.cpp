@@ -46,7 +46,8 @@ void SkyOptions::add(CLI::App& c) {
   c.add_option("--precipitation-coverage", precipitationCoveragePct, "The share of the sky it covers, percent (default 100)")
       ->check(CLI::Range(0.0, 100.0));
   c.add_option("--cloud", cloud,
-               "Cloud layer 1 as TYPE:BASE:THICKNESS[:COVERAGE] (m above the ground, %), e.g. stratus:300:400:100; "
+               "Cloud layer 1 as TYPE:BASE:THICKNESS[:COVERAGE[:WIND:FROM]] (m above the ground, %, m/s, degrees it blows from), "
+               "e.g. stratus:300:400:100; "
                "drawn and recorded with the frame");
   c.add_option("--sun-azimuth", sunAzimuth, "Override the sun's azimuth, degrees from north through east")
       ->check(CLI::Range(-360.0, 360.0));

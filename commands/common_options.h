@@ -18,7 +18,7 @@ struct SkyOptions {
   std::optional<std::string> precipitation;
   std::optional<int> precipitationSeverity;
   std::optional<double> precipitationVisibilityKm, precipitationTopM, precipitationCoveragePct;
-  // Cloud layer 1 ([[weather.cloud]]): "TYPE:BASE:THICKNESS[:COVERAGE]".
+  // Cloud layer 1 ([[weather.cloud]]): "TYPE:BASE:THICKNESS[:COVERAGE[:WIND:FROM]]".
   std::optional<std::string> cloud;
   std::optional<double> sunAzimuth, sunElevation;
   std::optional<std::string> utc, skyModel;

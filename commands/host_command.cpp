@@ -40,7 +40,7 @@ struct HostOptions {
   std::optional<std::string> precipitation;  // Weather Control layers 4-9: a kind or "none"
   int precipitationSeverity = 2;
   std::string weatherFile;      // a weather script (node/host/host_weather.h) instead of the above
-  std::string cloudSpec;        // --cloud: Weather Control layer 1 every frame, TYPE:BASE:THICKNESS[:COVERAGE]
+  std::string cloudSpec;        // --cloud: Weather Control layer 1 every frame, TYPE:BASE:THICKNESS[:COVERAGE[:WIND:FROM]]
   std::optional<sky::CloudLayer> cloud;  // cloudSpec parsed by run()
   // Weather Control only when asked for (a script, a fog or precipitation): without it the node
   // keeps the fog and precipitation of its own configuration.
@@ -81,6 +81,8 @@ cigi::WeatherControl cloudLayerPacket(const sky::CloudLayer& l) {
   w.thicknessM = static_cast<float>(l.thicknessM);
   w.coveragePct = static_cast<float>(l.coveragePct);
   w.severity = static_cast<std::uint8_t>(l.severity);
+  w.horizontalWindSpeedMps = static_cast<float>(l.windSpeedMps);
+  w.windDirectionDeg = static_cast<float>(l.windFromDeg);  // CIGI: the direction it blows from
   return w;
 }
 
@@ -146,7 +148,8 @@ std::vector<std::uint8_t> message(std::uint32_t frame, double pathTime, const Ho
       packets.push_back(layer);
     }
   }
-  if (o.cloud) packets.push_back(cloudLayerPacket(*o.cloud));
+  // Cloud layer 1: the script's step where the script has clouds (off where it says none), else --cloud.
+  if (weather.cloud) packets.push_back(cloudLayerPacket(*weather.cloud));
   const auto order = o.littleEndian ? protocol::ByteOrder::little : protocol::ByteOrder::big;
   std::vector<std::uint8_t> bytes;
   const std::string error = o.cigiVersion == 4 ? cigi::encodeMessage4(packets, order, bytes)
@@ -229,6 +232,7 @@ int run(HostOptions o) {
   constant.visibilityM = o.visibilityM;
   constant.fogVisibilityM = o.fogVisibilityM.value_or(0.0);
   constant.fogTopM = o.fogTopM;
+  constant.cloud = o.cloud;
   if (o.precipitation) {
     constant.precipitation = weather::parsePrecipitation(*o.precipitation);  // "none": none
     constant.precipitationSeverity = o.precipitationSeverity;
@@ -336,11 +340,14 @@ void registerHostCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(0, 5));
   c->add_option("--weather", o->weatherFile,
                 "Weather script CSV: time_s, visibility_m, humidity_pct, fog_visibility_m, fog_top_m [, precipitation, "
-                "severity, precipitation_visibility_m, precipitation_top_m], each held until the next (e.g. "
-                "config/fog_lifting.csv, config/showers.csv); replaces --visibility, --fog-* and --precipitation*")
+                "severity, precipitation_visibility_m, precipitation_top_m [, cloud]], each held until the next (e.g. "
+                "config/fog_lifting.csv, config/showers.csv, config/ceiling_lowering.csv); replaces --visibility, "
+                "--fog-* and --precipitation* (and --cloud where it has the cloud column)")
       ->check(CLI::ExistingFile);
   c->add_option("--cloud", o->cloudSpec,
-                "Weather Control layer 1 every frame: TYPE:BASE:THICKNESS[:COVERAGE] (m, %), e.g. stratus:300:400:100");
+                "Weather Control layer 1 every frame: TYPE:BASE:THICKNESS[:COVERAGE[:WIND:FROM]] (m, %, m/s, degrees it "
+                "blows from), e.g. stratus:300:400:100 or cumulus:1200:800:50:10:270; a --weather script with a "
+                "cloud column replaces it");
   c->add_option("--drop-every", o->dropEvery, "Drop every Nth datagram (loss test)")->check(CLI::Range(0, 1000000));
   c->add_flag("--swap-pairs", o->swapPairs, "Send datagrams in swapped pairs (reordering test)");
   c->add_flag("--loop", o->loop, "Fly the path round and round for --duration");

@@ -2,6 +2,7 @@
 
 #include "node/common/config_error.h"
 #include "node/host/host_script.h"
+#include "physics/weather/cloud_layer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,6 +29,17 @@ HostWeather HostWeather::parse(const std::string& text, const std::string& sourc
         fail("severity " + std::to_string(s.precipitationSeverity) + " must be in [0, 5]");
       if (!(s.precipitationVisibilityM >= 0.0) || !(s.precipitationTopM > 0.0))
         fail("precipitation_visibility_m must be 0 (the severity's) or more and precipitation_top_m above 0");
+      std::string cloud;
+      if (fields >> cloud) {
+        s.cloud = sky::CloudLayer{};  // "none": layer 1 sent switched off
+        if (cloud != "none") {
+          try {
+            s.cloud = weather::parseCloudSpec(cloud);
+          } catch (const std::invalid_argument& e) {
+            fail(std::string("cloud: ") + e.what());
+          }
+        }
+      }
     }
     if (fields >> extra) fail("unexpected \"" + extra + "\" after the last field");
     for (double v : {s.timeS, s.visibilityM, s.humidityPct, s.fogVisibilityM, s.fogTopM, s.precipitationVisibilityM,

@@ -2,14 +2,17 @@
 // Scripted weather for the host emulator (`skyig host --weather FILE`): what the host sends from
 // each time on, held until the next line. CSV, one change a line:
 //   time_s, visibility_m, humidity_pct, fog_visibility_m, fog_top_m
-//   [, precipitation, severity, precipitation_visibility_m, precipitation_top_m]
+//   [, precipitation, severity, precipitation_visibility_m, precipitation_top_m [, cloud]]
 // with '#' comments and an optional header line; a fog visibility of 0 switches the ground fog
 // (CIGI Weather Control layer 0) off; precipitation is none, rain, snow, sleet, hail, sand or
-// dust (layers 4-9; the others off), its visibility 0 the severity's (0-5).
+// dust (layers 4-9; the others off), its visibility 0 the severity's (0-5); cloud is cloud
+// layer 1 as TYPE:BASE:THICKNESS[:COVERAGE[:WIND:FROM]] (physics/weather/cloud_layer.h) or
+// none (sent switched off). A script without the cloud column leaves layer 1 to --cloud.
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "physics/common/cloud_layer.h"
 #include "physics/weather/precipitation.h"
 
 namespace skyig::services {
@@ -24,6 +27,7 @@ struct WeatherStep {
   int precipitationSeverity = 2;
   double precipitationVisibilityM = 0.0;  // 0: the severity's
   double precipitationTopM = 1500.0;
+  std::optional<sky::CloudLayer> cloud;  // cloud layer 1 to send (enabled or not); none: not sent
 };
 
 class HostWeather {

@@ -71,8 +71,9 @@ sky::CloudLayer parseCloudSpec(std::string_view spec) {
     else parts.back() += c;
   }
   const std::string quoted = "\"" + std::string(spec) + "\"";
-  if (parts.size() < 3 || parts.size() > 4)
-    throw std::invalid_argument(quoted + " is not TYPE:BASE:THICKNESS[:COVERAGE], e.g. stratus:300:400:100");
+  if (parts.size() < 3 || parts.size() == 5 || parts.size() > 6)
+    throw std::invalid_argument(quoted + " is not TYPE:BASE:THICKNESS[:COVERAGE[:WIND:FROM]], e.g. stratus:300:400:100 or "
+                                "cumulus:1200:800:50:10:270");
   sky::CloudLayer l;
   l.enabled = true;
   const std::optional<CloudType> type = parseCloudType(parts[0]);
@@ -85,7 +86,11 @@ sky::CloudLayer parseCloudSpec(std::string_view spec) {
   };
   l.baseM = number(parts[1], "the base");
   l.thicknessM = number(parts[2], "the thickness");
-  l.coveragePct = parts.size() == 4 ? number(parts[3], "the coverage") : 100.0;
+  l.coveragePct = parts.size() >= 4 ? number(parts[3], "the coverage") : 100.0;
+  if (parts.size() == 6) {
+    l.windSpeedMps = number(parts[4], "the wind speed");
+    l.windFromDeg = number(parts[5], "the wind's direction");
+  }
   validate(l);
   return l;
 }

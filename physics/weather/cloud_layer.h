@@ -28,9 +28,10 @@ std::optional<sky::CloudType> cloudTypeOfCigi(int value);
 // is always good.
 void validate(const sky::CloudLayer& layer);
 
-// A layer from "TYPE:BASE:THICKNESS[:COVERAGE]" (metres above the ground, percent; coverage 100
-// when not given), as `render --cloud` and `host --cloud` take it; throws std::invalid_argument
-// naming the part that is wrong.
+// A layer from "TYPE:BASE:THICKNESS[:COVERAGE[:WIND:FROM]]" (metres above the ground, percent;
+// coverage 100 when not given; the wind that moves it in m/s and the direction it blows from in
+// degrees from true north, calm when not given), as `render --cloud`, `host --cloud` and the
+// host's weather script take it; throws std::invalid_argument naming the part that is wrong.
 sky::CloudLayer parseCloudSpec(std::string_view spec);
 
 // "stratus base 300 m, 400 m thick, 100 % cover" for the node's log.

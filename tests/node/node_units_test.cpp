@@ -307,6 +307,26 @@ TEST(HostWeather, HoldsEachStepAndNamesBadLines) {
   EXPECT_THROW(HostWeather::parse("0,3000,95,0,0,rain,3,0,1200,7\n", "r.csv"), ConfigError);
   const HostWeather showers = HostWeather::load(std::string(SKYIG_SOURCE_DIR) + "/config/showers.csv");
   EXPECT_EQ(showers.at(59.0).timeS, 59.0);  // a change every second for a minute
+  EXPECT_FALSE(showers.at(0.0).cloud) << "no cloud column: layer 1 is left to --cloud";
+  // Cloud layer 1 after the precipitation: a spec, or none (sent switched off).
+  const HostWeather decks =
+      HostWeather::parse("0,9000,80,0,0,none,0,0,1500,stratus:900:400:100\n30,9000,80,0,0,none,0,0,1500,none\n", "c.csv");
+  ASSERT_TRUE(decks.at(0.0).cloud);
+  EXPECT_TRUE(decks.at(0.0).cloud->enabled);
+  EXPECT_EQ(decks.at(0.0).cloud->baseM, 900.0);
+  ASSERT_TRUE(decks.at(30.0).cloud);
+  EXPECT_FALSE(decks.at(30.0).cloud->enabled);
+  try {
+    HostWeather::parse("0,9000,80,0,0,none,0,0,1500,stratus:900:400:100\n5,9000,80,0,0,none,0,0,1500,stratus:900:-4\n",
+                       "c.csv");
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("c.csv:2: cloud: ", 0), 0u) << e.what();
+  }
+  const HostWeather ceiling = HostWeather::load(std::string(SKYIG_SOURCE_DIR) + "/config/ceiling_lowering.csv");
+  ASSERT_TRUE(ceiling.at(0.0).cloud);
+  ASSERT_TRUE(ceiling.at(60.0).cloud);
+  EXPECT_GT(ceiling.at(0.0).cloud->baseM, ceiling.at(60.0).cloud->baseM) << "the ceiling comes down";
 }
 
 // A CIGI 4.0 host states the seconds (a float the 3.3 Celestial Sphere Control lacks): the

@@ -42,6 +42,14 @@ TEST(CloudLayer, ValuesALayerCannotBeDrawnWithAreRefusedByName) {
   EXPECT_EQ(deck.coveragePct, 100.0);
   EXPECT_NO_THROW(validate(deck));
   EXPECT_EQ(parseCloudSpec("cumulus:1200:1500:50").coveragePct, 50.0);
+  // The wind that moves it: speed and the direction it blows from, both or neither.
+  const CloudLayer windy = parseCloudSpec("cumulus:1200:800:50:10:270");
+  EXPECT_EQ(windy.windSpeedMps, 10.0);
+  EXPECT_EQ(windy.windFromDeg, 270.0);
+  EXPECT_EQ(deck.windSpeedMps, 0.0);
+  EXPECT_THROW(parseCloudSpec("cumulus:1200:800:50:10"), std::invalid_argument);
+  EXPECT_THROW(parseCloudSpec("cumulus:1200:800:50:-3:270"), std::invalid_argument);
+  EXPECT_THROW(parseCloudSpec("cumulus:1200:800:50:10:270:5"), std::invalid_argument);
   EXPECT_THROW(parseCloudSpec("stratus:300"), std::invalid_argument);
   EXPECT_THROW(parseCloudSpec("stratus:300:4oo"), std::invalid_argument);
   EXPECT_THROW(parseCloudSpec("stratus:300:400:150"), std::invalid_argument);

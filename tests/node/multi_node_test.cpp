@@ -70,6 +70,7 @@ struct StartOfFrameSeen {
 struct DomeNode {
   std::string name;
   fs::path dump, frames, log, stats;
+  fs::path recording;  // its host stream, when the dome records (MultiNodeDome::record_)
   std::unique_ptr<UdpSocket> startOfFrame;
   std::vector<StartOfFrameSeen> sofs;
   std::unique_ptr<SkyigProcess> process;
@@ -130,10 +131,12 @@ class MultiNodeDome : public ::testing::Test {
       n->frames = dir_ / (name + "-frames");
       n->log = dir_ / (name + ".log");
       n->stats = dir_ / (name + "-stats.json");
+      if (record_) n->recording = dir_ / (name + ".pcap");
       n->startOfFrame = std::make_unique<UdpSocket>(Endpoint{"127.0.0.1", 0});
       n->process = std::make_unique<SkyigProcess>(
           "serve --config " + config_.string() + " --node " + name + " --headless --dump-state " + n->dump.string() +
               " --stats-json " + n->stats.string() +
+              (n->recording.empty() ? std::string() : " --record " + n->recording.string()) +
               " --save-frames " + n->frames.string() + " --save-every 1 --reply-to " +
               (answerTheHost ? "127.0.0.1:" + std::to_string(hostPort_) : n->startOfFrame->localEndpoint().toString()),
           n->log);
@@ -181,6 +184,7 @@ class MultiNodeDome : public ::testing::Test {
 
   fs::path dir_;
   std::string hostOutput_;
+  bool record_ = false;  // each node started records its host stream (DomeNode::recording)
 
  private:
   void listen() {
@@ -586,6 +590,107 @@ TEST_F(MultiNodeDome, LockStepHostIsShownEveryFrameByEveryNode) {
     for (std::size_t i = kLast + 1; i < sequence.size(); ++i) EXPECT_EQ(sequence[i], kLast) << name;
   }
   EXPECT_EQ(expectShownAlike(node("ig1"), node("ig2")).size(), kLast + 1);
+}
+
+// Clouds are a function of the host's state and clock: two nodes fed one stream under a broken
+// cumulus deck in a 10 m/s westerly show the same clouds in every host frame (the same EXR
+// within float rounding, the same PNG within the dither), the wind moves them between host
+// frames, and two replays of a node's recording write the same bytes, which are the live
+// node's clouds.
+TEST_F(MultiNodeDome, TwoNodesAndAReplayShowTheSameCloudsMovedByTheHostsWind) {
+  writeConfig("[sky]\nmodel = \"physical\"\natmosphere_tables = \"small\"\natmosphere_cache = \"" +
+                  std::string(SKYIG_BINARY_DIR) + "/atmosphere-test-cache/skyig\"\n"
+                  // the host's visibility (skyig host's default): its tables are the node's own
+                  "[atmosphere]\nvisibility_km = 40.0\n",
+              "[[channel]]\nname = \"up\"\npitch = 45.0\nleft = 40.0\nright = 40.0\ndown = 25.0\nup = 25.0\n"
+              "width = 64\nheight = 40\n");
+  // A hover over Innsbruck, facing east into the morning sun's side of the sky.
+  std::ofstream(dir_ / "path.csv") << "time_s, lat, lon, alt_m, yaw, pitch, roll\n0, 47.2603, 11.3439, 620, 90, 0, 0\n"
+                                      "3, 47.2603, 11.3439, 620, 90, 0, 0\n";
+  record_ = true;
+  ASSERT_NO_FATAL_FAILURE(startNodes({"ig1", "ig2"}, /*answerTheHost=*/true));
+  constexpr std::uint32_t kLast = 30;  // 3 s at 10 Hz, 20 times as fast: 60 s of host time
+  ASSERT_EQ(flyHost("--path " + (dir_ / "path.csv").string() +
+                    " --rate 10 --duration 3 --start-utc 2026-06-21T09:00:00Z --speed 20 --lockstep 2 "
+                    "--lockstep-timeout 20 --cloud cumulus:1200:800:50:10:270"),
+            0)
+      << hostOutput_;
+  finish(kLast);
+  DomeNode& a = node("ig1");
+  DomeNode& b = node("ig2");
+  const auto shownA = a.hostFrames(), shownB = b.hostFrames();
+  EXPECT_EQ(expectShownAlike(a, b).size(), kLast + 1);
+
+  auto exrOf = [](const DomeNode& n, const nlohmann::json& line) {
+    return skyig::render::readExr(n.savedFrame(line["ig_frame"].get<std::uint64_t>(), "", ".exr").string());
+  };
+  // The mean relative difference of two frames' luminance (channel G stands for it here).
+  auto meanRelative = [](const skyig::render::ExrFile& x, const skyig::render::ExrFile& y) {
+    double sum = 0.0;
+    for (std::size_t i = 1; i < x.image.rgba.size(); i += 4) {
+      const double u = x.image.rgba[i], v = y.image.rgba[i];
+      sum += std::abs(u - v) / (std::abs(v) + 1e-3);
+    }
+    return sum / static_cast<double>(x.image.rgba.size() / 4);
+  };
+  for (std::uint32_t frame = 0; frame <= kLast; ++frame) {
+    ASSERT_TRUE(shownA.count(frame) && shownB.count(frame)) << frame;
+    const auto ea = exrOf(a, shownA.at(frame)), eb = exrOf(b, shownB.at(frame));
+    ASSERT_EQ(ea.image.rgba.size(), eb.image.rgba.size());
+    for (std::size_t i = 0; i < ea.image.rgba.size(); ++i)
+      ASSERT_NEAR(ea.image.rgba[i], eb.image.rgba[i], 1e-5f * std::abs(ea.image.rgba[i]) + 1e-9f) << "host frame " << frame;
+    const auto pa = skyig::sky::readPngRgb8(a.savedFrame(shownA.at(frame)["ig_frame"].get<std::uint64_t>(), "", ".png").string(), "ig1");
+    const auto pb = skyig::sky::readPngRgb8(b.savedFrame(shownB.at(frame)["ig_frame"].get<std::uint64_t>(), "", ".png").string(), "ig2");
+    ASSERT_EQ(pa.rgb.size(), pb.rgb.size());
+    for (std::size_t i = 0; i < pa.rgb.size(); ++i) ASSERT_LE(std::abs(pa.rgb[i] - pb.rgb[i]), 1) << "host frame " << frame;
+  }
+  const auto first = exrOf(a, shownA.at(0)), last = exrOf(a, shownA.at(kLast));
+  EXPECT_EQ(std::get<std::string>(first.attributes.at("skyig:cloud_layer_1")), "cumulus base 1200 m, 800 m thick, 50 % cover");
+  // 60 s of a 10 m/s wind move the field 600 m, over half a cumulus cell: the broken deck's
+  // pattern changes (the sun moves 0.25 deg meanwhile, which alone changes the sky by well
+  // under 1 %).
+  const double moved = meanRelative(last, first);
+  std::cout << "clouds between host frames 0 and " << kLast << ": mean luminance change " << 100.0 * moved << " %\n";
+  EXPECT_GT(moved, 0.05);
+
+  // Two replays of ig1's recording: the same bytes, and the live node's clouds (its EXR for the
+  // same host frame, within float rounding).
+  auto replay = [&](const std::string& out) {
+    const std::string command = std::string(SKYIG_EXECUTABLE) + " replay " + a.recording.string() + " --config " +
+                                (dir_ / "dome.toml").string() + " --quiet --exr --out " + (dir_ / out).string() +
+                                " --dump-state " + (dir_ / (out + ".jsonl")).string() + " >" +
+                                (dir_ / (out + ".log")).string() + " 2>&1";
+    return std::system(command.c_str());
+  };
+  ASSERT_EQ(replay("replay1"), 0) << slurp(dir_ / "replay1.log");
+  ASSERT_EQ(replay("replay2"), 0) << slurp(dir_ / "replay2.log");
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir_ / "replay1")) {
+    EXPECT_EQ(slurp(e.path()), slurp(dir_ / "replay2" / e.path().filename())) << e.path().filename();
+    ++files;
+  }
+  EXPECT_GT(files, static_cast<int>(kLast));
+  int matched = 0;
+  for (const auto& line : completeDumpLines(dir_ / "replay1.jsonl")) {
+    if (!line["host_frame"].is_number()) continue;
+    const auto frame = line["host_frame"].get<std::uint32_t>();
+    // At the host's instant (before the host's second frame the replay's clock runs at the
+    // recording's pace, not yet the host's).
+    if (!shownA.count(frame) || line["used"]["utc"] != shownA.at(frame)["used"]["utc"]) continue;
+    char prefix[32];
+    std::snprintf(prefix, sizeof prefix, "frame_%06llu_", static_cast<unsigned long long>(line["ig_frame"].get<std::uint64_t>()));
+    for (const auto& e : fs::directory_iterator(dir_ / "replay1"))
+      if (e.path().filename().string().rfind(prefix, 0) == 0 && e.path().extension() == ".exr") {
+        const auto replayed = skyig::render::readExr(e.path().string()), live = exrOf(a, shownA.at(frame));
+        ASSERT_EQ(replayed.image.rgba.size(), live.image.rgba.size());
+        for (std::size_t i = 0; i < live.image.rgba.size(); ++i)
+          ASSERT_NEAR(replayed.image.rgba[i], live.image.rgba[i], 1e-5f * std::abs(live.image.rgba[i]) + 1e-9f)
+              << "host frame " << frame;
+        ++matched;
+      }
+  }
+  std::cout << files << " replayed files identical twice; " << matched << " replayed frames against the live node's\n";
+  EXPECT_GT(matched, static_cast<int>(kLast / 2));
 }
 
 // The worker of a synchronous node builds states only at host instants: a silent host gets no

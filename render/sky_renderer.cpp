@@ -171,7 +171,7 @@ bool SkyRenderer::drawSky(const skyig::sky::SkyState& state, const skyig::sky::C
     // night, only where they change what the displays show (sky/shown_layers.h), and always in
     // a goggle, which sees far fainter light than the eye.
     const weather::FogLayers drawn = skyig::sky::isGoggle(channel)
-                                         ? skyig::sky::goggleFogLayers(state.fog, skyig::sky::nvisClassOf(channel.band))
+                                         ? skyig::sky::goggleFogLayers(state, skyig::sky::nvisClassOf(channel.band))
                                          : sky::drawnFogLayers(state.fog);
     // A broken deck: drawn where its field has cloud (the layers with its gaps filled, mixed per
     // pixel with those without it).

@@ -62,8 +62,18 @@ double nvisHazeExtinctionScale(nvis::NvisClass nvisClass) {
   return std::pow(weighted / total / 550.0, -kAngstromExponent);
 }
 
-weather::FogLayers goggleFogLayers(const FogState& fog, nvis::NvisClass nvisClass) {
-  weather::FogLayers layers = drawnFogLayers(fog);
+weather::FogLayers goggleFogLayers(const SkyState& state, nvis::NvisClass nvisClass) {
+  const FogState& fog = state.fog;
+  const NvisWeights w = nvisWeights(nvisClass == nvis::NvisClass::A ? SpectralBand::NvisClassA : SpectralBand::NvisClassB,
+                                    state, glm::dvec3(0.0, 0.0, 1.0));
+  weather::FogLayers layers = fog.sunlit;
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    // Grey droplets keep the spectrum of what lights the top: the direct light and its sky in
+    // their shares of its lux (the sky's weights are along no view: they carry no transmittance).
+    const double sun = fog.sunShare[i] * w.sunDisc + (1.0 - fog.sunShare[i]) * w.sunlitSky;
+    const double moon = fog.moonShare[i] * w.moon + (1.0 - fog.moonShare[i]) * w.moonlitSky;
+    layers[i].top_irradiance = sun * fog.sunlit[i].top_irradiance + moon * fog.moonIrradiance[i];
+  }
   layers[0].extinction *= nvisHazeExtinctionScale(nvisClass);  // the haze below the tables (FogState's order)
   return layers;
 }
@@ -113,31 +123,6 @@ NvisWeights nvisWeights(SpectralBand band, const SkyState& state, const glm::dve
   w.zodiacal = perLuminance(nvis::zodiacalSpectrum(), alongView, c);
   w.milkyWay = perLuminance(nvis::integratedStarlightSpectrum(), alongView, c);
   w.nightGround = w.airglow;
-  if (state.fog.any() && state.conditions.atmosphere) {
-    // The layers' share of the light along the centre, and the spectrum of what lights them.
-    const weather::FogLayers layers = goggleFogLayers(state.fog, c);
-    const double h = glm::length(atmosphere::physicalCamera(*state.conditions.atmosphere, state.observer.heightM)) -
-                     state.conditions.atmosphere->parameters(0).bottom_radius;
-    const glm::dvec3 view = glm::length(viewEnu) > 0.0 ? glm::normalize(viewEnu) : glm::dvec3(0.0, 1.0, 0.0);
-    const double replaced = 1.0 - weather::fogAlong(layers, h, view.z).a;
-    double depth = 0.0, sunShare = 0.0, moonShare = 0.0;
-    for (std::size_t i = 0; i < layers.size(); ++i) {
-      const double tau = shader::fogColumnDepth(layers[i]);
-      depth += tau;
-      sunShare += tau * state.fog.sunShare[i];
-      moonShare += tau * state.fog.moonShare[i];
-    }
-    if (depth > 0.0) {
-      sunShare /= depth;
-      moonShare /= depth;
-    }
-    // The fog lit by the sun, and by the moon, is lit by their direct light and their skies' in
-    // those shares (grey droplets keep the spectrum of what lights them).
-    const double sunFogLight = sunShare * w.sunDisc + (1.0 - sunShare) * w.sunlitSky;
-    const double moonFogLight = moonShare * w.moon + (1.0 - moonShare) * w.moonlitSky;
-    w.sunlitSky += replaced * (sunFogLight - w.sunlitSky);
-    w.moonlitSky += replaced * (moonFogLight - w.moonlitSky);
-  }
   return w;
 }
 

@@ -37,13 +37,6 @@ struct NvisWeights {
 // The weights of `band` for `state` seen along the ENU direction `viewEnu` (the channel's centre).
 NvisWeights nvisWeights(SpectralBand band, const SkyState& state, const glm::dvec3& viewEnu);
 
-// Under the weather (sky/fog_state.h) the sunlit sky's weight moves, along the channel's centre,
-// from the clear sky's towards that of the light the layers scatter: grey droplets keep the
-// spectrum of what lights their top, the direct sun (sunDisc's) and the sky (sunlitSky's) in
-// their shares of its lux, weighted by how much of the view's light the layers replace (1 - their
-// transmittance there). A fog therefore reads brighter in a goggle than the blue sky of the same
-// luminance, as sunlight does.
-
 // The haze's extinction in the goggle's band over its extinction at 550 nm: aerosols scatter
 // less at longer wavelengths, extinction ~ lambda^-alpha (Angstrom 1929, "On the atmospheric
 // transmission of sun radiation and on dust in the air", Geografiska Annaler 11, 156-166), with
@@ -52,9 +45,15 @@ NvisWeights nvisWeights(SpectralBand band, const SkyState& state, const glm::dve
 double nvisHazeExtinctionScale(nvis::NvisClass nvisClass);
 
 // The layers a goggle channel draws: the haze below the tables' visibility thinner by
-// nvisHazeExtinctionScale (a goggle sees farther through haze than the eye), the fog, rain, snow
-// and dust as the eye's (droplets, drops and grains far larger than the wavelength: grey).
-weather::FogLayers goggleFogLayers(const FogState& fog, nvis::NvisClass nvisClass);
+// nvisHazeExtinctionScale (a goggle sees farther through haze than the eye), the fog, rain, snow,
+// dust and cloud as the eye's (droplets, drops and grains far larger than the wavelength: grey),
+// and their light in the goggle's band: each layer's top lit by `state`'s sun and moon with each
+// light's top irradiance times the NVIS radiance per cd/m^2 of what lights it (the direct light's
+// and its sky's, in their shares of the top's lux: grey droplets keep that spectrum). A goggle's
+// table (FogTables' nvisA, nvisB) therefore holds NVIS radiance as the Rec.709 luminance of its
+// rgb, which the sky pass adds to the air's NVIS radiance: a fog reads brighter in a goggle than
+// the blue sky of the same luminance, as sunlight does, and a moonlit deck as moonlight.
+weather::FogLayers goggleFogLayers(const SkyState& state, nvis::NvisClass nvisClass);
 
 // The state's precomputed table (FogTables) for a channel of `band`: the eye's, or its goggle
 // class's; null where the state has none.

@@ -101,7 +101,8 @@ std::shared_ptr<const night::StarField> starFieldOf(const SkyState& s) {
 
 // The sky pass's tables for the eye and the goggles (sky/fog_state.h, FogTables), at the height
 // the renderer computes them for: the physical camera's above the ground.
-FogTables fogTablesOf(const FogState& fog, const atmosphere::AtmosphereModel& model, double observerHeightM) {
+FogTables fogTablesOf(const SkyState& state, const atmosphere::AtmosphereModel& model, double observerHeightM) {
+  const FogState& fog = state.fog;
   FogTables t;
   t.heightM = glm::length(atmosphere::physicalCamera(model, observerHeightM)) - model.parameters(0).bottom_radius;
   // Where a deck is broken, the sky pass mixes the table with its gaps filled and the one without
@@ -116,13 +117,13 @@ FogTables fogTablesOf(const FogState& fog, const atmosphere::AtmosphereModel& mo
   };
   const weather::FogLayers eye = clouded(fog, drawnFogLayers(fog));
   t.eye = tableOf(eye, eye, nullptr);
-  t.nvisA = tableOf(clouded(fog, goggleFogLayers(fog, nvis::NvisClass::A)), eye, t.eye);
-  t.nvisB = tableOf(clouded(fog, goggleFogLayers(fog, nvis::NvisClass::B)), eye, t.eye);
+  t.nvisA = tableOf(clouded(fog, goggleFogLayers(state, nvis::NvisClass::A)), eye, t.eye);
+  t.nvisB = tableOf(clouded(fog, goggleFogLayers(state, nvis::NvisClass::B)), eye, t.eye);
   if (broken) {
     const weather::FogLayers clearEye = withoutBrokenDecks(fog, drawnFogLayers(fog));
     t.clearEye = tableOf(clearEye, clearEye, nullptr);
-    t.clearNvisA = tableOf(withoutBrokenDecks(fog, goggleFogLayers(fog, nvis::NvisClass::A)), clearEye, t.clearEye);
-    t.clearNvisB = tableOf(withoutBrokenDecks(fog, goggleFogLayers(fog, nvis::NvisClass::B)), clearEye, t.clearEye);
+    t.clearNvisA = tableOf(withoutBrokenDecks(fog, goggleFogLayers(state, nvis::NvisClass::A)), clearEye, t.clearEye);
+    t.clearNvisB = tableOf(withoutBrokenDecks(fog, goggleFogLayers(state, nvis::NvisClass::B)), clearEye, t.clearEye);
   }
   return t;
 }
@@ -284,7 +285,7 @@ SkyState buildSkyState(const ObserverState& observer, const SkyConditions& condi
     };
     if (s.fog.any()) {
       s.extinction = std::make_shared<const atmosphere::ExtinctionProfile>(s.extinction->dimmedBy(throughFog));
-      s.fog.tables = fogTablesOf(s.fog, *s.conditions.atmosphere, observer.heightM);
+      s.fog.tables = fogTablesOf(s, *s.conditions.atmosphere, observer.heightM);
     }
   }
   s.starField = starFieldOf(s);

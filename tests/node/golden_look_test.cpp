@@ -54,12 +54,15 @@ const Scene kScenes[] = {
     {"fog_above", "--utc 2026-06-21T09:00:00Z --yaw 270 --alt 500 --pitch -5 --fog-visibility 0.4 --fog-top 200"},
     // Cloud decks (physics/weather/cloud_deck.h): a full stratus deck 300-700 m from under it and
     // from 3 km above it (the sea of cloud), broken cumulus at 40 %, an altostratus deck at
-    // sunset, and a broken stratocumulus under the full moon through a class A goggle.
+    // sunset, and a broken stratocumulus under the full moon, seen by the eye and through a class A
+    // goggle.
     {"overcast_below", "--utc 2026-06-21T10:00:00Z --yaw 180 --alt 2 --pitch 20 --cloud stratus:300:400:100"},
     {"sea_of_cloud", "--utc 2026-06-21T10:00:00Z --yaw 140 --alt 3000 --pitch -5 --cloud stratus:300:400:100"},
     {"broken_cumulus", "--utc 2026-06-21T10:00:00Z --yaw 140 --alt 2 --pitch 20 --cloud cumulus:1200:800:40"},
     {"sunset_deck", "--sun-azimuth 300 --sun-elevation -1 --yaw 300 --alt 2 --pitch 10 --cloud altostratus:3000:800:100"},
     {"goggle_under_cloud", "--utc 2026-12-25T17:40:00Z --yaw 60 --pitch 15 --alt 2 --goggle A --cloud stratocumulus:1500:500:60"},
+    // The full moon 64 deg up in a gap of a broken stratocumulus deck (50 %), its cloud lit by it.
+    {"moonlit_broken_deck", "--utc 2026-12-24T23:00:00Z --yaw 150 --pitch 25 --alt 2 --cloud stratocumulus:1500:500:50"},
     // Night-vision goggles (class A, P43; class B, P45): the moon with its halo, and the
     // moonless night's stars and airglow through the tube's noise (its hash is the frame's
     // instant: the same on every run).

@@ -997,7 +997,7 @@ TEST_F(GlRender, TheFogTableMadeWithTheStateDrawsTheFrameTheRenderThreadWould) {
                    c.atmosphere->parameters(0).bottom_radius;
   EXPECT_EQ(t.heightM, h);
   EXPECT_EQ(*t.eye, weather::fogTable(drawnFogLayers(s.fog), h));
-  EXPECT_EQ(*t.nvisB, weather::fogTable(goggleFogLayers(s.fog, nvis::NvisClass::B), h));
+  EXPECT_EQ(*t.nvisB, weather::fogTable(goggleFogLayers(s, nvis::NvisClass::B), h));
   EXPECT_NE(*t.nvisA, *t.eye);  // the haze thinner in the goggle's band
 
   const ChannelConfig ch = channel(-2.0);

@@ -11,7 +11,9 @@
 #include "sky/night_probe.h"
 #include "physics/goggle/night_spectra.h"
 #include "sky/nvis_weights.h"
+#include "sky/fog_state.h"
 #include "sky/sky_state.h"
+#include "physics/weather/weather_physics.h"
 #include "tests/physics/atmosphere/shared_models.h"
 #include "physics/common/units.h"
 
@@ -329,4 +331,109 @@ TEST_F(GoggleChannelGl, ReplayedFramesAreBitIdentical) {
   EXPECT_EQ(first.rgba, again.rgba);
   renderer_->draw(later, c);
   EXPECT_NE(renderer_->readDisplay().rgba, first.rgba);
+}
+
+namespace {
+
+// A full moon 64 deg up over Innsbruck (24 December 2026, 23:00 UTC) under a broken
+// stratocumulus deck, 50 % cover from 1500 to 2000 m.
+SkyState fullMoonUnderABrokenDeck() {
+  ObserverState o;
+  o.latitudeDeg = 47.26;
+  o.longitudeDeg = 11.34;
+  o.heightM = 600.0;
+  o.utc = {2026, 12, 24, 23.0 * 3600.0};
+  SkyConditions c;
+  c.model = SkyModel::Physical;
+  c.atmosphere = tinyModel();
+  CloudLayer& deck = c.clouds[0];
+  deck.enabled = true;
+  deck.type = CloudType::Stratocumulus;
+  deck.baseM = 1500.0;
+  deck.thicknessM = 500.0;
+  deck.coveragePct = 50.0;
+  SkyState s = buildSkyState(o, c);
+  s.starField = nullptr;  // the stars are point sources of their own (their test is the star field's)
+  return s;
+}
+
+// A fog table's entry for a view of cosine mu to the vertical, read as the sky pass's sampler1D
+// reads it (linear between texel centres, fogTableU's axis).
+glm::dvec4 tableAt(const std::vector<glm::vec4>& table, double mu) {
+  const double x = skyig::shader::fogTableU(mu) * static_cast<double>(table.size()) - 0.5;
+  const double i = std::clamp(std::floor(x), 0.0, static_cast<double>(table.size() - 2));
+  const double f = std::clamp(x - i, 0.0, 1.0);
+  const auto k = static_cast<std::size_t>(i);
+  return glm::mix(glm::dvec4(table[k]), glm::dvec4(table[k + 1]), f);
+}
+
+}  // namespace
+
+// Under a moonlit broken deck the goggle's image is the probe's NVIS radiance composed with the
+// deck as the field has it: in a gap the clear sky's (the probe's lights), behind a cloud the
+// deck's own light (its moonlit top's light through it, weighed as moonlight: sky/nvis_weights.h)
+// and the little of the moonlit sky behind it its transmittance lets through, and the night's
+// light (airglow, zodiacal light, the Milky Way) dimmed as the probe dims it (by the deck's
+// coverage). The goggle agrees with those figures within 5 %.
+TEST_F(GoggleChannelGl, UnderAMoonlitBrokenDeckTheImageIsTheProbesNvisRadianceThroughTheDeck) {
+  const SkyState s = fullMoonUnderABrokenDeck();
+  ASSERT_TRUE(s.fog.broken());
+  ASSERT_TRUE(s.fog.tables.nvisA && s.fog.tables.clearNvisA);
+  ChannelConfig c = goggleChannel();
+  c.width = 64;
+  c.height = 48;
+  c.offset = {320.0, 60.0, 0.0};  // north-west, away from the moon in the south-east
+  renderer_->draw(s, Attitude{0.0, 0.0, 0.0}, c);
+  const HdrImage hdr = renderer_->readHdr();
+  const glm::dmat3 m = ndcToWorld(eyeToEnu(Attitude{0.0, 0.0, 0.0}, c.offset), goggleFrustum(c));
+  const atmosphere::AtmosphereModel& model = *tinyModel();
+  const double h = glm::length(atmosphere::physicalCamera(model, s.observer.heightM)) - model.parameters(0).bottom_radius;
+
+  // Every 4th pixel inside the tube's circle, sorted into cloud and gap by the deck's field.
+  struct Pixel {
+    int x, y;
+    glm::dvec3 view;
+    double share;
+  };
+  std::vector<Pixel> cloud, gap;
+  for (int y = 2; y < c.height; y += 4)
+    for (int x = 2; x < c.width; x += 4) {
+      if (std::hypot(x + 0.5 - 0.5 * c.width, y + 0.5 - 0.5 * c.height) > 0.45 * c.height) continue;
+      const glm::dvec3 v = glm::normalize(pixelRay(m, x, y, c.width, c.height));
+      const double t = decksTransmittanceAlong(s.fog, h, glm::dvec2(0.0), v);
+      if (t < 1e-3) cloud.push_back({x, y, v, 1.0});
+      if (t > 1.0 - 1e-3) gap.push_back({x, y, v, 0.0});
+    }
+  std::cout << cloud.size() << " pixels behind cloud, " << gap.size() << " in gaps\n";
+  ASSERT_GE(cloud.size(), 5u);
+  ASSERT_GE(gap.size(), 5u);
+
+  auto check = [&](const std::vector<Pixel>& pixels, const char* where) {
+    atmosphere::ProbeRequest request;
+    request.altitudeM = s.observer.heightM;
+    for (const Pixel& p : pixels) request.views.push_back({90.0 - std::asin(p.view.z) / kDeg, std::atan2(p.view.x, p.view.y) / kDeg});
+    const NightProbeResult probe = nightProbe(model, s, request);
+    double goggleSum = 0.0, worst = 0.0, behind = 0.0;
+    for (std::size_t i = 0; i < pixels.size(); ++i) {
+      double sky = 0.0, night = 0.0;  // the air's light (the layers in front of it), the night's own
+      for (const NamedProbeLight& l : probe.views[i].lights) {
+        if (l.name == "sunlit_sky" || l.name == "moonlit_sky") sky += l.nvis.a;
+        if (l.name == "airglow" || l.name == "zodiacal_light" || l.name == "milky_way") night += l.nvis.a;
+      }
+      const glm::dvec4 fog = glm::mix(tableAt(*s.fog.tables.clearNvisA, pixels[i].view.z),
+                                      tableAt(*s.fog.tables.nvisA, pixels[i].view.z), pixels[i].share);
+      const double expected = sky * fog.a + skyig::shader::rec709Luminance(glm::dvec3(fog)) + night;
+      const double goggle = static_cast<double>(hdr.pixel(pixels[i].x, pixels[i].y)[1]);
+      worst = std::max(worst, std::abs(goggle / expected - 1.0));
+      behind = std::max(behind, sky * fog.a / expected);
+      EXPECT_NEAR(goggle, expected, 0.05 * expected) << where << " pixel " << pixels[i].x << "," << pixels[i].y;
+      goggleSum += goggle;
+    }
+    std::cout << where << ": goggle " << goggleSum / static_cast<double>(pixels.size())
+              << " W m^-2 sr^-1 on average, worst " << 100.0 * worst << " % from the probe's figures; the air behind "
+              << 100.0 * behind << " % of it at most\n";
+    return behind;
+  };
+  EXPECT_LT(check(cloud, "behind cloud"), 1e-3) << "a deck 25 optical depths thick hides the moonlit sky behind it";
+  EXPECT_GT(check(gap, "in the gaps"), 0.5) << "in a gap the moonlit sky is most of the light";
 }

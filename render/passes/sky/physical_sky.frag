@@ -274,7 +274,9 @@ void main() {
 #ifdef SKYIG_CLOUD_COVER
   fog = mix(texture(fogClearTable, fogTableU(view.z)), fog, cloudShareAlong(view));
 #endif
-  radiance = max(radiance * fog.a + fog.rgb + disc * fogSunThrough, vec3(0.0));
+  // A goggle's table holds the layers' NVIS radiance as its luminance (sky/nvis_weights.h,
+  // goggleFogLayers: each layer's light weighted by the spectrum of what lights it).
+  radiance = max(radiance * fog.a + inBand(fog.rgb, 1.0) + disc * fogSunThrough, vec3(0.0));
 #ifdef SKYIG_CLOUD_LIGHT
   vec3 single = vec3(0.0);
 #ifndef SKYIG_SUNLESS

@@ -1,6 +1,6 @@
 // The goggle channel under the weather (sky/nvis_weights.h): the haze below the tables thinner in
-// the goggle's band (Angstrom 1929: extinction ~ lambda^-1.3), droplets grey, and the sunlit sky's
-// weight moving towards that of the sunlight the fog scatters.
+// the goggle's band (Angstrom 1929: extinction ~ lambda^-1.3), droplets grey, and the fog's light
+// weighed as the light that lights it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,17 +16,22 @@
 namespace skyig::sky {
 namespace {
 
-// Inside a fog, the level view all fog: a sky's weight in fog is that of the light on the fog's
-// top, the direct light's and its sky's in their shares (`share` the direct one's).
-void expectTheFogWeighsAsItsLight(const char* what, double share, double directWeight, double clearSky, double inFog) {
+// A layer's light in a goggle's band: its top's irradiance from one light (the sun's or the moon's)
+// weighed as that light, the direct light's weight and its sky's in their shares (`share` the
+// direct one's). The goggle's layer holds `goggleLux` (NVIS-weighted) where the eye's holds `eyeLux`.
+void expectTheFogWeighsAsItsLight(const char* what, double share, double directWeight, double clearSky, double eyeLux,
+                                  double goggleLux) {
   ASSERT_GT(share, 0.3);
   ASSERT_LT(share, 1.0);
+  ASSERT_GT(eyeLux, 0.0);
   const double expected = share * directWeight + (1.0 - share) * clearSky;
-  std::printf("%s: clear %.4g, in fog %.4g (the direct light's share of the fog's light %.2f, its weight %.4g)\n", what,
-              clearSky, inFog, share, directWeight);
-  EXPECT_NEAR(inFog, expected, 1e-6 * expected);
-  EXPECT_NE(inFog, clearSky);
+  std::printf("%s: the clear sky's %.4g, the fog's %.4g (the direct light's share of its light %.2f, its weight %.4g)\n",
+              what, clearSky, goggleLux / eyeLux, share, directWeight);
+  EXPECT_NEAR(goggleLux / eyeLux, expected, 1e-6 * expected);
+  EXPECT_NE(goggleLux / eyeLux, clearSky);
 }
+
+double lux(const glm::dvec3& rec709) { return shader::rec709Luminance(rec709); }
 
 // The class's response-weighted mean wavelength gives the haze's extinction ratio: class B's
 // filter cuts further into the red, so it sees through haze better than class A, and both better
@@ -44,8 +49,8 @@ TEST(GoggleWeather, HazeIsThinnerInTheGogglesBandAndThinnestInClassB) {
 // A 2 km haze (the 10 km tables and a layer) and a 200 m fog of 400 m, seen level from 30 m in a
 // class B goggle: the haze layer's extinction is the eye's times the ratio, the fog's the eye's;
 // a black target at the eye's 2 km visibility keeps more contrast in the goggle. Inside the fog
-// (the centre of the view all fog) the sunlit sky's weight lies between the clear sky's and the
-// direct sun's, by the sun's share of the light on the fog's top.
+// the fog's light weighs between the clear sky's weight and the direct sun's, by the sun's share
+// of the light on the fog's top; the air behind it keeps the clear sky's weight.
 TEST(GoggleWeather, TheGoggleSeesFartherInHazeAndWeighsTheFogAsItsLight) {
   atmosphere::ModelConfig config = atmosphere::testing::oneGroupConfig();
   config.medium = atmosphere::applyConditions(config.medium, atmosphere::Conditions{10.0, std::nullopt, std::nullopt});
@@ -59,7 +64,7 @@ TEST(GoggleWeather, TheGoggleSeesFartherInHazeAndWeighsTheFogAsItsLight) {
   o.heightM = 30.0;
   const SkyState hazy = buildSkyState(o, conditions);
   const weather::FogLayers eye = drawnFogLayers(hazy.fog);
-  const weather::FogLayers goggle = goggleFogLayers(hazy.fog, nvis::NvisClass::B);
+  const weather::FogLayers goggle = goggleFogLayers(hazy, nvis::NvisClass::B);
   EXPECT_NEAR(goggle[0].extinction, eye[0].extinction * nvisHazeExtinctionScale(nvis::NvisClass::B), 1e-12);
   const double h = hazy.observer.heightM;
   const double tEye = shader::fogTransmittance(eye[0], h, 0.0, 2000.0);
@@ -75,17 +80,19 @@ TEST(GoggleWeather, TheGoggleSeesFartherInHazeAndWeighsTheFogAsItsLight) {
   const glm::dvec3 level(0.0, 1.0, 0.0);
   const NvisWeights inFog = nvisWeights(SpectralBand::NvisClassB, foggy, level);
   const NvisWeights inClear = nvisWeights(SpectralBand::NvisClassB, clear, level);
-  EXPECT_EQ(goggleFogLayers(foggy.fog, nvis::NvisClass::B)[1].extinction, drawnFogLayers(foggy.fog)[1].extinction);
-  expectTheFogWeighsAsItsLight("class B sunlit sky's weight", foggy.fog.sunShare[1], inClear.sunDisc,
-                               inClear.sunlitSky, inFog.sunlitSky);
-  EXPECT_GT(inFog.sunlitSky, inClear.sunlitSky);
+  const weather::FogLayers goggleFog = goggleFogLayers(foggy, nvis::NvisClass::B);
+  EXPECT_EQ(goggleFog[1].extinction, drawnFogLayers(foggy.fog)[1].extinction);
+  expectTheFogWeighsAsItsLight("class B sunlit fog's weight", foggy.fog.sunShare[1], inClear.sunDisc, inClear.sunlitSky,
+                               lux(foggy.fog.sunlit[1].top_irradiance), lux(goggleFog[1].top_irradiance));
+  EXPECT_GT(lux(goggleFog[1].top_irradiance) / lux(foggy.fog.sunlit[1].top_irradiance), inClear.sunlitSky)
+      << "a fog reads brighter in a goggle than the blue sky of its luminance";
+  EXPECT_EQ(inFog.sunlitSky, inClear.sunlitSky) << "the air behind the fog keeps the clear sky's weight";
   EXPECT_EQ(inFog.sunDisc, inClear.sunDisc);
 }
 
-// The same under a full moon (2026-06-29, 23:00Z, the sun 20 deg down): inside the fog the
-// moonlit sky's weight lies between the clear moonlit sky's and the moonlight's, by the moon's
-// share of the moonlight on the fog's top (before, it kept the clear sky's: the goggle saw the
-// moonlit fog with the spectrum of a blue moonlit sky).
+// The same under a full moon (2026-06-29, 23:00Z, the sun 20 deg down): the moonlit fog's light
+// weighs between the clear moonlit sky's weight and the moonlight's, by the moon's share of the
+// moonlight on the fog's top.
 TEST(GoggleWeather, TheMoonlitFogWeighsAsTheMoonlightThatLightsIt) {
   atmosphere::ModelConfig config = atmosphere::testing::oneGroupConfig();
   const auto model = std::make_shared<const atmosphere::AtmosphereModel>(atmosphere::testing::cachedModel(config));
@@ -101,10 +108,13 @@ TEST(GoggleWeather, TheMoonlitFogWeighsAsTheMoonlightThatLightsIt) {
   SkyState clear = foggy;
   clear.fog = FogState{};
   const glm::dvec3 level(0.0, 1.0, 0.0);
-  const NvisWeights inFog = nvisWeights(SpectralBand::NvisClassA, foggy, level);
   const NvisWeights inClear = nvisWeights(SpectralBand::NvisClassA, clear, level);
-  expectTheFogWeighsAsItsLight("class A moonlit sky's weight", foggy.fog.moonShare[1], inClear.moon,
-                               inClear.moonlitSky, inFog.moonlitSky);
+  // The moon's share of the fog's light alone: the goggle's layer lit by the moon.
+  SkyState moonOnly = foggy;
+  for (weather::FogLayer& l : moonOnly.fog.sunlit) l.top_irradiance = glm::dvec3(0.0);
+  expectTheFogWeighsAsItsLight("class A moonlit fog's weight", foggy.fog.moonShare[1], inClear.moon, inClear.moonlitSky,
+                               lux(foggy.fog.moonIrradiance[1]),
+                               lux(goggleFogLayers(moonOnly, nvis::NvisClass::A)[1].top_irradiance));
 }
 
 }  // namespace

@@ -1,9 +1,6 @@
 #include "sky/nvis_weights.h"
 
-#include "physics/atmosphere/physical_camera.h"
 #include "physics/goggle/nvis_sky.h"
-#include "physics/weather/fog_table.h"
-#include "physics/weather/weather_physics.h"
 
 #include <glm/geometric.hpp>
 

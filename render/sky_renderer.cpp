@@ -271,7 +271,7 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
   glm::ivec4 moonPixels(0);
   if (state.ephemeris) moonPixels = (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, channel);
   if (sky.nightLight && !(sky.nightLayer && sky.drewAll))
-    (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
+    (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state, cloudFieldShown(state));
   if (!stars_) stars_ = std::make_unique<StarPass>();
   glBindVertexArray(emptyVao_);
   // Stars and planets as displayed, against the sky without them; the tone pass adds them to
@@ -300,6 +300,11 @@ void SkyRenderer::drawChannel(const skyig::sky::SkyState& state, const skyig::sk
   // Then into the HDR image in absolute units, every value kept for the EXR.
   hdr_->bindForDrawing();
   stars_->draw(state.starField, ndcToWorld);
+}
+
+CloudFieldView SkyRenderer::cloudFieldShown(const skyig::sky::SkyState& state) const {
+  if (state.conditions.model != skyig::sky::SkyModel::Physical || !physical_) return {};
+  return physical_->cloudField();
 }
 
 SkyRenderer::MappedSky SkyRenderer::drawMappedSky(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
@@ -359,7 +364,7 @@ void SkyRenderer::drawGoggleChannel(const skyig::sky::SkyState& state, const sky
   if (state.ephemeris) {
     (moon_ ? *moon_ : *(moon_ = std::make_unique<MoonPass>())).draw(state, attitude, c);
     if (state.sunAltitude < 0.0)
-      (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state);
+      (nightDiffuse_ ? *nightDiffuse_ : *(nightDiffuse_ = std::make_unique<NightDiffusePass>())).draw(state, cloudFieldShown(state));
   }
   if (!stars_) stars_ = std::make_unique<StarPass>();
   hdr_->bindForDrawing();

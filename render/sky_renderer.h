@@ -146,6 +146,9 @@ class SkyRenderer {
     bool drewAll = false;     // drawSky's answer
     bool folded = false;      // the sky pass mapped every pixel to the display
   };
+  // The broken decks the physical sky pass just drew for `state`, for the night's light drawn
+  // over it (none for another sky).
+  CloudFieldView cloudFieldShown(const skyig::sky::SkyState& state) const;
   MappedSky drawMappedSky(const skyig::sky::SkyState& state, const skyig::sky::Attitude& attitude,
                           const skyig::sky::ChannelConfig& channel, const RenderTarget& toneTarget, float ditherLsb);
   // The same for a goggle channel: its band, its frustum, its intensifier instead of the eye's tone.

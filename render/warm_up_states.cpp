@@ -69,6 +69,14 @@ std::vector<skyig::sky::SkyState> warmUpStates(const skyig::sky::SkyState& first
     const std::size_t clear = states.size();
     for (std::size_t i = 0; i < clear; ++i) states.push_back(underFog(states[i]));
     states.push_back(underCloud(states[0]));  // the first light's only: each costs its programs' compiles
+    // And a night's under the deck, for the night's light through its field (a goggle's night
+    // pass), where the first light is the day's.
+    auto night = [](const skyig::sky::SkyState& s) { return s.ephemeris && s.sunAltitude < 0.0; };
+    for (std::size_t i = 1; i < clear && !night(states[0]); ++i)
+      if (night(states[i])) {
+        states.push_back(underCloud(states[i]));
+        break;
+      }
   }
   return states;
 }

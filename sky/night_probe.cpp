@@ -6,7 +6,9 @@
 #include "physics/stars/star_luminance.h"
 #include "physics/goggle/night_spectra.h"
 #include "physics/goggle/nvis_sky.h"
+#include "sky/fog_state.h"
 #include "sky/sky_state.h"
+#include "physics/atmosphere/physical_camera.h"
 #include "physics/common/units.h"
 
 #include <cmath>
@@ -80,11 +82,17 @@ std::vector<ProbeComponent> nightProbeComponents(const atmosphere::AtmosphereMod
           return nvis::pointSourcesNvis(*f, extinction, v, night::kStarProbeConeRadiusRad).nvis;
         });
   }
-  auto milkyWay = [diffuseSky](const glm::dvec3& v) { return night::nightDiffuseRadiance(*diffuseSky, v).milkyWay; };
+  // The night's own light through a broken deck: behind its cloud or in a gap on this view, over
+  // the profile's mean (cloudFieldFactor), as the sky pass and the goggle draw it.
+  const double eyeM = glm::length(atmosphere::physicalCamera(model, state.observer.heightM)) - model.parameters(0).bottom_radius;
+  auto clouds = [&state, eyeM](const glm::dvec3& v) {
+    return state.fog.broken() ? cloudFieldFactor(state.fog, eyeM, glm::normalize(v)) : 1.0;
+  };
+  auto milkyWay = [diffuseSky, clouds](const glm::dvec3& v) { return clouds(v) * night::nightDiffuseRadiance(*diffuseSky, v).milkyWay; };
   add("milky_way", milkyWay, along(nvis::integratedStarlightSpectrum(), milkyWay));
-  auto zodiacal = [diffuseSky](const glm::dvec3& v) { return night::nightDiffuseRadiance(*diffuseSky, v).zodiacal; };
+  auto zodiacal = [diffuseSky, clouds](const glm::dvec3& v) { return clouds(v) * night::nightDiffuseRadiance(*diffuseSky, v).zodiacal; };
   add("zodiacal_light", zodiacal, along(nvis::zodiacalSpectrum(), zodiacal));
-  auto airglow = [diffuseSky](const glm::dvec3& v) { return night::nightDiffuseRadiance(*diffuseSky, v).airglow; };
+  auto airglow = [diffuseSky, clouds](const glm::dvec3& v) { return clouds(v) * night::nightDiffuseRadiance(*diffuseSky, v).airglow; };
   add("airglow", airglow, along(nvis::airglowSpectrum(), airglow));
   return c;
 }

@@ -195,6 +195,12 @@ std::vector<ProgramCase> programs() {
       {{"render/glsl/fullscreen.vert", "render/passes/night/night_diffuse.frag"},
        {frame, band, sampler("milkyWayS10", SKYIG_UNIT_MILKY_WAY), sampler("zodiacalS10", SKYIG_UNIT_ZODIACAL),
         sampler("extinctionRec709", SKYIG_UNIT_NIGHT_EXTINCTION), radiance}},
+      // Through a broken deck (a goggle's night pass): the sky pass's two weather tables.
+      {{"render/glsl/fullscreen.vert", "render/passes/night/night_diffuse.frag"},
+       {frame, band, sampler("milkyWayS10", SKYIG_UNIT_MILKY_WAY), sampler("zodiacalS10", SKYIG_UNIT_ZODIACAL),
+        sampler("extinctionRec709", SKYIG_UNIT_NIGHT_EXTINCTION), sampler("fogTable", SKYIG_UNIT_FOG_TABLE),
+        sampler("fogClearTable", SKYIG_UNIT_FOG_CLEAR_TABLE), radiance},
+       "#define SKYIG_CLOUD_COVER 1\n"},
       // Its layer for the physical sky pass (NightDiffusePass::drawLayer): the light above the
       // atmosphere and, beside it, dimmed at the texel.
       {{"render/glsl/fullscreen.vert", "render/passes/night/night_diffuse.frag"},

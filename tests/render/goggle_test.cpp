@@ -373,8 +373,8 @@ glm::dvec4 tableAt(const std::vector<glm::vec4>& table, double mu) {
 // deck as the field has it: in a gap the clear sky's (the probe's lights), behind a cloud the
 // deck's own light (its moonlit top's light through it, weighed as moonlight: sky/nvis_weights.h)
 // and the little of the moonlit sky behind it its transmittance lets through, and the night's
-// light (airglow, zodiacal light, the Milky Way) dimmed as the probe dims it (by the deck's
-// coverage). The goggle agrees with those figures within 5 %.
+// light (airglow, zodiacal light, the Milky Way) as the probe has it on each view: behind the
+// cloud or in a gap. The goggle agrees with those figures within 5 %.
 TEST_F(GoggleChannelGl, UnderAMoonlitBrokenDeckTheImageIsTheProbesNvisRadianceThroughTheDeck) {
   const SkyState s = fullMoonUnderABrokenDeck();
   ASSERT_TRUE(s.fog.broken());

@@ -35,6 +35,14 @@ layout(location = SKYIG_OUTPUT_COLOR) out vec4 outRadiance;
 layout(location = SKYIG_OUTPUT_NIGHT_LAYER_TRANSMITTED) out vec4 outTransmitted;
 #endif
 
+#ifdef SKYIG_CLOUD_COVER
+// Through a broken deck (the full-screen pass only, which a goggle draws; the eye's channels take
+// the layer's light through it in the sky pass): behind its cloud or in a gap, where the sky
+// pass's field has them, from the sky pass's two weather tables (PhysicalSkyPass::cloudField).
+#include "render/passes/common/cloud_field.glsl"
+layout(binding = SKYIG_UNIT_FOG_TABLE) uniform sampler1D fogTable;
+layout(binding = SKYIG_UNIT_FOG_CLEAR_TABLE) uniform sampler1D fogClearTable;
+#endif
 #ifdef SKYIG_NIGHT_LAYER
 #include "render/glsl/pixel_grid.glsl"
 #ifdef SKYIG_GLARE
@@ -53,6 +61,10 @@ void main() {
   const vec3 t = vec3(1.0);  // the sky pass applies it per pixel near the horizon, where it is steep
 #else
   vec3 t = transmittanceToSpace(extinctionRec709, view);
+#ifdef SKYIG_CLOUD_COVER
+  t *= cloudFieldFactor(texture(fogClearTable, fogTableU(view.z)).a, texture(fogTable, fogTableU(view.z)).a,
+                        cloudShareAlong(view));
+#endif
 #endif
   vec3 j2000 = enuToJ2000 * view;
   // The panorama's u jumps from 1 to 0 at RA 90 deg: take the mip level from the gradient of a

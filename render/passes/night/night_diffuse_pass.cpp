@@ -60,7 +60,8 @@ NightDiffusePass::Program::Program(const std::string& defines)
       enuToJ2000(glGetUniformLocation(program.id(), "enuToJ2000")),
       sun(glGetUniformLocation(program.id(), "sunJ2000")),
       airglow(glGetUniformLocation(program.id(), "airglowZenith")),
-      ground(glGetUniformLocation(program.id(), "nightGroundRadiance")) {
+      ground(glGetUniformLocation(program.id(), "nightGroundRadiance")),
+      cloudField(program.id()) {
   const glm::vec3 sunlight(skyig::sky::night::sunlightRec709());
   glProgramUniform3fv(program.id(), glGetUniformLocation(program.id(), "sunlightRec709"), 1, glm::value_ptr(sunlight));
 }
@@ -77,10 +78,25 @@ NightDiffusePass::~NightDiffusePass() {
   glDeleteTextures(2, textures);
 }
 
-void NightDiffusePass::draw(const skyig::sky::SkyState& state) {
+void NightDiffusePass::draw(const skyig::sky::SkyState& state, const CloudFieldView& clouds) {
   // The map is this pass's texture: the state's sky without it, no lock taken per frame.
   const auto sky = skyig::sky::nightDiffuseSky(state, false);
-  if (sky) draw(*sky, state.nightGroundRadiance);
+  if (!sky) return;
+  const int broken = clouds.broken();
+  if (broken == 0) {
+    draw(*sky, state.nightGroundRadiance);
+    return;
+  }
+  std::unique_ptr<Program>& program = cloudPrograms_[broken];
+  if (!program) program = std::make_unique<Program>("#define SKYIG_CLOUD_COVER " + std::to_string(broken) + "\n");
+  setCloudField(program->program.id(), program->cloudField, clouds.cover, clouds.layers, clouds.heightM,
+                clouds.bottomRadiusM);
+  glBindTextureUnit(SKYIG_UNIT_FOG_TABLE, clouds.cloudedTable);
+  glBindTextureUnit(SKYIG_UNIT_FOG_CLEAR_TABLE, clouds.clearTable);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  drawWith(*program, *sky, state.nightGroundRadiance);
+  glDisable(GL_BLEND);
 }
 
 void NightDiffusePass::draw(const skyig::sky::night::NightDiffuseSky& sky, const glm::dvec3& groundRadiance) {

@@ -3,6 +3,7 @@
 // triangle added onto the sky pass's float target. Its textures: the calibrated Milky Way
 // (2048x1024 RGBA16F in S10, mipmapped), Leinert's zodiacal table (11x19 R32F, S10) and the
 // state's extinction profile (512 RGB32F, re-uploaded when the profile changes).
+#include "render/passes/common/cloud_field.h"
 #include "render/passes/common/extinction_texture.h"
 #include "render/gl/gl_program.h"
 #include "render/gl/render_target.h"
@@ -30,8 +31,10 @@ class NightDiffusePass {
 
   // Adds the state's diffuse night light to the bound target, and below the horizon the
   // terrain's radiance under it (SkyState::nightGroundRadiance); the frame block must be bound.
-  // Draws nothing for a state without an ephemeris (no J2000 frame).
-  void draw(const skyig::sky::SkyState& state);
+  // Draws nothing for a state without an ephemeris (no J2000 frame). Through `clouds`' broken
+  // decks (the sky pass's of this frame, PhysicalSkyPass::cloudField) where it has any: behind
+  // their cloud or in their gaps, as the sky pass shows them.
+  void draw(const skyig::sky::SkyState& state, const CloudFieldView& clouds = {});
   void draw(const skyig::sky::night::NightDiffuseSky& sky, const glm::dvec3& groundRadiance = glm::dvec3(0.0));
   // The sky's part of the same light above the atmosphere (no transmittance, no terrain), in the
   // eye's band, at the vertices of a grid of `scale`-pixel cells over the width x height channel
@@ -52,9 +55,12 @@ class NightDiffusePass {
     explicit Program(const std::string& defines);
     GlProgram program;
     GLint enuToJ2000, sun, airglow, ground;
+    CloudFieldLocations cloudField;  // SKYIG_CLOUD_COVER's
   };
   void drawWith(const Program& program, const skyig::sky::night::NightDiffuseSky& sky, const glm::dvec3& groundRadiance);
   Program program_;
+  // SKYIG_CLOUD_COVER n (1-3 broken decks), the first time a frame looks through them.
+  std::map<int, std::unique_ptr<Program>> cloudPrograms_;
   // SKYIG_NIGHT_LAYER by cell and veil, the first time a layer is drawn with them.
   std::map<std::pair<int, bool>, std::unique_ptr<Program>> layerPrograms_;
   std::unique_ptr<RenderTarget> layer_;

@@ -26,6 +26,7 @@ class FogTableTexture {
   // already there; without it, made here whenever the layers or the height change.
   void use(const weather::FogLayers& layers, double heightM, GLuint unit,
            const std::shared_ptr<const std::vector<glm::vec4>>& precomputed = nullptr);
+  GLuint id() const { return id_; }
 
  private:
   void upload(const std::vector<glm::vec4>& table);

@@ -60,44 +60,10 @@
 layout(binding = SKYIG_UNIT_FOG_TABLE) uniform sampler1D fogTable;
 #ifdef SKYIG_CLOUD_COVER
 // A broken cloud deck: fogTable holds the layers with its gaps filled, this one without it; the
-// deck's field (physics/weather/cloud_cover.glsl, placed by the CPU: physics/weather/cloud_deck.h)
-// says how much of each the pixel's view meets, where the view crosses the deck's middle height.
-#include "physics/weather/cloud_cover.glsl"
+// deck's field says how much of each the pixel's view meets, where the view crosses the deck's
+// middle height (cloudShareAlong).
+#include "render/passes/common/cloud_field.glsl"
 layout(binding = SKYIG_UNIT_FOG_CLEAR_TABLE) uniform sampler1D fogClearTable;
-uniform vec4 cloudDeckShape[3]; // middle height above the ground (m), cell (m), threshold, softness
-uniform vec4 cloudDeckPlace[3]; // origin (cells), stretch across the wind, seed
-uniform vec4 cloudDeckAlong[3]; // the wind's direction (east, north), the coverage, the fade's start (m)
-uniform vec2 cloudEye;          // the eye above the ground (m), the ground's radius (m)
-
-// The share of cloud broken deck k has where the view crosses its middle height.
-float cloudShareOf(int k, vec3 view) {
-  float d = distanceToHeight(cloudEye.y, cloudEye.x, view.z, cloudDeckShape[k].x);
-  if (d < 0.0) return 0.0;
-  vec2 offset = view.xy * d;  // metres east and north where the view crosses the middle
-  vec2 along = cloudDeckAlong[k].xy;
-  vec2 p = cloudDeckPlace[k].xy + vec2(dot(offset, along), dot(offset, vec2(along.y, -along.x)) * cloudDeckPlace[k].z) /
-                                      cloudDeckShape[k].y;
-  float mask = cloudMask(p, int(cloudDeckPlace[k].w), cloudDeckShape[k].z, cloudDeckShape[k].w);
-  // Far off, where a cell shrinks below a few pixels, the field's mean (its coverage) instead
-  // of noise that would alias (cloudFadeWeight).
-  return mix(mask, cloudDeckAlong[k].z, cloudFadeWeight(d, cloudDeckAlong[k].w));
-}
-
-// Each broken deck's share along this pixel's view, evaluated once (the sky and the decks'
-// single-scattered light read it).
-vec3 cloudShares = vec3(0.0);
-// The share of the view that meets a broken deck's cloud: the most of any deck's. The number of
-// broken decks is the variant's (SKYIG_CLOUD_COVER, 1-3), not a uniform: a loop of constant
-// length unrolls to constant indices, where a uniform count left llvmpipe a loop and a gather
-// per lane for every uniform it indexed (a third of a broken deck's cost in the sky pass).
-float cloudShareAlong(vec3 view) {
-  float share = 0.0;
-  for (int k = 0; k < SKYIG_CLOUD_COVER; ++k) {
-    cloudShares[k] = cloudShareOf(k, view);
-    share = max(share, cloudShares[k]);
-  }
-  return share;
-}
 #endif
 #ifdef SKYIG_CLOUD_LIGHT
 // The sun's (and the moon's) light each deck the eye is outside of scatters once towards it
@@ -210,6 +176,10 @@ vec3 sunDiscHere = vec3(0.0);
 uniform float fogSunThrough;  // the layers' transmittance along the sun's apparent direction
 #endif
 
+// The night's own light from beyond a broken deck along this view over what the state's
+// extinction profile lets through (cloudFieldFactor): behind a cloud or in a gap, as the stars.
+float nightThroughClouds = 1.0;
+
 // d: the distance the view ray goes on (to the ground, or out of the atmosphere).
 vec3 insideRec709(vec3 view, out float d) {
   float r = frameRadii.x;
@@ -272,7 +242,10 @@ void main() {
 #ifdef SKYIG_FOG
   vec4 fog = texture(fogTable, fogTableU(view.z));
 #ifdef SKYIG_CLOUD_COVER
-  fog = mix(texture(fogClearTable, fogTableU(view.z)), fog, cloudShareAlong(view));
+  vec4 fogClear = texture(fogClearTable, fogTableU(view.z));
+  float share = cloudShareAlong(view);
+  nightThroughClouds = cloudFieldFactor(fogClear.a, fog.a, share);
+  fog = mix(fogClear, fog, share);
 #endif
   // A goggle's table holds the layers' NVIS radiance as its luminance (sky/nvis_weights.h,
   // goggleFogLayers: each layer's light weighted by the spectrum of what lights it).
@@ -291,9 +264,9 @@ void main() {
 #ifdef SKYIG_NIGHT_LAYER
   nightLayerHere = nightLayerAt(gl_FragCoord.xy);
 #if defined(SKYIG_NIGHT_LAYER_TRANSMITTED)
-  radiance += nightLayerHere.rgb + (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
+  radiance += nightThroughClouds * nightLayerHere.rgb + (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
 #else
-  radiance += transmittanceToSpace(nightExtinction, view) * nightLayerHere.rgb +
+  radiance += nightThroughClouds * transmittanceToSpace(nightExtinction, view) * nightLayerHere.rgb +
               (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
 #endif
 #endif

@@ -55,10 +55,7 @@ PhysicalSkyPass::Program::Program(const char* vertex, const char* fragment, cons
       angles(glGetUniformLocation(program.id(), "frameAngles")),
       groundCap(glGetUniformLocation(program.id(), "groundCap")),
       nightGround(glGetUniformLocation(program.id(), "nightGroundRadiance")),
-      cloudShape(glGetUniformLocation(program.id(), "cloudDeckShape")),
-      cloudPlace(glGetUniformLocation(program.id(), "cloudDeckPlace")),
-      cloudAlong(glGetUniformLocation(program.id(), "cloudDeckAlong")),
-      cloudEye(glGetUniformLocation(program.id(), "cloudEye")),
+      cloudField(program.id()),
       lit(glGetUniformLocation(program.id(), "cloudLit")),
       litSide(glGetUniformLocation(program.id(), "cloudLitSide")),
       litEye(glGetUniformLocation(program.id(), "cloudLitEye")),
@@ -94,10 +91,7 @@ PhysicalSkyPass::LitDecks PhysicalSkyPass::litDecks(double heightM) const {
 }
 
 int PhysicalSkyPass::brokenDecks() const {
-  int n = 0;
-  for (std::size_t k = 0; k < cover_.size(); ++k)
-    if (cover_[k].broken && fog_[weather::kWeatherLayerCount + k].extinction > 0.0) ++n;
-  return n;
+  return brokenDeckCount(cover_, fog_);
 }
 
 namespace {
@@ -152,7 +146,7 @@ void PhysicalSkyPass::updateCloudLightTable(const LitDecks& lit, double heightM)
   glBindTextureUnit(SKYIG_UNIT_CLOUD_LIGHT_TABLE, cloudLightTable_);
 }
 
-// The broken decks' fields, packed for cloudShareAlong (render/passes/sky/physical_sky.frag).
+// The lit decks' and the broken decks' uniforms (render/passes/sky/physical_sky.frag).
 void PhysicalSkyPass::setCloudUniforms(const Program& program, double heightM) const {
   const GLuint id = program.program.id();
   const float bottom = static_cast<float>(current_.model->parameters(0).bottom_radius);
@@ -162,23 +156,7 @@ void PhysicalSkyPass::setCloudUniforms(const Program& program, double heightM) c
     glProgramUniform4fv(id, program.litSide, l.count, &l.side[0][0]);
     glProgramUniform2f(id, program.litEye, static_cast<float>(heightM), bottom);
   }
-  if (program.cloudShape < 0) return;
-  std::array<glm::vec4, sky::kCloudLayers> shape{}, place{}, along{};
-  int n = 0;
-  for (std::size_t k = 0; k < cover_.size(); ++k) {
-    const weather::CloudCover& c = cover_[k];
-    if (!c.broken || fog_[weather::kWeatherLayerCount + k].extinction <= 0.0) continue;  // as brokenDecks()
-    shape[n] = glm::vec4(glm::dvec4(c.midHeightM, c.cellM, c.threshold, c.softness));
-    place[n] = glm::vec4(glm::dvec4(c.origin, c.stretch, c.seed));
-    along[n] = glm::vec4(glm::dvec4(c.along, c.coverage, weather::kCloudFadeCells * c.cellM));
-    ++n;
-  }
-  const GLuint p = program.program.id();
-  glProgramUniform4fv(p, program.cloudShape, n, &shape[0][0]);
-  glProgramUniform4fv(p, program.cloudPlace, n, &place[0][0]);
-  glProgramUniform4fv(p, program.cloudAlong, n, &along[0][0]);
-  glProgramUniform2f(p, program.cloudEye, static_cast<float>(heightM),
-                     static_cast<float>(current_.model->parameters(0).bottom_radius));
+  setCloudField(id, program.cloudField, cover_, fog_, heightM, bottom);
 }
 
 PhysicalSkyPass::PhysicalSkyPass(int slicesPerFrame, const char* insideFragment)
@@ -544,6 +522,7 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   cloudLightLowestZ_ = std::min(sunlit ? sunDirection.z : 1.0, base.moonlit ? moonDirection.z : 1.0);
   base.cloudLight = base.fog ? litDecks(glm::length(camera) - current_.model->parameters(0).bottom_radius).count : 0;
   bindTables(night);
+  cloudField_ = {};
   if (glm::length(camera) > current_.model->parameters(0).top_radius) {
     drawFromSpace(camera, sunDirection, moonDirection, moonlightScale, sunRefraction);
     return !base.extended();
@@ -553,9 +532,11 @@ bool PhysicalSkyPass::draw(const glm::dvec3& camera, const glm::dvec3& sunDirect
   if (base.fog) {
     const double h = glm::length(camera) - current_.model->parameters(0).bottom_radius;
     fogTable_->use(fog_, h, SKYIG_UNIT_FOG_TABLE, h == fogPrecomputedHeightM_ ? fogPrecomputed_ : nullptr);
-    if (base.cloudCover > 0)
+    if (base.cloudCover > 0) {
       fogClearTable_->use(fogClear_, h, SKYIG_UNIT_FOG_CLEAR_TABLE,
                           h == fogPrecomputedHeightM_ ? fogClearPrecomputed_ : nullptr);
+      cloudField_ = {cover_, fog_, h, current_.model->parameters(0).bottom_radius, fogTable_->id(), fogClearTable_->id()};
+    }
     if (base.cloudLight > 0) updateCloudLightTable(litDecks(h), h);
   }
   const GLint target = drawSlices(f);

@@ -11,6 +11,7 @@
 #include "render/passes/tone/folded_tone.h"
 #include "render/passes/common/night_layer.h"
 #include "physics/weather/cloud_deck.h"
+#include "render/passes/common/cloud_field.h"
 #include "render/passes/sky/fog_table_texture.h"
 #include "render/passes/sky/sky_variant.h"
 #include "physics/atmosphere/physical_camera.h"
@@ -91,6 +92,10 @@ class PhysicalSkyPass {
     fogClearPrecomputed_ = std::move(clearTable);
   }
 
+  // The broken decks the last draw() inside the atmosphere mixed by their fields, with its
+  // weather tables (none broken: CloudFieldView::broken() is 0).
+  const CloudFieldView& cloudField() const { return cloudField_; }
+
   // What a draw() does to the pass's own state, without drawing: the pending model's next
   // slices uploaded (swapped in once complete). A replay that skips the frames it does not
   // write calls it for them, so its written frames show the tables a frame-by-frame run would.
@@ -139,7 +144,7 @@ class PhysicalSkyPass {
     Program(const char* vertex, const char* fragment, const std::string& defines = "");
     GlProgram program;
     GLint camera, sun, sunRefraction, moonOn, moonDirection, moonScale, radii, angles, groundCap, nightGround;
-    GLint cloudShape, cloudPlace, cloudAlong, cloudEye;  // SKYIG_CLOUD_COVER's
+    CloudFieldLocations cloudField;                     // SKYIG_CLOUD_COVER's
     GLint lit, litSide, litEye;                          // SKYIG_CLOUD_LIGHT's
     GLint sunThrough;                                                // SKYIG_FOG's
   };
@@ -223,6 +228,7 @@ class PhysicalSkyPass {
   GLuint cloudLightTable_ = 0;  // kCloudLightTableSize x 6, RGBA32F, made at first use
   std::array<double, sky::kCloudLayers + 2> cloudLightKey_{};  // faces, eye, model of what it holds
   double lastUploadSeconds_ = 0.0;
+  CloudFieldView cloudField_;
 };
 
 }  // namespace skyig::render

@@ -81,7 +81,9 @@ layout(binding = SKYIG_UNIT_FOG_CLEAR_TABLE) uniform sampler1D fogClearTable;
 uniform vec4 cloudLit[3];      // the face's height (m), the deck's optical depth, asymmetry, its broken index (-1: whole)
 uniform vec4 cloudLitSide[3];  // 1: its base seen from under it, -1: its top from over it; its reflectance; the layers' depth between
 uniform vec2 cloudLitEye;      // the eye above the ground (m), the ground's radius (m)
-// Rows k < 3: deck k's face lit by the sun, linear Rec.709 lux normal to it, by 0.5 (1 + mu_s);
+// Rows k < 3: deck k's face lit by the sun, linear Rec.709 lux normal to it, by fogTableU of
+// mu_s (fine steps where the sun grazes the face's horizon: a sunset's light there changes by
+// orders of magnitude and colour within a degree, which steps of 0.45 deg blended bluer);
 // rows 3 + k: the air's transmittance from the eye to it (r), by fogTableU of the view's cosine.
 layout(binding = SKYIG_UNIT_CLOUD_LIGHT_TABLE) uniform sampler2D cloudLightTable;
 
@@ -97,7 +99,7 @@ vec3 cloudSingleLight(vec3 view, vec3 light, vec3 scale) {
     float mu0 = dot(light, n);
     if (mu <= 0.0 || mu0 == 0.0) continue;
     float row = (float(k) + 0.5) / 6.0;
-    vec3 e = texture(cloudLightTable, vec2(0.5 * (1.0 + dot(p / r_p, light)), row)).rgb * scale;
+    vec3 e = texture(cloudLightTable, vec2(fogTableU(dot(p / r_p, light)), row)).rgb * scale;
     float tau = cloudLit[k].y;
     float g = cloudLit[k].z;
     float cos_theta = dot(view, light);
@@ -258,7 +260,7 @@ void main() {
 #ifdef SKYIG_MOONLIT
   single += bandRatio(band.z) * cloudSingleLight(view, moonDirectionP, moonlightScale);
 #endif
-  radiance += max(inBand(single, lightWeights.x), vec3(0.0));
+  radiance = max(radiance + inBand(single, lightWeights.x), vec3(0.0));
 #endif
 #endif
 #ifdef SKYIG_NIGHT_LAYER

@@ -83,26 +83,27 @@ void NightDiffusePass::draw(const skyig::sky::SkyState& state, const CloudFieldV
   const auto sky = skyig::sky::nightDiffuseSky(state, false);
   if (!sky) return;
   const int broken = clouds.broken();
-  if (broken == 0) {
-    draw(*sky, state.nightGroundRadiance);
-    return;
+  const Program* program = &program_;
+  if (broken > 0) {
+    std::unique_ptr<Program>& p = cloudPrograms_[broken];
+    if (!p) p = std::make_unique<Program>("#define SKYIG_CLOUD_COVER " + std::to_string(broken) + "\n");
+    setCloudField(p->program.id(), p->cloudField, clouds.cover, clouds.layers, clouds.heightM, clouds.bottomRadiusM);
+    glBindTextureUnit(SKYIG_UNIT_FOG_TABLE, clouds.cloudedTable);
+    glBindTextureUnit(SKYIG_UNIT_FOG_CLEAR_TABLE, clouds.clearTable);
+    program = p.get();
   }
-  std::unique_ptr<Program>& program = cloudPrograms_[broken];
-  if (!program) program = std::make_unique<Program>("#define SKYIG_CLOUD_COVER " + std::to_string(broken) + "\n");
-  setCloudField(program->program.id(), program->cloudField, clouds.cover, clouds.layers, clouds.heightM,
-                clouds.bottomRadiusM);
-  glBindTextureUnit(SKYIG_UNIT_FOG_TABLE, clouds.cloudedTable);
-  glBindTextureUnit(SKYIG_UNIT_FOG_CLEAR_TABLE, clouds.clearTable);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE);
-  drawWith(*program, *sky, state.nightGroundRadiance);
-  glDisable(GL_BLEND);
+  drawAdded(*program, *sky, state.nightGroundRadiance);
 }
 
 void NightDiffusePass::draw(const skyig::sky::night::NightDiffuseSky& sky, const glm::dvec3& groundRadiance) {
+  drawAdded(program_, sky, groundRadiance);
+}
+
+void NightDiffusePass::drawAdded(const Program& program, const skyig::sky::night::NightDiffuseSky& sky,
+                                 const glm::dvec3& groundRadiance) {
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
-  drawWith(program_, sky, groundRadiance);
+  drawWith(program, sky, groundRadiance);
   glDisable(GL_BLEND);
 }
 

@@ -58,6 +58,8 @@ class NightDiffusePass {
     CloudFieldLocations cloudField;  // SKYIG_CLOUD_COVER's
   };
   void drawWith(const Program& program, const skyig::sky::night::NightDiffuseSky& sky, const glm::dvec3& groundRadiance);
+  // drawWith, added onto the bound target (blend ONE, ONE).
+  void drawAdded(const Program& program, const skyig::sky::night::NightDiffuseSky& sky, const glm::dvec3& groundRadiance);
   Program program_;
   // SKYIG_CLOUD_COVER n (1-3 broken decks), the first time a frame looks through them.
   std::map<int, std::unique_ptr<Program>> cloudPrograms_;

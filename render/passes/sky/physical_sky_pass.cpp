@@ -132,10 +132,9 @@ void PhysicalSkyPass::updateCloudLightTable(const LitDecks& lit, double heightM)
         const glm::dvec3 point(0.0, 0.0, rp), sun(std::sqrt(std::max(1.0 - muS * muS, 0.0)), 0.0, muS);
         const glm::dvec3 e = model.converter().toRec709(model.sunIrradiance(point, sun, sun));
         texels[static_cast<std::size_t>(k * kCloudLightTableSize + i)] = glm::vec4(glm::dvec4(e, 1.0));
-        // The eye's view of cosine mu (the same axis) meets the face d metres on.
-        const double mu = muS;
-        const double d = shader::distanceToHeight(R, eye, mu, face);
-        const double t = d >= 0.0 ? atmosphere::luminanceTransmittance(model, r, mu, d) : 0.0;
+        // The eye's view of the same cosine (rows 3 + k share the axis) meets the face d metres on.
+        const double d = shader::distanceToHeight(R, eye, muS, face);
+        const double t = d >= 0.0 ? atmosphere::luminanceTransmittance(model, r, muS, d) : 0.0;
         texels[static_cast<std::size_t>((3 + k) * kCloudLightTableSize + i)] = glm::vec4(static_cast<float>(t));
       }
     }

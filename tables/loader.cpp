@@ -1,5 +1,6 @@
 #include "tables/loader.h"
 
+#include "tables/background_priority.h"
 #include "tables/table_cache.h"
 #include "render/passes/precompute/atmosphere_gpu_precompute.h"
 
@@ -78,6 +79,7 @@ std::vector<atmosphere::GroupTables> onGpu(const atmosphere::ModelConfig& config
   render::GpuPrecomputeOptions options;
   options.progress = [](const std::string& line) { std::fprintf(stderr, "physical sky: GPU precompute %s\n", line.c_str()); };
   options.control = reporter.wrap(control);
+  options.display_threads = [] { atmosphere::lowerThisThreadToBackground(); };
   auto tables = render::precomputeTablesOnGpu(config, options);
   std::fprintf(stderr, "physical sky: precomputed %zu wavelength groups on the GPU in %.1f s\n", tables.size(), since(start));
   return tables;

@@ -10,6 +10,9 @@
 #include <glad/gl.h>
 
 #include <cstdio>
+#include <cstring>
+#include <functional>
+#include <thread>
 #include <vector>
 
 namespace skyig::render {
@@ -46,7 +49,7 @@ class EglContext final : public GlContext {
   // worker: for a thread that may already have a context current (a render thread), or that
   // shares the EGL display with one: the previous binding comes back on destruction and the
   // display stays initialised (eglTerminate would take every context of the display with it).
-  explicit EglContext(bool worker = false) : worker_(worker) {
+  explicit EglContext(bool worker = false, const std::function<void()>& displayThreads = {}) : worker_(worker) {
     if (worker_) {
       previousDisplay_ = eglGetCurrentDisplay();
       previousContext_ = eglGetCurrentContext();
@@ -54,7 +57,7 @@ class EglContext final : public GlContext {
       previousRead_ = eglGetCurrentSurface(EGL_READ);
     }
     std::string platform;
-    display_ = openDisplay(platform);
+    display_ = openDisplay(platform, worker_, displayThreads);
     EGLint major = 0, minor = 0;
     if (!eglInitialize(display_, &major, &minor))
       throw GlContextError("eglInitialize failed: " + eglErrorName(eglGetError()) +
@@ -101,7 +104,17 @@ class EglContext final : public GlContext {
     throw GlContextError(what + " failed: " + eglErrorName(eglGetError()));
   }
 
-  static EGLDisplay openDisplay(std::string& platform) {
+  // llvmpipe's rasterizer and compute threads belong to a display (its screen), started when it
+  // is initialised: a worker's context on the render thread's display had its table build
+  // queued on the render thread's threads at the render thread's priority (the frames' median
+  // up 10-65 % on two cores during a build). See egl_context.h.
+  static bool isSoftwareDevice(EGLDeviceEXT device) {
+    auto queryDeviceString = eglProc<PFNEGLQUERYDEVICESTRINGEXTPROC>("eglQueryDeviceStringEXT");
+    const char* extensions = queryDeviceString ? queryDeviceString(device, EGL_EXTENSIONS) : nullptr;
+    return extensions && std::strstr(extensions, "EGL_MESA_device_software") != nullptr;
+  }
+
+  static EGLDisplay openDisplay(std::string& platform, bool worker, const std::function<void()>& displayThreads) {
     auto getPlatformDisplay = eglProc<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
     auto queryDevices = eglProc<PFNEGLQUERYDEVICESEXTPROC>("eglQueryDevicesEXT");
     if (getPlatformDisplay && queryDevices) {
@@ -111,6 +124,7 @@ class EglContext final : public GlContext {
         queryDevices(count, devices.data(), &count);
         // Prefer a hardware device; the first listed otherwise (Mesa's software device).
         for (EGLint i = 0; i < count; ++i) {
+          if (worker && isSoftwareDevice(devices[static_cast<size_t>(i)])) break;  // surfaceless below
           EGLDisplay d = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[static_cast<size_t>(i)], nullptr);
           EGLint major = 0, minor = 0;
           if (d != EGL_NO_DISPLAY && eglInitialize(d, &major, &minor)) {
@@ -122,6 +136,20 @@ class EglContext final : public GlContext {
     }
     if (getPlatformDisplay) {
       EGLDisplay d = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+      if (d != EGL_NO_DISPLAY && worker && displayThreads) {
+        // llvmpipe starts a screen's threads with its first context (llvmpipe_screen_late_init),
+        // so a first context is made, and dropped, on a thread set up by the caller; the
+        // constructor's eglInitialize then finds the display initialised. A display with a
+        // context made before keeps the threads it has.
+        std::thread([&] {
+          displayThreads();
+          EGLint major = 0, minor = 0;
+          if (!eglInitialize(d, &major, &minor) || !eglBindAPI(EGL_OPENGL_API)) return;
+          const EGLContext first = eglCreateContext(d, nullptr, EGL_NO_CONTEXT, nullptr);
+          if (first != EGL_NO_CONTEXT) eglDestroyContext(d, first);
+          eglReleaseThread();
+        }).join();
+      }
       if (d != EGL_NO_DISPLAY) {
         platform = "EGL surfaceless";
         return d;
@@ -144,6 +172,8 @@ class EglContext final : public GlContext {
 
 std::unique_ptr<GlContext> createHeadlessContext() { return std::make_unique<EglContext>(); }
 
-std::unique_ptr<GlContext> createWorkerHeadlessContext() { return std::make_unique<EglContext>(true); }
+std::unique_ptr<GlContext> createWorkerHeadlessContext(const std::function<void()>& displayThreads) {
+  return std::make_unique<EglContext>(true, displayThreads);
+}
 
 }  // namespace skyig::render

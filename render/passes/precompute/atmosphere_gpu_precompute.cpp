@@ -425,7 +425,7 @@ atmosphere::AtmosphereModel AtmosphereGpuPrecompute::compute(const ModelConfig& 
 
 std::vector<GroupTables> precomputeTablesOnGpu(const ModelConfig& config, const GpuPrecomputeOptions& options,
                                                GpuPrecomputeTiming* timing) {
-  const std::unique_ptr<GlContext> context = createWorkerHeadlessContext();
+  const std::unique_ptr<GlContext> context = createWorkerHeadlessContext(options.display_threads);
   if (options.progress) options.progress("on " + context->info().renderer + " (" + context->info().platform + ")");
   AtmosphereGpuPrecompute precompute;
   return precompute.computeTables(config, options, timing);

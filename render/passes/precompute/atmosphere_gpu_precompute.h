@@ -45,6 +45,9 @@ struct GpuPrecomputeOptions {
   // Stops the precompute between passes and between the radius slices of a 3D pass (Cancelled),
   // and hears each pass start as "group 2/4: scattering density, order 3/4".
   atmosphere::PrecomputeControl control;
+  // precomputeTablesOnGpu: how the threads of a software device's own display are set up
+  // (createWorkerHeadlessContext); the node lowers them to the build's background priority.
+  std::function<void()> display_threads;
 };
 
 class AtmosphereGpuPrecompute {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <EGL/egl.h>
+#include <sched.h>
 
 #include <array>
 #include <atomic>
@@ -13,9 +14,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <sstream>
+#include <vector>
 #include <memory>
 #include <string>
 
+#include "tables/background_priority.h"
 #include "tables/updater.h"
 #include "render/passes/precompute/atmosphere_gpu_precompute.h"
 #include "render/gl/gl_context.h"
@@ -151,6 +158,70 @@ TEST(AtmospherePrecomputeDevice, UpdaterBuildsOnTheGpuFromItsThread) {
   atmosphere::roundTablesToFloat(expected);
   EXPECT_TRUE(sameTables({model->tables(0)}, expected));
   EXPECT_EQ(eglGetCurrentContext(), current);
+}
+
+// One thread's CPU time (clock ticks), nice value and scheduling policy (proc(5), /proc/PID/stat
+// fields 14, 15, 19 and 41, counted after the command name's closing parenthesis).
+struct ThreadCpu {
+  long ticks = 0;
+  int nice = 0;
+  int policy = 0;
+};
+
+std::map<std::string, ThreadCpu> threadsOfThisProcess() {
+  std::map<std::string, ThreadCpu> threads;
+  for (const auto& task : std::filesystem::directory_iterator("/proc/self/task")) {
+    std::ifstream in(task.path() / "stat");
+    std::string line;
+    if (!std::getline(in, line) || line.rfind(')') == std::string::npos) continue;
+    std::istringstream fields(line.substr(line.rfind(')') + 2));
+    std::vector<std::string> f{std::istream_iterator<std::string>(fields), {}};
+    if (f.size() < 39) continue;
+    threads[task.path().filename().string()] = {std::stol(f[11]) + std::stol(f[12]), std::stoi(f[16]), std::stoi(f[38])};
+  }
+  return threads;
+}
+
+// On llvmpipe a display's draws and compute dispatches run on threads the display owns. A table
+// build the host asked for, beside a renderer's context on the same software device, runs on
+// threads at the build's background priority (nice 19, SCHED_IDLE), not on the renderer's at
+// its priority: a display of the build's own whose threads start from a lowered thread, even
+// when the initial model (built first, on this thread) made that display.
+TEST(AtmospherePrecomputeDevice, BesideASoftwareRendererABuildRunsOnThreadsAtItsOwnPriority) {
+  std::unique_ptr<render::GlContext> renderer;
+  try {
+    renderer = render::createHeadlessContext();
+  } catch (const render::GlContextError&) {
+    GTEST_SKIP() << "no OpenGL 4.5 context through EGL";
+  }
+  if (renderer->info().renderer.find("llvmpipe") == std::string::npos)
+    GTEST_SKIP() << "a hardware renderer (" << renderer->info().renderer << "): the GPU does the build";
+  if (atmosphere::thisThreadNice() >= atmosphere::kBackgroundNice) GTEST_SKIP() << "run at the background priority already";
+  const auto dir = std::filesystem::path(SKYIG_BINARY_DIR) / "atmosphere-test-cache" / "gpu-build-priority";
+  std::filesystem::remove_all(dir);
+  ModelConfig c = atmosphere::testing::oneGroupConfig();
+  ::testing::internal::CaptureStderr();
+  atmosphere::AtmosphereUpdater updater(c, dir, atmosphereTableBuilder(PrecomputeDevice::kGpu));
+  c.medium.groundAlbedo = 0.3;
+  const auto before = threadsOfThisProcess();
+  updater.request(c);
+  updater.waitIdle();
+  const auto after = threadsOfThisProcess();
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  ASSERT_EQ(updater.generation(), 1u) << said;
+  long all = 0, atNormalPriority = 0;
+  std::string normal;
+  for (const auto& [tid, now] : after) {
+    const auto was = before.find(tid);
+    const long grown = now.ticks - (was == before.end() ? 0 : was->second.ticks);
+    all += grown;
+    if (now.policy != SCHED_IDLE || now.nice < atmosphere::kBackgroundNice) {
+      atNormalPriority += grown;
+      if (grown > 0) normal += " " + tid + " (nice " + std::to_string(now.nice) + "): " + std::to_string(grown) + " ticks;";
+    }
+  }
+  ASSERT_GE(all, 10) << "the build used too little CPU to tell (" << all << " ticks)";
+  EXPECT_LE(atNormalPriority, all / 20) << "of " << all << " ticks, at normal priority:" << normal;
 }
 
 // A cancelled GPU precompute stops within a radius slice of its pass: at the medium sizes the

@@ -3,11 +3,10 @@
 // the node draws a fog layer over them (tests/physics/weather/low_visibility_test.cpp).
 #include <gtest/gtest.h>
 
-#include <optional>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "physics/atmosphere/conditions.h"
 #include "physics/common/units.h"

@@ -30,7 +30,7 @@ struct CloudLayer {
   double transitionM = 0.0;   // the base's soft band (CIGI Transition Band)
   double topTransitionM = 0.0;  // the top's (CIGI 4.0 Top Transition Band; 3.3: the same as the base's)
   double coveragePct = 0.0;   // of the sky, 0-100
-  int severity = 0;           // CIGI's 0-5
+  int severity = 2;           // CIGI's 0-5: the water content inside (physics/weather/cloud_deck.h); 2 the type's typical
   double visibilityM = 0.0;   // inside; 0: the type's and severity's
   bool scud = false;
   double scudFrequencyPct = 0.0;

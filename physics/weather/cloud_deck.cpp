@@ -63,13 +63,15 @@ constexpr double kThickAt = 2.0 * 0.5881 - 1.0;
 
 }  // namespace
 
+double severityContentFactor(int severity) { return std::pow(6.0, (std::clamp(severity, 0, 5) - 2) / 5.0); }
+
 CloudOptics cloudOptics(const sky::CloudLayer& layer) {
   const TypeLook& t = lookOf(layer.type);
   CloudOptics o;
   o.asymmetry = t.asymmetry;
-  o.extinctionPerM = layer.visibilityM > 0.0
-                         ? sky::kKoschmiederConstant / layer.visibilityM
-                         : 3.0 * t.contentGPerM3 / (2.0 * t.densityGPerM3 * t.radiusUm * 1e-6);
+  const double content = t.contentGPerM3 * severityContentFactor(layer.severity);
+  o.extinctionPerM = layer.visibilityM > 0.0 ? sky::kKoschmiederConstant / layer.visibilityM
+                                             : 3.0 * content / (2.0 * t.densityGPerM3 * t.radiusUm * 1e-6);
   return o;
 }
 

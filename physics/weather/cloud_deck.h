@@ -22,9 +22,16 @@ struct CloudOptics {
 };
 
 // The type's optics (cloud_deck.cpp: the water or ice content and the effective radius behind
-// each), or, where the host gives the visibility inside (CIGI's Visibility Range), Koschmieder's
-// 3.912 / V with the type's asymmetry.
+// each, the content scaled by the severity), or, where the host gives the visibility inside
+// (CIGI's Visibility Range), Koschmieder's 3.912 / V with the type's asymmetry.
 CloudOptics cloudOptics(const sky::CloudLayer& layer);
+
+// The water (or ice) content of a severity against the type's typical one (severity 2): CIGI
+// leaves the severity's meaning to the IG; here its six steps span, geometrically, the factor 6
+// that aircraft measure within one type (low stratiform cloud 0.1-0.6 g/m^3: Miles, Verlinde
+// and Clothiaux 2000), 6^((s - 2) / 5): 0.49 at 0, 1 at 2, 2.93 at 5. The extinction, and so
+// the visibility inside, follows the content at the type's droplet size.
+double severityContentFactor(int severity);
 
 // The layer's slab: from its base to its top, the base's transition band as the fog's (both
 // edges soft by it), its visibility inside from cloudOptics.

@@ -652,7 +652,7 @@ TEST(HostCommandWeather, GroundFogIsSentOnlyWhenAskedFor) {
     EXPECT_EQ(off, 5) << version;
   }
   // A cloud layer (--cloud): Weather Control layer 1 with its type, base, thickness and cover,
-  // beside no other weather; a spec that is not one exits 2 naming it.
+  // at the default severity, beside no other weather; a spec that is not one exits 2 naming it.
   const cigi::DecodedMessage cloudy = firstDatagram("--cloud nimbostratus:250:1800:90");
   ASSERT_TRUE(cloudy.ok());
   const auto deck = fogOf(cloudy);
@@ -663,6 +663,7 @@ TEST(HostCommandWeather, GroundFogIsSentOnlyWhenAskedFor) {
   EXPECT_EQ(deck->baseElevationM, 250.0f);
   EXPECT_EQ(deck->thicknessM, 1800.0f);
   EXPECT_EQ(deck->coveragePct, 90.0f);
+  EXPECT_EQ(deck->severity, 2);  // the type's typical water content (physics/weather/cloud_deck.h)
   const std::string bad = std::string(SKYIG_EXECUTABLE) + " host --path " + SKYIG_SOURCE_DIR +
                           "/config/circuit.csv --duration 0.01 --cloud haze:300:400 >/dev/null 2>&1";
   EXPECT_EQ(WEXITSTATUS(std::system(bad.c_str())), 2);

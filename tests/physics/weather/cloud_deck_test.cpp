@@ -5,6 +5,7 @@
 // time, and a climb through a base shows no step.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -206,6 +207,30 @@ TEST(CloudDeck, ExtinctionFromTheWaterContent) {
   st.visibilityM = 100.0;
   EXPECT_NEAR(cloudOptics(st).extinctionPerM, 3.912 / 100.0, 1e-9);
   EXPECT_LT(cloudOptics(layer(CloudType::Cirrus, 9000.0, 1000.0, 100.0)).extinctionPerM * 1000.0, 3.0);  // a thin veil
+}
+
+// The severity sets the water content inside: severity 2 (the default) the type's typical 0.45
+// g/m^3 of stratus, 0 to 5 the factor 6 measured within low stratiform cloud (0.1-0.6 g/m^3),
+// geometric steps, so the visibility inside goes from 95 m to 16 m and falls at every step; the
+// host's visibility inside, where it gives one, still wins.
+TEST(CloudDeck, TheSeverityThickensTheCloudAcrossTheMeasuredRangeOfWaterContent) {
+  CloudLayer st = layer(CloudType::Stratus, 300.0, 400.0, 100.0);
+  EXPECT_EQ(st.severity, 2);
+  const double typical = 3.0 * 0.45 / (2.0 * 1e6 * 8e-6);
+  std::array<double, 6> visibility{};
+  for (int s = 0; s <= 5; ++s) {
+    st.severity = s;
+    visibility[static_cast<std::size_t>(s)] = deckSpec(st).visibilityKm * 1000.0;
+    if (s > 0) {
+      EXPECT_LT(visibility[static_cast<std::size_t>(s)], visibility[static_cast<std::size_t>(s) - 1]) << "severity " << s;
+    }
+  }
+  EXPECT_NEAR(visibility[2], 3.912 / typical, 1e-6);
+  EXPECT_NEAR(visibility[0] / visibility[5], 6.0, 1e-9);
+  EXPECT_NEAR(visibility[0], 94.9, 0.1);
+  EXPECT_NEAR(visibility[5], 15.8, 0.1);
+  st.visibilityM = 200.0;
+  EXPECT_NEAR(deckSpec(st).visibilityKm, 0.2, 1e-12);
 }
 
 }  // namespace

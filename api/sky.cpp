@@ -183,6 +183,7 @@ void Sky::setClouds(const std::array<CloudLayer, 3>& layers) {
     c.coveragePct = l.coveragePct;
     c.windSpeedMps = l.windSpeedMps;
     c.windFromDeg = l.windFromDeg;
+    c.severity = l.severity;
     try {
       weather::validate(c);
     } catch (const std::exception& e) {

@@ -97,7 +97,7 @@ render::ImageAttributes frameAttributes(const sky::SkyState& s, const sky::Attit
                                           std::to_string(p.albedo[2]);
   }
   // The host's or the configuration's cloud layers as drawn: "stratus base 300 m,
-  // 400 m thick, 100 % cover" or "off".
+  // 400 m thick, 100 % cover, severity 2" or "off".
   for (std::size_t i = 0; i < sky::kCloudLayers; ++i)
     a["skyig:cloud_layer_" + std::to_string(i + 1)] = weather::describe(s.conditions.clouds[i]);
   if (sky::isGoggle(c)) {

@@ -97,8 +97,9 @@ sky::CloudLayer parseCloudSpec(std::string_view spec) {
 
 std::string describe(const sky::CloudLayer& l) {
   if (!l.enabled) return "off";
-  char text[96];
-  std::snprintf(text, sizeof text, " base %.0f m, %.0f m thick, %.0f %% cover", l.baseM, l.thicknessM, l.coveragePct);
+  char text[112];
+  std::snprintf(text, sizeof text, " base %.0f m, %.0f m thick, %.0f %% cover, severity %d", l.baseM, l.thicknessM,
+                l.coveragePct, l.severity);
   return std::string(toString(l.type)) + text;
 }
 

@@ -309,3 +309,28 @@ TEST(SkyLibrary, CloudLayersShadeTheSunAndTheTerrain) {
   EXPECT_EQ(sky.sunThroughClouds({300.0, 700.0, 0.0}), here);  // the cumulus kept
   EXPECT_EQ(sky.sunThroughClouds({0.0, 0.0, 5000.0}), 1.0);    // above the layer
 }
+
+// A layer's severity reaches the library: a full cirrus veil's optical depth along the sun's ray
+// at severity 5 is 6 times that at severity 0 (the water content's factor, physics/weather/
+// cloud_deck.h), so the sun gets through as T0^6; a severity beyond 5 is refused.
+TEST(SkyLibrary, ACloudLayersSeverityThickensItsVeil) {
+  skyig::Sky sky(smallPhysicalSky());
+  std::array<skyig::CloudLayer, 3> layers{};
+  layers[0].enabled = true;
+  layers[0].type = "cirrostratus";
+  layers[0].baseM = 8000.0;
+  layers[0].thicknessM = 1000.0;
+  auto through = [&](int severity, double t) {
+    layers[0].severity = severity;
+    sky.setClouds(layers);
+    sky.update(at(11, 0, 10.0), t);
+    return sky.sunThroughClouds({0.0, 0.0, 0.0});
+  };
+  const double light = through(0, 0.0), heavy = through(5, 1.0);
+  std::printf("cirrostratus: the sun through severity 0 %.3f, severity 5 %.3g\n", light, heavy);
+  ASSERT_GT(light, 0.05);
+  ASSERT_LT(light, 0.95);
+  EXPECT_NEAR(std::log(heavy) / std::log(light), 6.0, 0.06);
+  layers[0].severity = 6;
+  EXPECT_THROW(sky.setClouds(layers), skyig::Error);
+}

@@ -82,7 +82,7 @@ TEST_F(Cli, ACloudLayerFromTheCommandLineIsRecordedWithTheFrame) {
   const Result r = run("render --sky-model preetham --size 32x24 --cloud stratus:300:400 --exr " + (dir_ / "c.exr").string());
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto exr = skyig::render::readExr((dir_ / "c.exr").string());
-  EXPECT_EQ(std::get<std::string>(exr.attributes.at("skyig:cloud_layer_1")), "stratus base 300 m, 400 m thick, 100 % cover");
+  EXPECT_EQ(std::get<std::string>(exr.attributes.at("skyig:cloud_layer_1")), "stratus base 300 m, 400 m thick, 100 % cover, severity 2");
   EXPECT_EQ(std::get<std::string>(exr.attributes.at("skyig:cloud_layer_2")), "off");
   const Result bad = run("render --sky-model preetham --size 32x24 --cloud stratus:300:-5 --exr " + (dir_ / "d.exr").string());
   EXPECT_EQ(bad.exitCode, 2);

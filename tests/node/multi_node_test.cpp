@@ -648,7 +648,7 @@ TEST_F(MultiNodeDome, TwoNodesAndAReplayShowTheSameCloudsMovedByTheHostsWind) {
     for (std::size_t i = 0; i < pa.rgb.size(); ++i) ASSERT_LE(std::abs(pa.rgb[i] - pb.rgb[i]), 1) << "host frame " << frame;
   }
   const auto first = exrOf(a, shownA.at(common.front())), last = exrOf(a, shownA.at(common.back()));
-  EXPECT_EQ(std::get<std::string>(first.attributes.at("skyig:cloud_layer_1")), "cumulus base 1200 m, 800 m thick, 50 % cover");
+  EXPECT_EQ(std::get<std::string>(first.attributes.at("skyig:cloud_layer_1")), "cumulus base 1200 m, 800 m thick, 50 % cover, severity 2");
   // 60 s of a 10 m/s wind move the field 600 m, over half a cumulus cell: the broken deck's
   // pattern changes (the sun moves 0.25 deg meanwhile, which alone changes the sky by well
   // under 1 %).

@@ -126,6 +126,7 @@ struct CloudLayer {
   double coveragePct = 100.0;
   double windSpeedMps = 0.0;
   double windFromDeg = 0.0;  // the direction it blows from, degrees from true north
+  int severity = 2;          // CIGI's 0-5: the water content inside, 0.49-2.9 times the type's (2)
 };
 
 // One Sky per observer (eye point); use it from one thread at a time. Its tables load once and

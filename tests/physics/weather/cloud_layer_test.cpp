@@ -71,7 +71,7 @@ TEST(CloudLayer, ValuesALayerCannotBeDrawnWithAreRefusedByName) {
   CloudLayer off;
   off.thicknessM = std::nan("");
   EXPECT_NO_THROW(validate(off)) << "a layer that is off is never drawn";
-  EXPECT_EQ(describe(deck), "stratus base 300 m, 400 m thick, 100 % cover");
+  EXPECT_EQ(describe(deck), "stratus base 300 m, 400 m thick, 100 % cover, severity 2");
   EXPECT_EQ(describe(off), "off");
 }
 

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -38,6 +39,9 @@ struct FogSpec {
   // CIGI Weather Control's transition band: over this height above the top (and below a bottom
   // above the ground) the extinction falls linearly to none, so the layer's edge is soft.
   double transitionM = 0.0;
+  // A band of its own below a raised bottom (a cloud deck's base: CIGI 4.0 gives the top's and
+  // the base's apart); none: transitionM.
+  std::optional<double> bottomTransitionM = std::nullopt;
   bool operator==(const FogSpec&) const = default;
 };
 

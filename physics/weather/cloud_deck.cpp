@@ -82,7 +82,8 @@ sky::FogSpec deckSpec(const sky::CloudLayer& layer) {
   s.topM = layer.baseM + layer.thicknessM;
   s.visibilityKm = sky::kKoschmiederConstant / o.extinctionPerM / 1000.0;
   s.asymmetry = o.asymmetry;
-  s.transitionM = std::min(layer.transitionM, layer.baseM);
+  s.transitionM = layer.topTransitionM;                       // the top's band
+  s.bottomTransitionM = std::min(layer.transitionM, layer.baseM);  // the base's, down to the ground at most
   return s;
 }
 

@@ -38,6 +38,8 @@ void validate(const sky::FogSpec& s) {
   for (double a : s.albedo)
     if (!(a > 0.0 && a <= 1.0)) bad("albedo", a, "in (0, 1]");
   if (!(s.transitionM >= 0.0) || !std::isfinite(s.transitionM)) bad("transition_m", s.transitionM, "0 (a hard edge) or more");
+  if (s.bottomTransitionM && (!(*s.bottomTransitionM >= 0.0) || !std::isfinite(*s.bottomTransitionM)))
+    bad("bottom transition", *s.bottomTransitionM, "0 (a hard edge) or more");
 }
 
 FogLayer makeFogLayer(const sky::FogSpec& spec, double planetRadiusM, double groundAlbedo,
@@ -53,6 +55,7 @@ FogLayer makeFogLayer(const sky::FogSpec& spec, double planetRadiusM, double gro
   f.ground_albedo = groundAlbedo;
   f.top_irradiance = topIrradiance;
   f.band_height = spec.transitionM;
+  f.bottom_band_height = spec.bottomTransitionM.value_or(spec.transitionM);
   return f;
 }
 

@@ -31,7 +31,7 @@ Float chordBelowHeight(Float R, Float h, Float mu, Float d, Float h_s) {
 }
 
 // The transition band (CIGI Weather Control): above the top (and below a raised bottom) the
-// extinction falls linearly to none over band_height metres. Along the ray x(t) the height under
+// extinction falls linearly to none over band_height metres (bottom_band_height below the bottom). Along the ray x(t) the height under
 // a level h_s is, to first order, q(t) = (r_s^2 - |x(t)|^2) / 2 r_s = a - b t - k t^2 (exact but
 // for a factor 1 - (h_s - h) / 2 r_s: 1e-4 at 1.3 km), a concave quadratic in t, so the integral
 // of max(q - c, 0) over [0, d] has a closed form: between the roots of q = c, taken as
@@ -61,7 +61,7 @@ Float chordBelowRamp(Float R, Float h, Float mu, Float d, Float ramp_top, Float 
 }
 
 // The band below the bottom: no deeper than the bottom's height (it stops at the ground).
-Float fogBottomBand(IN(FogLayer) fog) { return min(fog.band_height, fog.bottom_height); }
+Float fogBottomBand(IN(FogLayer) fog) { return min(fog.bottom_band_height, fog.bottom_height); }
 
 // Metres of the ray's first d metres inside the layer, from height h, a metre of its bands
 // counted by its share of the layer's extinction. A layer on the ground (most are) has nothing

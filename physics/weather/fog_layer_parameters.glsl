@@ -14,7 +14,8 @@ struct FogLayer {
   Float ground_albedo;   // the ground under the layer
   vec3 top_irradiance;   // linear Rec.709 lux on a horizontal surface at the top, from above
   vec3 albedo;           // the particles' single-scattering albedo per Rec.709 channel (1: water)
-  Float band_height;     // the transition band above the top and below a raised bottom, metres (0: a hard edge)
+  Float band_height;     // the transition band above the top, metres (0: a hard edge)
+  Float bottom_band_height;  // below a raised bottom (a fog's: band_height; a deck's base its own), metres
   // A cloud deck's (physics/weather/cloud_deck.h; 0 for fog): the expected share of the sky it
   // leaves clear (1 - coverage; the sky pass draws where, from the deck's field), and the b of the
   // law (1 + b mu) its base and top shine by.

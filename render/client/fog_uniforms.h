@@ -20,7 +20,7 @@ class FogUniforms {
 
  private:
   struct Layer {
-    GLint radius, bottom, top, extinction, asymmetry, groundAlbedo, irradiance, albedo, band;
+    GLint radius, bottom, top, extinction, asymmetry, groundAlbedo, irradiance, albedo, band, bottomBand;
   };
   std::array<Layer, weather::kFogLayerCount> at_{};
   GLint height_ = -1;

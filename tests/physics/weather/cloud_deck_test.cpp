@@ -209,6 +209,21 @@ TEST(CloudDeck, ExtinctionFromTheWaterContent) {
   EXPECT_LT(cloudOptics(layer(CloudType::Cirrus, 9000.0, 1000.0, 100.0)).extinctionPerM * 1000.0, 3.0);  // a thin veil
 }
 
+// A deck's base and top fade over bands of their own (CIGI 4.0's Transition Band and Top
+// Transition Band; 3.3 sends one for both), the base's no deeper than the ground.
+TEST(CloudDeck, TheBaseAndTheTopFadeOverTheirOwnBands) {
+  CloudLayer st = layer(CloudType::Stratus, 300.0, 400.0, 100.0);
+  st.transitionM = 100.0;
+  st.topTransitionM = 40.0;
+  const FogLayer f = makeCloudDeck(st, 6360e3, 0.2, glm::dvec3(1e5));
+  EXPECT_DOUBLE_EQ(f.band_height, 40.0);
+  EXPECT_DOUBLE_EQ(f.bottom_band_height, 100.0);
+  st.transitionM = 500.0;  // below the ground
+  EXPECT_DOUBLE_EQ(makeCloudDeck(st, 6360e3, 0.2, glm::dvec3(1e5)).bottom_band_height, 300.0);
+  st.topTransitionM = -1.0;
+  EXPECT_THROW(makeCloudDeck(st, 6360e3, 0.2, glm::dvec3(1e5)), std::invalid_argument);
+}
+
 // The severity sets the water content inside: severity 2 (the default) the type's typical 0.45
 // g/m^3 of stratus, 0 to 5 the factor 6 measured within low stratiform cloud (0.1-0.6 g/m^3),
 // geometric steps, so the visibility inside goes from 95 m to 16 m and falls at every step; the

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "physics/weather/fog_layer.h"
 
@@ -116,16 +117,17 @@ TEST(FogLayer, AboveItIsAWhiteSeaAndClimbingThroughTheTopIsSeamless) {
 }
 
 // CIGI Weather Control's transition band: over band_height above the top (and below a raised
-// bottom) the extinction falls linearly to none.
-FogLayer bandedFog(double bottomM, double topM, double bandM) {
+// bottom, bottom_band_height: a cloud deck's base has its own) the extinction falls linearly to none.
+FogLayer bandedFog(double bottomM, double topM, double bandM, std::optional<double> bottomBandM = std::nullopt) {
   sky::FogSpec s{bottomM, topM, 0.4};
   s.transitionM = bandM;
+  s.bottomTransitionM = bottomBandM;
   return makeFogLayer(s, kR, 0.2, glm::dvec3(100000.0));
 }
 
 // The extinction at height z of a banded layer, and a 0.25 m march along the curved ray.
 double extinctionAt(const FogLayer& f, double z) {
-  const double b = f.band_height, bb = std::min(b, f.bottom_height);
+  const double b = f.band_height, bb = std::min(f.bottom_band_height, f.bottom_height);
   if (z > f.top_height) return b > 0.0 ? f.extinction * std::max(0.0, 1.0 - (z - f.top_height) / b) : 0.0;
   if (z >= f.bottom_height) return f.extinction;
   return bb > 0.0 ? f.extinction * std::max(0.0, 1.0 - (f.bottom_height - z) / bb) : 0.0;
@@ -151,14 +153,22 @@ TEST(FogBand, AVerticalColumnGainsHalfOfEachBand) {
   EXPECT_NEAR(shader::fogDepthAbove(ground, 250.0), ground.extinction * 50.0 * 50.0 / 200.0, 1e-12);
   EXPECT_NEAR(shader::fogDepthAbove(ground, 200.0), ground.extinction * 50.0, 1e-12);
   EXPECT_NEAR(shader::fogDepthAbove(raised, 250.0), raised.extinction * (50.0 + 200.0 + 37.5), 1e-12);
+  // A deck's base and top with bands of their own (CIGI 4.0): 300-700 m, 100 m below, 40 m above:
+  // 400 + 50 + 20 m; a fog's one band is both.
+  const FogLayer deck = bandedFog(300.0, 700.0, 40.0, 100.0);
+  EXPECT_DOUBLE_EQ(bandedFog(300.0, 700.0, 40.0).bottom_band_height, 40.0);
+  EXPECT_NEAR(shader::fogPathLength(deck, 0.0, 1.0, 1e9), 470.0, 1e-3);
+  EXPECT_NEAR(shader::fogColumnDepth(deck), deck.extinction * 470.0, 1e-12);
+  EXPECT_NEAR(shader::fogDepthAbove(deck, 250.0), deck.extinction * (20.0 + 400.0 + 37.5), 1e-12);
 }
 
 TEST(FogBand, SlantAndLevelRaysMatchAMarchThroughTheRamps) {
   // The closed form takes the height under a level to first order in its depth (1e-4 at 1.3 km):
   // against a march along the curved ray, within 0.1% of the layer's optical depth on the way.
-  const FogLayer ground = bandedFog(0.0, 200.0, 100.0), raised = bandedFog(300.0, 500.0, 150.0);
+  const FogLayer ground = bandedFog(0.0, 200.0, 100.0), raised = bandedFog(300.0, 500.0, 150.0),
+                 deck = bandedFog(300.0, 500.0, 40.0, 150.0);
   struct Ray { double h, mu, d; };
-  for (const FogLayer* f : {&ground, &raised})
+  for (const FogLayer* f : {&ground, &raised, &deck})
     for (const Ray& ray : {Ray{30.0, 0.0, 60e3}, Ray{250.0, 0.0, 80e3}, Ray{270.0, -0.01, 27e3},
                           Ray{600.0, -0.02, 30e3}, Ray{120.0, 0.03, 40e3}, Ray{400.0, 0.0, 120e3},
                           Ray{1000.0, -0.1, 1e4}}) {

@@ -1,6 +1,5 @@
 #include "tables/background_priority.h"
 
-#include <sched.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
@@ -14,8 +13,6 @@ namespace {
 id_t thisThreadId() { return static_cast<id_t>(::syscall(SYS_gettid)); }
 }  // namespace
 
-bool thisThreadIsIdleClass() { return ::sched_getscheduler(static_cast<pid_t>(thisThreadId())) == SCHED_IDLE; }
-
 int thisThreadNice() {
   errno = 0;
   return ::getpriority(PRIO_PROCESS, thisThreadId());
@@ -23,8 +20,6 @@ int thisThreadNice() {
 
 int lowerThisThreadToBackground() {
   ::setpriority(PRIO_PROCESS, thisThreadId(), kBackgroundNice);  // raising a nice needs no privilege
-  const sched_param none{};  // SCHED_IDLE takes priority 0
-  ::sched_setscheduler(static_cast<pid_t>(thisThreadId()), SCHED_IDLE, &none);
   return thisThreadNice();
 }
 

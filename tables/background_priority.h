@@ -5,11 +5,9 @@
 // blend of two cached visibility steps, which show the host's change at once, keep the normal
 // priority. Linux keeps a nice value per thread and a new thread inherits it (setpriority(2) on
 // a thread id, sched(7)); an unprivileged process cannot raise it again, so a build runs on a
-// thread of its own that is lowered for its whole life. Besides nice 19 the thread takes the
-// SCHED_IDLE policy (sched(7): it runs only when nothing else wants the CPU, and a waking frame
-// thread preempts it at once), also inherited. A GPU precompute on llvmpipe runs on the
-// threads of a display of its own, started from a thread lowered the same way
-// (render/gl/egl_context.h; docs/performance.md, "Table builds beside the frames").
+// thread of its own that is lowered for its whole life. A GPU precompute on llvmpipe runs on the
+// threads of a display of its own, started from a thread lowered the same way (tables/loader.cpp,
+// render/gl/egl_context.h; docs/performance.md, "Table builds beside the frames").
 #include <exception>
 #include <optional>
 #include <thread>
@@ -19,12 +17,9 @@ namespace skyig::atmosphere {
 
 inline constexpr int kBackgroundNice = 19;
 
-// Lowers the calling thread to kBackgroundNice and SCHED_IDLE; returns the nice value it has
-// afterwards (the old one when the system refused).
+// Lowers the calling thread to kBackgroundNice; returns the nice value it has afterwards (the
+// old one when the system refused).
 int lowerThisThreadToBackground();
-
-// Whether the calling thread has the SCHED_IDLE policy.
-bool thisThreadIsIdleClass();
 
 // The calling thread's nice value.
 int thisThreadNice();

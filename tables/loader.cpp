@@ -79,7 +79,11 @@ std::vector<atmosphere::GroupTables> onGpu(const atmosphere::ModelConfig& config
   render::GpuPrecomputeOptions options;
   options.progress = [](const std::string& line) { std::fprintf(stderr, "physical sky: GPU precompute %s\n", line.c_str()); };
   options.control = reporter.wrap(control);
-  options.display_threads = [] { atmosphere::lowerThisThreadToBackground(); };
+  // A build on a lowered thread (the updater's, for the host's air) gets a software device's
+  // threads lowered the same way; the initial model, built before the first frame, keeps the
+  // caller's priority and the renderer's display (lowered, a loaded machine could starve it).
+  if (atmosphere::thisThreadNice() >= atmosphere::kBackgroundNice)
+    options.display_threads = [] { atmosphere::lowerThisThreadToBackground(); };
   auto tables = render::precomputeTablesOnGpu(config, options);
   std::fprintf(stderr, "physical sky: precomputed %zu wavelength groups on the GPU in %.1f s\n", tables.size(), since(start));
   return tables;

@@ -124,7 +124,7 @@ class EglContext final : public GlContext {
         queryDevices(count, devices.data(), &count);
         // Prefer a hardware device; the first listed otherwise (Mesa's software device).
         for (EGLint i = 0; i < count; ++i) {
-          if (worker && isSoftwareDevice(devices[static_cast<size_t>(i)])) break;  // surfaceless below
+          if (worker && displayThreads && isSoftwareDevice(devices[static_cast<size_t>(i)])) break;  // surfaceless below
           EGLDisplay d = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[static_cast<size_t>(i)], nullptr);
           EGLint major = 0, minor = 0;
           if (d != EGL_NO_DISPLAY && eglInitialize(d, &major, &minor)) {

@@ -16,11 +16,11 @@ namespace skyig::render {
 //
 // On Mesa's software device (llvmpipe) a display runs every context's draws and compute
 // dispatches on threads it owns, started by the thread that first initialises it, at that
-// thread's priority: a worker there takes a display of its own (Mesa's surfaceless platform),
-// so a build is not queued on the render thread's threads, and `displayThreads`, when given,
-// is called on a short-lived thread that then initialises that display (the build's caller
-// lowers its priority there, so those threads inherit the lowered one). A hardware device is
-// shared with the render thread as before.
+// thread's priority. Given `displayThreads`, a worker there takes a display of its own (Mesa's
+// surfaceless platform), so its work is not queued on the render thread's threads, and
+// `displayThreads` is called on a short-lived thread that then initialises that display (a
+// background build lowers its priority there, so those threads inherit the lowered one).
+// Without it, and on a hardware device, the worker shares the render thread's display.
 std::unique_ptr<GlContext> createWorkerHeadlessContext(const std::function<void()>& displayThreads = {});
 
 }  // namespace skyig::render

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <EGL/egl.h>
-#include <sched.h>
 
 #include <array>
 #include <atomic>
@@ -160,12 +159,11 @@ TEST(AtmospherePrecomputeDevice, UpdaterBuildsOnTheGpuFromItsThread) {
   EXPECT_EQ(eglGetCurrentContext(), current);
 }
 
-// One thread's CPU time (clock ticks), nice value and scheduling policy (proc(5), /proc/PID/stat
-// fields 14, 15, 19 and 41, counted after the command name's closing parenthesis).
+// One thread's CPU time (clock ticks) and nice value (proc(5), /proc/PID/stat fields 14, 15 and
+// 19, counted after the command name's closing parenthesis).
 struct ThreadCpu {
   long ticks = 0;
   int nice = 0;
-  int policy = 0;
 };
 
 std::map<std::string, ThreadCpu> threadsOfThisProcess() {
@@ -176,17 +174,17 @@ std::map<std::string, ThreadCpu> threadsOfThisProcess() {
     if (!std::getline(in, line) || line.rfind(')') == std::string::npos) continue;
     std::istringstream fields(line.substr(line.rfind(')') + 2));
     std::vector<std::string> f{std::istream_iterator<std::string>(fields), {}};
-    if (f.size() < 39) continue;
-    threads[task.path().filename().string()] = {std::stol(f[11]) + std::stol(f[12]), std::stoi(f[16]), std::stoi(f[38])};
+    if (f.size() < 17) continue;
+    threads[task.path().filename().string()] = {std::stol(f[11]) + std::stol(f[12]), std::stoi(f[16])};
   }
   return threads;
 }
 
 // On llvmpipe a display's draws and compute dispatches run on threads the display owns. A table
 // build the host asked for, beside a renderer's context on the same software device, runs on
-// threads at the build's background priority (nice 19, SCHED_IDLE), not on the renderer's at
-// its priority: a display of the build's own whose threads start from a lowered thread, even
-// when the initial model (built first, on this thread) made that display.
+// threads at the build's background priority (nice 19), not on the renderer's at its priority:
+// a display of the build's own whose threads start from a lowered thread. The initial model,
+// built first on this thread, is not lowered.
 TEST(AtmospherePrecomputeDevice, BesideASoftwareRendererABuildRunsOnThreadsAtItsOwnPriority) {
   std::unique_ptr<render::GlContext> renderer;
   try {
@@ -215,7 +213,7 @@ TEST(AtmospherePrecomputeDevice, BesideASoftwareRendererABuildRunsOnThreadsAtIts
     const auto was = before.find(tid);
     const long grown = now.ticks - (was == before.end() ? 0 : was->second.ticks);
     all += grown;
-    if (now.policy != SCHED_IDLE || now.nice < atmosphere::kBackgroundNice) {
+    if (now.nice < atmosphere::kBackgroundNice) {
       atNormalPriority += grown;
       if (grown > 0) normal += " " + tid + " (nice " + std::to_string(now.nice) + "): " + std::to_string(grown) + " ticks;";
     }

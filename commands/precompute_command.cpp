@@ -30,6 +30,7 @@ int run(const PrecomputeCli& cli) {
   // The updater serve uses, without its rate limit: the configuration's tables, then each step.
   atmosphere::UpdaterLimits limits;
   limits.maxCacheBytes = config.atmosphere.cacheMaxBytes;
+  limits.backgroundPriority = false;  // no frames to keep: the steps at full speed
   atmosphere::AtmosphereUpdater updater(nodeModelConfig(config, {}), cacheDirectory(config.atmosphere),
                                         atmosphereTableBuilder(), limits, &signal.flag(), visibilitySteps(config));
   updater.waitSteps();

@@ -22,6 +22,7 @@ AtmosphereUpdater::AtmosphereUpdater(const ModelConfig& initial,
     : cacheDirectory_(std::move(cacheDirectory)),
       builder_(builder ? std::move(builder) : TableBuilder(precomputeTablesOnCpu)),
       backgroundBuilder_([this](const ModelConfig& c, const PrecomputeControl& control) {
+        if (!limits_.backgroundPriority) return builder_(c, control);
         return runAtBackgroundPriority([&] { return builder_(c, control); });
       }),
       limits_(limits),

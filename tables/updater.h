@@ -36,6 +36,10 @@ struct UpdaterLimits {
   // that needs one sooner waits (a newer request replaces it, and one the cache holds is loaded
   // at once). 0: no limit. The initial model does not count.
   double minBuildIntervalS = 0.0;
+  // Builds for requests and steps at the lowest CPU priority (tables/background_priority.h): for
+  // a node drawing frames in real time. false: at the caller's (a replay and the precompute
+  // command wait for their builds; lowered, a loaded machine would stretch them for nothing).
+  bool backgroundPriority = true;
 };
 
 // The steps an updater blends between: their visibilities (km; the initial model is one too)
@@ -125,8 +129,9 @@ class AtmosphereUpdater {
 
   const std::filesystem::path cacheDirectory_;
   const TableBuilder builder_;
-  // builder_ on a thread of its own at the lowest CPU priority (tables/background_priority.h):
-  // the builds for requests and steps; the initial model is built with builder_ itself.
+  // builder_ on a thread of its own at the lowest CPU priority (tables/background_priority.h),
+  // unless limits_ says otherwise: the builds for requests and steps; the initial model is built
+  // with builder_ itself.
   const TableBuilder backgroundBuilder_;
   const UpdaterLimits limits_;
   std::atomic<bool> cancel_{false};  // set by the destructor

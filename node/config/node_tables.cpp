@@ -46,6 +46,7 @@ std::unique_ptr<atmosphere::AtmosphereUpdater> makeAtmosphereUpdater(const NodeC
   atmosphere::UpdaterLimits limits;
   limits.maxCacheBytes = config.atmosphere.cacheMaxBytes;
   limits.minBuildIntervalS = rateLimited ? config.atmosphere.buildIntervalS : 0.0;
+  limits.backgroundPriority = rateLimited;  // serve's frames are real time; a replay waits for its builds
   // serve blends between cached visibility steps while a host's tables are built; replay waits
   // for each visibility's exact tables anyway.
   atmosphere::VisibilitySteps steps;

@@ -125,6 +125,27 @@ TEST(AtmosphereUpdater, BuildsForTheHostRunAtTheLowestPriorityAndSoDoTheirThread
   EXPECT_EQ(thisThreadNice(), callerNice) << "the caller's own thread keeps its priority";
 }
 
+// A replay or the precompute command waits for its builds: without background priority they
+// run at the caller's.
+TEST(AtmosphereUpdater, WithoutBackgroundPriorityBuildsRunAtTheCallersPriority) {
+  const auto dir = testing::testCacheDirectory() / "updater-no-priority";
+  std::filesystem::remove_all(dir);
+  std::atomic<int> buildNice{-100};
+  const TableBuilder recording = [&](const ModelConfig& c, const PrecomputeControl& control) {
+    buildNice = thisThreadNice();
+    return precomputeTablesOnCpu(c, control);
+  };
+  const int callerNice = thisThreadNice();
+  if (callerNice >= kBackgroundNice) GTEST_SKIP() << "run at nice " << callerNice << ": a lowered build cannot be told apart";
+  UpdaterLimits limits;
+  limits.backgroundPriority = false;
+  AtmosphereUpdater updater(tinyConfig(0.1), dir, recording, limits);
+  updater.request(tinyConfig(0.3));
+  updater.waitIdle();
+  EXPECT_EQ(updater.builds(), 1u);
+  EXPECT_EQ(buildNice.load(), callerNice);
+}
+
 // At most one precompute per interval: a second distinct config waits (the last model serves
 // meanwhile), one the cache holds is loaded at once, and the waiting one is built once the
 // interval has passed. Tables in a bounded cache stay within the bound.

@@ -55,7 +55,6 @@ void validate(const sky::CloudLayer& l) {
   require(l.coveragePct >= 0.0 && l.coveragePct <= 100.0, "coverage", l.coveragePct);
   require(l.transitionM >= 0.0 && std::isfinite(l.transitionM), "transition band", l.transitionM);
   require(l.topTransitionM >= 0.0 && std::isfinite(l.topTransitionM), "top transition band", l.topTransitionM);
-  require(l.topTransitionM >= 0.0 && std::isfinite(l.topTransitionM), "top transition band", l.topTransitionM);
   require(l.severity >= 0 && l.severity <= 5, "severity", l.severity);
   require(l.visibilityM >= 0.0 && std::isfinite(l.visibilityM), "visibility", l.visibilityM);
   require(l.scudFrequencyPct >= 0.0 && l.scudFrequencyPct <= 100.0, "scud frequency", l.scudFrequencyPct);

@@ -2,7 +2,9 @@
 // The bright-star catalogue prepared once per run for the renderer: each star's J2000 direction
 // with its proper motion applied at the run's epoch (starDirectionAt moves a star by at most
 // 10" a year: once a run is exact enough for a flight), its illuminance above the atmosphere
-// and its colour. Immutable, shared by every SkyState through SkyConditions::starCatalogue.
+// and its colour. Stars closer than the eye resolves (1 arcmin) are one source, their light
+// summed (star_catalogue.cpp). Brightest first. Immutable, shared by every SkyState through
+// SkyConditions::starCatalogue.
 #include "ephemeris/bsc5.h"
 #include "ephemeris/time.h"
 

@@ -23,6 +23,7 @@
 // (2.07e-4 cd/m^2) the faintest star seen is m = 6.53; at 19 mag/arcsec^2 (2.7e-3 cd/m^2), 4.77.
 #include "physics/common/constants.glsl"
 #include "physics/common/color.glsl"
+#include "physics/eye/tumblin_rushmeier.glsl"
 
 const Float kLuxPerFootCandle = 10.7639104;
 const Float kThresholdNightLux = 1.70599e-9;
@@ -55,10 +56,11 @@ Float limitingMagnitude(Float backgroundCdM2) {
 
 // The displayed star's point-spread function, an angle: a Gaussian of this standard deviation
 // (2 arcmin), 4.7 arcmin at half maximum, well inside the critical area of the viewer of the
-// display, so the viewer integrates it as the eye integrates a star; drawn no narrower than
-// kDisplayedPsfMinSigmaPx so it never falls between pixel centres (star_psf.glsl).
+// display, so the viewer integrates it as the eye integrates a star; integrated over each pixel
+// (star_psf.glsl, starPsfPixelWeight), so a PSF narrower than a pixel keeps its light. The floor
+// only keeps the width above zero.
 const Float kDisplayedPsfSigmaRad = 2.0 / 60.0 * DEG;
-const Float kDisplayedPsfMinSigmaPx = 0.7;
+const Float kDisplayedPsfMinSigmaPx = 0.1;
 
 // The brightest point source the eye meets: Venus at its greatest brilliance (V = -4.9) on the
 // darkest natural sky (22 mag/arcsec^2, 1.7e-4 cd/m^2). Its visibility E / E_th is the largest
@@ -70,25 +72,55 @@ Float maxWorldVisibility() {
   return illuminanceOfMagnitude(kBrightestSourceMagnitude) / pointSourceThresholdLux(kDarkestSkyCdM2);
 }
 
-// The largest visibility a display of white `whiteCdM2` can give a star drawn on its luminance
-// `backgroundCdM2` there: the PSF's peak, E_d / (2 pi sigma^2), reaches white.
-Float maxDisplayVisibility(Float backgroundCdM2, Float whiteCdM2) {
-  Float psfSolidAngle = 2.0 * PI * kDisplayedPsfSigmaRad * kDisplayedPsfSigmaRad;
-  return max((whiteCdM2 - backgroundCdM2) * psfSolidAngle / pointSourceThresholdLux(backgroundCdM2), 1.0);
+// The display's threshold for a point (docs/night-sky-stars.md, "The display's threshold").
+// Schaefer's threshold at the display's own luminance is what the viewer needs for a point on a
+// perfect display, and on a fine channel that is a code or two of an 8-bit frame. But the frame
+// is quantised and dithered (+-1 LSB, render/glsl/dither.glsl): a neighbour of the star can sit a
+// code up and the star's pixel a code down, and a point the viewer must find among thousands of
+// dithered pixels needs a contrast several times that noise (Rose 1948: about 5 times its rms,
+// 0.41 LSB for a triangular +-1 LSB dither). The display threshold is therefore the larger of
+// the two: Schaefer's at the display's luminance, and the star's brightest pixel
+// kDisplayThresholdCodes codes over the displayed sky around it, with the star at the worst
+// place, a pixel's corner (physics/stars/star_psf.glsl, starPsfPeakSolidAngle). Both are fixed by the display and its pixel scale, so a star the eye
+// just sees looks the same on a channel of 1, 2 or 4 arcmin a pixel.
+const Float kDisplayThresholdCodes = 4.0;
+
+// The display luminance step (cd/m^2) that raises a pixel shown at `backgroundCdM2` by
+// kDisplayThresholdCodes codes, through the display model's eq. 18 (physics/eye/
+// tumblin_rushmeier.glsl, displayValue) and its inverse, L = L_amb + L_max n^gamma.
+Float displayThresholdStep(Float backgroundCdM2, Float ambientCdM2, Float maxCdM2, Float gamma) {
+  Float n = displayValue(backgroundCdM2, ambientCdM2, maxCdM2, gamma);
+  Float up = min(n + kDisplayThresholdCodes / 255.0, 1.0);
+  return max(ambientCdM2 + maxCdM2 * pow(up, gamma) - max(backgroundCdM2, ambientCdM2), 0.0);
+}
+
+// The displayed illuminance (lux) of a just-visible star: the larger of the viewer's own point
+// threshold at the displayed sky (Schaefer) and the display threshold, a brightest pixel
+// `stepCdM2` over it.
+Float displayedThresholdLux(Float displayBackgroundCdM2, Float stepCdM2, Float peakSolidAngle) {
+  return max(pointSourceThresholdLux(displayBackgroundCdM2), stepCdM2 * peakSolidAngle);
+}
+
+// The largest displayed visibility (in units of displayedThresholdLux) a display of white
+// `whiteCdM2` has for a star drawn on its luminance `backgroundCdM2` there: its brightest pixel
+// reaches white.
+Float maxDisplayVisibility(Float backgroundCdM2, Float whiteCdM2, Float thresholdLux, Float peakSolidAngle) {
+  return max((whiteCdM2 - backgroundCdM2) * peakSolidAngle / thresholdLux, 1.0);
 }
 
 // Displayed visibility V_d for a world visibility V (WLRP97's ceiling idea for points: compress,
 // never exaggerate, and only where the display lacks the range). Up to a knee V_k the display
-// keeps V as it is (a just-visible star is just visible, a star 20x its threshold is 20x the
-// display's); above it, log V_d = log V_k + s (log V - log V_k), so that the brightest source
-// the eye meets (maxWorldVisibility) peaks at the display's white. The knee is the geometric
-// middle of the display's range, V_k = sqrt(V_d,max): the faint half of the display's range is
-// the eye's own, the bright half holds the rest in rank. (A single power V^k over the whole
-// range compressed the faint stars too and left a moonless sky's stars a code or two above it.)
-// The slope s for a star drawn where the display shows `backgroundCdM2`; 1 where the display
-// has the eye's range. Stars on the same displayed sky share it, so they rank by magnitude.
-Float displayedVisibilityExponent(Float backgroundCdM2, Float whiteCdM2) {
-  Float range = log(maxDisplayVisibility(backgroundCdM2, whiteCdM2)), eye = log(maxWorldVisibility());
+// keeps V as it is (a just-visible star is at the display's threshold, a star 20x its threshold
+// is 20x the display's); above it, log V_d = log V_k + s (log V - log V_k), so that the brightest
+// source the eye meets (maxWorldVisibility) peaks at the display's white. The knee is the
+// geometric middle of the display's range, V_k = sqrt(V_d,max): the faint half of the display's
+// range is the eye's own, the bright half holds the rest in rank. (A single power V^k over the
+// whole range compressed the faint stars too and left a moonless sky's stars a code or two above
+// it.) The slope s for a display's range `displayRange` (maxDisplayVisibility); 1 where the
+// display has the eye's range. Stars on the same displayed sky share it, so they rank by
+// magnitude.
+Float displayedVisibilityExponent(Float displayRange) {
+  Float range = log(max(displayRange, 1.0)), eye = log(maxWorldVisibility());
   if (range >= eye) return 1.0;
   return 0.5 * range / (eye - 0.5 * range);
 }
@@ -105,13 +137,13 @@ Float displayedVisibility(Float visibility, Float exponent) {
 }
 
 // The illuminance (lux, at the viewer of the display) that a point source of illuminance
-// `worldLux` on a background of `worldBackgroundCdM2` gets on a display whose luminance around
-// it is `displayBackgroundCdM2`: V_d = displayedVisibility(V), and nothing below the threshold
-// (V < 1).
-Float displayedIlluminance(Float worldLux, Float worldBackgroundCdM2, Float displayBackgroundCdM2, Float exponent) {
+// `worldLux` on a background of `worldBackgroundCdM2` gets on a display whose threshold there is
+// `displayedThreshold` (displayedThresholdLux): V_d = displayedVisibility(V) times it, and
+// nothing below the eye's threshold (V < 1).
+Float displayedIlluminance(Float worldLux, Float worldBackgroundCdM2, Float displayedThreshold, Float exponent) {
   Float v = worldLux / pointSourceThresholdLux(worldBackgroundCdM2);
   if (!(v > 1.0)) return 0.0;
-  return displayedVisibility(v, exponent) * pointSourceThresholdLux(displayBackgroundCdM2);
+  return displayedVisibility(v, exponent) * displayedThreshold;
 }
 
 // How much of its colour the eye sees in a point source: 0 where only the rods detect it (the

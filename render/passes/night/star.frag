@@ -10,5 +10,5 @@ flat in float vSigmaPx;
 layout(location = SKYIG_OUTPUT_COLOR) out vec4 outRadiance;
 
 void main() {
-  outRadiance = vec4(vRadiancePerWeight * starPsfWeight(gl_FragCoord.xy - vCentrePx, vSigmaPx), 0.0);
+  outRadiance = vec4(vRadiancePerWeight * starPsfPixelWeight(gl_FragCoord.xy - vCentrePx, vSigmaPx), 0.0);
 }

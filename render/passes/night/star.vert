@@ -27,9 +27,8 @@ void main() {
   vec2 ndc = p.xy / p.z;
   vCentrePx = (ndc * 0.5 + 0.5) * viewport.xy;
   vRadiancePerWeight = aRec709Lux / pixelSolidAngle(mat3(ndcToWorld), ndc, 4.0 * viewport.z * viewport.w);
-  // Corners of a triangle strip, half a pixel beyond the PSF's cut so every pixel centre
-  // within it is covered.
+  // Corners of a triangle strip beyond the PSF's cut, so every pixel it reaches is covered.
   vec2 corner = vec2((gl_VertexID & 1) == 0 ? -1.0 : 1.0, gl_VertexID < 2 ? -1.0 : 1.0);
-  float halfSizePx = kStarPsfRadiusSigmas * kStarPsfSigmaPx + 0.5;
+  float halfSizePx = starPsfQuadHalfSizePx(kStarPsfSigmaPx);
   gl_Position = vec4(ndc + corner * halfSizePx * 2.0 * viewport.zw, 0.0, 1.0);
 }

@@ -16,7 +16,7 @@ double starQuadReachPx(const glm::dmat3& ndcToWorld, int width, int height) {
                                                                 4.0 / (double(width) * double(height))));
   const double displayedSigmaPx =
       std::max(shader::kDisplayedPsfSigmaRad / std::sqrt(smallestSr), shader::kDisplayedPsfMinSigmaPx);
-  return shader::kStarPsfRadiusSigmas * std::max(shader::kStarPsfSigmaPx, displayedSigmaPx) + 0.5 + 1.0;
+  return shader::starPsfQuadHalfSizePx(std::max(shader::kStarPsfSigmaPx, displayedSigmaPx)) + 1.0;
 }
 
 }  // namespace skyig::render

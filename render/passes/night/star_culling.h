@@ -13,7 +13,7 @@ namespace skyig::render {
 // The widest a source's quad can reach from its image, in pixels, in a channel of width x height
 // pixels whose view ray is ndcToWorld * (x, y, 1): the larger of the HDR pass's PSF and the
 // displayed one (kDisplayedPsfSigmaRad over the smallest pixel, at a corner of a pinhole
-// channel), kStarPsfRadiusSigmas of it, half a pixel, and a pixel to spare for float rounding.
+// channel), the quad that holds it (starPsfQuadHalfSizePx), and a pixel to spare for float rounding.
 double starQuadReachPx(const glm::dmat3& ndcToWorld, int width, int height);
 
 // Whether the quad of a source in ENU direction `direction` may touch the viewport: in front of

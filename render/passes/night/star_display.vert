@@ -2,9 +2,10 @@
 // (cd/m^2 on the screen) into the point-source target that the tone pass adds to the mapped
 // sky (docs/night-sky-stars.md, "On the display"). Per star, here: its visibility against the
 // sky it sits on (the HDR image at its pixel, which holds no stars), the same visibility on the
-// display against the mapped sky there (physics/eye/point_source_visibility.glsl), and a PSF of a
-// fixed angle, normalised so that sum(display luminance x pixel solid angle) is the displayed
-// illuminance at any resolution. The quad is star.vert's; star.frag draws the PSF.
+// display against the mapped sky there, a just-visible star at the display's threshold
+// (physics/eye/point_source_visibility.glsl), and a PSF of a fixed angle integrated over each
+// pixel, so that sum(display luminance x pixel solid angle) is the displayed illuminance at any
+// resolution. The quad is star.vert's; star.frag draws the PSF.
 #include "render/glsl/uniforms.h"
 #include "physics/stars/star_psf.glsl"
 #include "physics/eye/point_source_visibility.glsl"
@@ -34,13 +35,17 @@ void main() {
   float white = display.y + display.x;
   float displayBackground = min(rec709Luminance(toneMapLinear(background)), white);
   float worldBackground = rec709Luminance(max(background, vec3(0.0)));
-  float lux = displayedIlluminance(rec709Luminance(aRec709Lux), worldBackground, displayBackground,
-                                   displayedVisibilityExponent(displayBackground, white));
-  if (!(lux > 0.0)) return;  // below the eye's threshold: not shown
   float pixelSr = pixelSolidAngle(mat3(ndcToWorld), ndc, 4.0 * viewport.z * viewport.w);
   vSigmaPx = max(kDisplayedPsfSigmaRad / sqrt(pixelSr), kDisplayedPsfMinSigmaPx);
+  // The display's threshold here: the viewer's own, or a brightest pixel a few codes over the
+  // displayed sky, whichever is larger (physics/eye/point_source_visibility.glsl).
+  float peakSr = starPsfPeakSolidAngle(pixelSr, vSigmaPx);
+  float threshold = displayedThresholdLux(displayBackground, displayThresholdStep(displayBackground, display.y, display.x, display.z), peakSr);
+  float exponent = displayedVisibilityExponent(maxDisplayVisibility(displayBackground, white, threshold, peakSr));
+  float lux = displayedIlluminance(rec709Luminance(aRec709Lux), worldBackground, threshold, exponent);
+  if (!(lux > 0.0)) return;  // below the eye's threshold: not shown
   vRadiancePerWeight = displayedPointSourceRec709(aRec709Lux, worldBackground, lux) / pixelSr;
   vec2 corner = vec2((gl_VertexID & 1) == 0 ? -1.0 : 1.0, gl_VertexID < 2 ? -1.0 : 1.0);
-  float halfSizePx = kStarPsfRadiusSigmas * vSigmaPx + 0.5;
+  float halfSizePx = starPsfQuadHalfSizePx(vSigmaPx);
   gl_Position = vec4(ndc + corner * halfSizePx * 2.0 * viewport.zw, 0.0, 1.0);
 }

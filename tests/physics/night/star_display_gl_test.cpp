@@ -120,6 +120,24 @@ class StarDisplay : public ::testing::Test {
     return ch.display.ambientLuminance + ch.display.maxLuminance * std::pow(n, ch.display.gamma);
   }
 
+  // The display's threshold (lux) and slope where `direction` lands on a displayed sky of
+  // `displayedCdM2`, as the displayed-star pass computes them (physics/eye/point_source_visibility.glsl).
+  struct Law {
+    double thresholdLux, exponent;
+  };
+  static Law displayLaw(const Frame& f, const glm::dvec3& direction, double displayedCdM2, const ChannelConfig& ch) {
+    const glm::dvec3 p = glm::inverse(f.ndcToWorld) * direction;
+    const glm::dvec2 ndc(p.x / p.z, p.y / p.z);
+    const double pixelSr = shader::pixelSolidAngle(f.ndcToWorld, ndc, 4.0 / (static_cast<double>(ch.width) * ch.height));
+    const double sigmaPx = std::max(shader::kDisplayedPsfSigmaRad / std::sqrt(pixelSr), shader::kDisplayedPsfMinSigmaPx);
+    const double peakSr = shader::starPsfPeakSolidAngle(pixelSr, sigmaPx);
+    const DisplayParams& d = ch.display;
+    const double step = shader::displayThresholdStep(displayedCdM2, d.ambientLuminance, d.maxLuminance, d.gamma);
+    const double threshold = shader::displayedThresholdLux(displayedCdM2, step, peakSr);
+    const double range = shader::maxDisplayVisibility(displayedCdM2, d.ambientLuminance + d.maxLuminance, threshold, peakSr);
+    return {threshold, shader::displayedVisibilityExponent(range)};
+  }
+
   // The sky's luminance (cd/m^2, without stars) in `direction`.
   static double skyLuminance(const SkyState& state, const ChannelConfig& ch, const glm::dvec3& direction) {
     SkyState bare = state;
@@ -154,8 +172,8 @@ TEST_F(StarDisplay, DisplayedStarContrastRanksWithMagnitude) {
     ch.display.toneOperator = op;
     SCOPED_TRACE(op == ToneOperator::Histogram ? "histogram" : "Tumblin-Rushmeier");
     const Frame f = render(night, stars, ch);
-    const double white = ch.display.ambientLuminance + ch.display.maxLuminance;
-    const double k = shader::displayedVisibilityExponent(displayedSky(render(night, {}, ch), stars[2].direction, ch), white);
+    const Frame bare = render(night, {}, ch);
+    const double k = displayLaw(bare, stars[2].direction, displayedSky(bare, stars[2].direction, ch), ch).exponent;
     std::vector<double> lux;
     for (const auto& s : stars) lux.push_back(displayedLux(f, s.direction, 1.5));
     const double b = skyLuminance(night, ch, stars[0].direction);
@@ -180,9 +198,8 @@ TEST_F(StarDisplay, DisplayedStarContrastRanksWithMagnitude) {
 // A magnitude-6.5 star is not shown on a sky as bright as a suburban one (19 mag/arcsec^2,
 // limiting magnitude 4.8) and is shown on one as dark as a dark site's (22 mag/arcsec^2,
 // limiting magnitude 6.6). The skies are twilights found by the sun's altitude whose
-// luminance behind the star equals those levels. At 1 arcmin a pixel the just-visible star
-// peaks 7% over the displayed sky, a code or two: a coarser channel spreads it over pixels
-// larger than the eye's critical area, where no 8-bit display can show a threshold star.
+// luminance behind the star equals those levels. The just-visible star is drawn at the
+// display's threshold, its brightest pixel 4 codes over the displayed sky.
 TEST_F(StarDisplay, FaintStarShowsOnADarkSkyNotOnASuburbanOne) {
   const ChannelConfig ch = channel(640, 480, Frustum{5.3, 5.3, 4, 4});
   const night::PointSource faint = source(180.0, 40.0, 6.5);
@@ -224,16 +241,22 @@ TEST_F(StarDisplay, FaintStarShowsOnADarkSkyNotOnASuburbanOne) {
 }
 
 // The same stars on the same field of view at 640x512 and 1920x1200: their displayed
-// illuminance, sum(display luminance x pixel solid angle), agrees within 10%.
+// visibility, the displayed illuminance sum(display luminance x pixel solid angle) over the
+// display's threshold there, agrees within 10%. (The threshold itself is the frame's at both
+// sizes: a brightest pixel 4 codes over the sky, which takes more light on the coarser pixels.)
 TEST_F(StarDisplay, DisplayedIntensityIsTheSameAt640And1920) {
   const SkyState night = sky();
   std::vector<night::PointSource> stars;
   for (int i = 0; i < 4; ++i) stars.push_back(source(180.0 - 9.0 + 6.0 * i, 38.0 + 1.3 * i, -1.0 + 1.5 * i));
-  const Frame small = render(night, stars, channel(640, 512));
-  const Frame large = render(night, stars, channel(1920, 1200));
+  const ChannelConfig smallChannel = channel(640, 512), largeChannel = channel(1920, 1200);
+  const Frame small = render(night, stars, smallChannel), smallBare = render(night, {}, smallChannel);
+  const Frame large = render(night, stars, largeChannel), largeBare = render(night, {}, largeChannel);
   for (const auto& s : stars) {
-    const double a = displayedLux(small, s.direction), b = displayedLux(large, s.direction);
-    std::printf("  %.3g lux at 640x512, %.3g at 1920x1200\n", a, b);
+    const double a = displayedLux(small, s.direction) /
+                     displayLaw(small, s.direction, displayedSky(smallBare, s.direction, smallChannel), smallChannel).thresholdLux;
+    const double b = displayedLux(large, s.direction) /
+                     displayLaw(large, s.direction, displayedSky(largeBare, s.direction, largeChannel), largeChannel).thresholdLux;
+    std::printf("  displayed visibility %.3g at 640x512, %.3g at 1920x1200\n", a, b);
     EXPECT_GT(a, 0.0);
     EXPECT_NEAR(a / b, 1.0, 0.1);
   }
@@ -295,7 +318,7 @@ TEST_F(StarDisplay, OrionRanksByMagnitudeOnTheDisplay) {
     const double displayed = displayedLux(f, it->direction, 0.2);
     const double displayedBackground = displayedSky(sky, it->direction, ch);
     shown.push_back({hr, worldLux, displayed, it->direction, worldLux / shader::pointSourceThresholdLux(background),
-                     displayed / shader::pointSourceThresholdLux(displayedBackground)});
+                     displayed / displayLaw(f, it->direction, displayedBackground, ch).thresholdLux});
     std::printf("  HR %d: %.3g lux at the eye on %.3g cd/m^2, V %.1f; displayed %.3g lux on %.3g cd/m^2, V_d %.1f\n", hr,
                 worldLux, background, shown.back().visibility, displayed, displayedBackground,
                 shown.back().displayedVisibility);

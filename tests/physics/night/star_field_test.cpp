@@ -231,3 +231,29 @@ TEST(StarLuminance, ConeAroundASourceHoldsItsIlluminance) {
   EXPECT_THROW(starLuminance(field, {0.0, 0.0, 0.0}), std::invalid_argument);
   EXPECT_THROW(starLuminance(field, {0.0, 0.0, 1.0}, 0.0), std::invalid_argument);
 }
+
+// Pairs closer than the eye resolves (1 arcmin) are one source: Alnitak (HR 1948, V 2.05 in the catalogue) and
+// its companion HR 1949 (V 4.21, 2.4" away) give one source with both stars' light, no two
+// prepared sources are closer than 1', and the catalogue's light is all kept.
+TEST(StarCatalogue, PairsTheEyeDoesNotResolveAreOneSource) {
+  const auto& raw = night_testing::catalogue();
+  const StarCatalogue prepared(raw, ephemeris::UtcTime{2026, 1, 18, 0.0});
+  double rawLux = 0.0, preparedLux = 0.0;
+  for (const auto& s : raw) rawLux += illuminanceFromVMagnitude(s.vmag);
+  for (const auto& s : prepared.stars()) preparedLux += s.illuminanceLux;
+  EXPECT_NEAR(preparedLux, rawLux, 1e-9 * rawLux);
+  EXPECT_LT(prepared.stars().size(), raw.size());
+  std::printf("%zu catalogue stars, %zu sources\n", raw.size(), prepared.stars().size());
+  const auto alnitak = std::find_if(prepared.stars().begin(), prepared.stars().end(), [](const CatalogueStar& s) { return s.hr == 1948; });
+  ASSERT_NE(alnitak, prepared.stars().end());
+  EXPECT_NEAR(alnitak->illuminanceLux, illuminanceFromVMagnitude(2.05) + illuminanceFromVMagnitude(4.21),
+              0.01 * alnitak->illuminanceLux);
+  EXPECT_EQ(std::count_if(prepared.stars().begin(), prepared.stars().end(), [](const CatalogueStar& s) { return s.hr == 1949; }), 0);
+  const double cosLimit = std::cos(1.0 / 60.0 * kDeg);
+  for (std::size_t i = 0; i < prepared.stars().size(); ++i)
+    for (std::size_t j = i + 1; j < prepared.stars().size(); ++j)
+      ASSERT_LT(glm::dot(prepared.stars()[i].directionJ2000, prepared.stars()[j].directionJ2000), cosLimit) << i << " " << j;
+  // Brightest first.
+  for (std::size_t i = 1; i < prepared.stars().size(); ++i)
+    ASSERT_GE(prepared.stars()[i - 1].illuminanceLux, prepared.stars()[i].illuminanceLux);
+}

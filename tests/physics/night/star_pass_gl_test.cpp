@@ -159,7 +159,7 @@ TEST_F(StarPassGl, StarJustOffTheEdgeKeepsItsShareInside) {
     for (int y = 0; y < kH; ++y)
       for (int x = 0; x < kW; ++x) {
         const glm::dvec2 pc(x + 0.5, y + 0.5);
-        expected += 1e-6 * shader::starPsfWeight(pc - centre, shader::kStarPsfSigmaPx) *
+        expected += 1e-6 * shader::starPsfPixelWeight(pc - centre, shader::kStarPsfSigmaPx) *
                     shader::pixelSolidAngle(m, pc * 2.0 / glm::dvec2(kW, kH) - 1.0, pixelArea) / omegaCentre;
       }
     EXPECT_GT(expected, 0.03e-6) << beyond;
@@ -274,7 +274,7 @@ TEST(StarCulling, KeepsEveryQuadThatCanTouchTheViewport) {
           const glm::dvec2 px = (ndc * 0.5 + 0.5) * glm::dvec2(c.width, c.height);
           const double sigma = std::max(shader::kDisplayedPsfSigmaRad / std::sqrt(shader::pixelSolidAngle(m, ndc, area)),
                                         shader::kDisplayedPsfMinSigmaPx);
-          const double half = shader::kStarPsfRadiusSigmas * std::max(sigma, shader::kStarPsfSigmaPx) + 0.5;
+          const double half = shader::starPsfQuadHalfSizePx(std::max(sigma, shader::kStarPsfSigmaPx));
           const bool overlaps = px.x + half > 0.0 && px.x - half < c.width && px.y + half > 0.0 && px.y - half < c.height;
           const bool mayBe = starMayBeInView(worldToNdc, m * glm::dvec3(ndc, 1.0), reachX, reachY);
           if (overlaps) {

@@ -163,9 +163,21 @@ MilkyWayMap::MilkyWayMap(const std::string& pngPath) {
   for (glm::vec3& t : texels_) {
     const double y709 = luminance(t);
     const double s10 = std::max(scale * (y709 - offset), 0.0);
-    // The photograph's black (its sky background already removed) carries the affine map's
-    // floor, grey: the faint starlight there has no colour the map can tell.
-    t = y709 > 1e-6 ? glm::vec3(glm::dvec3(t) * (s10 / y709)) : glm::vec3(static_cast<float>(s10));
+    // The affine map per channel, scale (t - offset grey): the photograph's black (its sky
+    // background already removed) carries the floor, grey, since the faint starlight there has
+    // no colour the photograph can tell, and only the light above it has the photograph's
+    // colour; its luminance is s10. (Scaling each texel's own colour to s10 turned a texel whose
+    // blue channel alone had left the black into pure blue at the floor's luminance: a
+    // hard-edged blue patch along the band.) Where the offset is positive a dim coloured texel
+    // can go below zero in a channel: it is desaturated towards grey at its luminance.
+    glm::dvec3 c = scale * (glm::dvec3(t) - glm::dvec3(offset));
+    const double least = std::min({c.r, c.g, c.b});
+    if (s10 <= 0.0) {
+      c = glm::dvec3(0.0);
+    } else if (least < 0.0) {
+      c = glm::dvec3(s10) + (c - glm::dvec3(s10)) * (s10 / (s10 - least));
+    }
+    t = glm::vec3(c);
   }
   // What the clip left of the anchors, for the record.
   measure(meanPole_, bright_);

@@ -271,3 +271,34 @@ TEST_F(StarFieldSeen, UnderAFullMoonTheBrightStarsStay) {
   EXPECT_GE(s.toThreeHalf.fraction(), 0.80);
   EXPECT_EQ(s.fainterThanLimitShown, 0);
 }
+
+// The Milky Way at the dark site (the band crosses the channel's right side): its colour in the
+// HDR frame (no stars, so no point decides) changes by less than 2% (CIE xy distance 0.02 of the
+// chromaticity's own scale, as |dxy| / |xy| < 0.02) between neighbouring pixels, at 5.6 arcmin a
+// pixel where a step of the map would show most. (The map's near-black texels scaled to the
+// calibration's floor in their own colour made a hard-edged blue patch: 0.099 per pixel; now 0.0025.)
+TEST_F(StarFieldSeen, TheMilkyWaysColourHasNoSteps) {
+  const ObserverState o = darkSite();
+  const SkyConditions c = conditions(o);
+  SkyState s = buildSkyState(o, c);
+  s.starField = nullptr;
+  const ChannelConfig ch = channel(640, 427);
+  renderer_->draw(s, ch);
+  const HdrImage hdr = renderer_->readHdr();
+  auto xy = [&](int x, int y) {
+    const float* p = hdr.pixel(x, y);
+    const glm::dvec3 rgb(p[0], p[1], p[2]);
+    const glm::dvec3 xyz(0.4124 * rgb.r + 0.3576 * rgb.g + 0.1805 * rgb.b, 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b,
+                         0.0193 * rgb.r + 0.1192 * rgb.g + 0.9505 * rgb.b);
+    return glm::dvec2(xyz.x, xyz.y) / (xyz.x + xyz.y + xyz.z);
+  };
+  double largest = 0.0;
+  for (int y = 0; y + 1 < hdr.height; ++y)
+    for (int x = 0; x + 1 < hdr.width; ++x) {
+      const glm::dvec2 here = xy(x, y);
+      const double step = std::max(glm::length(xy(x + 1, y) - here), glm::length(xy(x, y + 1) - here)) / glm::length(here);
+      largest = std::max(largest, step);
+    }
+  std::printf("largest relative chromaticity step between neighbouring pixels: %.4f\n", largest);
+  EXPECT_LT(largest, 0.02);
+}

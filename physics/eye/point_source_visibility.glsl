@@ -81,8 +81,9 @@ Float maxWorldVisibility() {
 // 0.41 LSB for a triangular +-1 LSB dither). The display threshold is therefore the larger of
 // the two: Schaefer's at the display's luminance, and the star's brightest pixel
 // kDisplayThresholdCodes codes over the displayed sky around it, with the star at the worst
-// place, a pixel's corner (physics/stars/star_psf.glsl, starPsfPeakSolidAngle). Both are fixed by the display and its pixel scale, so a star the eye
-// just sees looks the same on a channel of 1, 2 or 4 arcmin a pixel.
+// place, a pixel's corner (physics/stars/star_psf.glsl, starPsfPeakSolidAngle). Both are fixed
+// by the display and its pixel scale, so a star the eye just sees looks the same on a channel
+// of 1, 2 or 4 arcmin a pixel.
 const Float kDisplayThresholdCodes = 4.0;
 
 // The display luminance step (cd/m^2) that raises a pixel shown at `backgroundCdM2` by

@@ -3,11 +3,10 @@
 // sky behind it (physics/eye/point_source_visibility.glsl, docs/night-sky-stars.md), so a star
 // at the threshold just appears, brighter ones rank by magnitude, and the result does not depend
 // on the channel's resolution.
-#include "tables/table_cache.h"
-#include "render/gl/gl_context.h"
 #include "render/image_io.h"
 #include "render/sky_renderer.h"
 #include "physics/stars/star_physics.h"
+#include "tests/physics/night/night_gl_fixture.h"
 #include "tests/physics/night/star_test_support.h"
 
 #include <gtest/gtest.h>
@@ -25,22 +24,8 @@ using skyig::night_testing::kDeg;
 
 namespace {
 
-class StarDisplay : public ::testing::Test {
+class StarDisplay : public night_testing::NightGlTest {
  protected:
-  static void SetUpTestSuite() {
-    context_ = createHeadlessContext().release();
-    renderer_ = new SkyRenderer();
-    atmosphere::ModelConfig config;
-    config.sizes = atmosphere::TableSizes::small();
-    model_ = new std::shared_ptr<const atmosphere::AtmosphereModel>(std::make_shared<const atmosphere::AtmosphereModel>(
-        atmosphere::loadOrPrecompute(config, std::filesystem::path(SKYIG_BINARY_DIR) / "atmosphere-test-cache")));
-  }
-  static void TearDownTestSuite() {
-    delete renderer_;
-    delete model_;
-    delete context_;
-  }
-
   // The physical sky over Innsbruck; at a chosen sun altitude (no moon, no diffuse night light)
   // or, without one, on the moonless night of 2026-01-18 21:00 UTC with the night light.
   static SkyState sky(std::optional<double> sunAltitudeDeg = std::nullopt) {
@@ -150,9 +135,6 @@ class StarDisplay : public ::testing::Test {
     return shader::rec709Luminance(glm::dvec3(p[0], p[1], p[2]));
   }
 
-  static inline GlContext* context_ = nullptr;
-  static inline SkyRenderer* renderer_ = nullptr;
-  static inline std::shared_ptr<const atmosphere::AtmosphereModel>* model_ = nullptr;
 };
 
 }  // namespace

@@ -7,12 +7,11 @@
 // (physics/eye/point_source_visibility.glsl); the display's side is the display threshold the
 // displayed-star pass maps a just-visible star to (docs/night-sky-stars.md, "The display's
 // threshold"). What a channel shows must not depend on its pixel scale.
-#include "tables/table_cache.h"
-#include "render/gl/gl_context.h"
 #include "render/image_io.h"
 #include "render/sky_renderer.h"
 #include "physics/analytic/analytic_sky.h"
 #include "physics/stars/star_physics.h"
+#include "tests/physics/night/night_gl_fixture.h"
 #include "tests/physics/night/star_test_support.h"
 
 #include <gtest/gtest.h>
@@ -31,22 +30,8 @@ using skyig::night_testing::kDeg;
 
 namespace {
 
-class StarFieldSeen : public ::testing::Test {
+class StarFieldSeen : public night_testing::NightGlTest {
  protected:
-  static void SetUpTestSuite() {
-    context_ = createHeadlessContext().release();
-    renderer_ = new SkyRenderer();
-    atmosphere::ModelConfig config;
-    config.sizes = atmosphere::TableSizes::small();
-    model_ = new std::shared_ptr<const atmosphere::AtmosphereModel>(std::make_shared<const atmosphere::AtmosphereModel>(
-        atmosphere::loadOrPrecompute(config, std::filesystem::path(SKYIG_BINARY_DIR) / "atmosphere-test-cache")));
-  }
-  static void TearDownTestSuite() {
-    delete renderer_;
-    delete model_;
-    delete context_;
-  }
-
   static SkyConditions conditions(const ObserverState& o) {
     SkyConditions c;
     c.model = SkyModel::Physical;
@@ -219,9 +204,6 @@ class StarFieldSeen : public ::testing::Test {
                 s.strayPeaks, s.meanSkyCdM2, skyMagnitude(s.meanSkyCdM2), shader::limitingMagnitude(s.meanSkyCdM2));
   }
 
-  static inline GlContext* context_ = nullptr;
-  static inline SkyRenderer* renderer_ = nullptr;
-  static inline std::shared_ptr<const atmosphere::AtmosphereModel>* model_ = nullptr;
 };
 
 }  // namespace

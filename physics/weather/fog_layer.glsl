@@ -31,11 +31,12 @@ Float chordBelowHeight(Float R, Float h, Float mu, Float d, Float h_s) {
 }
 
 // The transition band (CIGI Weather Control): above the top (and below a raised bottom) the
-// extinction falls linearly to none over band_height metres (bottom_band_height below the bottom). Along the ray x(t) the height under
-// a level h_s is, to first order, q(t) = (r_s^2 - |x(t)|^2) / 2 r_s = a - b t - k t^2 (exact but
-// for a factor 1 - (h_s - h) / 2 r_s: 1e-4 at 1.3 km), a concave quadratic in t, so the integral
-// of max(q - c, 0) over [0, d] has a closed form: between the roots of q = c, taken as
-// chordBelowHeight takes them, as (t1 - t0)(a - b (t0 + t1) / 2 - k (t0^2 + t0 t1 + t1^2) / 3).
+// extinction falls linearly to none over band_height metres (bottom_band_height below the
+// bottom). Along the ray x(t) the height under a level h_s is, to first order,
+// q(t) = (r_s^2 - |x(t)|^2) / 2 r_s = a - b t - k t^2 (exact but for a factor 1 - (h_s - h) /
+// 2 r_s: 1e-4 at 1.3 km), a concave quadratic in t, so the integral of max(q - c, 0) over [0, d]
+// has a closed form: between the roots of q = c, taken as chordBelowHeight takes them, as
+// (t1 - t0)(a - b (t0 + t1) / 2 - k (t0^2 + t0 t1 + t1^2) / 3).
 Float depthBelowIntegral(Float R, Float h, Float mu, Float d, Float h_s, Float c) {
   Float r_s = R + h_s;
   Float a = (h_s - h) * (2.0 * R + h_s + h) / (2.0 * r_s) - c;

@@ -179,6 +179,7 @@ bool SkyRenderer::drawSky(const skyig::sky::SkyState& state, const skyig::sky::C
                       state.fog.tables.heightM);
     physical_->setCloudCover(state.fog.cover, sky::withoutBrokenDecks(state.fog, drawn),
                              skyig::sky::clearFogTableFor(state.fog, channel.band));
+    physical_->setPixelAngle(skyig::sky::largestPixelAngleRad(channel.frustum, channel.width, channel.height));
     physical_->setSunThroughFog(
         state.fog.any() ? sky::fogTransmittanceToSpaceAlong(state.fog, *state.conditions.atmosphere, state.observer.heightM,
                                                             sky::enuDirection(state.sunAzimuth, state.sunApparentAltitude))

@@ -1,6 +1,7 @@
 #include "sky/camera.h"
 #include "physics/common/units.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -44,6 +45,12 @@ glm::dvec3 pixelRay(const glm::dmat3& m, int column, int row, int width, int hei
   const double x = 2.0 * (column + 0.5) / width - 1.0;
   const double y = 1.0 - 2.0 * (row + 0.5) / height;
   return glm::normalize(m * glm::dvec3(x, y, 1.0));
+}
+
+double largestPixelAngleRad(const Frustum& f, int width, int height) {
+  const double across = (std::tan(f.leftDeg * kDeg) + std::tan(f.rightDeg * kDeg)) / std::max(width, 1);
+  const double down = (std::tan(f.upDeg * kDeg) + std::tan(f.downDeg * kDeg)) / std::max(height, 1);
+  return std::max(across, down);
 }
 
 }  // namespace skyig::sky

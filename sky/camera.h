@@ -35,4 +35,9 @@ glm::dmat3 ndcToWorld(const glm::dmat3& eyeToEnu, const Frustum& frustum);
 // The unit ENU view ray through the centre of pixel (column, row), row 0 at the top.
 glm::dvec3 pixelRay(const glm::dmat3& ndcToWorld, int column, int row, int width, int height);
 
+// The largest angle (rad) a pixel of a width x height channel spans along either axis: the
+// pixel's pitch on the image plane at unit distance, since a step dt there turns the ray by
+// cos^2(theta) dt <= dt (largest at the projection's centre, tan theta = t).
+double largestPixelAngleRad(const Frustum& frustum, int width, int height);
+
 }  // namespace skyig::sky

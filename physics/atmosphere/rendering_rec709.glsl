@@ -94,20 +94,13 @@ Float sunDiscFraction(IN(vec3) disc_ray, IN(vec3) sun_direction, Float sin_radiu
   return sqrt(max(chord2 * (1.0 - 0.25 * chord2), 0.0)) / sin_radius;
 }
 
-// The limb-darkened, attenuated sun disc in XYZ (cd/m^2 for Y), the limb darkening exponent
-// per XYZ channel (sun-weighted mean of the spectral exponents). The disc is where disc_ray,
-// the airless direction the pixel sees (physics/common/refraction.glsl: unrefractView), falls
-// within the sun's radius; its light reaches the camera along view_ray, the apparent direction,
-// and is attenuated by that ray's own transmittance: the lower limb of a setting sun redder and
-// dimmer than the upper, smoothly, as the transmittance table is.
-vec3 packedRefractedSunDiscXyz(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_xyz,
-                               IN(vec3) solar_irradiance_xyz, IN(vec3) limb_darkening_xyz,
-                               IN(vec3) camera_position, IN(vec3) view_ray, IN(vec3) disc_ray,
-                               IN(vec3) sun_direction) {
-  Float x = sunDiscFraction(disc_ray, sun_direction, sin(atm.sun_angular_radius));
-  if (x >= 1.0) {
-    return vec3(0.0);
-  }
+// The limb-darkened, attenuated sun disc in XYZ (cd/m^2 for Y) at x (sunDiscFraction, below 1),
+// its light reaching the camera along view_ray; the limb darkening exponent per XYZ channel
+// (sun-weighted mean of the spectral exponents). physical_sky.frag takes x at the middle of the
+// part of a pixel on the disc (its limb anti-aliased).
+vec3 packedSunDiscAtXyz(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_xyz,
+                        IN(vec3) solar_irradiance_xyz, IN(vec3) limb_darkening_xyz,
+                        IN(vec3) camera_position, IN(vec3) view_ray, Float x) {
   Float r = length(camera_position);
   Float mu_view = dot(camera_position, view_ray) / r;
   Float rmu = r * mu_view;
@@ -131,6 +124,22 @@ vec3 packedRefractedSunDiscXyz(IN(AtmosphereParameters) atm, IN(sampler2D) trans
   vec3 darkening = vec3(pow(mu, a.x), pow(mu, a.y), pow(mu, a.z)) * (a + vec3(2.0)) * 0.5;
   return solar_irradiance_xyz / (ATMOSPHERE_PI * atm.sun_angular_radius * atm.sun_angular_radius) *
          darkening * vec3(t.x, t.y, t.z);
+}
+
+// The disc where disc_ray, the airless direction the pixel sees (physics/common/refraction.glsl:
+// unrefractView), falls within the sun's radius; its light reaches the camera along view_ray,
+// the apparent direction, and is attenuated by that ray's own transmittance: the lower limb of a
+// setting sun redder and dimmer than the upper, smoothly, as the transmittance table is.
+vec3 packedRefractedSunDiscXyz(IN(AtmosphereParameters) atm, IN(sampler2D) transmittance_xyz,
+                               IN(vec3) solar_irradiance_xyz, IN(vec3) limb_darkening_xyz,
+                               IN(vec3) camera_position, IN(vec3) view_ray, IN(vec3) disc_ray,
+                               IN(vec3) sun_direction) {
+  Float x = sunDiscFraction(disc_ray, sun_direction, sin(atm.sun_angular_radius));
+  if (x >= 1.0) {
+    return vec3(0.0);
+  }
+  return packedSunDiscAtXyz(atm, transmittance_xyz, solar_irradiance_xyz, limb_darkening_xyz, camera_position,
+                            view_ray, x);
 }
 
 // The same without refraction (a camera in space sees the sun along its own direction).

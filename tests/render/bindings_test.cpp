@@ -180,6 +180,20 @@ std::vector<ProgramCase> programs() {
        "#define SKYIG_MOONLIT\n#define SKYIG_SKY\n#define SKYIG_SUNLESS\n#define SKYIG_NIGHT_LAYER\n"
        "#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n#define SKYIG_NIGHT_LAYER_TRANSMITTED\n#define SKYIG_FOLD_TONE\n"
        "#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n#define SKYIG_GLARE_FROM_NIGHT_LAYER\n"},
+      // The pixels the horizon crosses, drawn last on the strip around it (PhysicalSkyPass::
+      // drawHorizonEdge): the ground's and the sky's rays, the disc where the sun is on it; at
+      // night with the layer (per-pixel transmittance) and the tone folded in.
+      {{"render/passes/sky/horizon_strip.vert", "render/passes/sky/physical_sky.frag"},
+       physicalSky(true, true, true),
+       "#define SKYIG_MOONLIT\n#define SKYIG_HORIZON_EDGE\n#define SKYIG_SUN_DISC\n"},
+      {{"render/passes/sky/horizon_strip.vert", "render/passes/sky/physical_sky.frag"},
+       with(physicalSky(true, true, true, false),
+            {sampler("nightLayer", SKYIG_UNIT_NIGHT_LAYER),
+             sampler("nightExtinction", SKYIG_UNIT_NIGHT_LAYER_EXTINCTION),
+             block("ToneBlock", SKYIG_BINDING_TONE), output("outDisplay", SKYIG_OUTPUT_FOLDED_DISPLAY)}),
+       "#define SKYIG_MOONLIT\n#define SKYIG_HORIZON_EDGE\n#define SKYIG_SUNLESS\n#define SKYIG_NIGHT_LAYER\n"
+       "#define SKYIG_NIGHT_LAYER_CELL_PX 3.0\n#define SKYIG_FOLD_TONE\n#define SKYIG_TONE_CURVE\n#define SKYIG_GLARE 1\n"
+       "#define SKYIG_GLARE_FROM_NIGHT_LAYER\n"},
       {{"render/glsl/fullscreen.vert", "render/passes/sky/physical_sky_reference.frag"}, physicalSky(true, true, true)},
       {{"render/glsl/fullscreen.vert", "render/passes/sky/physical_sky_space.frag"},
        {frame, band, sampler("transmittanceXyz", SKYIG_UNIT_TRANSMITTANCE), sampler("scatteringPacked", SKYIG_UNIT_SCATTERING),

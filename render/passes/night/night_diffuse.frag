@@ -19,6 +19,7 @@
 #include "physics/night/airglow.glsl"
 #include "render/glsl/band.glsl"
 #include "physics/night/transmittance_to_space.glsl"
+#include "render/glsl/edge_coverage.glsl"
 
 uniform mat3 enuToJ2000;
 uniform vec3 sunJ2000;
@@ -91,6 +92,7 @@ void main() {
   outRadiance = vec4(sky, veil);
   outTransmitted = vec4(transmittanceToSpace(extinctionRec709, view) * sky, veil);
 #else
-  outRadiance = vec4(sky + (view.z < 0.0 ? inBand(nightGroundRadiance, nightWeights.y) : vec3(0.0)), 0.0);
+  // The terrain below the geometric horizon by its share of the pixel (render/glsl/edge_coverage.glsl).
+  outRadiance = vec4(sky + (1.0 - pixelShareAbove(view.z)) * inBand(nightGroundRadiance, nightWeights.y), 0.0);
 #endif
 }

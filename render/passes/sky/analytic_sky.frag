@@ -1,8 +1,11 @@
 // Sky pass of the analytic models (CIE general sky, Preetham): absolute linear Rec.709
-// radiance in cd/m^2 into a float target.
+// radiance in cd/m^2 into a float target. The horizon and the sun's limb are shared by the
+// pixels they cross (render/glsl/edge_coverage.glsl): analyticSkyRadiance's two edges, each
+// pixel the mix of its sides by their areas, so neither steps.
 #include "render/glsl/uniforms.h"
 #include "physics/analytic/analytic_sky.glsl"
 #include "render/glsl/band.glsl"
+#include "render/glsl/edge_coverage.glsl"
 
 in vec3 vViewRay;
 layout(location = SKYIG_OUTPUT_COLOR) out vec4 outRadiance;
@@ -12,5 +15,11 @@ void main() {
                                 perezK.xyz, zenith.xyz, skySunDirection.xyz, skySunDirection.w,
                                 sunDirection.xyz, sunDirection.w, sunRadiance.rgb,
                                 groundRadiance.rgb);
-  outRadiance = vec4(inBand(analyticSkyRadiance(sky, normalize(vViewRay)), lightWeights.x), 1.0);
+  vec3 view = normalize(vViewRay);
+  float skyShare = pixelShareAbove(view.z);
+  float discShare = pixelShareAbove(dot(view, sky.sunDirection) - sky.cosSunRadius);
+  // A centre just below the horizon takes the sky's light of the horizon above it.
+  vec3 above = normalize(vec3(view.xy, max(view.z, 1e-6)));
+  vec3 light = analyticSkyLight(sky, above) + discShare * sky.sunRadiance;
+  outRadiance = vec4(inBand(mix(sky.groundRadiance, light, skyShare), lightWeights.x), 1.0);
 }

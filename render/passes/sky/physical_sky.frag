@@ -37,6 +37,10 @@
 //   SKYIG_HORIZON_BAND the sky below that elevation with the transmittance per pixel, a cap of
 //                   directions like the ground's (render/passes/sky/ground_cap.vert) writing depth after the
 //                   ground's (the define only names the program: it is SKYIG_SKY's code);
+//   SKYIG_HORIZON_EDGE the pixels the horizon crosses, drawn last on a strip around it
+//                   (render/passes/sky/horizon_strip.vert) with no depth test: the ground's and
+//                   the sky's rays mixed by their shares of the pixel (docs/anti-aliasing.md), the
+//                   disc with the sky's; a pixel wholly on one side is discarded, the parts' own;
 //   SKYIG_FOLD_TONE with the tone pass's variant defines: the pass also writes what the display
 //                   is sent (render/passes/tone/tone_display.glsl) at SKYIG_OUTPUT_FOLDED_DISPLAY, when it is
 //                   the frame's last full-screen pass: no second pass reads every pixel back
@@ -52,6 +56,7 @@
 // in render/glsl/frame_uniforms.h, the tone block in render/glsl/tone_uniforms.h.)
 #include "render/passes/sky/physical_sky_uniforms.glsl"
 #include "render/glsl/band.glsl"
+#include "render/glsl/edge_coverage.glsl"
 #ifdef SKYIG_FOG
 #include "physics/weather/fog_table.glsl"
 // The haze below the tables' visibility, the ground fog and the precipitation (sky/fog_state.h)
@@ -174,6 +179,10 @@ float frameUMu(float rmu, bool ground, out float d) {
 // the table's share of the clear air's light, which a deck seen through the air in front of it
 // keeps in part (physics/weather/fog_table.h).
 vec3 sunDiscHere = vec3(0.0);
+#ifdef SKYIG_SUN_DISC
+float sunDiscX = 2.0;           // where the pixel's airless direction falls (sunDiscFraction)
+vec2 sunDiscXStep = vec2(0.0);  // and its change to the next pixel (x, y)
+#endif
 #ifdef SKYIG_FOG
 uniform float fogSunThrough;  // the layers' transmittance along the sun's apparent direction
 #endif
@@ -182,18 +191,10 @@ uniform float fogSunThrough;  // the layers' transmittance along the sun's appar
 // extinction profile lets through (cloudFieldFactor): behind a cloud or in a gap, as the stars.
 float nightThroughClouds = 1.0;
 
-// d: the distance the view ray goes on (to the ground, or out of the atmosphere).
-vec3 insideRec709(vec3 view, out float d) {
-  float r = frameRadii.x;
+// The air's light along `view`, taken as a ray that meets the ground or as one that misses it.
+vec3 insideRec709(vec3 view, bool ground) {
   float rmu = dot(camera, view);
-#if defined(SKYIG_SKY)
-  const bool ground = false;
-#else
-  bool ground = rayIntersectsGround(atm, r, rmu / r);
-#if defined(SKYIG_GROUND)
-  if (!ground) discard;
-#endif
-#endif
+  float d;  // the distance the view ray goes on (to the ground, or out of the atmosphere)
   float u_mu = frameUMu(rmu, ground, d);
   float nu = dot(view, sunDirectionP);
 #ifdef SKYIG_SUNLESS
@@ -218,11 +219,15 @@ vec3 insideRec709(vec3 view, out float d) {
   // The disc as seen: refracted and flattened (physics/common/refraction.glsl), where the airless
   // direction this pixel sees falls on the airless sun, within the cone (frameAngles.z) the
   // refracted disc can fall in.
-  if (!ground && nu >= frameAngles.z) {
-    vec3 airless = unrefractView(view, sunRefraction);
-    sunDiscHere = bandRatio(band.y) * xyzToRec709Linear(packedRefractedSunDiscXyz(atm, transmittanceXyz, solarIrradianceXyz,
-                                                              limbDarkeningXyz, camera, view, airless,
-                                                              sunDirectionP));
+  // The limb shared by the pixels it crosses (render/glsl/edge_coverage.glsl): the pixel's part on
+  // the disc, shown at the middle of that part (its centre for a pixel within the disc, half the
+  // part's depth inside the limb for one across it), so the limb neither steps nor moves.
+  float share = pixelShareAbove(1.0 - sunDiscX, -sunDiscXStep);
+  if (!ground && nu >= frameAngles.z && share > 0.0) {
+    float x = min(sunDiscX, 1.0 - 0.5 * share * length(sunDiscXStep));
+    sunDiscHere = share * bandRatio(band.y) *
+                  xyzToRec709Linear(packedSunDiscAtXyz(atm, transmittanceXyz, solarIrradianceXyz, limbDarkeningXyz,
+                                                       camera, view, x));
   }
 #endif
   return rgb;
@@ -232,8 +237,37 @@ void main() {
   // In a goggle's band the sum is weighted as sunlit sky, its other parts scaled above by their
   // weights' ratios to it (render/glsl/band.glsl).
   vec3 view = normalize(vViewRay);
-  float d;
-  vec3 radiance = inBand(insideRec709(view, d), lightWeights.x);
+#ifdef SKYIG_SUN_DISC
+  // Taken before any discard, as derivatives need the whole quad.
+  sunDiscX = sunDiscFraction(unrefractView(view, sunRefraction), sunDirectionP, sin(atm.sun_angular_radius));
+  sunDiscXStep = vec2(dFdx(sunDiscX), dFdy(sunDiscX));
+#endif
+#ifdef SKYIG_NIGHT_LAYER
+  // The terrain under the night's light is below the geometric horizon (night_diffuse.frag's
+  // edge), shared by its pixels as the air's horizon is; taken before any discard, as
+  // derivatives need the whole quad.
+  float nightGroundShare = 1.0 - pixelShareAbove(view.z);
+#endif
+  // The ray misses the ground where its cosine to the vertical (view.z: the camera is on the
+  // model's +z axis) exceeds the horizon's, -rho / r (rayIntersectsGround).
+#if defined(SKYIG_HORIZON_EDGE)
+  // The pixels the horizon crosses, drawn over the parts: the ground's light and the sky's, each
+  // by its share of the pixel's square (render/glsl/edge_coverage.glsl), so the horizon is as
+  // sharp as the pixels allow and does not step. Every other pixel is the parts' own.
+  float skyShare = pixelShareAbove(view.z + frameRadii.y / frameRadii.x);
+  if (skyShare <= 0.0 || skyShare >= 1.0) discard;
+  vec3 air = mix(insideRec709(view, true), insideRec709(view, false), skyShare);
+  sunDiscHere *= skyShare;
+#elif defined(SKYIG_SKY)
+  vec3 air = insideRec709(view, false);
+#else
+  bool ground = rayIntersectsGround(atm, frameRadii.x, dot(camera, view) / frameRadii.x);
+#if defined(SKYIG_GROUND)
+  if (!ground) discard;
+#endif
+  vec3 air = insideRec709(view, ground);
+#endif
+  vec3 radiance = inBand(air, lightWeights.x);
   vec3 disc = inBand(sunDiscHere, lightWeights.x);
 #ifndef SKYIG_FOG
   radiance = max(radiance + disc, vec3(0.0));  // summed before the clamp: a red disc keeps the sky's blue
@@ -266,10 +300,10 @@ void main() {
 #ifdef SKYIG_NIGHT_LAYER
   nightLayerHere = nightLayerAt(gl_FragCoord.xy);
 #if defined(SKYIG_NIGHT_LAYER_TRANSMITTED)
-  radiance += nightThroughClouds * nightLayerHere.rgb + (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
+  radiance += nightThroughClouds * nightLayerHere.rgb + nightGroundShare * nightGroundRadiance;
 #else
   radiance += nightThroughClouds * transmittanceToSpace(nightExtinction, view) * nightLayerHere.rgb +
-              (view.z < 0.0 ? nightGroundRadiance : vec3(0.0));
+              nightGroundShare * nightGroundRadiance;
 #endif
 #endif
   outRadiance = vec4(radiance, 1.0);

@@ -54,6 +54,7 @@ PhysicalSkyPass::Program::Program(const char* vertex, const char* fragment, cons
       radii(glGetUniformLocation(program.id(), "frameRadii")),
       angles(glGetUniformLocation(program.id(), "frameAngles")),
       groundCap(glGetUniformLocation(program.id(), "groundCap")),
+      horizonStrip(glGetUniformLocation(program.id(), "horizonStrip")),
       nightGround(glGetUniformLocation(program.id(), "nightGroundRadiance")),
       cloudField(program.id()),
       lit(glGetUniformLocation(program.id(), "cloudLit")),
@@ -385,8 +386,9 @@ PhysicalSkyPass::Frame PhysicalSkyPass::frameInside(const glm::dvec3& camera, co
   const double rho = std::sqrt(std::max(r * r - a.bottom_radius * a.bottom_radius, 0.0));
   const double h = std::sqrt(a.top_radius * a.top_radius - a.bottom_radius * a.bottom_radius);
   // The cone the refracted disc can fall in, around the airless sun: its radius, the lift of
-  // its centre and the change of that lift across it, with room to spare. Only the pixels
-  // within it take unrefractView's transcendentals: the disc's quad covers it.
+  // its centre and the change of that lift across it, with room to spare, and a pixel more for
+  // the pixels whose centres lie outside the limb it crosses. Only the pixels within it take
+  // unrefractView's transcendentals: the disc's quad covers it.
   const double radius = a.sun_angular_radius;
   const double reach = radius + std::abs(sunRefraction.y) +
                        2.0 * (std::abs(sunRefraction.z) * radius + std::abs(sunRefraction.w) * radius * radius);
@@ -400,13 +402,14 @@ PhysicalSkyPass::Frame PhysicalSkyPass::frameInside(const glm::dvec3& camera, co
   f.moonlightScale = moonlightScale;
   f.sunRefraction = sunRefraction;
   f.radii = glm::vec4(static_cast<float>(r), static_cast<float>(rho), static_cast<float>(h), static_cast<float>(sunUvwz.w));
-  f.angles = glm::vec3(static_cast<float>(sunUvwz.y), static_cast<float>(moonUvwz.y), static_cast<float>(std::cos(1.1 * reach)));
+  f.angles = glm::vec3(static_cast<float>(sunUvwz.y), static_cast<float>(moonUvwz.y), static_cast<float>(std::cos(1.1 * reach + pixelAngleRad_)));
   f.sunUvwz = sunUvwz;
   f.moonUvwz = moonUvwz;
   f.moon = moonlightScale != glm::dvec3(0.0);
   f.sunlit = sunlit;
   f.night = &night;
   f.horizonRing = horizon + 0.1 * std::numbers::pi / 180.0;
+  f.horizon = horizon;
   return f;
 }
 
@@ -452,11 +455,36 @@ void PhysicalSkyPass::drawWithoutDepth(const Frame& f, const SkyVariant& base) {
   prepare(program(base), f);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   drawDisc(f, base);
+  drawHorizonEdge(f, base);
+}
+
+// The strip a pixel and a half wide either side of the horizon (its pixels' centres lie within
+// half a diagonal of the line, and an angle on the sphere is at least the difference of the
+// elevations), with the disc where the sun is on it. Drawn last, over the parts' pixels: those
+// it does not discard are the ones the horizon crosses.
+void PhysicalSkyPass::drawHorizonEdge(const Frame& f, const SkyVariant& base) {
+  constexpr int kSegments = 256;
+  SkyVariant v = base;
+  v.part = SkyVariant::Part::horizonEdge;
+  v.sunDisc = f.sunlit;
+  v.nightLayerTransmitted = false;
+  const Program& edge = program(v);
+  prepare(edge, f);
+  const double margin = 1.5 * pixelAngleRad_ + 1e-5;
+  const double half = 0.5 * std::numbers::pi - 1e-3;
+  const double low = std::max(f.horizon - margin, -half), high = std::min(f.horizon + margin, half);
+  glProgramUniform4f(edge.program.id(), edge.horizonStrip, static_cast<float>(std::sin(low)),
+                     static_cast<float>(std::cos(low)), static_cast<float>(std::sin(high)), static_cast<float>(kSegments));
+  GLboolean depthTest = GL_FALSE;
+  glGetBooleanv(GL_DEPTH_TEST, &depthTest);
+  glDisable(GL_DEPTH_TEST);
+  glDrawArrays(GL_TRIANGLES, 0, 6 * kSegments);
+  if (depthTest) glEnable(GL_DEPTH_TEST);
 }
 
 // The ground, the band and the sky, each where the depth buffer still holds the clear's 1 (all
 // at depth 0.5: early depth testing skips the pixels an earlier part drew). The sky writes no
-// depth, so the disc's quad after it draws where the sky is.
+// depth, so the disc's quad after it draws where the sky is; the horizon's edge last, over all.
 void PhysicalSkyPass::drawParts(const Frame& f, const SkyVariant& base) {
   constexpr int kSegments = 256;
   using Part = SkyVariant::Part;
@@ -491,6 +519,7 @@ void PhysicalSkyPass::drawParts(const Frame& f, const SkyVariant& base) {
   if (band) glBindTextureUnit(SKYIG_UNIT_NIGHT_LAYER, night.texture);
   v.nightLayerTransmitted = false;
   drawDisc(f, v);  // where the sky is: no depth written; the night's light per pixel
+  drawHorizonEdge(f, base);
   glDepthMask(GL_TRUE);
 }
 

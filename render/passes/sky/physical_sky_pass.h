@@ -84,6 +84,9 @@ class PhysicalSkyPass {
   // The layers' transmittance along the sun's apparent direction, what its disc is dimmed by
   // under them (sky/fog_state.h, fogTransmittanceToSpaceAlong); 1 until set.
   void setSunThroughFog(double transmittance) { sunThroughFog_ = transmittance; }
+  // The largest angle (rad) one pixel of the channel drawn next spans: the horizon's edge is drawn
+  // on a strip this wide (and a half) either side of it (sky/camera.h, largestPixelAngleRad).
+  void setPixelAngle(double radians) { pixelAngleRad_ = radians; }
 
   void setCloudCover(const std::array<weather::CloudCover, sky::kCloudLayers>& cover, const weather::FogLayers& clear,
                      std::shared_ptr<const std::vector<glm::vec4>> clearTable = nullptr) {
@@ -143,7 +146,7 @@ class PhysicalSkyPass {
   struct Program {
     Program(const char* vertex, const char* fragment, const std::string& defines = "");
     GlProgram program;
-    GLint camera, sun, sunRefraction, moonOn, moonDirection, moonScale, radii, angles, groundCap, nightGround;
+    GLint camera, sun, sunRefraction, moonOn, moonDirection, moonScale, radii, angles, groundCap, horizonStrip, nightGround;
     CloudFieldLocations cloudField;                     // SKYIG_CLOUD_COVER's
     GLint lit, litSide, litEye;                          // SKYIG_CLOUD_LIGHT's
     GLint sunThrough;                                                // SKYIG_FOG's
@@ -186,6 +189,7 @@ class PhysicalSkyPass {
     bool moon = false, sunlit = true;
     const NightLayer* night = nullptr;
     double horizonRing = 0.0;  // elevation (rad) a little above the horizon's circle
+    double horizon = 0.0;      // the horizon's elevation (rad)
   };
   Frame frameInside(const glm::dvec3& camera, const glm::dvec3& sunDirection, const glm::dvec3& moonDirection,
                     const glm::dvec3& moonlightScale, const glm::dvec4& sunRefraction, const NightLayer& night,
@@ -200,8 +204,11 @@ class PhysicalSkyPass {
   void drawDisc(const Frame& f, const SkyVariant& base);
   // Into a target without depth: both parts at once, then the disc.
   void drawWithoutDepth(const Frame& f, const SkyVariant& base);
-  // Into a target with depth: the ground, the band near the horizon, the sky, the disc.
+  // Into a target with depth: the ground, the band near the horizon, the sky, the disc, the
+  // horizon's edge.
   void drawParts(const Frame& f, const SkyVariant& base);
+  // The pixels the horizon crosses, over what the parts drew there (no depth test or write).
+  void drawHorizonEdge(const Frame& f, const SkyVariant& base);
 
   int slicesPerFrame_;
   // Inside the atmosphere, by variant (program()).
@@ -224,6 +231,7 @@ class PhysicalSkyPass {
   std::shared_ptr<const std::vector<glm::vec4>> fogClearPrecomputed_;
   std::unique_ptr<FogTableTexture> fogClearTable_ = std::make_unique<FogTableTexture>();
   double cloudLightLowestZ_ = 1.0;
+  double pixelAngleRad_ = 1e-3;
   double sunThroughFog_ = 1.0;  // this frame's lowest light drawn, the sine of its elevation
   GLuint cloudLightTable_ = 0;  // kCloudLightTableSize x 6, RGBA32F, made at first use
   std::array<double, sky::kCloudLayers + 2> cloudLightKey_{};  // faces, eye, model of what it holds

@@ -14,8 +14,10 @@ namespace skyig::render {
 struct SkyVariant {
   // Which rays it draws: both (a target without depth), the sky's (where the ground's wrote no
   // depth), the ground's (first, on the cap below the horizon), or the sky within
-  // kNightLayerBandDeg of the horizon (a cap like the ground's) when the night's layer is added.
-  enum class Part { both, sky, ground, horizonBand };
+  // kNightLayerBandDeg of the horizon (a cap like the ground's) when the night's layer is added,
+  // or the pixels the horizon crosses, both rays by their shares of the pixel, drawn over the
+  // others on a strip around the horizon (render/passes/sky/horizon_strip.vert).
+  enum class Part { both, sky, ground, horizonBand, horizonEdge };
   Part part = Part::both;
   bool moonlit = false;                // SKYIG_MOONLIT: the moon's sky and ground too
   bool sunDisc = false;                // SKYIG_SUN_DISC: on the quad around the sun
@@ -35,6 +37,7 @@ struct SkyVariant {
     if (part == Part::sky || part == Part::horizonBand) d += "#define SKYIG_SKY\n";
     if (part == Part::horizonBand) d += "#define SKYIG_HORIZON_BAND\n";
     if (part == Part::ground) d += "#define SKYIG_GROUND\n";
+    if (part == Part::horizonEdge) d += "#define SKYIG_HORIZON_EDGE\n";
     if (sunDisc) d += "#define SKYIG_SUN_DISC\n";
     if (sunless) d += "#define SKYIG_SUNLESS\n";
     if (fog) d += "#define SKYIG_FOG\n";
@@ -47,8 +50,10 @@ struct SkyVariant {
     if (nightLayerTransmitted) d += "#define SKYIG_NIGHT_LAYER_TRANSMITTED\n";
     return d;
   }
-  // The vertex stage: the disc's quad, the cap below a ring, or the full-screen triangle.
+  // The vertex stage: the horizon's strip, the disc's quad, the cap below a ring, or the
+  // full-screen triangle.
   const char* vertexShader() const {
+    if (part == Part::horizonEdge) return "render/passes/sky/horizon_strip.vert";
     if (sunDisc) return "render/passes/sky/sun_disc.vert";
     if (part == Part::ground || part == Part::horizonBand) return "render/passes/sky/ground_cap.vert";
     return "render/glsl/fullscreen.vert";

@@ -2,6 +2,7 @@
 // reproduction on the real GL path. Colour drains from the frame as the sun goes down, and a
 // magnitude-1 star appears against the darkening sky because of the sky's luminance and the
 // eye's adaptation alone (docs/night-sky-stars.md, "Twilight").
+#include "ephemeris/time.h"
 #include "tables/table_cache.h"
 #include "render/gl/gl_context.h"
 #include "render/image_io.h"
@@ -285,4 +286,76 @@ TEST_F(Twilight, MilkyWayAppearsAsTheSkyDarkens) {
   EXPECT_GT(minus15H, nauticalH);
   EXPECT_GT(darkH, minus15H);
   EXPECT_GT(darkH, 2.0 * kThreshold);
+}
+
+// The summer Milky Way at a dark site (Teide, 2390 m, 5 July 2027 23:00 UTC: the sun 30 degrees
+// down, no moon, the galactic centre 14 degrees east of the meridian): the 6-degree patch where
+// the band stands highest over the sky 20 degrees away at the same elevation (between 20 and 60
+// degrees up), as display (Weber) contrast through the default operator. The eye sees the band
+// there plainly; the threshold for targets of one to two degrees at the display's 0.3-3 cd/m^2 is
+// about 0.01 (Blackwell 1946, JOSA 36, 624: 0.008-0.016), and the band must stand well above it
+// (several times), while the frame does not show more contrast than the world has (the
+// histogram operator's linear ceiling).
+TEST_F(Twilight, TheSummerMilkyWayAtADarkSiteStandsWellAboveTheLargeTargetThreshold) {
+  ObserverState o;
+  o.latitudeDeg = 28.27;
+  o.longitudeDeg = -16.64;
+  o.heightM = 2390.0;
+  o.attitude = Attitude{0.0, 0.0, 0.0};  // the patches' offsets are their view directions
+  o.utc = *ephemeris::parseIso8601Utc("2027-07-05T23:00:00Z");
+  const SkyState s = buildSkyState(o, physical());
+  ASSERT_LT(s.sunAltitude, -25.0 * kDeg);
+  ASSERT_LT(s.moonDirection.z, 0.0) << "a moonless sky";
+  const auto sky = sky::nightDiffuseSky(s);
+  auto milkyWay = [&](double yawDeg, double pitchDeg) {
+    const glm::dvec3 c = night::nightDiffuseRadiance(*sky, enuDirection(yawDeg * kDeg, pitchDeg * kDeg)).milkyWay;
+    return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+  };
+  BandAndReference b;
+  for (double pitch = 20.0; pitch <= 60.0; pitch += 2.0) {
+    // The azimuth step that puts two views at this elevation 20 degrees apart.
+    const double se = std::sin(pitch * kDeg), ce = std::cos(pitch * kDeg);
+    const double away = std::acos((std::cos(20.0 * kDeg) - se * se) / (ce * ce)) / kDeg;
+    for (double yaw = 90.0; yaw <= 270.0; yaw += 2.0)
+      for (double side : {-1.0, 1.0}) {
+        const double other = std::fmod(yaw + side * away + 360.0, 360.0);
+        const double band = milkyWay(yaw, pitch), reference = milkyWay(other, pitch);
+        if (band - reference > b.bandMilkyWay - b.referenceMilkyWay)
+          b = {Attitude{yaw, pitch, 0.0}, Attitude{other, pitch, 0.0}, band, reference};
+      }
+  }
+  ChannelConfig patch;
+  patch.width = 64;
+  patch.height = 64;
+  patch.frustum = Frustum{3.0, 3.0, 3.0, 3.0};
+  patch.offset = b.band;
+  const double band = trimmedMeanDisplayLuminance(drawAndKeep(s, patch, "milky_way_dark_site_band"), patch.display);
+  const HdrImage bandHdr = renderer_->readHdr();
+  patch.offset = b.reference;
+  const double reference = trimmedMeanDisplayLuminance(drawAndKeep(s, patch, "milky_way_dark_site_reference"), patch.display);
+  const HdrImage referenceHdr = renderer_->readHdr();
+  auto meanLuminance = [](const HdrImage& im) {  // the scene's, its brightest tenth left out as above
+    std::vector<double> l;
+    for (int y = 0; y < im.height; ++y)
+      for (int x = 0; x < im.width; ++x) {
+        const float* p = im.pixel(x, y);
+        l.push_back(0.2126 * double(p[0]) + 0.7152 * double(p[1]) + 0.0722 * double(p[2]));
+      }
+    std::sort(l.begin(), l.end());
+    l.resize(l.size() * 9 / 10);
+    double sum = 0.0;
+    for (double v : l) sum += v;
+    return sum / static_cast<double>(l.size());
+  };
+  const double world = meanLuminance(bandHdr) / meanLuminance(referenceHdr) - 1.0;
+  const double shown = band / reference - 1.0;
+  std::printf("dark site: the band at azimuth %.0f, %.0f deg up, against azimuth %.0f: Milky Way %.2e against %.2e cd/m^2; "
+              "the world's contrast %.3f, the display's %.3f (%.3f against %.3f cd/m^2); threshold 0.01\n",
+              b.band.yawDeg, b.band.pitchDeg, b.reference.yawDeg, b.bandMilkyWay, b.referenceMilkyWay, world, shown, band,
+              reference);
+  constexpr double kThreshold = 0.01;
+  EXPECT_GT(reference, 0.3);  // the threshold's luminance range
+  EXPECT_LT(band, 3.0);
+  EXPECT_GT(shown, 5.0 * kThreshold);
+  EXPECT_LT(shown, 1.05 * world + 0.01);  // no more than the world's (the dither's code aside)
 }

@@ -81,13 +81,16 @@ glm::dvec3 rayAt(const glm::dmat3& ndcToWorld, const ChannelConfig& c, double x,
   return glm::normalize(ndcToWorld * glm::dvec3(2.0 * x / c.width - 1.0, 1.0 - 2.0 * y / c.height, 1.0));
 }
 
-// How far the frame's horizon lies from the analytic line, in pixels, column by column: the line
-// where `sky(view)` crosses zero (positive above), found down the column's centre and its two
-// sides; the frame's edge where its sky's share of the rows the line crosses in that column puts
-// it, each such row's share read from its luminance between the sky's and the ground's, each
-// extrapolated linearly from the two nearest whole rows of its side (the air's light changes
-// fast near the horizon, the ground's most). Columns whose two sides differ by less than a fifth
-// are left out (the share would be noise).
+// How far the frame's horizon lies from where it should, in pixels, column by column, the line
+// being where `sky(view)` crosses zero (positive above), found down the column's centre and its
+// two sides. With `reference` (the channel supersampled and box filtered): the light the frame
+// has more than the reference over the rows the line crosses and two either side, in rows of
+// the step between the sky and the ground. Without: the edge where the sky's share of the rows
+// the line crosses puts it against the line itself, each row's share read from its luminance
+// between the sky's and the ground's, each extrapolated linearly from the two nearest whole rows
+// of its side (for skies smooth on both sides; the physical sky's far ground changes too fast
+// near the horizon for that). Columns whose two sides differ by less than a twentieth (a fifth
+// without a reference) are left out: the share would be noise.
 struct EdgeError {
   double mean = 0.0, worst = 0.0;
   int columns = 0;

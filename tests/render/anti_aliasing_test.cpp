@@ -193,17 +193,13 @@ class HorizonEdge : public skyig::render::testing::SharedRendererTest {
       renderer_->draw(s, c);
     return renderer_->readHdr();
   }
-  // The channel drawn at kSuper times its size and averaged over each pixel's kSuper^2 samples:
-  // the box filter's image (to 1/kSuper of a pixel), the air's light varying within the pixel
-  // included.
+  // An image kSuper times finer averaged over each pixel's kSuper^2 samples: the box filter's
+  // image (to 1/kSuper of a pixel), the light varying within the pixel included.
   static constexpr int kSuper = 8;
-  static HdrImage supersampled(const SkyState& s, ChannelConfig c) {
-    c.width *= kSuper;
-    c.height *= kSuper;
-    const HdrImage fine = render(s, c);
-    HdrImage out = fine;
-    out.width = c.width / kSuper;
-    out.height = c.height / kSuper;
+  static HdrImage boxFiltered(const HdrImage& fine) {
+    HdrImage out;
+    out.width = fine.width / kSuper;
+    out.height = fine.height / kSuper;
     out.rgba.assign(std::size_t(out.width) * out.height * 4, 0.0f);
     for (int y = 0; y < fine.height; ++y)
       for (int x = 0; x < fine.width; ++x)
@@ -212,6 +208,12 @@ class HorizonEdge : public skyig::render::testing::SharedRendererTest {
               fine.pixel(x, y)[k] / float(kSuper * kSuper);
     return out;
   }
+  static ChannelConfig finer(ChannelConfig c) {
+    c.width *= kSuper;
+    c.height *= kSuper;
+    return c;
+  }
+  static HdrImage supersampled(const SkyState& s, const ChannelConfig& c) { return boxFiltered(render(s, finer(c))); }
   // The display frame as the light the screen gives (cd/m^2 per Rec.709 channel, eq. 17: ambient
   // plus peak times the decoded value), in an HdrImage so the edge is measured as the HDR one.
   static HdrImage shownLight(const DisplayImage& d, const DisplayParams& p) {
@@ -227,22 +229,7 @@ class HorizonEdge : public skyig::render::testing::SharedRendererTest {
     render(s, c);
     return shownLight(renderer_->readDisplay(), c.display);
   }
-  // The display's light of the channel drawn kSuper times finer, averaged over each pixel.
-  static HdrImage shownSupersampled(const SkyState& s, ChannelConfig c) {
-    c.width *= kSuper;
-    c.height *= kSuper;
-    const HdrImage fine = shown(s, c);
-    HdrImage out = fine;
-    out.width = c.width / kSuper;
-    out.height = c.height / kSuper;
-    out.rgba.assign(std::size_t(out.width) * out.height * 4, 0.0f);
-    for (int y = 0; y < fine.height; ++y)
-      for (int x = 0; x < fine.width; ++x)
-        for (int k = 0; k < 4; ++k)
-          out.rgba[(std::size_t(y / kSuper) * out.width + x / kSuper) * 4 + k] +=
-              fine.pixel(x, y)[k] / float(kSuper * kSuper);
-    return out;
-  }
+  static HdrImage shownSupersampled(const SkyState& s, const ChannelConfig& c) { return boxFiltered(shown(s, finer(c))); }
   // reference: against the supersampled frame, else against the luminance's own two sides.
   EdgeError measure(const SkyState& s, const ChannelConfig& c, const std::function<double(const glm::dvec3&)>& sky,
                     const char* what, bool reference) {

@@ -17,8 +17,6 @@ namespace skyig::render {
 
 namespace {
 
-constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
-
 glm::vec4 v4(const glm::dvec3& v, double w = 0.0) { return glm::vec4(glm::dvec4(v, w)); }
 
 AnalyticSkyBlock toBlock(const skyig::sky::AnalyticSkyParams& p) {
@@ -335,8 +333,7 @@ SkyRenderer::MappedSky SkyRenderer::drawMappedSky(const skyig::sky::SkyState& st
   NightLayer night;
   if (nightLight && physical) {
     if (!nightDiffuse_) nightDiffuse_ = std::make_unique<NightDiffusePass>();
-    const double pixelRad = (std::tan(channel.frustum.leftDeg * kRadPerDeg) + std::tan(channel.frustum.rightDeg * kRadPerDeg)) /
-                            std::max(channel.width, 1);
+    const double pixelRad = skyig::sky::largestPixelAngleRad(channel.frustum, channel.width, channel.height);
     glBindVertexArray(emptyVao_);
     night = nightDiffuse_->drawLayer(state, channel.width, channel.height, nightDiffuse_->layerScale(pixelRad),
                                      veilInNightLayer_ && glareSources.size() == 1);

@@ -44,15 +44,25 @@ vec3 analyticSkyLight(IN(AnalyticSky) s, IN(vec3) dir) {
   return max(xyzToRec709(xyz), vec3(0.0));
 }
 
+// Whether dir falls inside the solar disc (1) or not (0).
+Float analyticSunDiscShare(IN(AnalyticSky) s, IN(vec3) dir) {
+  return dot(dir, s.sunDirection) >= s.cosSunRadius ? 1.0 : 0.0;
+}
+
 // The solar disc, if dir falls inside it.
-vec3 analyticSunDisc(IN(AnalyticSky) s, IN(vec3) dir) {
-  return dot(dir, s.sunDirection) >= s.cosSunRadius ? s.sunRadiance : vec3(0.0);
+vec3 analyticSunDisc(IN(AnalyticSky) s, IN(vec3) dir) { return analyticSunDiscShare(s, dir) * s.sunRadiance; }
+
+// What a pixel along dir shows when the sky covers skyShare of it and the sun's disc discShare
+// (render/glsl/edge_coverage.glsl): the ground's light and the sky's (a centre just below the
+// horizon takes the horizon's), each by its share.
+vec3 analyticSkyRadianceShared(IN(AnalyticSky) s, IN(vec3) dir, Float skyShare, Float discShare) {
+  vec3 above = normalize(vec3(dir.x, dir.y, max(dir.z, 1e-6)));
+  return mix(s.groundRadiance, analyticSkyLight(s, above) + discShare * s.sunRadiance, skyShare);
 }
 
 // Everything a view ray meets: sky and sun above the horizon, the ground below it.
 vec3 analyticSkyRadiance(IN(AnalyticSky) s, IN(vec3) dir) {
-  if (dir.z < 0.0) return s.groundRadiance;
-  return analyticSkyLight(s, dir) + analyticSunDisc(s, dir);
+  return analyticSkyRadianceShared(s, dir, dir.z < 0.0 ? 0.0 : 1.0, analyticSunDiscShare(s, dir));
 }
 
 #endif

@@ -64,9 +64,7 @@ glm::ivec4 MoonPass::draw(const skyig::sky::night::MoonDisc& d, const glm::dmat3
   const GLuint p = program_.id();
   // The quad: the disc's radius plus three pixels for the limb ramp (the widest pixel of the
   // channel, from its frustum's largest half-angle), at least 20% for the refractive flattening.
-  const double pixel = std::max(std::tan(channel.frustum.leftDeg * std::numbers::pi / 180.0) +
-                                    std::tan(channel.frustum.rightDeg * std::numbers::pi / 180.0), 0.0) /
-                       std::max(channel.width, 1);
+  const double pixel = skyig::sky::largestPixelAngleRad(channel.frustum, channel.width, channel.height);
   const double halfSize = 1.2 * std::tan(d.angularRadiusRad) + 3.0 * pixel;
   const glm::dvec3 up = std::abs(d.centreSeen.z) < 0.999 ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
   const glm::dvec3 right = glm::normalize(glm::cross(d.centreSeen, up));

@@ -1,7 +1,7 @@
 // Sky pass of the analytic models (CIE general sky, Preetham): absolute linear Rec.709
 // radiance in cd/m^2 into a float target. The horizon and the sun's limb are shared by the
 // pixels they cross (render/glsl/edge_coverage.glsl): analyticSkyRadiance's two edges, each
-// pixel the mix of its sides by their areas, so neither steps.
+// pixel the mix of its sides by their areas (analyticSkyRadianceShared), so neither steps.
 #include "render/glsl/uniforms.h"
 #include "physics/analytic/analytic_sky.glsl"
 #include "render/glsl/band.glsl"
@@ -18,8 +18,5 @@ void main() {
   vec3 view = normalize(vViewRay);
   float skyShare = pixelShareAbove(view.z);
   float discShare = pixelShareAbove(dot(view, sky.sunDirection) - sky.cosSunRadius);
-  // A centre just below the horizon takes the sky's light of the horizon above it.
-  vec3 above = normalize(vec3(view.xy, max(view.z, 1e-6)));
-  vec3 light = analyticSkyLight(sky, above) + discShare * sky.sunRadiance;
-  outRadiance = vec4(inBand(mix(sky.groundRadiance, light, skyShare), lightWeights.x), 1.0);
+  outRadiance = vec4(inBand(analyticSkyRadianceShared(sky, view, skyShare, discShare), lightWeights.x), 1.0);
 }

@@ -392,8 +392,7 @@ PhysicalSkyPass::Frame PhysicalSkyPass::frameInside(const glm::dvec3& camera, co
   const double radius = a.sun_angular_radius;
   const double reach = radius + std::abs(sunRefraction.y) +
                        2.0 * (std::abs(sunRefraction.z) * radius + std::abs(sunRefraction.w) * radius * radius);
-  // The ring a little above the horizon (mu = -sqrt(1 - (Rg/r)^2)): 0.1 deg encloses the
-  // horizon's circle whatever the fan's chords cut (2 pi / 256)^2 / 8 = 7.5e-5 rad inside it.
+  // The horizon's elevation: its cosine to the vertical is mu = -sqrt(1 - (Rg/r)^2).
   const double horizon = std::asin(-std::sqrt(std::max(0.0, 1.0 - (a.bottom_radius / r) * (a.bottom_radius / r))));
   Frame f;
   f.camera = camera;
@@ -408,7 +407,6 @@ PhysicalSkyPass::Frame PhysicalSkyPass::frameInside(const glm::dvec3& camera, co
   f.moon = moonlightScale != glm::dvec3(0.0);
   f.sunlit = sunlit;
   f.night = &night;
-  f.horizonRing = horizon + 0.1 * std::numbers::pi / 180.0;
   f.horizon = horizon;
   return f;
 }
@@ -461,7 +459,7 @@ void PhysicalSkyPass::drawWithoutDepth(const Frame& f, const SkyVariant& base) {
 // The strip a pixel and a half wide either side of the horizon (its pixels' centres lie within
 // half a diagonal of the line, and an angle on the sphere is at least the difference of the
 // elevations), with the disc where the sun is on it. Drawn last, over the parts' pixels: those
-// it does not discard are the ones the horizon crosses.
+// it does not discard are the ones the horizon crosses. The caller leaves no depth test on.
 void PhysicalSkyPass::drawHorizonEdge(const Frame& f, const SkyVariant& base) {
   constexpr int kSegments = 256;
   SkyVariant v = base;
@@ -475,11 +473,7 @@ void PhysicalSkyPass::drawHorizonEdge(const Frame& f, const SkyVariant& base) {
   const double low = std::max(f.horizon - margin, -half), high = std::min(f.horizon + margin, half);
   glProgramUniform4f(edge.program.id(), edge.horizonStrip, static_cast<float>(std::sin(low)),
                      static_cast<float>(std::cos(low)), static_cast<float>(std::sin(high)), static_cast<float>(kSegments));
-  GLboolean depthTest = GL_FALSE;
-  glGetBooleanv(GL_DEPTH_TEST, &depthTest);
-  glDisable(GL_DEPTH_TEST);
   glDrawArrays(GL_TRIANGLES, 0, 6 * kSegments);
-  if (depthTest) glEnable(GL_DEPTH_TEST);
 }
 
 // The ground, the band and the sky, each where the depth buffer still holds the clear's 1 (all
@@ -494,8 +488,11 @@ void PhysicalSkyPass::drawParts(const Frame& f, const SkyVariant& base) {
   v.part = Part::ground;
   const Program& ground = program(v);
   prepare(ground, f);
-  glProgramUniform3f(ground.program.id(), ground.groundCap, static_cast<float>(std::sin(f.horizonRing)),
-                     static_cast<float>(std::cos(f.horizonRing)), static_cast<float>(kSegments));
+  // The ring a little above the horizon: 0.1 deg encloses its circle whatever the fan's chords
+  // cut ((2 pi / 256)^2 / 8 = 7.5e-5 rad inside the ring).
+  const double ring = f.horizon + 0.1 * std::numbers::pi / 180.0;
+  glProgramUniform3f(ground.program.id(), ground.groundCap, static_cast<float>(std::sin(ring)),
+                     static_cast<float>(std::cos(ring)), static_cast<float>(kSegments));
   glDepthMask(GL_TRUE);
   glDrawArrays(GL_TRIANGLES, 0, 3 * kSegments);
   // With the night's layer: the sky near the horizon with its transmittance per pixel, on the
@@ -519,7 +516,9 @@ void PhysicalSkyPass::drawParts(const Frame& f, const SkyVariant& base) {
   if (band) glBindTextureUnit(SKYIG_UNIT_NIGHT_LAYER, night.texture);
   v.nightLayerTransmitted = false;
   drawDisc(f, v);  // where the sky is: no depth written; the night's light per pixel
+  glDisable(GL_DEPTH_TEST);
   drawHorizonEdge(f, base);
+  glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
 }
 

@@ -188,8 +188,7 @@ class PhysicalSkyPass {
     glm::dvec4 sunUvwz, moonUvwz;  // each light's scattering coordinates at the camera
     bool moon = false, sunlit = true;
     const NightLayer* night = nullptr;
-    double horizonRing = 0.0;  // elevation (rad) a little above the horizon's circle
-    double horizon = 0.0;      // the horizon's elevation (rad)
+    double horizon = 0.0;  // the horizon's elevation (rad)
   };
   Frame frameInside(const glm::dvec3& camera, const glm::dvec3& sunDirection, const glm::dvec3& moonDirection,
                     const glm::dvec3& moonlightScale, const glm::dvec4& sunRefraction, const NightLayer& night,
@@ -207,7 +206,8 @@ class PhysicalSkyPass {
   // Into a target with depth: the ground, the band near the horizon, the sky, the disc, the
   // horizon's edge.
   void drawParts(const Frame& f, const SkyVariant& base);
-  // The pixels the horizon crosses, over what the parts drew there (no depth test or write).
+  // The pixels the horizon crosses, over what the parts drew there (the caller's depth test off,
+  // no depth written).
   void drawHorizonEdge(const Frame& f, const SkyVariant& base);
 
   int slicesPerFrame_;

@@ -38,6 +38,10 @@ std::uint64_t parameterHash(const ModelConfig& c) {
                    m.solarIrradianceScale, m.maxSunZenithRad}) {
     h.f64(v);
   }
+  if (m.aerosolType != AerosolType::bruneton2017) {  // Bruneton's aerosol hashes as it always has
+    h.i64(static_cast<std::int64_t>(m.aerosolType));
+    h.f64(m.aerosolHumidity);
+  }
   h.i64(static_cast<std::int64_t>(c.wavelengthsNm.size()));
   for (double w : c.wavelengthsNm) h.f64(w);
   const TableSizes& s = c.sizes;

@@ -60,7 +60,7 @@ vec3 packedInScatteredRec709(IN(AtmosphereParameters) atm, IN(sampler3D) scatter
   // C* and C_M apart, each clamped at zero as the spectral version does.
   vec3 rayleigh = max(vec3(s.x, s.y, s.z) - transmittance * vec3(s_p.x, s_p.y, s_p.z), vec3(0.0));
   vec3 mie = max(vec3(m.x, m.y, s.w) - transmittance * vec3(m_p.x, m_p.y, s_p.w), vec3(0.0));
-  return (rayleigh * rayleighPhaseFunction(nu) + mie * miePhaseFunction(atm.mie_phase_g, nu)) *
+  return (rayleigh * rayleighPhaseFunction(nu) + mie * miePhaseFunction(atm, nu)) *
          (1.0 / REC709_TABLE_SCALE);
 }
 

@@ -44,6 +44,7 @@ double humidityGrowthFactor(double rh) {
 Medium withAerosolExtinction(const Medium& base, double mieExtinctionPerM) {
   Medium m = base;
   m.mieExtinctionPerM = mieExtinctionPerM;
+  if (base.aerosolType != AerosolType::bruneton2017) return m;  // its water is its humidity's
   const double absorption = base.mieExtinctionPerM * (1.0 - base.mieSingleScatteringAlbedo);
   if (mieExtinctionPerM > base.mieExtinctionPerM) m.mieSingleScatteringAlbedo = 1.0 - absorption / mieExtinctionPerM;
   return m;
@@ -57,10 +58,20 @@ Medium applyConditions(const Medium& base, const Conditions& c) {
     }
     m.groundAlbedo = *c.groundAlbedo;
   }
+  if (c.relativeHumidity) humidityGrowthFactor(*c.relativeHumidity);  // validated in every case
+  const bool typed = base.aerosolType != AerosolType::bruneton2017;
+  if (typed && c.relativeHumidity) {
+    // The type's particles at the humidity (OPAC's nearest class): albedo, spectrum and phase
+    // function; their extinction grows as OPAC's mixture does between the two humidities.
+    const double rh = nearestHumidityClass(*c.relativeHumidity);
+    const double growth = aerosolOptics(base.aerosolType, rh).extinctionAt550PerKm /
+                          aerosolOptics(base.aerosolType, base.aerosolHumidity).extinctionAt550PerKm;
+    m = withAerosolType(m, base.aerosolType, rh);
+    m.mieExtinctionPerM = base.mieExtinctionPerM * growth;
+  }
   if (c.visibilityKm) {
-    if (c.relativeHumidity) humidityGrowthFactor(*c.relativeHumidity);  // still validated
     m = withAerosolExtinction(m, mieExtinctionForVisibility(base, *c.visibilityKm));
-  } else if (c.relativeHumidity) {
+  } else if (c.relativeHumidity && !typed) {
     m = withAerosolExtinction(m, base.mieExtinctionPerM * humidityGrowthFactor(*c.relativeHumidity));
   }
   validate(m);

@@ -55,12 +55,15 @@ double humidityGrowthFactor(double relativeHumidity);
 // of the same kind (the albedo unchanged). The Angstrom exponent is kept (an approximation:
 // fog droplets are grey), so that the optical depth stays linear in beta_M at every wavelength
 // and tables blend exactly between visibilities (tables/visibility_blend.h).
+// An OPAC aerosol type (aerosol_type.h) keeps its albedo: its water is set by the humidity,
+// and at a given humidity more of it is more particles of the same kind.
 Medium withAerosolExtinction(const Medium& base, double mieExtinctionPerM);
 
 // The medium under the conditions; visibility, when given, fixes the aerosol extinction
-// (it is measured on the humid aerosol, so humidity then changes nothing); otherwise
-// humidity scales the medium's aerosol extinction. Throws std::invalid_argument naming a bad
-// value.
+// (it is measured on the humid aerosol, so humidity then changes no amount); otherwise
+// humidity scales the medium's aerosol extinction. With an OPAC aerosol type the humidity also
+// sets what the particles are (their albedo, spectrum and phase function at OPAC's nearest
+// humidity class), and their growth is OPAC's. Throws std::invalid_argument naming a bad value.
 Medium applyConditions(const Medium& base, const Conditions& conditions);
 
 }  // namespace skyig::atmosphere

@@ -39,6 +39,8 @@ void validate(const Medium& m) {
   require(m.mieScaleHeightM > 0.0, "mie_scale_height_m", m.mieScaleHeightM, "> 0");
   require(m.miePhaseG > -1.0 && m.miePhaseG < 1.0, "mie_phase_g", m.miePhaseG,
           "in (-1, 1)");
+  require(m.aerosolHumidity >= 0.0 && m.aerosolHumidity <= 0.99, "aerosol_humidity", m.aerosolHumidity,
+          "in [0, 0.99]");
   require(m.ozoneColumnDu >= 0.0 && m.ozoneColumnDu <= 1000.0, "ozone_column_du",
           m.ozoneColumnDu, "in [0, 1000]");
   require(m.ozoneHalfWidthM > 0.0, "ozone_half_width_m", m.ozoneHalfWidthM, "> 0");

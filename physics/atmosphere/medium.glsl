@@ -27,10 +27,24 @@ Float rayleighPhaseFunction(Float nu) {
 // Cornette-Shanks phase function (Cornette & Shanks 1992; Bruneton & Neyret 2008, eq. 4):
 // 3/(8 pi) (1 - g^2)(1 + nu^2) / ((2 + g^2)(1 + g^2 - 2 g nu)^(3/2)). Normalised to 1 over
 // the sphere.
-Float miePhaseFunction(Float g, Float nu) {
+Float cornetteShanksPhaseFunction(Float g, Float nu) {
   Float k = 3.0 / (8.0 * ATMOSPHERE_PI) * (1.0 - g * g) / (2.0 + g * g);
   Float t = 1.0 + g * g - 2.0 * g * nu;  // t^1.5 as t sqrt(t): cheaper than pow
   return k * (1.0 + nu * nu) / (t * sqrt(t));
+}
+
+// A Mie phase function tabulated at u_i = i / (N - 1), theta = pi u^2 (a real aerosol's forward
+// peak is ten times a one-lobe function's, within a few degrees), interpolated linearly in ln p
+// and in u.
+Float tabulatedPhaseFunction(IN(AtmosphereParameters) atm, Float nu) {
+  Float u = sqrt(acos(clamp(nu, -1.0, 1.0)) / ATMOSPHERE_PI) * Float(ATMOSPHERE_MIE_PHASE_SAMPLES - 1);
+  int i = min(int(u), ATMOSPHERE_MIE_PHASE_SAMPLES - 2);
+  return exp(mix(atm.mie_phase_log_table[i], atm.mie_phase_log_table[i + 1], u - Float(i)));
+}
+
+Float miePhaseFunction(IN(AtmosphereParameters) atm, Float nu) {
+  return atm.mie_phase_tabulated > 0.5 ? tabulatedPhaseFunction(atm, nu)
+                                       : cornetteShanksPhaseFunction(atm.mie_phase_g, nu);
 }
 
 #endif

@@ -18,7 +18,7 @@ vec4 scatteringOfOrderUvwz(IN(AtmosphereParameters) atm, IN(sampler3D) single_ra
   if (scattering_order == 1) {
     vec4 rayleigh = lookupScatteringUvwz(atm, single_rayleigh_texture, uvwz);
     vec4 mie = lookupScatteringUvwz(atm, single_mie_texture, uvwz);
-    return rayleigh * rayleighPhaseFunction(nu) + mie * miePhaseFunction(atm.mie_phase_g, nu);
+    return rayleigh * rayleighPhaseFunction(nu) + mie * miePhaseFunction(atm, nu);
   }
   return lookupScatteringUvwz(atm, multiple_texture, uvwz);
 }
@@ -99,7 +99,7 @@ vec4 computeScatteringDensity(IN(AtmosphereParameters) atm, IN(sampler2D) transm
       Float nu2 = dot(omega, omega_i);
       rayleigh_mie += incident_radiance *
                       (rayleigh_coefficient * rayleighPhaseFunction(nu2) +
-                       mie_coefficient * miePhaseFunction(atm.mie_phase_g, nu2)) *
+                       mie_coefficient * miePhaseFunction(atm, nu2)) *
                       domega_i;
     }
   }

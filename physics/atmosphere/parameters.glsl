@@ -5,6 +5,9 @@
 #ifndef SKYIG_ATMOSPHERE_PARAMETERS_GLSL
 #define SKYIG_ATMOSPHERE_PARAMETERS_GLSL
 
+// Samples of a tabulated aerosol phase function (kMiePhaseSamples in aerosol_type.h).
+const int ATMOSPHERE_MIE_PHASE_SAMPLES = 64;
+
 struct AtmosphereParameters {
   // Solar spectral irradiance at the top of the atmosphere, W m^-2 nm^-1.
   vec4 solar_irradiance;
@@ -18,11 +21,15 @@ struct AtmosphereParameters {
   // Air molecules: scattering at the ground (= extinction), scale height (eq. 1-2).
   vec4 rayleigh_scattering;
   Float rayleigh_scale_height;
-  // Aerosols: scattering and extinction at the ground, scale height, Cornette-Shanks g.
+  // Aerosols: scattering and extinction at the ground, scale height, and the phase function:
+  // Cornette-Shanks with g when mie_phase_tabulated is 0, else ln p at theta_i = pi (i/(N-1))^2
+  // (an OPAC type, aerosol_type.h).
   vec4 mie_scattering;
   vec4 mie_extinction;
   Float mie_scale_height;
   Float mie_phase_g;
+  Float mie_phase_tabulated;
+  Float mie_phase_log_table[ATMOSPHERE_MIE_PHASE_SAMPLES];
   // Ozone: absorption at the peak density, tent profile (0 at centre - half width, 1 at the
   // centre, 0 at centre + half width).
   vec4 absorption_extinction;

@@ -69,7 +69,7 @@ vec4 scatteredRadiance(IN(AtmosphereParameters) atm, IN(sampler3D) scattering_te
   vec4 single_mie = lookupScattering(atm, single_mie_texture, r, mu, mu_s, nu,
                                      ray_r_mu_intersects_ground);
   return scattering * rayleighPhaseFunction(nu) +
-         single_mie * miePhaseFunction(atm.mie_phase_g, nu);
+         single_mie * miePhaseFunction(atm, nu);
 }
 
 // Moves a camera outside the atmosphere to where the view ray enters it. Returns false if
@@ -160,7 +160,7 @@ vec4 skyRadianceToPoint(IN(AtmosphereParameters) atm, IN(sampler2D) transmittanc
   scattering = max(scattering - transmittance * scattering_p, vec4(0.0));
   single_mie = max(single_mie - transmittance * single_mie_p, vec4(0.0));
   return scattering * rayleighPhaseFunction(nu) +
-         single_mie * miePhaseFunction(atm.mie_phase_g, nu);
+         single_mie * miePhaseFunction(atm, nu);
 }
 
 // Irradiance at `point` on a surface of the given normal: the direct sun (returned) and the

@@ -53,7 +53,7 @@ vec3 packedScatteredRec709(IN(AtmosphereParameters) atm, IN(sampler3D) scatterin
   vec4 m = lookupScatteringUvwz(atm, single_mie_rg, uvwz);
   vec3 rayleigh = vec3(s.x, s.y, s.z);
   vec3 mie = vec3(m.x, m.y, s.w);
-  return (rayleigh * rayleighPhaseFunction(nu) + mie * miePhaseFunction(atm.mie_phase_g, nu)) *
+  return (rayleigh * rayleighPhaseFunction(nu) + mie * miePhaseFunction(atm, nu)) *
          (1.0 / REC709_TABLE_SCALE);
 }
 

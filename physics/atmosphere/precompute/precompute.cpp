@@ -13,6 +13,8 @@
 
 namespace skyig::atmosphere {
 
+static_assert(kMiePhaseSamples == shader::atmosphere_types::ATMOSPHERE_MIE_PHASE_SAMPLES);
+
 using shader::cpu_texture::sampler2D;
 using shader::cpu_texture::sampler3D;
 
@@ -38,6 +40,11 @@ AtmosphereParameters makeParameters(const Medium& medium,
   atm.rayleigh_scale_height = medium.rayleighScaleHeightM;
   atm.mie_scale_height = medium.mieScaleHeightM;
   atm.mie_phase_g = medium.miePhaseG;
+  if (medium.aerosolType != AerosolType::bruneton2017) {
+    const AerosolOptics optics = aerosolOptics(medium.aerosolType, medium.aerosolHumidity);
+    atm.mie_phase_tabulated = 1.0;
+    for (int i = 0; i < kMiePhaseSamples; ++i) atm.mie_phase_log_table[i] = optics.logPhase[static_cast<std::size_t>(i)];
+  }
   atm.ozone_center_altitude = medium.ozoneCentreAltitudeM;
   atm.ozone_half_width = medium.ozoneHalfWidthM;
   atm.mu_s_min = std::cos(medium.maxSunZenithRad);

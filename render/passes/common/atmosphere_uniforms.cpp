@@ -1,5 +1,9 @@
 #include "render/passes/common/atmosphere_uniforms.h"
 
+#include <array>
+
+#include "physics/atmosphere/aerosol_type.h"
+
 namespace skyig::render {
 
 void setAtmosphereUniforms(GLuint program, const std::string& uniform, const atmosphere::AtmosphereParameters& a) {
@@ -22,6 +26,11 @@ void setAtmosphereUniforms(GLuint program, const std::string& uniform, const atm
   v4("mie_extinction", a.mie_extinction);
   f1("mie_scale_height", a.mie_scale_height);
   f1("mie_phase_g", a.mie_phase_g);
+  f1("mie_phase_tabulated", a.mie_phase_tabulated);
+  std::array<float, atmosphere::kMiePhaseSamples> table{};
+  for (std::size_t i = 0; i < table.size(); ++i) table[i] = static_cast<float>(a.mie_phase_log_table[i]);
+  glProgramUniform1fv(program, glGetUniformLocation(program, (prefix + "mie_phase_log_table").c_str()),
+                      static_cast<GLsizei>(table.size()), table.data());
   v4("absorption_extinction", a.absorption_extinction);
   f1("ozone_center_altitude", a.ozone_center_altitude);
   f1("ozone_half_width", a.ozone_half_width);

@@ -41,7 +41,7 @@ vec4 skyRadiance(Float nu1_unclamped, Float layer, vec2 nu_to_coord) {
   vec4 radiance = texture(slices_a, coord);
 #ifdef SKYIG_DENSITY_FROM_SINGLE_SCATTERING
   radiance = radiance * rayleighPhaseFunction(nu1) +
-             texture(slices_b, coord) * miePhaseFunction(atm.mie_phase_g, nu1);
+             texture(slices_b, coord) * miePhaseFunction(atm, nu1);
 #endif
   return radiance;
 }
@@ -133,7 +133,7 @@ void main() {
                                skyRadiance(nu1_plane - nu1_side, layer, nu_to_coord);
       Float nu2 = omega.x * x + omega.z * cos_theta;
       rayleigh_row += incident_radiance * rayleighPhaseFunction(nu2);
-      mie_row += incident_radiance * miePhaseFunction(atm.mie_phase_g, nu2);
+      mie_row += incident_radiance * miePhaseFunction(atm, nu2);
     }
     Float domega_i = dtheta * dphi * sin_theta;
     rayleigh_sum += rayleigh_row * domega_i;
@@ -170,7 +170,7 @@ void main() {
           groundRadiance(r, mu_s, nu1_b, distance_to_ground, ground_light);
       Float nu2 = omega.x * x + omega.z * cos_theta;
       rayleigh_row += incident_radiance * rayleighPhaseFunction(nu2);
-      mie_row += incident_radiance * miePhaseFunction(atm.mie_phase_g, nu2);
+      mie_row += incident_radiance * miePhaseFunction(atm, nu2);
     }
     Float domega_i = dtheta * dphi * sin_theta;
     rayleigh_sum += rayleigh_row * domega_i;

@@ -40,7 +40,7 @@ vec3 sliceScatteredRec709(sampler2D scattering, sampler2D singleMie, float u_mu,
   float x = ((nu + 1.0) * 0.5 * (atm.scattering_nu_size - 1.0) + 0.5) / atm.scattering_nu_size;
   vec4 s = texture(scattering, vec2(x, u_mu));
   vec4 m = texture(singleMie, vec2(x, u_mu));
-  return (s.xyz * rayleighPhaseFunction(nu) + vec3(m.x, m.y, s.w) * miePhaseFunction(atm.mie_phase_g, nu)) *
+  return (s.xyz * rayleighPhaseFunction(nu) + vec3(m.x, m.y, s.w) * miePhaseFunction(atm, nu)) *
          (1.0 / REC709_TABLE_SCALE);
 }
 

@@ -27,6 +27,12 @@ void SkyOptions::add(CLI::App& c) {
   c.add_option("--visibility", visibilityKm,
                "Physical sky: visibility, km (Koschmieder; haze), 0.05 .. 1000 (past about 288: clean air)")
       ->check(CLI::Range(atmosphere::kSmallestVisibilityKm, atmosphere::kLargestVisibilityKm));
+  c.add_option("--aerosol", aerosol,
+               "Physical sky: the aerosol, an OPAC type (continental_clean, continental_average, continental_polluted, urban, "
+               "desert, maritime_clean, maritime_polluted, maritime_tropical, arctic, antarctic) or bruneton2017; its standard "
+               "amount unless --visibility says")
+      ->check(CLI::IsMember({"bruneton2017", "continental_clean", "continental_average", "continental_polluted", "urban",
+                             "desert", "maritime_clean", "maritime_polluted", "maritime_tropical", "arctic", "antarctic"}));
   c.add_option("--fog-visibility", fogVisibilityKm, "Physical sky: a ground fog of this visibility inside, km (0: none)")
       ->check(CLI::Range(0.0, atmosphere::kLargestVisibilityKm));
   c.add_option("--fog-top", fogTopM, "The ground fog's top above the ground, metres (default 200)")->check(CLI::Range(0.0, 20000.0));
@@ -76,6 +82,10 @@ NodeConfig SkyOptions::resolve() const {
   if (turbidity) config.sky.turbidity = *turbidity;
   if (groundAlbedo) config.sky.groundAlbedo = *groundAlbedo;
   if (visibilityKm) config.atmosphere.visibilityKm = *visibilityKm;
+  if (aerosol) {
+    atmosphere::Medium& m = config.atmosphere.medium;
+    m = atmosphere::withStandardAerosol(m, *atmosphere::parseAerosolType(*aerosol), m.aerosolHumidity);
+  }
   if (fogVisibilityKm || fogTopM || fogBottomM || fogTransitionM) {
     sky::FogSpec& f = config.sky.fog;
     if (fogVisibilityKm) f.visibilityKm = *fogVisibilityKm;

@@ -20,6 +20,7 @@ struct SkyOptions {
   std::optional<double> precipitationVisibilityKm, precipitationTopM, precipitationCoveragePct;
   // Cloud layer 1 ([[weather.cloud]]): "TYPE:BASE:THICKNESS[:COVERAGE[:WIND:FROM]]".
   std::optional<std::string> cloud;
+  std::optional<std::string> aerosol;  // --aerosol: an OPAC type or bruneton2017 (physics/atmosphere/aerosol_type.h)
   std::optional<double> sunAzimuth, sunElevation;
   std::optional<std::string> utc, skyModel;
   std::optional<int> cieType;

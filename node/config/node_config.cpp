@@ -212,6 +212,15 @@ void readAtmosphere(TableReader& r, AtmosphereSettings& a) {
   m.topRadiusM = 1e3 * r.number("top_radius_km", m.topRadiusM / 1e3, 1000.0, 100000.0);
   m.rayleighScatteringAt1umPerM = r.number("rayleigh_scattering_1um", m.rayleighScatteringAt1umPerM, 0.0, 1e-3);
   m.rayleighScaleHeightM = r.number("rayleigh_scale_height", m.rayleighScaleHeightM, 100.0, 100000.0);
+  // The aerosol type first (physics/atmosphere/aerosol_type.h): it sets the albedo, spectrum,
+  // scale height, phase function and OPAC's standard amount, which the keys below may still change.
+  const double aerosolHumidity = r.number("aerosol_humidity_pct", 100.0 * m.aerosolHumidity, 0.0, 99.0) / 100.0;
+  if (const toml::node* n = r.find("aerosol_type")) {
+    const std::string name = r.string("aerosol_type", "", "an aerosol type's name");
+    const std::optional<atmosphere::AerosolType> type = atmosphere::parseAerosolType(name);
+    if (!type) r.fail(n, "aerosol_type", "expected one of " + std::string(atmosphere::aerosolTypeNames()) + ", got \"" + name + "\"");
+    m = atmosphere::withStandardAerosol(m, *type, aerosolHumidity);
+  }
   m.mieExtinctionPerM = r.number("mie_extinction", m.mieExtinctionPerM, 0.0, 1e-2);
   if (r.find("visibility_km")) a.visibilityKm = r.number("visibility_km", 50.0, atmosphere::kSmallestVisibilityKm, atmosphere::kLargestVisibilityKm);
   m.mieSingleScatteringAlbedo = r.number("mie_single_scattering_albedo", m.mieSingleScatteringAlbedo, 0.0, 1.0);

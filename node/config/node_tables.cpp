@@ -64,7 +64,16 @@ void loadAtmosphereIfNeeded(NodeConfig& config, const std::atomic<bool>* stop) {
 }
 
 sky::FogSpec nodeHaze(const NodeConfig& config, double visibilityKm) {
-  return weather::hazeBelowTables(visibilityKm, config.atmosphere.medium.mieScaleHeightM);
+  const atmosphere::Medium& m = config.atmosphere.medium;
+  sky::FogSpec haze = weather::hazeBelowTables(visibilityKm, m.mieScaleHeightM);
+  // The haze is more of the tables' aerosol: an OPAC type's asymmetry and albedo at its humidity
+  // (physics/atmosphere/aerosol_type.h). Bruneton's grey aerosol keeps the droplets' (the haze
+  // below 10 km is water-grown, and its albedo of 0.9 is the dry particles').
+  if (m.aerosolType != atmosphere::AerosolType::bruneton2017) {
+    haze.asymmetry = atmosphere::aerosolOptics(m.aerosolType, m.aerosolHumidity).asymmetry;
+    haze.albedo.fill(m.mieSingleScatteringAlbedo);
+  }
+  return haze;
 }
 
 }  // namespace skyig::services

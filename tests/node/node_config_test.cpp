@@ -216,6 +216,26 @@ TEST(NodeConfig, DegradeSectionIsReadAndItsBadValuesNamed) {
   EXPECT_EQ(errorOf("[degrade]\nlevels = 3\n").find("bad.toml:2: degrade.levels"), 0u);
 }
 
+// [atmosphere] aerosol_type: an OPAC type brings its particles and OPAC's standard amount, which
+// the mie_ keys may still change; an unknown name is refused with the file, line and the names.
+TEST(NodeConfig, AerosolTypeSetsTheParticles) {
+  const NodeConfig c = parseNodeConfig("[atmosphere]\naerosol_type = \"maritime_clean\"\naerosol_humidity_pct = 80\n", "t.toml");
+  const skyig::atmosphere::Medium& m = c.atmosphere.medium;
+  EXPECT_EQ(m.aerosolType, skyig::atmosphere::AerosolType::maritimeClean);
+  EXPECT_EQ(m.aerosolHumidity, 0.8);
+  const skyig::atmosphere::AerosolOptics o = skyig::atmosphere::aerosolOptics(skyig::atmosphere::AerosolType::maritimeClean, 0.8);
+  EXPECT_DOUBLE_EQ(m.mieSingleScatteringAlbedo, o.singleScatteringAlbedo);
+  EXPECT_DOUBLE_EQ(m.mieExtinctionPerM, 1e-3 * o.extinctionAt550PerKm);
+  EXPECT_DOUBLE_EQ(m.mieScaleHeightM, o.scaleHeightM);
+  EXPECT_EQ(parseNodeConfig("[atmosphere]\naerosol_type = \"urban\"\nmie_extinction = 1e-4\n", "t.toml")
+                .atmosphere.medium.mieExtinctionPerM, 1e-4);
+  EXPECT_EQ(parseNodeConfig("", "empty").atmosphere.medium.aerosolType, skyig::atmosphere::AerosolType::bruneton2017);
+  const std::string err = errorOf("[atmosphere]\naerosol_type = \"smog\"\n");
+  EXPECT_NE(err.find("bad.toml:2: atmosphere.aerosol_type: expected one of bruneton2017, continental_clean"), std::string::npos) << err;
+  EXPECT_NE(err.find("got \"smog\""), std::string::npos) << err;
+  EXPECT_NE(errorOf("[atmosphere]\naerosol_humidity_pct = 100\n").find("atmosphere.aerosol_humidity_pct"), std::string::npos);
+}
+
 TEST(NodeConfig, MissingFile) {
   EXPECT_THROW(loadNodeConfig("/nonexistent/skyig.toml"), ConfigError);
 }

@@ -64,16 +64,10 @@ void loadAtmosphereIfNeeded(NodeConfig& config, const std::atomic<bool>* stop) {
 }
 
 sky::FogSpec nodeHaze(const NodeConfig& config, double visibilityKm) {
-  const atmosphere::Medium& m = config.atmosphere.medium;
-  sky::FogSpec haze = weather::hazeBelowTables(visibilityKm, m.mieScaleHeightM);
-  // The haze is more of the tables' aerosol: an OPAC type's asymmetry and albedo at its humidity
-  // (physics/atmosphere/aerosol_type.h). Bruneton's grey aerosol keeps the droplets' (the haze
-  // below 10 km is water-grown, and its albedo of 0.9 is the dry particles').
-  if (m.aerosolType != atmosphere::AerosolType::bruneton2017) {
-    haze.asymmetry = atmosphere::aerosolOptics(m.aerosolType, m.aerosolHumidity).asymmetry;
-    haze.albedo.fill(m.mieSingleScatteringAlbedo);
-  }
-  return haze;
+  // The haze below the tables' 10 km is water whatever the aerosol type: at a visibility that
+  // low the particles have grown to droplets (an OPAC type's dry albedo, 0.89 for continental
+  // average, would absorb a 400 m fog's many scatterings: its sky came out 16 times too dark).
+  return weather::hazeBelowTables(visibilityKm, config.atmosphere.medium.mieScaleHeightM);
 }
 
 }  // namespace skyig::services

@@ -8,6 +8,8 @@
 
 #include <glad/gl.h>
 #include <gtest/gtest.h>
+
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include <array>
@@ -250,8 +252,10 @@ TEST(SkyLibrary, DenseFogUpdatesAreAllUsable) {
 // 10 km tables) a black target 400 m away, level, shows the contrast 0.02 against the fog's
 // horizon behind it (the in-scatter of a level path 20 km long, as dense as the horizon gets);
 // and the sun reaching the host's terrain is dimmed through the fog.
-TEST(SkyLibrary, AerialPerspectiveInFogKeepsKoschmiedersContrast) {
-  skyig::Sky sky(smallPhysicalSky());
+// The same with an OPAC aerosol type over the tables: the fog is water droplets in both, as
+// bright (within a third) as over Bruneton's aerosol.
+double expectKoschmiederInFog(const skyig::Settings& settings) {
+  skyig::Sky sky(settings);
   const skyig::Light clear = (sky.update(at(11, 0, 100.0), 0.0), sky.light());
   skyig::Weather fog;
   fog.visibilityKm = 0.4;
@@ -265,6 +269,19 @@ TEST(SkyLibrary, AerialPerspectiveInFogKeepsKoschmiedersContrast) {
               target, horizon, contrast, sky.light().sun.horizontalLux, clear.sun.horizontalLux);
   EXPECT_NEAR(contrast, 0.02, 0.004);
   EXPECT_LT(sky.light().sun.horizontalLux, 0.01 * clear.sun.horizontalLux);  // 1.2 km of it overhead
+  return horizon;
+}
+
+TEST(SkyLibrary, AerialPerspectiveInFogKeepsKoschmiedersContrast) { expectKoschmiederInFog(smallPhysicalSky()); }
+
+TEST(SkyLibrary, AerialPerspectiveInFogOfAnOpacAerosolKeepsKoschmiedersContrast) {
+  const std::string path = std::string(SKYIG_BINARY_DIR) + "/opac-fog-test.toml";
+  std::ofstream(path) << "[atmosphere]\naerosol_type = \"continental_average\"\n";
+  skyig::Settings settings = smallPhysicalSky();
+  settings.configFile = path;
+  const double opac = expectKoschmiederInFog(settings);
+  const double bruneton = expectKoschmiederInFog(smallPhysicalSky());
+  EXPECT_NEAR(opac / bruneton, 1.0, 0.33);
 }
 
 // A host's cloud layers through the library (Sky::setClouds): under a full stratus deck the sun

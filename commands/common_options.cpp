@@ -28,11 +28,12 @@ void SkyOptions::add(CLI::App& c) {
                "Physical sky: visibility, km (Koschmieder; haze), 0.05 .. 1000 (past about 288: clean air)")
       ->check(CLI::Range(atmosphere::kSmallestVisibilityKm, atmosphere::kLargestVisibilityKm));
   c.add_option("--aerosol", aerosol,
-               "Physical sky: the aerosol, an OPAC type (continental_clean, continental_average, continental_polluted, urban, "
-               "desert, maritime_clean, maritime_polluted, maritime_tropical, arctic, antarctic) or bruneton2017; its standard "
-               "amount unless --visibility says")
-      ->check(CLI::IsMember({"bruneton2017", "continental_clean", "continental_average", "continental_polluted", "urban",
-                             "desert", "maritime_clean", "maritime_polluted", "maritime_tropical", "arctic", "antarctic"}));
+               "Physical sky: the aerosol, an OPAC type or Bruneton's (" + std::string(atmosphere::aerosolTypeNames()) +
+                   "); its standard amount unless --visibility says")
+      ->check([](const std::string& name) {
+        return atmosphere::parseAerosolType(name) ? std::string()
+                                                  : "expected one of " + std::string(atmosphere::aerosolTypeNames());
+      });
   c.add_option("--fog-visibility", fogVisibilityKm, "Physical sky: a ground fog of this visibility inside, km (0: none)")
       ->check(CLI::Range(0.0, atmosphere::kLargestVisibilityKm));
   c.add_option("--fog-top", fogTopM, "The ground fog's top above the ground, metres (default 200)")->check(CLI::Range(0.0, 20000.0));

@@ -127,8 +127,7 @@ Medium withAerosolType(const Medium& base, AerosolType type, double rh) {
   m.aerosolHumidity = rh;
   m.mieSingleScatteringAlbedo = o.singleScatteringAlbedo;
   m.mieAngstromExponent = o.angstromExponent;
-  m.mieScaleHeightM = o.scaleHeightM;
-  m.miePhaseG = o.asymmetry;  // reported, not used: the phase function is the type's table
+  m.mieScaleHeightM = o.scaleHeightM;  // miePhaseG stays: Cornette-Shanks', unused with a table
   return m;
 }
 

@@ -60,8 +60,8 @@ double nearestHumidityClass(double relativeHumidity);
 AerosolOptics aerosolOptics(AerosolType type, double relativeHumidity);
 
 // The medium's aerosol made of the type at the humidity: its albedo, Angstrom exponent, scale
-// height and phase function; its amount (the extinction at 550 nm) kept. bruneton2017 gives
-// back Bruneton's aerosol (albedo 0.9, grey, 1.2 km, Cornette-Shanks g 0.8).
+// height and phase function; its amount (the extinction at 550 nm) kept. bruneton2017 only
+// names the type: the medium's own albedo, exponent, scale height and Cornette-Shanks g stay.
 Medium withAerosolType(const Medium& base, AerosolType type, double relativeHumidity);
 
 // The same with OPAC's standard amount of the type at the humidity (its extinction at 550 nm):
